@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and renders the built-in default scene with its report.
+set -euo pipefail
+cd "$(dirname "$0")"
+source scripts/setup.sh
+mkdir -p out
+./build/rtusim render --image out/default.png --cost-image out/default_cost.png "$@"
