@@ -1,0 +1,42 @@
+#pragma once
+// The untimed, bit-exact model of the RTU: every job's result and cost as the thesis RTL
+// computes them, without simulating time. It is the reference for every timed model.
+
+#include <vector>
+
+#include "fixed_point.h"
+#include "svo_memory.h"
+#include "traversal_core.h"
+#include "traversal_job.h"
+
+namespace rtu {
+
+struct GoldenConfig {
+  FixedFormat format;
+  FloatConversion conversion = FloatConversion::Rtl;
+  int stackFrames = kRtlStackFrames;
+};
+
+class GoldenModel {
+ public:
+  GoldenModel(SvoMemory memory, GoldenConfig config);
+
+  TraversalResult trace(const TraversalJob& job);
+  std::vector<TraversalResult> traceAll(const std::vector<TraversalJob>& jobs);
+
+  const GoldenConfig& config() const { return config_; }
+
+ private:
+  SvoMemory memory_;
+  GoldenConfig config_;
+  TraversalCore<FixedArith> core_;
+};
+
+// The job manager's conversion of a job's float32 t-values (appendix C.2.1).
+std::array<int64_t, 3> convertToFixed(const std::array<uint32_t, 3>& floatBits,
+                                      const FixedFormat& format, FloatConversion conversion);
+
+// The fixed-point result of a finished core, as the RTL's result_t holds it.
+TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& core);
+
+}  // namespace rtu

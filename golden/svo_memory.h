@@ -1,0 +1,49 @@
+#pragma once
+// Read-only view of an SVO memory image: 32-bit words addressed by word index. Reads outside the
+// image return 0 (an empty descriptor), so a corrupt image cannot make a model read out of bounds.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rtu {
+
+class SvoMemory {
+ public:
+  SvoMemory() = default;
+  SvoMemory(const uint32_t* words, size_t size) : words_(words), size_(size) {}
+  explicit SvoMemory(const std::vector<uint32_t>& words) : SvoMemory(words.data(), words.size()) {}
+
+  uint32_t read(uint32_t address) const { return address < size_ ? words_[address] : 0; }
+  size_t size() const { return size_; }
+
+ private:
+  const uint32_t* words_ = nullptr;
+  size_t size_ = 0;
+};
+
+// Field layout of a 32-bit node descriptor (thesis figure 4.6, appendix C.4).
+struct Descriptor {
+  uint32_t word = 0;
+
+  static constexpr uint32_t kMaxPointer = 0x7FFF;
+
+  bool far() const { return (word >> 31) != 0; }
+  uint32_t childPointer() const { return (word >> 16) & kMaxPointer; }
+  uint8_t validMask() const { return static_cast<uint8_t>(word >> 8); }
+  uint8_t leafMask() const { return static_cast<uint8_t>(word); }
+  uint8_t nonLeafMask() const { return validMask() & ~leafMask(); }
+
+  // Descriptors of the children that are valid and not leaves come first in slot order; this is
+  // the offset of `slot`'s descriptor from the first.
+  uint32_t childOffset(int slot) const {
+    return static_cast<uint32_t>(__builtin_popcount(nonLeafMask() & ((1u << slot) - 1)));
+  }
+
+  static Descriptor make(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
+    return {(far ? 0x80000000u : 0u) | (pointer & kMaxPointer) << 16 |
+            static_cast<uint32_t>(valid) << 8 | leaf};
+  }
+};
+
+}  // namespace rtu

@@ -1,0 +1,254 @@
+#pragma once
+// The SVO traversal core of thesis appendix C.4 as a state machine that advances one clock cycle
+// per step(). It is the behaviour shared by every model: the golden model runs it to completion,
+// a timed model decides when each step happens.
+//
+// The arithmetic is a policy: FixedArith reproduces the RTL bit for bit, Float64Arith gives the
+// float64 reference of the same algorithm. Deliberate departures from the printed RTL are listed in
+// docs/thesis-defects.md.
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "fixed_point.h"
+#include "svo_memory.h"
+
+namespace rtu {
+
+enum class CoreState : uint8_t { Idle, Init, Eval, Next, Push, Pop, Out };
+const char* toString(CoreState state);
+
+// Fixed-point arithmetic of the RTL: wrapping adds, arithmetic right shift.
+struct FixedArith {
+  using Value = int64_t;
+  FixedFormat format;
+  Value add(Value a, Value b) const { return format.wrap(a + b); }
+  static Value half(Value v) { return v >> 1; }
+  Value one() const { return format.one(); }
+};
+
+struct Float64Arith {
+  using Value = double;
+  static Value add(Value a, Value b) { return a + b; }
+  static Value half(Value v) { return v * 0.5; }
+  static Value one() { return 1.0; }
+};
+
+// The RTL's stack holds 11 frames, enough for 12 octree levels.
+constexpr int kRtlStackFrames = 11;
+constexpr int kMaxStackFrames = 64;
+
+template <class Arith>
+class TraversalCore {
+ public:
+  using Value = typename Arith::Value;
+  using Vec3 = std::array<Value, 3>;
+
+  explicit TraversalCore(Arith arith = {}, int stackFrames = kRtlStackFrames)
+      : arith_(arith), stackFrames_(stackFrames) {
+    if (stackFrames < 1 || stackFrames > kMaxStackFrames)
+      throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
+                                  " frames, got " + std::to_string(stackFrames));
+  }
+
+  // The job handshake in IDLE: latches the job, the next cycle is INIT.
+  void start(const Vec3& t0, const Vec3& t1, uint8_t a, uint32_t root) {
+    a_ = a & 7;
+    frame_ = Frame{root, t0, midpoints(t0, t1), t1, 0};
+    stackSize_ = 0;
+    cost_ = 0;
+    hit_ = false;
+    stackOverflow_ = false;
+    // get_ray_valid: registered from the job's t-values, so it is ready by the first EVAL.
+    rayValid_ = !(maxComponent(t0).value >= minComponent(t1));
+    state_ = CoreState::Init;
+  }
+
+  CoreState state() const { return state_; }
+  bool busy() const { return state_ != CoreState::Idle && state_ != CoreState::Out; }
+
+  // Whether the current state consumes a memory word: EVAL reads the current descriptor, PUSH
+  // through a far pointer reads the far word.
+  bool readsMemory() const {
+    return state_ == CoreState::Eval ||
+           (state_ == CoreState::Push && Descriptor{descriptor_}.far());
+  }
+  uint32_t memoryAddress() const {
+    return state_ == CoreState::Eval ? frame_.entry
+                                     : frame_.entry + Descriptor{descriptor_}.childPointer();
+  }
+
+  // One clock cycle in INIT, EVAL, NEXT, PUSH or POP. `memoryWord` is the word at
+  // memoryAddress() when readsMemory(), ignored otherwise.
+  void step(uint32_t memoryWord) {
+    ++cost_;
+    switch (state_) {
+      case CoreState::Init:
+        frame_.child = initialChild(frame_.t0, frame_.tm);
+        state_ = CoreState::Eval;
+        break;
+      case CoreState::Eval:
+        evaluate(memoryWord);
+        break;
+      case CoreState::Next:
+        next();
+        break;
+      case CoreState::Push:
+        push(memoryWord);
+        break;
+      case CoreState::Pop:
+        state_ = CoreState::Next;  // the frame was restored on the NEXT -> POP edge
+        break;
+      default:
+        --cost_;
+        throw std::logic_error(std::string("traversal core stepped in state ") + toString(state_));
+    }
+  }
+
+  // The result handshake in OUT.
+  void finish() { state_ = CoreState::Idle; }
+
+  bool hit() const { return hit_; }
+  Value tHit() const { return tHit_; }
+  int normalAxis() const { return normalAxis_; }
+  uint32_t cost() const { return cost_; }
+  bool stackOverflow() const { return stackOverflow_; }
+  int stackSize() const { return stackSize_; }
+  const Arith& arith() const { return arith_; }
+
+ private:
+  struct Frame {
+    uint32_t entry;
+    Vec3 t0, tm, t1;
+    uint8_t child;
+  };
+  struct Selected {
+    Value value;
+    int axis;
+  };
+
+  Vec3 midpoints(const Vec3& t0, const Vec3& t1) const {
+    return {Arith::half(arith_.add(t0[0], t1[0])), Arith::half(arith_.add(t0[1], t1[1])),
+            Arith::half(arith_.add(t0[2], t1[2]))};
+  }
+  // Ties go to x, then y (the RTL's if/else-if chains).
+  static Selected maxComponent(const Vec3& t) {
+    if (t[0] >= t[1] && t[0] >= t[2]) return {t[0], 0};
+    if (t[1] >= t[0] && t[1] >= t[2]) return {t[1], 1};
+    return {t[2], 2};
+  }
+  static Value minComponent(const Vec3& t) {
+    if (t[0] <= t[1] && t[0] <= t[2]) return t[0];
+    if (t[1] <= t[0] && t[1] <= t[2]) return t[1];
+    return t[2];
+  }
+  static int minAxis(const Vec3& t) {
+    if (t[0] <= t[1] && t[0] <= t[2]) return 0;
+    if (t[1] <= t[0] && t[1] <= t[2]) return 1;
+    return 2;
+  }
+  // get_initial_child_idx: the entry plane is the largest t0; a midpoint it has passed sets the
+  // corresponding index bit (thesis table 4.2 with the RTL's >=).
+  static uint8_t initialChild(const Vec3& t0, const Vec3& tm) {
+    const int entryAxis = maxComponent(t0).axis;
+    uint8_t child = 0;
+    for (int k = 0; k < 3; ++k)
+      if (k != entryAxis && t0[entryAxis] >= tm[k]) child |= static_cast<uint8_t>(1u << k);
+    return child;
+  }
+  // get_child_t_values
+  static Vec3 childT0(const Frame& f) {
+    return {f.child & 1 ? f.tm[0] : f.t0[0], f.child & 2 ? f.tm[1] : f.t0[1],
+            f.child & 4 ? f.tm[2] : f.t0[2]};
+  }
+  static Vec3 childT1(const Frame& f) {
+    return {f.child & 1 ? f.t1[0] : f.tm[0], f.child & 2 ? f.t1[1] : f.tm[1],
+            f.child & 4 ? f.t1[2] : f.tm[2]};
+  }
+  // get_next_child_idx (thesis table 4.3): leave through the smallest exit plane; when the child
+  // is already in the upper half along that axis the parent is done (returns 8, END).
+  static int nextChild(const Frame& f) {
+    const int exitAxis = minAxis(childT1(f));
+    const int bit = 1 << exitAxis;
+    return f.child & bit ? 8 : f.child | bit;
+  }
+
+  void evaluate(uint32_t descriptorWord) {
+    if (!rayValid_) {
+      hit_ = false;
+      state_ = CoreState::Out;
+      return;
+    }
+    const Descriptor descriptor{descriptorWord};
+    const int slot = frame_.child ^ a_;
+    if (!(descriptor.validMask() >> slot & 1)) {
+      state_ = CoreState::Next;
+    } else if (descriptor.leafMask() >> slot & 1) {
+      const Selected entry = maxComponent(childT0(frame_));
+      hit_ = true;
+      tHit_ = entry.value;
+      normalAxis_ = entry.axis;
+      state_ = CoreState::Out;
+    } else {
+      descriptor_ = descriptorWord;  // latched for PUSH (see defect 3 in docs/thesis-defects.md)
+      state_ = CoreState::Push;
+    }
+  }
+
+  void push(uint32_t farWord) {
+    const Descriptor descriptor{descriptor_};
+    if (stackSize_ == stackFrames_) {
+      stackOverflow_ = true;
+      hit_ = false;
+      state_ = CoreState::Out;
+      return;
+    }
+    const uint32_t firstChild =
+        descriptor.far() ? frame_.entry + farWord : frame_.entry + descriptor.childPointer();
+    const uint32_t childEntry = firstChild + descriptor.childOffset(frame_.child ^ a_);
+    const Vec3 t0 = childT0(frame_);
+    const Vec3 t1 = childT1(frame_);
+    stack_[stackSize_++] = frame_;
+    frame_ = Frame{childEntry, t0, midpoints(t0, t1), t1, 0};
+    state_ = CoreState::Init;
+  }
+
+  void next() {
+    const int child = nextChild(frame_);
+    if (child < 8) {
+      frame_.child = static_cast<uint8_t>(child);
+      state_ = CoreState::Eval;
+    } else if (stackSize_ == 0) {
+      hit_ = false;
+      state_ = CoreState::Out;
+    } else {
+      frame_ = stack_[--stackSize_];
+      state_ = CoreState::Pop;
+    }
+  }
+
+  Arith arith_;
+  int stackFrames_;
+  CoreState state_ = CoreState::Idle;
+  Frame frame_{};
+  std::array<Frame, kMaxStackFrames> stack_{};
+  int stackSize_ = 0;
+  uint8_t a_ = 0;
+  bool rayValid_ = false;
+  uint32_t descriptor_ = 0;
+  uint32_t cost_ = 0;
+  bool hit_ = false;
+  Value tHit_{};
+  int normalAxis_ = 0;
+  bool stackOverflow_ = false;
+};
+
+// Runs a started core to OUT against an ideal memory (data in the same cycle).
+template <class Arith>
+void runToCompletion(TraversalCore<Arith>& core, const SvoMemory& memory) {
+  while (core.busy()) core.step(core.readsMemory() ? memory.read(core.memoryAddress()) : 0);
+}
+
+}  // namespace rtu

@@ -1,0 +1,40 @@
+#pragma once
+// The job a traversal core receives and the result it returns (thesis appendix C.6, job_t and
+// result_t), independent of how they travel: host buffers, ready-valid channels or TLM payloads.
+
+#include <array>
+#include <cstdint>
+
+namespace rtu {
+
+// A traversal job with the t-parameters still in float32, as the host driver sends them
+// (appendix F): the job manager converts them to fixed point.
+struct TraversalJob {
+  uint32_t id = 0;                  // 28 bits: the driver packs `a` into bits 30:28 beside it
+  uint8_t a = 0;                    // direction coefficient: bit k set when direction k was negative
+  std::array<uint32_t, 3> t0Bits{};  // float32 bit patterns of t0x, t0y, t0z
+  std::array<uint32_t, 3> t1Bits{};
+  uint32_t root = 0;                // word address of the root descriptor
+
+  static constexpr uint32_t kMaxId = (1u << 28) - 1;
+  // The first word of the host record; the RTL carries it unchanged into the result.
+  uint32_t idWord() const { return id | static_cast<uint32_t>(a) << 28; }
+};
+
+struct TraversalResult {
+  uint32_t idWord = 0;  // the job's first word, a bits included, exactly as the RTL returns it
+  bool hit = false;
+  int64_t tHit = 0;                // fixed point; 0 on a miss
+  std::array<int64_t, 3> normal{};  // 1.0 on the entry face's axis (mirrored space); 0 on a miss
+  uint32_t cost = 0;               // cycles spent in INIT, EVAL, NEXT, PUSH and POP
+  bool stackOverflow = false;      // traversal needed more stack frames than configured
+
+  uint32_t id() const { return idWord & TraversalJob::kMaxId; }
+  bool operator==(const TraversalResult& other) const {
+    return idWord == other.idWord && hit == other.hit && tHit == other.tHit &&
+           normal == other.normal && cost == other.cost && stackOverflow == other.stackOverflow;
+  }
+  bool operator!=(const TraversalResult& other) const { return !(*this == other); }
+};
+
+}  // namespace rtu
