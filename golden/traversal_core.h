@@ -40,6 +40,48 @@ struct Float64Arith {
 constexpr int kRtlStackFrames = 11;
 constexpr int kMaxStackFrames = 64;
 
+// Combinational helpers of appendix C.4, on any arithmetic. Ties go to x, then y, as in the
+// RTL's if/else-if chains.
+template <class Value>
+struct AxisValue {
+  Value value;
+  int axis;
+};
+
+template <class Value>
+AxisValue<Value> maxComponent(const std::array<Value, 3>& t) {
+  if (t[0] >= t[1] && t[0] >= t[2]) return {t[0], 0};
+  if (t[1] >= t[0] && t[1] >= t[2]) return {t[1], 1};
+  return {t[2], 2};
+}
+
+template <class Value>
+AxisValue<Value> minComponent(const std::array<Value, 3>& t) {
+  if (t[0] <= t[1] && t[0] <= t[2]) return {t[0], 0};
+  if (t[1] <= t[0] && t[1] <= t[2]) return {t[1], 1};
+  return {t[2], 2};
+}
+
+// get_initial_child_idx: the entry plane is the largest t0; each other axis whose midpoint the
+// ray has passed on entry sets its index bit (thesis table 4.2, with the RTL's >=).
+template <class Value>
+uint8_t initialChildIndex(const std::array<Value, 3>& t0, const std::array<Value, 3>& tm) {
+  const int entryAxis = maxComponent(t0).axis;
+  uint8_t child = 0;
+  for (int k = 0; k < 3; ++k)
+    if (k != entryAxis && t0[entryAxis] >= tm[k]) child |= static_cast<uint8_t>(1u << k);
+  return child;
+}
+
+// get_next_child_idx (thesis table 4.3): the ray leaves the child through its smallest exit
+// plane t1; if the child already lies in the upper half along that axis the parent is done and
+// the result is 8 (END).
+template <class Value>
+int nextChildIndex(int child, const std::array<Value, 3>& childT1) {
+  const int bit = 1 << minComponent(childT1).axis;
+  return child & bit ? 8 : child | bit;
+}
+
 template <class Arith>
 class TraversalCore {
  public:
@@ -62,7 +104,7 @@ class TraversalCore {
     hit_ = false;
     stackOverflow_ = false;
     // get_ray_valid: registered from the job's t-values, so it is ready by the first EVAL.
-    rayValid_ = !(maxComponent(t0).value >= minComponent(t1));
+    rayValid_ = !(maxComponent(t0).value >= minComponent(t1).value);
     state_ = CoreState::Init;
   }
 
@@ -86,7 +128,7 @@ class TraversalCore {
     ++cost_;
     switch (state_) {
       case CoreState::Init:
-        frame_.child = initialChild(frame_.t0, frame_.tm);
+        frame_.child = initialChildIndex(frame_.t0, frame_.tm);
         state_ = CoreState::Eval;
         break;
       case CoreState::Eval:
@@ -124,39 +166,9 @@ class TraversalCore {
     Vec3 t0, tm, t1;
     uint8_t child;
   };
-  struct Selected {
-    Value value;
-    int axis;
-  };
-
   Vec3 midpoints(const Vec3& t0, const Vec3& t1) const {
     return {Arith::half(arith_.add(t0[0], t1[0])), Arith::half(arith_.add(t0[1], t1[1])),
             Arith::half(arith_.add(t0[2], t1[2]))};
-  }
-  // Ties go to x, then y (the RTL's if/else-if chains).
-  static Selected maxComponent(const Vec3& t) {
-    if (t[0] >= t[1] && t[0] >= t[2]) return {t[0], 0};
-    if (t[1] >= t[0] && t[1] >= t[2]) return {t[1], 1};
-    return {t[2], 2};
-  }
-  static Value minComponent(const Vec3& t) {
-    if (t[0] <= t[1] && t[0] <= t[2]) return t[0];
-    if (t[1] <= t[0] && t[1] <= t[2]) return t[1];
-    return t[2];
-  }
-  static int minAxis(const Vec3& t) {
-    if (t[0] <= t[1] && t[0] <= t[2]) return 0;
-    if (t[1] <= t[0] && t[1] <= t[2]) return 1;
-    return 2;
-  }
-  // get_initial_child_idx: the entry plane is the largest t0; a midpoint it has passed sets the
-  // corresponding index bit (thesis table 4.2 with the RTL's >=).
-  static uint8_t initialChild(const Vec3& t0, const Vec3& tm) {
-    const int entryAxis = maxComponent(t0).axis;
-    uint8_t child = 0;
-    for (int k = 0; k < 3; ++k)
-      if (k != entryAxis && t0[entryAxis] >= tm[k]) child |= static_cast<uint8_t>(1u << k);
-    return child;
   }
   // get_child_t_values
   static Vec3 childT0(const Frame& f) {
@@ -167,13 +179,7 @@ class TraversalCore {
     return {f.child & 1 ? f.t1[0] : f.tm[0], f.child & 2 ? f.t1[1] : f.tm[1],
             f.child & 4 ? f.t1[2] : f.tm[2]};
   }
-  // get_next_child_idx (thesis table 4.3): leave through the smallest exit plane; when the child
-  // is already in the upper half along that axis the parent is done (returns 8, END).
-  static int nextChild(const Frame& f) {
-    const int exitAxis = minAxis(childT1(f));
-    const int bit = 1 << exitAxis;
-    return f.child & bit ? 8 : f.child | bit;
-  }
+  static int nextChild(const Frame& f) { return nextChildIndex(f.child, childT1(f)); }
 
   void evaluate(uint32_t descriptorWord) {
     if (!rayValid_) {
@@ -186,7 +192,7 @@ class TraversalCore {
     if (!(descriptor.validMask() >> slot & 1)) {
       state_ = CoreState::Next;
     } else if (descriptor.leafMask() >> slot & 1) {
-      const Selected entry = maxComponent(childT0(frame_));
+      const auto entry = maxComponent(childT0(frame_));
       hit_ = true;
       tHit_ = entry.value;
       normalAxis_ = entry.axis;

@@ -1,0 +1,34 @@
+#include "result_summary.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace rtu {
+
+ResultSummary ResultSummary::of(const std::vector<TraversalResult>& results) {
+  ResultSummary summary;
+  summary.rays = results.size();
+  for (const TraversalResult& result : results) {
+    summary.hits += result.hit;
+    summary.stackOverflows += result.stackOverflow;
+    summary.totalCost += result.cost;
+    summary.maxCost = std::max(summary.maxCost, result.cost);
+  }
+  return summary;
+}
+
+std::string ResultSummary::describe() const {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "rays        %zu\n"
+                "hits        %zu (%.1f %%)\n"
+                "cost        mean %.2f, max %u cycles per ray (INIT to last state before OUT)\n",
+                rays, hits, 100.0 * hitShare(), meanCost(), maxCost);
+  std::string lines = text;
+  if (stackOverflows)
+    lines += "WARNING     " + std::to_string(stackOverflows) +
+             " rays ran out of stack frames and were reported as misses\n";
+  return lines;
+}
+
+}  // namespace rtu

@@ -1,0 +1,16 @@
+#pragma once
+// Command-line options shared by several rtusim commands, bound to CLI11.
+
+#include <CLI/CLI.hpp>
+
+#include "camera.h"
+#include "golden_model.h"
+#include "scene_loader.h"
+
+namespace rtu {
+
+void addSceneOptions(CLI::App& command, SceneSpec& scene);
+void addCameraOptions(CLI::App& command, Camera& camera, double& epsilon);
+void addGoldenOptions(CLI::App& command, GoldenConfig& config);
+
+}  // namespace rtu

@@ -1,0 +1,30 @@
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "svo_image.h"
+#include "svo_validator.h"
+
+namespace rtu {
+
+void addValidateCommand(CLI::App& app) {
+  struct Options {
+    std::string file;
+    uint32_t root = 0;
+    SvoLimits limits;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("validate", "check an SVO memory image");
+  command->add_option("file", options->file, ".svo file")->required()->check(CLI::ExistingFile);
+  command->add_option("--root", options->root, "word address of the root descriptor")
+      ->capture_default_str();
+  command->add_option("--max-depth", options->limits.maxDepth, "deepest octree level allowed")
+      ->capture_default_str();
+  command->callback([options] {
+    const SvoImage image = readSvoFile(options->file, options->root);
+    const SvoReport report = validateSvo(image, options->limits);
+    std::cout << options->file << ": valid, " << describe(report) << "\n";
+  });
+}
+
+}  // namespace rtu

@@ -1,0 +1,15 @@
+#pragma once
+// The rtusim subcommands; each registers itself on the application.
+
+#include <CLI/CLI.hpp>
+
+namespace rtu {
+
+void addBuildCommand(CLI::App& app);
+void addValidateCommand(CLI::App& app);
+void addJobsCommand(CLI::App& app);
+void addGoldenCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
+void addAccuracyCommand(CLI::App& app);
+
+}  // namespace rtu

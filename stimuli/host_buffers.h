@@ -1,0 +1,37 @@
+#pragma once
+// The DMA buffers of the thesis driver (appendix F), so job streams can come from and go to other
+// tools. Every record is 8 little-endian 32-bit words:
+//   input:  [job_id | a << 28, t0x, t0y, t0z, t1x, t1y, t1z (float32 bits), root address]
+//   output: [job_id | a << 28, hit, t_hit, nx, ny, nz (fixed point), cost, flags]
+// The output's job word is returned as received, as the RTL does. `flags` is 0 on the RTL; rtusim
+// sets bit 0 when the traversal ran out of stack frames.
+
+#include <string>
+#include <vector>
+
+#include "traversal_job.h"
+
+namespace rtu {
+
+constexpr size_t kRecordWords = 8;
+constexpr size_t kRecordBytes = kRecordWords * 4;
+constexpr uint32_t kResultFlagStackOverflow = 1;
+
+// Throws std::runtime_error naming the record and field for impossible contents: bit 31 of the
+// job word set, a NaN t-value, or t0 > t1 on an axis (after mirroring every direction is
+// positive, so t0 <= t1).
+std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words);
+std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs);
+
+// Throws std::runtime_error for hit words other than 0/1, unknown flag bits, or a normal that is
+// not zero on a miss.
+std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words);
+// Throws std::invalid_argument when t_hit or the normal do not fit 32 bits (formats over 32 bits).
+std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results);
+
+std::vector<TraversalJob> readJobBuffer(const std::string& path);
+void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
+std::vector<TraversalResult> readResultBuffer(const std::string& path);
+void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results);
+
+}  // namespace rtu

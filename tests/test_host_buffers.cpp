@@ -1,0 +1,94 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "binary_file.h"
+#include "camera.h"
+#include "host_buffers.h"
+
+using namespace rtu;
+
+namespace {
+
+std::string tempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rtusim_test_" + name)).string();
+}
+
+std::vector<uint32_t> jobWords() {
+  Camera camera;
+  camera.width = 4;
+  camera.height = 3;
+  return encodeJobRecords(makeFrameJobs(camera, 5));
+}
+
+}  // namespace
+
+TEST_CASE("Job buffers round-trip through files in the driver's layout", "[buffers]") {
+  Camera camera;
+  camera.width = 8;
+  camera.height = 5;
+  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, 3);
+  const std::string path = tempPath("jobs.bin");
+  writeJobBuffer(path, jobs);
+  REQUIRE(std::filesystem::file_size(path) == jobs.size() * 32);
+  const std::vector<uint32_t> words = readWordFile(path, 32, "jobs");
+  REQUIRE(words[8 * 13] == (13u | static_cast<uint32_t>(jobs[13].a) << 28));  // id = x + y * w
+  REQUIRE(words[8 * 13 + 7] == 3);
+  const std::vector<TraversalJob> back = readJobBuffer(path);
+  REQUIRE(back.size() == jobs.size());
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    REQUIRE(back[i].idWord() == jobs[i].idWord());
+    REQUIRE(back[i].t0Bits == jobs[i].t0Bits);
+    REQUIRE(back[i].t1Bits == jobs[i].t1Bits);
+  }
+}
+
+TEST_CASE("Malformed job buffers are rejected with the record and the reason", "[buffers]") {
+  std::vector<uint32_t> words = jobWords();
+  words[8 * 2] |= 0x80000000u;
+  REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("record 2") &&
+                                                   Catch::Contains("bit 31"));
+  words = jobWords();
+  words[8 * 1 + 5] = 0x7FC00000u;  // NaN t1y
+  REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("record 1") &&
+                                                   Catch::Contains("NaN"));
+  words = jobWords();
+  std::swap(words[8 * 4 + 3], words[8 * 4 + 6]);  // t0z <-> t1z
+  REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("t0z > t1z"));
+
+  const std::string path = tempPath("short.bin");
+  std::ofstream(path, std::ios::binary) << std::string(33, '\0');
+  REQUIRE_THROWS_WITH(readJobBuffer(path), Catch::Contains("33 bytes"));
+  REQUIRE_THROWS_WITH(readJobBuffer(tempPath("does_not_exist")), Catch::Contains("cannot open"));
+}
+
+TEST_CASE("Result buffers round-trip and reject impossible records", "[buffers]") {
+  TraversalResult hit;
+  hit.idWord = 7 | 3u << 28;
+  hit.hit = true;
+  hit.tHit = -0x18000;
+  hit.normal = {0, 0x10000, 0};
+  hit.cost = 31;
+  TraversalResult miss;
+  miss.idWord = 8;
+  miss.cost = 5;
+  miss.stackOverflow = true;
+  const std::vector<uint32_t> words = encodeResultRecords({hit, miss});
+  REQUIRE(words == std::vector<uint32_t>{7 | 3u << 28, 1, 0xFFFE8000u, 0, 0x10000, 0, 31, 0,
+                                         8, 0, 0, 0, 0, 0, 5, 1});
+  const std::vector<TraversalResult> back = decodeResultRecords(words);
+  REQUIRE(back[0] == hit);
+  REQUIRE(back[1] == miss);
+
+  std::vector<uint32_t> bad = words;
+  bad[9] = 2;
+  REQUIRE_THROWS_WITH(decodeResultRecords(bad), Catch::Contains("record 1") &&
+                                                   Catch::Contains("hit word"));
+  bad = words;
+  bad[12] = 0x10000;
+  REQUIRE_THROWS_WITH(decodeResultRecords(bad), Catch::Contains("miss with a non-zero normal"));
+  hit.tHit = int64_t{1} << 40;
+  REQUIRE_THROWS_WITH(encodeResultRecords({hit}), Catch::Contains("32 bits"));
+}
