@@ -22,6 +22,18 @@ class SvoMemory {
   size_t size_ = 0;
 };
 
+// Set bits of a byte (the RTL's get_ones_count). A table, because without -mpopcnt the
+// builtin becomes a library call on the traversal's hot path.
+inline uint32_t bitCount(uint8_t bits) {
+  static constexpr struct Table {
+    uint8_t counts[256];
+    constexpr Table() : counts() {
+      for (int i = 1; i < 256; ++i) counts[i] = static_cast<uint8_t>((i & 1) + counts[i >> 1]);
+    }
+  } table;
+  return table.counts[bits];
+}
+
 // Field layout of a 32-bit node descriptor (thesis figure 4.6, appendix C.4).
 struct Descriptor {
   uint32_t word = 0;
@@ -37,7 +49,7 @@ struct Descriptor {
   // Descriptors of the children that are valid and not leaves come first in slot order; this is
   // the offset of `slot`'s descriptor from the first.
   uint32_t childOffset(int slot) const {
-    return static_cast<uint32_t>(__builtin_popcount(nonLeafMask() & ((1u << slot) - 1)));
+    return bitCount(static_cast<uint8_t>(nonLeafMask() & ((1u << slot) - 1)));
   }
 
   static Descriptor make(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
