@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # Shared set-up for run.sh and test.sh: install missing Debian packages, configure and build
 # Release into build/. Sourced, so the callers keep `set -euo pipefail`.
-# openimageio-tools: OpenImageIO's CMake package refers to its command-line tools.
 packages=(cmake g++ make libsystemc-dev libglm-dev libopenimageio-dev catch2 libcli11-dev
-          nlohmann-json3-dev libassimp-dev openimageio-tools)
+          nlohmann-json3-dev libassimp-dev pkg-config)
 
 missing=()
 for package in "${packages[@]}"; do
