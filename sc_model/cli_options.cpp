@@ -58,4 +58,10 @@ void addGoldenOptions(CLI::App& command, GoldenConfig& config) {
       ->check(CLI::Range(1, kMaxStackFrames));
 }
 
+void addFrameOptions(CLI::App& command, FrameOptions& frame) {
+  addSceneOptions(command, frame.scene);
+  addCameraOptions(command, frame.camera, frame.epsilon);
+  addGoldenOptions(command, frame.config);
+}
+
 }  // namespace rtu

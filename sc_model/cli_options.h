@@ -13,4 +13,13 @@ void addSceneOptions(CLI::App& command, SceneSpec& scene);
 void addCameraOptions(CLI::App& command, Camera& camera, double& epsilon);
 void addGoldenOptions(CLI::App& command, GoldenConfig& config);
 
+// Everything that defines one rendered frame: scene, camera and golden model.
+struct FrameOptions {
+  SceneSpec scene;
+  Camera camera;
+  double epsilon = kDefaultDirectionEpsilon;
+  GoldenConfig config;
+};
+void addFrameOptions(CLI::App& command, FrameOptions& frame);
+
 }  // namespace rtu

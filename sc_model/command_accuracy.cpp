@@ -24,10 +24,7 @@ size_t countConversionDifferences(const std::vector<TraversalJob>& jobs, const F
 
 void addAccuracyCommand(CLI::App& app) {
   struct Options {
-    SceneSpec scene;
-    Camera camera;
-    double epsilon = kDefaultDirectionEpsilon;
-    GoldenConfig config;
+    FrameOptions frame;
     double tolerance = 1e-3;
   };
   auto options = std::make_shared<Options>();
@@ -35,31 +32,29 @@ void addAccuracyCommand(CLI::App& app) {
       "accuracy",
       "compare the fixed-point golden model with the float64 reference, and the RTL "
       "float-to-fixed conversion with the exact one, on one frame");
-  addSceneOptions(*command, options->scene);
-  addCameraOptions(*command, options->camera, options->epsilon);
-  addGoldenOptions(*command, options->config);
+  addFrameOptions(*command, options->frame);
   command->add_option("--tolerance", options->tolerance, "largest t difference that agrees")
       ->capture_default_str();
   command->callback([options] {
-    const Scene scene = loadScene(options->scene);
+    const Scene scene = loadScene(options->frame.scene);
     const SvoMemory memory = scene.image.memory();
-    const std::vector<Ray> rays = frameRays(options->camera);
-    const AccuracyReport report = measureAccuracy(memory, scene.image.root, rays, options->config,
-                                                  options->epsilon, options->tolerance);
+    const std::vector<Ray> rays = frameRays(options->frame.camera);
+    const AccuracyReport report = measureAccuracy(memory, scene.image.root, rays, options->frame.config,
+                                                  options->frame.epsilon, options->tolerance);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "golden      " << options->config.format.describe() << ", "
-              << toString(options->config.conversion) << " conversion vs float64 reference\n"
+              << "golden      " << options->frame.config.format.describe() << ", "
+              << toString(options->frame.config.conversion) << " conversion vs float64 reference\n"
               << report.describe();
 
     const std::vector<TraversalJob> jobs =
-        makeFrameJobs(options->camera, scene.image.root, options->epsilon);
-    GoldenConfig rtl = options->config;
+        makeFrameJobs(options->frame.camera, scene.image.root, options->frame.epsilon);
+    GoldenConfig rtl = options->frame.config;
     rtl.conversion = FloatConversion::Rtl;
-    GoldenConfig exact = options->config;
+    GoldenConfig exact = options->frame.config;
     exact.conversion = FloatConversion::Exact;
     const size_t resultDifferences = countDifferences(GoldenModel(memory, rtl).traceAll(jobs),
                                                       GoldenModel(memory, exact).traceAll(jobs));
-    std::cout << "rtl/exact   " << countConversionDifferences(jobs, options->config.format)
+    std::cout << "rtl/exact   " << countConversionDifferences(jobs, options->frame.config.format)
               << " of " << jobs.size() * 6 << " t-values convert differently; "
               << resultDifferences << " of " << jobs.size() << " results differ\n";
   });
