@@ -35,10 +35,11 @@ void addRenderCommand(CLI::App& app) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const Frame frame = Frame::fromResults(options->frame.camera, options->frame.config.format, results);
-    if (!options->image.empty()) writeShadedImage(frame, options->image);
-    if (!options->depthImage.empty()) writeDepthImage(frame, options->depthImage);
-    if (!options->costImage.empty()) writeCostImage(frame, options->costImage);
+    const RenderedFrame rendered =
+        RenderedFrame::fromResults(options->frame.camera, options->frame.config.format, results);
+    if (!options->image.empty()) writeShadedImage(rendered, options->image);
+    if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
+    if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);
 
     char host[128];
     std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n",

@@ -26,7 +26,7 @@ void writeImage(const std::string& path, int width, int height, int channels,
     throw std::runtime_error("cannot write image '" + path + "': " + output->geterror());
 }
 
-void writeRgb(const Frame& frame, const std::string& path, Pixel (*shade)(const Frame&, size_t)) {
+void writeRgb(const RenderedFrame& frame, const std::string& path, Pixel (*shade)(const RenderedFrame&, size_t)) {
   std::vector<float> data(frame.pixels.size() * 3);
   for (size_t i = 0; i < frame.pixels.size(); ++i) {
     const Pixel colour = glm::clamp(shade(frame, i), 0.0f, 1.0f);
@@ -44,7 +44,7 @@ int normalAxis(const TraversalResult& result) {
   return result.normal[0] ? 0 : result.normal[1] ? 1 : 2;
 }
 
-Pixel shadeLambert(const Frame& frame, size_t index) {
+Pixel shadeLambert(const RenderedFrame& frame, size_t index) {
   const TraversalResult& result = frame.pixels[index];
   const int width = frame.camera.width;
   const glm::dvec3 direction =
@@ -59,7 +59,7 @@ Pixel shadeLambert(const Frame& frame, size_t index) {
   return Pixel(0.86f, 0.80f, 0.68f) * (0.22f + 0.78f * lambert);
 }
 
-Pixel shadeCost(const Frame& frame, size_t index) {
+Pixel shadeCost(const RenderedFrame& frame, size_t index) {
   const TraversalResult& result = frame.pixels[index];
   if (!result.hit) {
     const float fade = std::pow(0.95f, (static_cast<float>(result.cost) - 2.0f) / 2.0f);
@@ -71,9 +71,9 @@ Pixel shadeCost(const Frame& frame, size_t index) {
 
 }  // namespace
 
-Frame Frame::fromResults(const Camera& camera, const FixedFormat& format,
+RenderedFrame RenderedFrame::fromResults(const Camera& camera, const FixedFormat& format,
                          const std::vector<TraversalResult>& results) {
-  Frame frame{camera, format, std::vector<TraversalResult>(camera.pixelCount())};
+  RenderedFrame frame{camera, format, std::vector<TraversalResult>(camera.pixelCount())};
   for (const TraversalResult& result : results) {
     if (result.id() >= frame.pixels.size())
       throw std::runtime_error("result for job " + std::to_string(result.id()) +
@@ -84,15 +84,15 @@ Frame Frame::fromResults(const Camera& camera, const FixedFormat& format,
   return frame;
 }
 
-void writeShadedImage(const Frame& frame, const std::string& path) {
+void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
   writeRgb(frame, path, shadeLambert);
 }
 
-void writeCostImage(const Frame& frame, const std::string& path) {
+void writeCostImage(const RenderedFrame& frame, const std::string& path) {
   writeRgb(frame, path, shadeCost);
 }
 
-void writeDepthImage(const Frame& frame, const std::string& path) {
+void writeDepthImage(const RenderedFrame& frame, const std::string& path) {
   std::vector<float> depth(frame.pixels.size(), 0.0f);
   float nearest = std::numeric_limits<float>::max();
   float farthest = std::numeric_limits<float>::lowest();
