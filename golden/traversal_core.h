@@ -122,9 +122,10 @@ class TraversalCore {
                                      : frame_.entry + Descriptor{descriptor_}.childPointer();
   }
 
-  // One clock cycle in INIT, EVAL, NEXT, PUSH or POP. `memoryWord` is the word at
-  // memoryAddress() when readsMemory(), ignored otherwise.
-  void step(uint32_t memoryWord) {
+  // One clock cycle in INIT, EVAL, NEXT, PUSH or POP. `readWord(address)` supplies the word
+  // at memoryAddress(); it is called only when readsMemory().
+  template <class ReadWord>
+  void step(ReadWord&& readWord) {
     ++cost_;
     switch (state_) {
       case CoreState::Init:
@@ -132,13 +133,13 @@ class TraversalCore {
         state_ = CoreState::Eval;
         break;
       case CoreState::Eval:
-        evaluate(memoryWord);
+        evaluate(readWord(frame_.entry));
         break;
       case CoreState::Next:
         next();
         break;
       case CoreState::Push:
-        push(memoryWord);
+        push(Descriptor{descriptor_}.far() ? readWord(memoryAddress()) : 0);
         break;
       case CoreState::Pop:
         state_ = CoreState::Next;  // the frame was restored on the NEXT -> POP edge
@@ -254,7 +255,8 @@ class TraversalCore {
 // Runs a started core to OUT against an ideal memory (data in the same cycle).
 template <class Arith>
 void runToCompletion(TraversalCore<Arith>& core, const SvoMemory& memory) {
-  while (core.busy()) core.step(core.readsMemory() ? memory.read(core.memoryAddress()) : 0);
+  const auto read = [&memory](uint32_t address) { return memory.read(address); };
+  while (core.busy()) core.step(read);
 }
 
 }  // namespace rtu
