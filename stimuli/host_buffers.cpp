@@ -25,6 +25,17 @@ uint32_t toWord32(int64_t value, const char* field) {
 
 int64_t signExtend32(uint32_t word) { return static_cast<int32_t>(word); }
 
+// Reads a buffer file and decodes it; decoding errors are prefixed with the file.
+template <class Decode>
+auto readBuffer(const std::string& path, const std::string& what, Decode decode) {
+  const std::vector<uint32_t> words = readWordFile(path, kRecordBytes, what);
+  try {
+    return decode(words);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(what + " '" + path + "': " + error.what());
+  }
+}
+
 }  // namespace
 
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
@@ -109,12 +120,7 @@ std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& re
 }
 
 std::vector<TraversalJob> readJobBuffer(const std::string& path) {
-  const std::vector<uint32_t> words = readWordFile(path, kRecordBytes, "job buffer");
-  try {
-    return decodeJobRecords(words);
-  } catch (const std::runtime_error& error) {
-    throw std::runtime_error("job buffer '" + path + "': " + error.what());
-  }
+  return readBuffer(path, "job buffer", decodeJobRecords);
 }
 
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
@@ -122,12 +128,7 @@ void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jo
 }
 
 std::vector<TraversalResult> readResultBuffer(const std::string& path) {
-  const std::vector<uint32_t> words = readWordFile(path, kRecordBytes, "result buffer");
-  try {
-    return decodeResultRecords(words);
-  } catch (const std::runtime_error& error) {
-    throw std::runtime_error("result buffer '" + path + "': " + error.what());
-  }
+  return readBuffer(path, "result buffer", decodeResultRecords);
 }
 
 void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results) {
