@@ -42,4 +42,9 @@ std::vector<TraversalResult> GoldenModel::traceAll(const std::vector<TraversalJo
   return results;
 }
 
+std::vector<TraversalResult> GoldenModel::traceRays(const std::vector<RayRecord>& records,
+                                                    float epsilon) {
+  return traceAll(rayRecordsToJobs(memory_, records, epsilon));
+}
+
 }  // namespace rtu

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fixed_point.h"
+#include "ray_transform.h"
 #include "svo_memory.h"
 #include "traversal_core.h"
 #include "traversal_job.h"
@@ -23,6 +24,9 @@ class GoldenModel {
 
   TraversalResult trace(const TraversalJob& job);
   std::vector<TraversalResult> traceAll(const std::vector<TraversalJob>& jobs);
+  // World-space rays of animated models: each job is set up from its model's header in memory
+  // (rayRecordsToJobs), then traced. Throws std::runtime_error for an invalid record or header.
+  std::vector<TraversalResult> traceRays(const std::vector<RayRecord>& records, float epsilon);
 
   const GoldenConfig& config() const { return config_; }
 

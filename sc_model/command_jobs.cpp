@@ -7,26 +7,54 @@
 
 namespace rtu {
 
+namespace {
+
+void reportWritten(size_t records, const std::string& kind, const std::string& path) {
+  std::cout << "wrote " << records << " " << kind << " (" << records * kRecordBytes
+            << " bytes) to " << path << "\n";
+}
+
+}  // namespace
+
 void addJobsCommand(CLI::App& app) {
   struct Options {
     Camera camera;
     double epsilon = kDefaultDirectionEpsilon;
     uint32_t root = 0;
     std::string out;
+    std::string rays;
+    uint32_t modelAddress = 0;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "jobs", "write the host input buffer of one frame's primary rays (thesis driver format)");
+      "jobs", "write one frame's primary rays as host job records (thesis driver format) or as "
+              "ray records for an animated model");
   addCameraOptions(*command, options->camera, options->epsilon);
   command->add_option("--root", options->root, "root descriptor address written into each job")
       ->capture_default_str();
-  command->add_option("--out", options->out, "output job buffer")->required();
-  command->callback([options] {
-    const std::vector<TraversalJob> jobs =
-        makeFrameJobs(options->camera, options->root, options->epsilon);
-    writeJobBuffer(options->out, jobs);
-    std::cout << "wrote " << jobs.size() << " jobs (" << jobs.size() * kRecordBytes
-              << " bytes) to " << options->out << "\n";
+  CLI::Option* out = command->add_option("--out", options->out, "output job buffer");
+  CLI::Option* rays =
+      command->add_option("--rays", options->rays, "output ray buffer (world-space ray records)");
+  CLI::Option* modelAddress = command->add_option(
+      "--model-address", options->modelAddress,
+      "word address of the model header written into each ray record (see build --model-header)");
+  rays->needs(modelAddress);
+  modelAddress->needs(rays);
+  command->callback([options, out, rays] {
+    if (!*out && !*rays)
+      throw std::invalid_argument("give --out (job records), --rays (ray records) or both");
+    if (*out) {
+      const std::vector<TraversalJob> jobs =
+          makeFrameJobs(options->camera, options->root, options->epsilon);
+      writeJobBuffer(options->out, jobs);
+      reportWritten(jobs.size(), "jobs", options->out);
+    }
+    if (*rays) {
+      const std::vector<RayRecord> records =
+          makeFrameRayRecords(options->camera, options->modelAddress);
+      writeRayBuffer(options->rays, records);
+      reportWritten(records.size(), "ray records", options->rays);
+    }
   });
 }
 

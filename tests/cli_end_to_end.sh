@@ -30,6 +30,19 @@ expect_error() {  # expect_error "message part" command...
 cmp -s results.bin again.bin || fail "golden replay is not deterministic"
 [[ -s img.png && -s d.exr && -s c.png ]] || fail "images missing"
 
+# An animated model: the sphere moved by T = (10,-5,3), turned 90 degrees about y and scaled by 2,
+# seen from the default camera moved the same way, looks exactly as the unmoved sphere does.
+"$rtusim" build --scene sphere --depth 6 --out moved.svo --model-header --translate 10,-5,3 \
+  --rotate-deg 0,90,0 --scale 2,2,2 >build.txt
+header=$(sed -n 's/^model header at word \([0-9]*\)$/\1/p' build.txt)
+[[ -n $header && $(stat -c %s moved.svo) -eq $(( (header + 16) * 4 )) ]] || fail "model header"
+"$rtusim" jobs --width 32 --height 24 --camera 4.8,-2.4,6.8 --look-at 10,-5,3 --rays rays.bin \
+  --model-address "$header" | grep -q "768 ray records" || fail "jobs --rays report"
+[[ $(stat -c %s rays.bin) -eq $((32 * 24 * 32)) ]] || fail "ray buffer size"
+"$rtusim" golden --svo moved.svo --rays rays.bin --out moved.bin >moved.txt
+[[ $(grep -E "^(hits|cost)" moved.txt) == $(grep -E "^(hits|cost)" golden.txt) ]] \
+  || fail "the moved model does not look like the unmoved one"
+
 printf 'garbage' >bad.svo
 expect_error "not a multiple" "$rtusim" validate bad.svo
 printf '\x01\x00\x00\x00' >leaf_not_valid.svo  # valid=0, leaf=1 in slot 0
@@ -42,4 +55,14 @@ expect_error "three numbers" "$rtusim" render --camera 1,2
 expect_error "fraction bits" "$rtusim" golden --svo sphere.svo --jobs jobs.bin --out x.bin \
   --fraction-bits 40
 expect_error "image size" "$rtusim" jobs --width 0 --out x.bin
+expect_error "requires --model-header" "$rtusim" build --scene sphere --out x.svo --translate 1,2,3
+expect_error "scale y is 0" "$rtusim" build --scene sphere --out x.svo --model-header --scale 1,0,1
+expect_error "three numbers" "$rtusim" build --scene sphere --out x.svo --model-header --rotate-deg 1,2
+expect_error "requires --model-address" "$rtusim" jobs --rays x.bin
+expect_error "give --out" "$rtusim" jobs --width 4 --height 4
+expect_error "excludes" "$rtusim" golden --svo moved.svo --jobs jobs.bin --rays rays.bin --out x.bin
+expect_error "past the end" "$rtusim" golden --svo sphere.svo --rays rays.bin --out x.bin
+expect_error "bits 31:28" "$rtusim" golden --svo moved.svo --rays jobs.bin --out x.bin
+head -c 100 rays.bin >short_rays.bin
+expect_error "not a multiple" "$rtusim" golden --svo moved.svo --rays short_rays.bin --out x.bin
 echo "cli end-to-end: ok"

@@ -1,0 +1,79 @@
+#pragma once
+// The tag store of a set-associative cache. It holds tags only: the SVO image is read-only, so
+// the data always equals the backing store's and a timing model needs to know only which lines
+// are resident and from which cycle their data is there.
+//
+// Addresses are byte addresses. A line is allocated as soon as its miss is known, with the cycle
+// its fill completes; an access to it before then finds it "in flight" (a merged miss, counted
+// apart from the hits) and waits for that cycle. Allocation fills an empty way first, else evicts
+// by policy:
+//   LRU     the way accessed (or allocated) longest ago,
+//   FIFO    the way allocated longest ago,
+//   random  a uniformly chosen way, from std::mt19937_64 seeded with the configuration's seed.
+// Lines in flight are not protected from eviction; an evicted line's fill still takes place, for
+// nothing.
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "memory_config.h"
+
+namespace rtu {
+
+struct CacheStats {
+  uint64_t accesses = 0;  // hits + merged + misses
+  uint64_t hits = 0;      // line resident and filled
+  uint64_t merged = 0;    // line resident but still in flight
+  uint64_t misses = 0;
+  uint64_t evictions = 0;  // allocations that replaced a valid line
+};
+
+struct CacheLookup {
+  bool present = false;    // resident, filled or in flight
+  uint64_t fillCycle = 0;  // when present: the cycle the line's data is (or was) there
+};
+
+class CacheArray {
+ public:
+  // `config` must have passed validate().
+  explicit CacheArray(const CacheConfig& config);
+
+  // Looks the line of `byteAddress` up at `cycle` and, if present, makes it most recently used.
+  CacheLookup access(uint64_t byteAddress, uint64_t cycle);
+  // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
+  void allocate(uint64_t byteAddress, uint64_t fillCycle);
+  // Whether the line is resident, without counting or touching the replacement state.
+  bool contains(uint64_t byteAddress) const;
+
+  const CacheConfig& config() const { return config_; }
+  const CacheStats& stats() const { return stats_; }
+
+ private:
+  struct Way {
+    bool valid = false;
+    uint64_t line = 0;  // byte address / line size: the whole line number serves as tag
+    uint64_t fillCycle = 0;
+    // Order of the last use (LRU) or of the allocation (FIFO); the smallest is the victim.
+    uint64_t stamp = 0;
+  };
+
+  static constexpr size_t kAbsent = SIZE_MAX;
+
+  uint64_t lineOf(uint64_t byteAddress) const { return byteAddress >> lineShift_; }
+  size_t firstWayOf(uint64_t line) const { return (line & setMask_) * config_.ways; }
+  // Index in ways_ of the way holding `line`, or kAbsent.
+  size_t find(uint64_t line) const;
+  size_t victim(size_t firstWay);
+
+  CacheConfig config_;
+  int lineShift_;
+  uint64_t setMask_;
+  std::vector<Way> ways_;  // sets x ways, set-major
+  uint64_t clock_ = 0;     // source of stamps: counts accesses and allocations
+  std::mt19937_64 random_;
+  CacheStats stats_;
+};
+
+}  // namespace rtu

@@ -1,0 +1,31 @@
+#pragma once
+// Simulated time as whole clock cycles. rtusim's modules have no clock signal: a module wakes only
+// in the cycles where it has work and converts between cycles and SystemC time here.
+
+#include <cstdint>
+
+#include <systemc>
+
+namespace rtu {
+
+class CycleClock {
+ public:
+  explicit CycleClock(sc_core::sc_time period) : period_(period) {}
+
+  // Period of a clock at `megahertz`, rounded to the 1 ps time resolution.
+  static CycleClock atMegahertz(double megahertz) {
+    return CycleClock(sc_core::sc_time(1e6 / megahertz, sc_core::SC_PS));
+  }
+
+  sc_core::sc_time period() const { return period_; }
+  uint64_t now() const { return sc_core::sc_time_stamp().value() / period_.value(); }
+  // The delay from now to the start of `cycle` (a later cycle).
+  sc_core::sc_time until(uint64_t cycle) const {
+    return sc_core::sc_time::from_value(period_.value() * (cycle - now()));
+  }
+
+ private:
+  sc_core::sc_time period_;
+};
+
+}  // namespace rtu

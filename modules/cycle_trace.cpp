@@ -1,0 +1,148 @@
+#include "cycle_trace.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+namespace rtu {
+namespace {
+
+// VCD identifier codes: base-94 numbers in the printable characters '!' to '~'.
+std::string identifierCode(size_t index) {
+  std::string code;
+  do {
+    code += static_cast<char>('!' + index % 94);
+    index /= 94;
+  } while (index > 0);
+  return code;
+}
+
+std::string binary(uint64_t value, int width) {
+  std::string bits(static_cast<size_t>(width), '0');
+  for (int i = 0; i < width; ++i)
+    if (value >> i & 1) bits[static_cast<size_t>(width - 1 - i)] = '1';
+  return bits;
+}
+
+void writeValue(std::ostream& out, int width, const std::string& code, bool known,
+                uint64_t value) {
+  if (width == 1)
+    out << (known ? (value ? '1' : '0') : 'x') << code << '\n';
+  else
+    out << 'b' << (known ? binary(value, width) : std::string("x")) << ' ' << code << '\n';
+}
+
+std::vector<std::string> splitScope(const std::string& scope) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (start <= scope.size()) {
+    const size_t dot = scope.find('.', start);
+    const size_t end = dot == std::string::npos ? scope.size() : dot;
+    if (end > start) parts.push_back(scope.substr(start, end - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return parts;
+}
+
+}  // namespace
+
+CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
+  if (options_.fromCycle >= options_.toCycle)
+    throw std::invalid_argument("trace window is empty: from cycle " +
+                                std::to_string(options_.fromCycle) + " is not before " +
+                                std::to_string(options_.toCycle));
+}
+
+bool CycleTrace::scopeKept(const std::string& scope) const {
+  if (options_.scopes.empty()) return true;
+  return std::any_of(options_.scopes.begin(), options_.scopes.end(), [&](const std::string& kept) {
+    return scope.compare(0, kept.size(), kept) == 0 &&
+           (scope.size() == kept.size() || scope[kept.size()] == '.');
+  });
+}
+
+int CycleTrace::declare(const std::string& scope, const std::string& name, int width) {
+  if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
+  if (!scopeKept(scope)) return kNoSignal;
+  signals_.push_back(Signal{scope, name, identifierCode(signals_.size()), width});
+  return static_cast<int>(signals_.size() - 1);
+}
+
+void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
+  if (signal == kNoSignal || cycle >= options_.toCycle) return;
+  if (cycle >= options_.fromCycle) {
+    changes_.push_back(Change{cycle, signal, value});
+    return;
+  }
+  Signal& s = signals_[static_cast<size_t>(signal)];
+  if (!s.hasInitial || cycle >= s.initialCycle) {
+    s.hasInitial = true;
+    s.initialCycle = cycle;
+    s.initialValue = value;
+  }
+}
+
+void CycleTrace::write() const {
+  std::ofstream out(options_.path);
+  if (!out) throw std::runtime_error("cannot write trace file " + options_.path);
+  out << "$timescale 1ps $end\n";
+
+  // Declarations, nested by scope path (std::map keeps scopes together and sorted).
+  std::map<std::string, std::vector<size_t>> byScope;
+  for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
+  std::vector<std::string> open;
+  for (const auto& [scope, members] : byScope) {
+    const std::vector<std::string> path = splitScope(scope);
+    size_t common = 0;
+    while (common < open.size() && common < path.size() && open[common] == path[common]) ++common;
+    for (size_t i = open.size(); i > common; --i) out << "$upscope $end\n";
+    open.resize(common);
+    for (size_t i = common; i < path.size(); ++i) {
+      out << "$scope module " << path[i] << " $end\n";
+      open.push_back(path[i]);
+    }
+    for (size_t index : members) {
+      const Signal& s = signals_[index];
+      out << "$var wire " << s.width << ' ' << s.code << ' ' << s.name << " $end\n";
+    }
+  }
+  for (size_t i = open.size(); i > 0; --i) out << "$upscope $end\n";
+  out << "$enddefinitions $end\n";
+
+  std::vector<Change> changes = changes_;
+  std::stable_sort(changes.begin(), changes.end(),
+                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
+  std::vector<bool> known(signals_.size());
+  std::vector<uint64_t> current(signals_.size());
+  out << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
+  for (size_t i = 0; i < signals_.size(); ++i) {
+    known[i] = signals_[i].hasInitial;
+    current[i] = signals_[i].initialValue;
+    writeValue(out, signals_[i].width, signals_[i].code, known[i], current[i]);
+  }
+  out << "$end\n";
+
+  for (size_t begin = 0; begin < changes.size();) {
+    size_t end = begin;
+    while (end < changes.size() && changes[end].cycle == changes[begin].cycle) ++end;
+    // The last record of a signal in this cycle is its value; emit it if it changed.
+    std::map<int, uint64_t> settled;
+    for (size_t i = begin; i < end; ++i) settled[changes[i].signal] = changes[i].value;
+    bool stamped = false;
+    for (const auto& [signal, value] : settled) {
+      const auto index = static_cast<size_t>(signal);
+      if (known[index] && current[index] == value) continue;
+      if (!stamped) out << '#' << changes[begin].cycle * options_.periodPs << '\n';
+      stamped = true;
+      known[index] = true;
+      current[index] = value;
+      writeValue(out, signals_[index].width, signals_[index].code, true, value);
+    }
+    begin = end;
+  }
+  if (!out) throw std::runtime_error("error writing trace file " + options_.path);
+}
+
+}  // namespace rtu

@@ -1,0 +1,22 @@
+#include "dram_channel.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rtu {
+
+uint64_t DramChannel::transferCycles(uint32_t bytes) const {
+  return static_cast<uint64_t>(std::ceil(bytes / config_.bytesPerCycle));
+}
+
+uint64_t DramChannel::read(uint32_t bytes, uint64_t issueCycle) {
+  const uint64_t start = std::max(issueCycle + config_.latency, busFree_);
+  const uint64_t transfer = transferCycles(bytes);
+  busFree_ = start + transfer;
+  ++stats_.reads;
+  stats_.bytes += bytes;
+  stats_.busyCycles += transfer;
+  return busFree_;
+}
+
+}  // namespace rtu

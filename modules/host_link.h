@@ -1,0 +1,38 @@
+#pragma once
+// Pacing of a host stream (the thesis' AXI DMA, about 300 MB/s at 100 MHz: 3 bytes per cycle).
+// One 32-byte record crosses at most every 32 / bytesPerCycle cycles after the previous one; 0
+// means unlimited (a record every cycle, the thesis configuration of the exactness claim). For
+// tests, a seeded random pattern makes the link inactive in some cycles (back-pressure).
+
+#include <cstdint>
+#include <random>
+
+namespace rtu {
+
+constexpr uint64_t kHostRecordBytes = 32;  // 8 words, input and output alike
+
+struct HostLinkConfig {
+  double bytesPerCycle = 0.0;       // 0: unlimited
+  double activeProbability = 1.0;   // chance the link can move a record in a given cycle
+  uint64_t seed = 1;
+};
+
+class HostLinkPacer {
+ public:
+  explicit HostLinkPacer(HostLinkConfig config);
+
+  // The first cycle a record may cross after one crossed in `cycle`.
+  uint64_t nextAllowed(uint64_t cycle);
+  bool random() const { return config_.activeProbability < 1.0; }
+  // Draws whether the link is active in a cycle (only when random()); one draw per cycle asked.
+  bool drawActive();
+
+ private:
+  HostLinkConfig config_;
+  double earliest_ = 0.0;  // fractional cycle the next record may cross
+  std::mt19937_64 generator_;
+};
+
+void validate(const HostLinkConfig& config, const char* which);
+
+}  // namespace rtu

@@ -1,0 +1,68 @@
+#pragma once
+// The memory the traversal cores read (thesis 6.2.5 used a combinational ROM): either `ideal` (the
+// word in the same cycle, the thesis configuration) or an L1 per core in front of a shared L2 and
+// DRAM (memory_config.h; timing in l1_cache_timing.h and l2_cache_timing.h). The caches hold tags
+// only: the words come from the scene's image, so the model holds nothing the scene does not use.
+//
+// L1 lookups happen in the core's own (run-ahead) cycle, since only that core touches its L1.
+// Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
+// round-robin over the cores, starting after the core served last.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <systemc>
+
+#include "core_memory_if.h"
+#include "cycle_clock.h"
+#include "cycle_trace.h"
+#include "l1_cache_timing.h"
+#include "l2_cache_timing.h"
+#include "memory_config.h"
+#include "svo_memory.h"
+
+namespace rtu {
+
+class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
+ public:
+  MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, SvoMemory backing,
+               MemoryConfig config, int cores, CycleTrace* trace);
+
+  uint32_t word(uint32_t address) const override { return backing_.read(address); }
+  MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
+  void requestShared(int core, uint32_t address) override;
+  uint64_t sharedReplyCycle(int core) const override { return cores_[static_cast<size_t>(core)].replyCycle; }
+  const sc_core::sc_event& sharedReplied(int core) const override {
+    return *cores_[static_cast<size_t>(core)].replied;
+  }
+
+  bool ideal() const { return config_.ideal; }
+  const MemoryConfig& config() const { return config_; }
+  CacheStats l1Statistics(int core) const { return cores_[static_cast<size_t>(core)].l1->stats(); }
+  L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }
+
+ private:
+  struct CorePort {
+    std::unique_ptr<L1CacheTiming> l1;
+    std::unique_ptr<sc_core::sc_event> replied;
+    uint32_t pendingAddress = 0;
+    uint64_t replyCycle = 0;
+    int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
+  };
+
+  void serveShared();
+
+  const CycleClock& clock_;
+  SvoMemory backing_;
+  MemoryConfig config_;
+  std::vector<CorePort> cores_;
+  std::unique_ptr<L2CacheTiming> l2_;
+  std::vector<int> queue_;
+  int nextPriority_ = 0;
+  sc_core::sc_event requested_;
+  CycleTrace* trace_;
+  int l2HitSignal_ = CycleTrace::kNoSignal, l2MissSignal_ = CycleTrace::kNoSignal;
+};
+
+}  // namespace rtu

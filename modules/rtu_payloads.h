@@ -1,0 +1,35 @@
+#pragma once
+// What travels over the RTU's ready-valid channels. `sequence` numbers jobs in the order the host
+// submitted them; it is simulation bookkeeping (statistics, the reorder buffer), not an RTL field.
+
+#include <array>
+#include <cstdint>
+
+#include "traversal_job.h"
+
+namespace rtu {
+
+// A host input record: the thesis driver's t-value record.
+struct HostJob {
+  uint64_t sequence = 0;
+  TraversalJob job;
+};
+
+// The RTL's job_t: t-values converted to fixed point by the job manager.
+struct CoreJob {
+  uint64_t sequence = 0;
+  uint32_t idWord = 0;
+  uint8_t a = 0;
+  std::array<int64_t, 3> t0{}, t1{};
+  uint32_t root = 0;
+  uint64_t pendingSince = 0;  // cycle the job reached the job manager's output
+};
+
+// The RTL's result_t, tagged with the core that produced it.
+struct CoreResult {
+  uint64_t sequence = 0;
+  int core = 0;
+  TraversalResult result;
+};
+
+}  // namespace rtu

@@ -1,0 +1,113 @@
+#include "scheduler.h"
+
+#include <stdexcept>
+
+namespace rtu {
+
+SchedulerPolicy parseSchedulerPolicy(const std::string& name) {
+  if (name == "cfa") return SchedulerPolicy::CyclicFirstAvailable;
+  if (name == "rr") return SchedulerPolicy::RoundRobin;
+  if (name == "fa") return SchedulerPolicy::FirstAvailable;
+  throw std::invalid_argument("unknown scheduler '" + name +
+                              "': choose cfa (cyclic first-available), rr (round-robin) or fa "
+                              "(first-available)");
+}
+
+const char* toString(SchedulerPolicy policy) {
+  switch (policy) {
+    case SchedulerPolicy::CyclicFirstAvailable: return "cfa";
+    case SchedulerPolicy::RoundRobin: return "rr";
+    case SchedulerPolicy::FirstAvailable: return "fa";
+  }
+  return "?";
+}
+
+Scheduler::Scheduler(sc_core::sc_module_name name, const CycleClock& clock, SchedulerPolicy policy)
+    : sc_core::sc_module(name), clock_(clock), policy_(policy), wake_(clock) {}
+
+void Scheduler::end_of_elaboration() {
+  coreCount_ = cores.size();
+  std::vector<const sc_core::sc_event*> coreReadiness;
+  for (int i = 0; i < coreCount_; ++i) coreReadiness.push_back(&cores[i]->readyChanged());
+  spawnMethod("evaluate", [this] { evaluate(); },
+              {&in->edge(), &in->offerChanged(), &wake_.event()}, coreReadiness);
+}
+
+void Scheduler::evaluate() {
+  const uint64_t now = clock_.now();
+  takeTransfer(now);
+  // Until the job manager writes again in this cycle, its levels still show the job just taken.
+  const bool pending = in->valid() && in->payload().sequence != dispatchedSequence_;
+  uint64_t wakeCycle = 0;
+  const int core = pending ? choose(now, wakeCycle) : kNone;
+  if (pending) notePending(now);
+  dispatch(core);
+  if (core == kNone && wakeCycle > now) wake_.at(wakeCycle);
+}
+
+void Scheduler::takeTransfer(uint64_t now) {
+  if (handledCycle_ == now) return;
+  handledCycle_ = now;
+  if (now == 0 || !in->transferredIn(now - 1)) return;
+  const CoreJob& job = in->transferred();
+  const uint64_t wait = now - 1 - job.pendingSince;
+  ++statistics_.jobs;
+  ++statistics_.waitHistogram[wait];
+  statistics_.maxWait = std::max(statistics_.maxWait, wait);
+  if (readyAtPending_)
+    statistics_.maxWaitWithReadyCore = std::max(statistics_.maxWaitWithReadyCore, wait);
+  if (policy_ == SchedulerPolicy::RoundRobin) nextInLine_ = (target_ + 1) % coreCount_;
+  dispatchedSequence_ = job.sequence;
+  dispatch(kNone);
+}
+
+// Pending since this cycle: record whether some core was ready, the condition of eq. 6.7. Core
+// levels can still settle in later deltas of the cycle, so the note is revised within it.
+void Scheduler::notePending(uint64_t now) {
+  const CoreJob& job = in->payload();
+  if (job.sequence == notedSequence_ && job.pendingSince != now) return;
+  notedSequence_ = job.sequence;
+  readyAtPending_ = anyCoreReady();
+}
+
+bool Scheduler::anyCoreReady() const {
+  for (int i = 0; i < coreCount_; ++i)
+    if (cores[i]->ready()) return true;
+  return false;
+}
+
+int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
+  switch (policy_) {
+    case SchedulerPolicy::CyclicFirstAvailable: {
+      const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
+      int best = coreCount_;
+      for (int i = 0; i < coreCount_; ++i) {
+        if (!cores[i]->ready()) continue;
+        best = std::min(best, (i - selected + coreCount_) % coreCount_);
+      }
+      if (best == 0) return selected;
+      if (best < coreCount_) wakeCycle = now + static_cast<uint64_t>(best);
+      return kNone;
+    }
+    case SchedulerPolicy::RoundRobin:
+      return cores[nextInLine_]->ready() ? nextInLine_ : kNone;
+    case SchedulerPolicy::FirstAvailable:
+      for (int i = 0; i < coreCount_; ++i)
+        if (cores[i]->ready()) return i;
+      return kNone;
+  }
+  return kNone;
+}
+
+void Scheduler::dispatch(int core) {
+  const bool sameOffer = core == target_ && (core == kNone || offeredSequence_ == in->payload().sequence);
+  if (sameOffer) return;
+  if (target_ != kNone) cores[target_]->withdraw();
+  target_ = core;
+  in->setReady(core != kNone);
+  if (core == kNone) return;
+  offeredSequence_ = in->payload().sequence;
+  cores[core]->offer(in->payload());
+}
+
+}  // namespace rtu

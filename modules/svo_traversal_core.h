@@ -1,0 +1,81 @@
+#pragma once
+// The SVO traversal core (thesis 6.2.3, appendix C.4) with the BLOCKED state the thesis proposes
+// for memory that does not answer in the same cycle. The state machine is golden/traversal_core.h,
+// shared with the golden model; this module only decides when each state happens.
+//
+// Nothing outside the core can observe it between taking a job and offering the result, except
+// its reads of a shared memory level. So the core runs ahead: on the job handshake it steps the
+// state machine through as many cycles as it can in one activation (all of them with ideal
+// memory), sleeps until the cycle its result is due or a shared read must be made, and records
+// each state in its own cycle for the VCD trace.
+//
+// A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
+// BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
+// in the result counts every cycle from INIT to the last before OUT, blocked ones included.
+
+#include <cstdint>
+
+#include <systemc>
+
+#include "core_memory_if.h"
+#include "cycle_clock.h"
+#include "cycle_trace.h"
+#include "module_process.h"
+#include "ready_valid.h"
+#include "rtu_payloads.h"
+#include "traversal_core.h"
+
+namespace rtu {
+
+// VCD encoding of the core state: CoreState's values, and this one for BLOCKED.
+constexpr uint64_t kBlockedStateCode = 7;
+
+struct CoreStatistics {
+  uint64_t jobs = 0;
+  uint64_t busyCycles = 0;     // INIT, EVAL, NEXT, PUSH, POP
+  uint64_t blockedCycles = 0;  // BLOCKED
+  uint64_t outCycles = 0;      // OUT: result waiting for the result manager
+  uint64_t stackOverflows = 0;
+};
+
+class SvoTraversalCore : public sc_core::sc_module {
+ public:
+  sc_core::sc_port<ReadyValidIn<CoreJob>> in;
+  sc_core::sc_port<ReadyValidOut<CoreResult>> out;
+  sc_core::sc_port<CoreMemoryIf> memory;
+
+  SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock, int index,
+                   FixedFormat format, int stackFrames, CycleTrace* trace);
+
+  const CoreStatistics& statistics() const { return statistics_; }
+
+ private:
+  enum class Phase { Idle, Running, AwaitingShared, Out };
+
+  void end_of_elaboration() override;
+  void evaluate();
+  void start(uint64_t now);
+  void run();
+  void resumeAfterSharedRead();
+  void consumeWordIn(uint64_t dataCycle);
+  void offerResult();
+  void handOver(uint64_t now);
+  void traceState(uint64_t cycle, uint64_t code);
+
+  const CycleClock& clock_;
+  int index_;
+  TraversalCore<FixedArith> core_;
+  Phase phase_ = Phase::Idle;
+  CoreJob job_;
+  uint64_t localCycle_ = 0;  // the cycle the core's current state executes in
+  uint64_t outCycle_ = 0;
+  uint64_t blocked_ = 0;     // blocked cycles of the current job
+  uint32_t sharedAddress_ = 0;
+  bool sharedRequested_ = false;
+  CycleWake wake_;
+  CycleTrace* trace_;
+  int stateSignal_ = CycleTrace::kNoSignal, stackSignal_ = CycleTrace::kNoSignal;
+  CoreStatistics statistics_;
+};
+
+}  // namespace rtu

@@ -1,0 +1,43 @@
+#pragma once
+// Everything that configures one simulated RTU. The defaults are the thesis configuration: 16
+// cores, cyclic first-available scheduling, ideal memory, Q16.16 with the RTL's conversion, an
+// 11-frame stack, unlimited host links, results in completion order, 100 MHz.
+
+#include <optional>
+
+#include "cycle_trace.h"
+#include "golden_model.h"
+#include "host_link.h"
+#include "job_manager.h"
+#include "memory_config.h"
+#include "scheduler.h"
+
+namespace rtu {
+
+struct RtuConfig {
+  int cores = 16;
+  SchedulerPolicy scheduler = SchedulerPolicy::CyclicFirstAvailable;
+  MemoryConfig memory = idealMemory();
+  JobManagerConfig jobManager;
+  int stackFrames = kRtlStackFrames;
+  HostLinkConfig hostInput, hostOutput;
+  int reorderCapacity = 0;  // 0: no reorder buffer
+  double clockMhz = 100.0;
+  std::optional<TraceOptions> trace;
+
+  static MemoryConfig idealMemory() {
+    MemoryConfig memory;
+    memory.ideal = true;
+    return memory;
+  }
+  GoldenConfig golden() const {
+    return GoldenConfig{jobManager.format, jobManager.conversion, stackFrames};
+  }
+};
+
+// Throws std::invalid_argument with a message naming the setting for impossible configurations.
+void validate(const RtuConfig& config);
+
+constexpr int kMaxCores = 1024;
+
+}  // namespace rtu

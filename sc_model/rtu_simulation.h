@@ -1,0 +1,33 @@
+#pragma once
+// Runs one RTU simulation to completion: elaborates a fresh SystemC kernel, feeds the jobs from the
+// first cycle after reset and returns what the host received. Several runs may follow each other
+// in one process (tests, sweeps); they do not share any kernel state.
+
+#include <cstdint>
+#include <vector>
+
+#include "rtu_config.h"
+#include "rtu_statistics.h"
+#include "svo_memory.h"
+#include "traversal_job.h"
+
+namespace rtu {
+
+struct RtuRun {
+  std::vector<TraversalResult> results;  // in the order the host received them
+  std::vector<uint64_t> jobIndices;      // the job each result answers
+  std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
+  // From the first cycle after reset up to and including the cycle the last result is taken.
+  uint64_t totalCycles = 0;
+  RtuStatistics statistics;
+};
+
+// Throws std::invalid_argument for impossible configurations and std::runtime_error when the
+// simulation ends without every result (which would be a model defect).
+RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                   const RtuConfig& config);
+
+// Results ordered by job index, as the golden model returns them.
+std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run);
+
+}  // namespace rtu

@@ -1,0 +1,166 @@
+#include "rtu_statistics.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <ostream>
+
+#include "rtu_top.h"
+
+namespace rtu {
+namespace {
+
+double ratio(uint64_t part, uint64_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+nlohmann::json cacheJson(const CacheStats& stats) {
+  return {{"accesses", stats.accesses}, {"hits", stats.hits},       {"merged", stats.merged},
+          {"misses", stats.misses},     {"evictions", stats.evictions},
+          {"hit_rate", ratio(stats.hits + stats.merged, stats.accesses)}};
+}
+
+CacheStats sum(const std::vector<CacheStats>& all) {
+  CacheStats total;
+  for (const CacheStats& s : all) {
+    total.accesses += s.accesses;
+    total.hits += s.hits;
+    total.merged += s.merged;
+    total.misses += s.misses;
+    total.evictions += s.evictions;
+  }
+  return total;
+}
+
+}  // namespace
+
+double RtuStatistics::cyclesPerRay() const { return rays == 0 ? 0.0 : ratio(totalCycles, rays); }
+double RtuStatistics::raysPerSecond() const {
+  return totalCycles == 0 ? 0.0 : static_cast<double>(rays) * clockMhz * 1e6 / static_cast<double>(totalCycles);
+}
+double RtuStatistics::framesPerSecond() const {
+  return totalCycles == 0 ? 0.0 : clockMhz * 1e6 / static_cast<double>(totalCycles);
+}
+double RtuStatistics::dramBytesPerCycle() const { return ratio(l2.dram.bytes, totalCycles); }
+double RtuStatistics::simulatedRaysPerHostSecond() const {
+  return hostSeconds > 0.0 ? static_cast<double>(rays) / hostSeconds : 0.0;
+}
+uint64_t RtuStatistics::idleCycles(const CoreStatistics& core) const {
+  return totalCycles - std::min(totalCycles, core.busyCycles + core.blockedCycles + core.outCycles);
+}
+int64_t RtuStatistics::waitBound() const {
+  if (scheduler == "cfa") return cores - 1;
+  if (scheduler == "fa") return 0;
+  return -1;
+}
+
+nlohmann::json RtuStatistics::toJson() const {
+  nlohmann::json coresJson = nlohmann::json::array();
+  uint64_t busy = 0, blocked = 0;
+  for (size_t i = 0; i < coreTimes.size(); ++i) {
+    const CoreStatistics& c = coreTimes[i];
+    busy += c.busyCycles;
+    blocked += c.blockedCycles;
+    nlohmann::json core = {{"core", i},          {"jobs", c.jobs},
+                           {"idle", idleCycles(c)}, {"busy", c.busyCycles},
+                           {"blocked", c.blockedCycles}, {"out", c.outCycles}};
+    if (!idealMemory) core["l1"] = cacheJson(l1[i]);
+    coresJson.push_back(core);
+  }
+  nlohmann::json histogram = nlohmann::json::object();
+  for (const auto& [wait, jobs] : waitHistogram) histogram[std::to_string(wait)] = jobs;
+  nlohmann::json json = {
+      {"rays", rays},
+      {"total_cycles", totalCycles},
+      {"cycles_per_ray", cyclesPerRay()},
+      {"clock_mhz", clockMhz},
+      {"rays_per_second", raysPerSecond()},
+      {"frames_per_second", framesPerSecond()},
+      {"cores", coresJson},
+      {"blocked_share", ratio(blocked, busy + blocked)},
+      {"stack_overflows", stackOverflows},
+      {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
+      {"scheduler",
+       {{"policy", scheduler},
+        {"wait_histogram", histogram},
+        {"max_wait", maxWait},
+        {"max_wait_with_ready_core", maxWaitWithReadyCore},
+        {"eq_6_7_bound", waitBound() < 0 ? nlohmann::json("W_J") : nlohmann::json(waitBound())}}},
+      {"result_manager", {{"max_buffers_full", resultBuffersMaxFull}}},
+      {"memory", {{"kind", idealMemory ? "ideal" : "cached"}}},
+      {"simulation", {{"host_seconds", hostSeconds},
+                      {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
+  if (reorderMaxOccupancy > 0) json["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
+  if (!idealMemory) {
+    json["memory"]["l1"] = cacheJson(sum(l1));
+    json["memory"]["l2"] = cacheJson(l2.cache);
+    json["memory"]["l2"]["port_queue_cycles"] = l2.portQueueCycles;
+    json["memory"]["l2"]["mshr_queue_cycles"] = l2.mshrQueueCycles;
+    json["memory"]["dram"] = {{"reads", l2.dram.reads},
+                              {"bytes", l2.dram.bytes},
+                              {"busy_cycles", l2.dram.busyCycles},
+                              {"bytes_per_cycle", dramBytesPerCycle()},
+                              {"bandwidth_mb_per_second", dramBytesPerCycle() * clockMhz}};
+  }
+  return json;
+}
+
+void RtuStatistics::writeReport(std::ostream& out) const {
+  out << std::fixed << std::setprecision(2);
+  out << "rays " << rays << ", total cycles " << totalCycles << " (" << cyclesPerRay()
+      << " per ray)\n";
+  out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, "
+      << framesPerSecond() << " frames/s\n";
+  uint64_t busy = 0, blocked = 0, out_ = 0, idle = 0;
+  for (const CoreStatistics& c : coreTimes) {
+    busy += c.busyCycles;
+    blocked += c.blockedCycles;
+    out_ += c.outCycles;
+    idle += idleCycles(c);
+  }
+  const uint64_t all = busy + blocked + out_ + idle;
+  out << "core time (" << cores << " cores): busy " << 100 * ratio(busy, all) << " %, blocked "
+      << 100 * ratio(blocked, all) << " %, waiting to hand over " << 100 * ratio(out_, all)
+      << " %, idle " << 100 * ratio(idle, all) << " %\n";
+  out << "scheduler " << scheduler << ": max wait " << maxWait << " cycles, "
+      << maxWaitWithReadyCore << " with a core ready (eq. 6.7 bound: "
+      << (waitBound() < 0 ? std::string("W_J") : std::to_string(waitBound())) << ")\n";
+  if (!idealMemory) {
+    const CacheStats l1Total = sum(l1);
+    out << "L1 hit rate " << 100 * ratio(l1Total.hits + l1Total.merged, l1Total.accesses)
+        << " % of " << l1Total.accesses << " reads; L2 hit rate "
+        << 100 * ratio(l2.cache.hits + l2.cache.merged, l2.cache.accesses) << " % of "
+        << l2.cache.accesses << "; DRAM " << l2.dram.bytes << " bytes ("
+        << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
+  }
+  if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
+  out << "simulated in " << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
+      << " M rays per host second)\n";
+}
+
+RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles) {
+  RtuStatistics stats;
+  stats.rays = top.sink().results().size();
+  stats.totalCycles = totalCycles;
+  stats.clockMhz = config.clockMhz;
+  stats.cores = config.cores;
+  stats.scheduler = toString(config.scheduler);
+  for (const auto& core : top.cores()) {
+    stats.coreTimes.push_back(core->statistics());
+    stats.stackOverflows += core->statistics().stackOverflows;
+  }
+  stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
+  const SchedulerStatistics& scheduler = top.scheduler().statistics();
+  stats.waitHistogram = scheduler.waitHistogram;
+  stats.maxWait = scheduler.maxWait;
+  stats.maxWaitWithReadyCore = scheduler.maxWaitWithReadyCore;
+  stats.resultBuffersMaxFull = top.resultManager().statistics().maxBuffered;
+  if (top.reorderBuffer()) stats.reorderMaxOccupancy = top.reorderBuffer()->statistics().maxOccupancy;
+  stats.idealMemory = top.memory().ideal();
+  if (!stats.idealMemory) {
+    for (int i = 0; i < config.cores; ++i) stats.l1.push_back(top.memory().l1Statistics(i));
+    stats.l2 = top.memory().l2Statistics();
+  }
+  return stats;
+}
+
+}  // namespace rtu

@@ -1,0 +1,53 @@
+#pragma once
+// What a simulated run measured: the readable report and the JSON of `--stats`.
+
+#include <cstdint>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "l2_cache_timing.h"
+#include "rtu_config.h"
+#include "svo_traversal_core.h"
+
+namespace rtu {
+
+class RtuTop;
+
+struct RtuStatistics {
+  uint64_t rays = 0;
+  uint64_t totalCycles = 0;
+  double clockMhz = 100.0;
+  int cores = 0;
+  std::string scheduler;
+  std::vector<CoreStatistics> coreTimes;
+  uint64_t jobManagerStallCycles = 0;
+  std::map<uint64_t, uint64_t> waitHistogram;
+  uint64_t maxWait = 0, maxWaitWithReadyCore = 0;
+  uint64_t resultBuffersMaxFull = 0;
+  uint64_t reorderMaxOccupancy = 0;
+  bool idealMemory = true;
+  std::vector<CacheStats> l1;
+  L2Stats l2;
+  uint64_t stackOverflows = 0;
+  double hostSeconds = 0.0;
+
+  double cyclesPerRay() const;
+  double raysPerSecond() const;    // at the simulated clock
+  double framesPerSecond() const;  // the run's rays as one frame
+  double dramBytesPerCycle() const;
+  double simulatedRaysPerHostSecond() const;
+  uint64_t idleCycles(const CoreStatistics& core) const;
+  // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
+  int64_t waitBound() const;
+
+  nlohmann::json toJson() const;
+  void writeReport(std::ostream& out) const;
+};
+
+RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles);
+
+}  // namespace rtu

@@ -1,0 +1,62 @@
+#pragma once
+// The RTU of thesis figure 6.1 (appendix C.1) with its host: source -> job manager -> scheduler ->
+// N traversal cores (reading the memory system) -> result manager [-> reorder buffer] -> sink,
+// every arrow a ready-valid channel.
+
+#include <memory>
+#include <vector>
+
+#include <systemc>
+
+#include "cycle_clock.h"
+#include "cycle_trace.h"
+#include "host_sink.h"
+#include "host_source.h"
+#include "job_manager.h"
+#include "memory_system.h"
+#include "ready_valid.h"
+#include "reorder_buffer.h"
+#include "result_manager.h"
+#include "rtu_config.h"
+#include "scheduler.h"
+#include "svo_traversal_core.h"
+
+namespace rtu {
+
+class RtuTop : public sc_core::sc_module {
+ public:
+  // `memory` and the trace must outlive the top; `trace` may be null.
+  RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
+         std::vector<TraversalJob> jobs, CycleTrace* trace);
+
+  const CycleClock& clock() const { return clock_; }
+  const HostSink& sink() const { return *sink_; }
+  const JobManager& jobManager() const { return *jobManager_; }
+  const Scheduler& scheduler() const { return *scheduler_; }
+  const MemorySystem& memory() const { return *memory_; }
+  const std::vector<std::unique_ptr<SvoTraversalCore>>& cores() const { return cores_; }
+  const ResultManager& resultManager() const { return *resultManager_; }
+  const ReorderBuffer* reorderBuffer() const { return reorderBuffer_.get(); }
+
+ private:
+  template <class Payload>
+  using Channel = ReadyValid<Payload>;
+
+  CycleClock clock_;
+  std::unique_ptr<Channel<HostJob>> hostJobs_;
+  std::unique_ptr<Channel<CoreJob>> pendingJobs_;
+  std::vector<std::unique_ptr<Channel<CoreJob>>> coreJobs_;
+  std::vector<std::unique_ptr<Channel<CoreResult>>> coreResults_;
+  std::unique_ptr<Channel<CoreResult>> managedResults_, orderedResults_;
+
+  std::unique_ptr<HostSource> source_;
+  std::unique_ptr<JobManager> jobManager_;
+  std::unique_ptr<Scheduler> scheduler_;
+  std::unique_ptr<MemorySystem> memory_;
+  std::vector<std::unique_ptr<SvoTraversalCore>> cores_;
+  std::unique_ptr<ResultManager> resultManager_;
+  std::unique_ptr<ReorderBuffer> reorderBuffer_;
+  std::unique_ptr<HostSink> sink_;
+};
+
+}  // namespace rtu

@@ -1,0 +1,46 @@
+// The cycle-accurate SystemC model against the golden model (per-ray results) and against the
+// naive per-cycle transcription of the RTL (total cycles and the cycle of every result).
+
+#include <catch2/catch.hpp>
+
+#include "camera.h"
+#include "golden_model.h"
+#include "procedural_scenes.h"
+#include "rtl_cycle_model.h"
+#include "rtu_simulation.h"
+#include "svo_builder.h"
+
+namespace rtu {
+namespace {
+
+struct SceneJobs {
+  SvoBuild build;
+  std::vector<TraversalJob> jobs;
+};
+
+SceneJobs smallFrame(const std::string& scene, int width, int height) {
+  SceneJobs s{buildSvo(*makeProceduralScene(scene, 6)), {}};
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  s.jobs = makeFrameJobs(camera, s.build.image.root);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("Thesis configuration: results and every cycle equal the RTL", "[rtu]") {
+  const auto scene = GENERATE(as<std::string>{}, "sphere", "menger", "terrain", "noise");
+  const int cores = GENERATE(1, 2, 4, 16);
+  const SceneJobs s = smallFrame(scene, 24, 16);
+  RtuConfig config;
+  config.cores = cores;
+  const RtuRun run = simulateRtu(s.build.image.memory(), s.jobs, config);
+  const RtlTopRun rtl = runRtlTop(s.build.image.memory(), s.jobs, RtlTopConfig{cores, config.golden()});
+  INFO(scene << ", " << cores << " cores");
+  CHECK(run.totalCycles == rtl.totalCycles);
+  CHECK(run.arrivalCycles == rtl.resultCycles);
+  CHECK(run.results == rtl.results);
+}
+
+}  // namespace rtu
