@@ -110,6 +110,8 @@ class ReadyValid : public sc_core::sc_prim_channel,
     trace_ = &trace;
     validSignal_ = trace.declare(scope, "valid", 1);
     readySignal_ = trace.declare(scope, "ready", 1);
+    trace.record(validSignal_, 0, 0);
+    trace.record(readySignal_, 0, 0);
   }
 
  private:

@@ -8,18 +8,62 @@
 #include "frame_images.h"
 #include "golden_model.h"
 #include "result_summary.h"
+#include "rtu_options.h"
+#include "rtu_simulation.h"
 
 namespace rtu {
+namespace {
+
+struct RenderOptions {
+  FrameOptions frame;
+  RtuOptions rtu;
+  std::string model = "systemc";
+  std::string image, depthImage, costImage;
+};
+
+std::vector<TraversalResult> traceWithGolden(const Scene& scene,
+                                             const std::vector<TraversalJob>& jobs,
+                                             const RenderOptions& options) {
+  GoldenModel model(scene.image.memory(), options.frame.config);
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<TraversalResult> results = model.traceAll(jobs);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char host[128];
+  std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
+                results.size() / seconds / 1e6);
+  std::cout << ResultSummary::of(results).describe() << host;
+  return results;
+}
+
+std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
+                                              const std::vector<TraversalJob>& jobs,
+                                              const RenderOptions& options) {
+  const RtuConfig config = options.rtu.resolve(options.frame.config);
+  validate(config);
+  checkStackDepth(scene.image, jobs, config.stackFrames, options.rtu.allowStackOverflow);
+  const RtuRun run = simulateRtu(scene.image.memory(), jobs, config);
+  std::vector<TraversalResult> results = resultsInJobOrder(run);
+  std::cout << ResultSummary::of(results).describe();
+  reportRun(run, options.rtu, std::cout);
+  if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+  return results;
+}
+
+}  // namespace
 
 void addRenderCommand(CLI::App& app) {
-  struct Options {
-    FrameOptions frame;
-    std::string image, depthImage, costImage;
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand(
-      "render", "render one frame of primary rays with the golden model and report it");
+      "render", "render one frame of primary rays on the cycle-accurate RTU model (or the golden "
+                "model) and report it");
   addFrameOptions(*command, options->frame);
+  addRtuOptions(*command, options->rtu);
+  command->add_option("--model", options->model,
+                      "systemc (cycle-accurate, with statistics and frame rate) or golden "
+                      "(untimed, bit-exact)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"systemc", "golden"}));
   command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
   command->add_option("--depth-image", options->depthImage,
                       "depth image: float t in EXR/TIFF, grey levels otherwise");
@@ -29,27 +73,21 @@ void addRenderCommand(CLI::App& app) {
     const Scene scene = loadScene(options->frame.scene);
     const std::vector<TraversalJob> jobs =
         makeFrameJobs(options->frame.camera, scene.image.root, options->frame.epsilon);
-    GoldenModel model(scene.image.memory(), options->frame.config);
-    const auto start = std::chrono::steady_clock::now();
-    const std::vector<TraversalResult> results = model.traceAll(jobs);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
+    std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
+              << "model       " << options->model << ", "
+              << options->frame.config.format.describe() << ", "
+              << toString(options->frame.config.conversion) << " conversion, "
+              << options->frame.config.stackFrames << " stack frames\n"
+              << "frame       " << options->frame.camera.width << "x"
+              << options->frame.camera.height << "\n";
+    const std::vector<TraversalResult> results = options->model == "golden"
+                                                     ? traceWithGolden(scene, jobs, *options)
+                                                     : traceWithSystemC(scene, jobs, *options);
     const RenderedFrame rendered =
         RenderedFrame::fromResults(options->frame.camera, options->frame.config.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
     if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);
-
-    char host[128];
-    std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n",
-                  seconds, results.size() / seconds / 1e6);
-    std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "model       golden, " << options->frame.config.format.describe() << ", "
-              << toString(options->frame.config.conversion) << " conversion, "
-              << options->frame.config.stackFrames << " stack frames\n"
-              << "frame       " << options->frame.camera.width << "x" << options->frame.camera.height << "\n"
-              << ResultSummary::of(results).describe() << host;
     for (const std::string* path : {&options->image, &options->depthImage, &options->costImage})
       if (!path->empty()) std::cout << "wrote       " << *path << "\n";
   });

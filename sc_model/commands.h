@@ -10,6 +10,7 @@ void addValidateCommand(CLI::App& app);
 void addJobsCommand(CLI::App& app);
 void addGoldenCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addReplayCommand(CLI::App& app);
 void addAccuracyCommand(CLI::App& app);
 
 }  // namespace rtu

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   rtu::addValidateCommand(app);
   rtu::addJobsCommand(app);
   rtu::addGoldenCommand(app);
+  rtu::addReplayCommand(app);
   rtu::addRenderCommand(app);
   rtu::addAccuracyCommand(app);
   try {
