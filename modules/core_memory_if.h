@@ -8,6 +8,8 @@
 
 #include <systemc>
 
+#include "svo_memory.h"
+
 namespace rtu {
 
 struct MemoryReply {
@@ -17,8 +19,11 @@ struct MemoryReply {
 
 class CoreMemoryIf : public virtual sc_core::sc_interface {
  public:
-  // The word itself, from the backing store (timing is the other calls' business).
-  virtual uint32_t word(uint32_t address) const = 0;
+  // The words themselves (timing is the other calls' business).
+  virtual const SvoMemory& backingStore() const = 0;
+  // True for the thesis' combinational ROM: every word is there in the cycle it is read, so a
+  // core need not ask lookup().
+  virtual bool combinational() const = 0;
   // A read the core issues in `cycle` (its own, possibly ahead of simulated time).
   virtual MemoryReply lookup(int core, uint32_t address, uint64_t cycle) = 0;
   // The shared request lookup() asked for, made in the current cycle; `sharedReplied(core)` is

@@ -5,8 +5,12 @@
 namespace rtu {
 
 HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock,
-                       std::vector<TraversalJob> jobs, HostLinkConfig link)
-    : sc_core::sc_module(name), clock_(clock), jobs_(std::move(jobs)), pacer_(link), wake_(clock) {
+                       std::vector<HostRecord> records, HostLinkConfig link)
+    : sc_core::sc_module(name),
+      clock_(clock),
+      records_(std::move(records)),
+      pacer_(link),
+      wake_(clock) {
   validate(link, "host input");
 }
 
@@ -22,9 +26,9 @@ void HostSource::evaluate() {
     offering_ = false;
     out->withdraw();
   }
-  if (next_ == jobs_.size()) return;  // nothing left: no more activations
+  if (next_ == records_.size()) return;  // nothing left: no more activations
   if (!offering_ && now >= allowedFrom_ && (!pacer_.random() || pacer_.drawActive())) {
-    out->offer(HostJob{next_, jobs_[next_]});
+    out->offer(HostJob{next_, records_[next_]});
     offering_ = true;
   }
   if (!offering_) wake_.at(std::max(now + 1, allowedFrom_));

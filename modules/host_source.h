@@ -20,7 +20,7 @@ class HostSource : public sc_core::sc_module {
   sc_core::sc_port<ReadyValidOut<HostJob>> out;
 
   HostSource(sc_core::sc_module_name name, const CycleClock& clock,
-             std::vector<TraversalJob> jobs, HostLinkConfig link);
+             std::vector<HostRecord> records, HostLinkConfig link);
 
   uint64_t sent() const { return next_; }
 
@@ -29,7 +29,7 @@ class HostSource : public sc_core::sc_module {
   void evaluate();
 
   const CycleClock& clock_;
-  std::vector<TraversalJob> jobs_;
+  std::vector<HostRecord> records_;
   HostLinkPacer pacer_;
   uint64_t next_ = 0;        // index of the job offered or to be offered
   uint64_t allowedFrom_ = 0;

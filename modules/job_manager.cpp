@@ -1,16 +1,20 @@
 #include "job_manager.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace rtu {
 
 JobManager::JobManager(sc_core::sc_module_name name, const CycleClock& clock,
-                       JobManagerConfig config)
-    : sc_core::sc_module(name), clock_(clock), config_(config), wake_(clock) {
-  if (config_.stages < 1 || config_.stages > 64)
-    throw std::invalid_argument("job manager pipeline must have 1 to 64 stages, got " +
-                                std::to_string(config_.stages));
+                       JobManagerConfig config, SvoMemory memory)
+    : sc_core::sc_module(name), clock_(clock), config_(config), memory_(memory), wake_(clock) {
+  if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
+    throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
+                                "rays), got " + std::to_string(config_.stages) + " and " +
+                                std::to_string(config_.rayStages));
+  if (config_.headerFetchCycles < 0)
+    throw std::invalid_argument("model header fetch cycles must not be negative");
   config_.format.validate();
 }
 
@@ -32,8 +36,10 @@ void JobManager::evaluate() {
     out->offer(pipeline_.front().job);
     offering_ = true;
   }
-  in->setReady(!valid || out->ready());  // pipeline_enable
-  if (!valid && !pipeline_.empty()) wake_.at(pipeline_.front().outputCycle);
+  in->setReady((!valid || out->ready()) && now >= fetchUntil_);  // pipeline_enable
+  uint64_t wake = now >= fetchUntil_ ? ~0ull : fetchUntil_;
+  if (!valid && !pipeline_.empty()) wake = std::min(wake, pipeline_.front().outputCycle);
+  if (wake != ~0ull) wake_.at(wake);
 }
 
 // The edge that ended the previous cycle, handled once however often the cycle wakes us.
@@ -49,20 +55,38 @@ void JobManager::takeTransfers(uint64_t now) {
     out->withdraw();  // replaced by the next offer if a job reaches the output now
     offering_ = false;
   }
-  if (in->transferredIn(edge)) {
-    pipeline_.push_back(InFlight{convert(in->transferred()), edge + config_.stages});
-    ++statistics_.jobs;
-  }
+  if (in->transferredIn(edge)) accept(in->transferred(), edge);
 }
 
-CoreJob JobManager::convert(const HostJob& host) const {
+void JobManager::accept(const HostJob& host, uint64_t edge) {
+  uint64_t latency = static_cast<uint64_t>(config_.stages);
+  TraversalJob job;
+  if (const auto* ray = std::get_if<RayRecord>(&host.record)) {
+    auto header = headers_.find(ray->modelAddress);
+    if (header == headers_.end()) {
+      header = headers_.emplace(ray->modelAddress, readModelHeader(memory_, ray->modelAddress)).first;
+      fetchUntil_ = edge + 1 + static_cast<uint64_t>(config_.headerFetchCycles);
+      latency += static_cast<uint64_t>(config_.headerFetchCycles);
+    }
+    job = rayRecordToJob(*ray, header->second, config_.epsilon);
+    latency += static_cast<uint64_t>(config_.rayStages);
+  } else {
+    job = std::get<TraversalJob>(host.record);
+  }
+  uint64_t outputCycle = edge + latency;
+  if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
+  pipeline_.push_back(InFlight{convert(host.sequence, job), outputCycle});
+  ++statistics_.jobs;
+}
+
+CoreJob JobManager::convert(uint64_t sequence, const TraversalJob& host) const {
   CoreJob job;
-  job.sequence = host.sequence;
-  job.idWord = host.job.idWord();
-  job.a = host.job.a;
-  job.t0 = convertToFixed(host.job.t0Bits, config_.format, config_.conversion);
-  job.t1 = convertToFixed(host.job.t1Bits, config_.format, config_.conversion);
-  job.root = host.job.root;
+  job.sequence = sequence;
+  job.idWord = host.idWord();
+  job.a = host.a;
+  job.t0 = convertToFixed(host.t0Bits, config_.format, config_.conversion);
+  job.t1 = convertToFixed(host.t1Bits, config_.format, config_.conversion);
+  job.root = host.root;
   return job;
 }
 

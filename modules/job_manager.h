@@ -1,6 +1,11 @@
 #pragma once
 // The job manager (thesis 6.2.1, appendix C.2): host records in, fixed-point traversal jobs out,
-// through a pipeline of `stages` registers. Like the RTL it advances only when its output is taken
+// through a pipeline of `stages` registers for t-value records (the RTL), and `rayStages` more for
+// ray records (ray transform into the model's space and the t-parameters of eq. 6.6; the thesis
+// leaves them as placeholders, so their latency is configuration). Jobs leave in order: a
+// t-value record behind a ray record waits for it. The first ray against a model fetches the
+// model's header from memory (`headerFetchCycles`, during which no record is accepted) and keeps
+// it for the rest of the run, as the thesis' animation stage would once per frame. Like the RTL it advances only when its output is taken
 // or empty (pipeline_enable = out_ready || !out_valid), and it accepts an input exactly when it
 // advances, so a job waiting for a core stalls the whole pipeline and the host.
 //
@@ -9,12 +14,14 @@
 // only in cycles where a job enters, leaves or reaches the output.
 
 #include <deque>
+#include <map>
 
 #include <systemc>
 
 #include "cycle_clock.h"
 #include "module_process.h"
 #include "golden_model.h"
+#include "model_header.h"
 #include "ready_valid.h"
 #include "rtu_payloads.h"
 
@@ -24,6 +31,9 @@ struct JobManagerConfig {
   FixedFormat format;
   FloatConversion conversion = FloatConversion::Rtl;
   int stages = 6;  // the RTL's P_STAGES
+  int rayStages = 6;
+  int headerFetchCycles = 16;  // one word per cycle
+  float epsilon = static_cast<float>(kDefaultDirectionEpsilon);
 };
 
 struct JobManagerStatistics {
@@ -36,7 +46,8 @@ class JobManager : public sc_core::sc_module {
   sc_core::sc_port<ReadyValidIn<HostJob>> in;
   sc_core::sc_port<ReadyValidOut<CoreJob>> out;
 
-  JobManager(sc_core::sc_module_name name, const CycleClock& clock, JobManagerConfig config);
+  JobManager(sc_core::sc_module_name name, const CycleClock& clock, JobManagerConfig config,
+             SvoMemory memory);
 
   const JobManagerStatistics& statistics() const { return statistics_; }
 
@@ -50,10 +61,14 @@ class JobManager : public sc_core::sc_module {
   void evaluate();
   void takeTransfers(uint64_t now);
   bool outputValid(uint64_t now) const;
-  CoreJob convert(const HostJob& host) const;
+  void accept(const HostJob& host, uint64_t edge);
+  CoreJob convert(uint64_t sequence, const TraversalJob& job) const;
 
   const CycleClock& clock_;
   JobManagerConfig config_;
+  SvoMemory memory_;
+  std::map<uint32_t, ModelHeader> headers_;  // by model address
+  uint64_t fetchUntil_ = 0;                  // no record is accepted before this cycle
   std::deque<InFlight> pipeline_;
   bool offering_ = false;
   uint64_t handledCycle_ = ~0ull;

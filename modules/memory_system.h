@@ -29,7 +29,8 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, SvoMemory backing,
                MemoryConfig config, int cores, CycleTrace* trace);
 
-  uint32_t word(uint32_t address) const override { return backing_.read(address); }
+  const SvoMemory& backingStore() const override { return backing_; }
+  bool combinational() const override { return config_.ideal; }
   MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
   void requestShared(int core, uint32_t address) override;
   uint64_t sharedReplyCycle(int core) const override { return cores_[static_cast<size_t>(core)].replyCycle; }
@@ -37,7 +38,6 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
     return *cores_[static_cast<size_t>(core)].replied;
   }
 
-  bool ideal() const { return config_.ideal; }
   const MemoryConfig& config() const { return config_; }
   CacheStats l1Statistics(int core) const { return cores_[static_cast<size_t>(core)].l1->stats(); }
   L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }

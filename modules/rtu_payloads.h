@@ -4,15 +4,19 @@
 
 #include <array>
 #include <cstdint>
+#include <variant>
 
+#include "ray_transform.h"
 #include "traversal_job.h"
 
 namespace rtu {
 
-// A host input record: the thesis driver's t-value record.
+// A host input record: the thesis driver's t-value record, or a world-space ray against a model.
+using HostRecord = std::variant<TraversalJob, RayRecord>;
+
 struct HostJob {
   uint64_t sequence = 0;
-  TraversalJob job;
+  HostRecord record;
 };
 
 // The RTL's job_t: t-values converted to fixed point by the job manager.

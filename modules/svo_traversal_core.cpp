@@ -20,6 +20,8 @@ SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleCloc
 }
 
 void SvoTraversalCore::end_of_elaboration() {
+  words_ = &memory->backingStore();
+  combinational_ = memory->combinational();
   spawnMethod("evaluate", [this] { evaluate(); },
               {&in->edge(), &out->edge(), &memory->sharedReplied(index_), &wake_.event()});
 }
@@ -65,10 +67,10 @@ void SvoTraversalCore::start(uint64_t now) {
 
 // Steps the state machine until OUT or until a read needs the shared level.
 void SvoTraversalCore::run() {
-  const auto readWord = [this](uint32_t address) { return memory->word(address); };
+  const auto readWord = [this](uint32_t address) { return words_->read(address); };
   while (core_.busy()) {
     traceState(localCycle_, static_cast<uint64_t>(core_.state()));
-    if (core_.readsMemory()) {
+    if (!combinational_ && core_.readsMemory()) {
       const uint32_t address = core_.memoryAddress();
       const MemoryReply reply = memory->lookup(index_, address, localCycle_);
       if (!reply.known) {
@@ -92,7 +94,7 @@ void SvoTraversalCore::run() {
 
 void SvoTraversalCore::resumeAfterSharedRead() {
   consumeWordIn(memory->sharedReplyCycle(index_));
-  core_.step([this](uint32_t address) { return memory->word(address); });
+  core_.step([this](uint32_t address) { return words_->read(address); });
   ++localCycle_;
   if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
 }

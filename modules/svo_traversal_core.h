@@ -73,6 +73,8 @@ class SvoTraversalCore : public sc_core::sc_module {
   uint32_t sharedAddress_ = 0;
   bool sharedRequested_ = false;
   CycleWake wake_;
+  const SvoMemory* words_ = nullptr;
+  bool combinational_ = false;
   CycleTrace* trace_;
   int stateSignal_ = CycleTrace::kNoSignal, stackSignal_ = CycleTrace::kNoSignal;
   CoreStatistics statistics_;

@@ -13,7 +13,7 @@ namespace rtu {
 
 void addReplayCommand(CLI::App& app) {
   struct Options {
-    std::string svo, jobs, out;
+    std::string svo, jobs, rays, out;
     GoldenConfig golden;
     RtuOptions rtu;
   };
@@ -21,20 +21,35 @@ void addReplayCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "replay", "replay a host input buffer through the cycle-accurate SystemC model of the RTU");
   command->add_option("--svo", options->svo, "SVO memory image")->required()->check(CLI::ExistingFile);
-  command->add_option("--jobs", options->jobs, "host input buffer (8 u32 per job record)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  CLI::Option* jobs =
+      command->add_option("--jobs", options->jobs, "host input buffer (8 u32 per job record)")
+          ->check(CLI::ExistingFile);
+  command->add_option("--rays", options->rays, "ray buffer (8 u32 per world-space ray record)")
+      ->check(CLI::ExistingFile)
+      ->excludes(jobs);
   command->add_option("--out", options->out, "host output buffer to write, in arrival order")
       ->required();
   addGoldenOptions(*command, options->golden);
   addRtuOptions(*command, options->rtu);
   command->callback([options] {
+    if (options->jobs.empty() == options->rays.empty())
+      throw std::invalid_argument("give the input: --jobs (job records) or --rays (ray records)");
     const SvoImage image = readSvoFile(options->svo);
-    const std::vector<TraversalJob> jobs = readJobBuffer(options->jobs);
     const RtuConfig config = options->rtu.resolve(options->golden);
     validate(config);
+    std::vector<HostRecord> records;
+    std::vector<TraversalJob> jobs;
+    if (!options->rays.empty()) {
+      const std::vector<RayRecord> rays = readRayBuffer(options->rays);
+      // The job manager's own set-up, run ahead once to check every header and tree up front.
+      jobs = rayRecordsToJobs(image.memory(), rays, config.jobManager.epsilon);
+      records.assign(rays.begin(), rays.end());
+    } else {
+      jobs = readJobBuffer(options->jobs);
+      records.assign(jobs.begin(), jobs.end());
+    }
     checkStackDepth(image, jobs, config.stackFrames, options->rtu.allowStackOverflow);
-    const RtuRun run = simulateRtu(image.memory(), jobs, config);
+    const RtuRun run = simulateRtu(image.memory(), records, config);
     writeResultBuffer(options->out, run.results);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, options->rtu, std::cout);

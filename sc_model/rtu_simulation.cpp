@@ -22,6 +22,11 @@ void freshKernel() {
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config) {
+  return simulateRtu(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
+}
+
+RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                   const RtuConfig& config) {
   validate(config);
   freshKernel();
   std::unique_ptr<CycleTrace> trace;
@@ -30,7 +35,7 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
     options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
     trace = std::make_unique<CycleTrace>(options);
   }
-  auto top = std::make_unique<RtuTop>("rtu", config, memory, jobs, trace.get());
+  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
 
   const auto start = std::chrono::steady_clock::now();
   sc_core::sc_start();
@@ -40,7 +45,7 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
   const HostSink& sink = top->sink();
   if (!sink.complete())
     throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
-                             " of " + std::to_string(jobs.size()) + " results");
+                             " of " + std::to_string(records.size()) + " results");
   RtuRun run;
   run.arrivalCycles = sink.arrivalCycles();
   run.totalCycles = run.arrivalCycles.empty() ? 0 : run.arrivalCycles.back() + 1;

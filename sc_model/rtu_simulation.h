@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rtu_config.h"
+#include "rtu_payloads.h"
 #include "rtu_statistics.h"
 #include "svo_memory.h"
 #include "traversal_job.h"
@@ -24,6 +25,8 @@ struct RtuRun {
 
 // Throws std::invalid_argument for impossible configurations and std::runtime_error when the
 // simulation ends without every result (which would be a model defect).
+RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                   const RtuConfig& config);
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config);
 

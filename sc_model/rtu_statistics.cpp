@@ -155,7 +155,7 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.maxWaitWithReadyCore = scheduler.maxWaitWithReadyCore;
   stats.resultBuffersMaxFull = top.resultManager().statistics().maxBuffered;
   if (top.reorderBuffer()) stats.reorderMaxOccupancy = top.reorderBuffer()->statistics().maxOccupancy;
-  stats.idealMemory = top.memory().ideal();
+  stats.idealMemory = top.memory().combinational();
   if (!stats.idealMemory) {
     for (int i = 0; i < config.cores; ++i) stats.l1.push_back(top.memory().l1Statistics(i));
     stats.l2 = top.memory().l2Statistics();

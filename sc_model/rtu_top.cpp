@@ -15,12 +15,12 @@ void traceChannel(ReadyValid<Payload>& channel, CycleTrace* trace, const std::st
 }  // namespace
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-               std::vector<TraversalJob> jobs, CycleTrace* trace)
+               std::vector<HostRecord> records, CycleTrace* trace)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {
   validate(config);
   const std::string top = this->name();
   const size_t coreCount = static_cast<size_t>(config.cores);
-  const uint64_t jobCount = jobs.size();
+  const uint64_t jobCount = records.size();
 
   hostJobs_ = std::make_unique<Channel<HostJob>>("host_jobs", clock_);
   pendingJobs_ = std::make_unique<Channel<CoreJob>>("pending_jobs", clock_);
@@ -30,9 +30,9 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   traceChannel(*pendingJobs_, trace, top + ".scheduler.in");
   traceChannel(*managedResults_, trace, top + ".result_manager.out");
 
-  source_ = std::make_unique<HostSource>("host_source", clock_, std::move(jobs), config.hostInput);
+  source_ = std::make_unique<HostSource>("host_source", clock_, std::move(records), config.hostInput);
   source_->out(*hostJobs_);
-  jobManager_ = std::make_unique<JobManager>("job_manager", clock_, config.jobManager);
+  jobManager_ = std::make_unique<JobManager>("job_manager", clock_, config.jobManager, memory);
   jobManager_->in(*hostJobs_);
   jobManager_->out(*pendingJobs_);
   scheduler_ = std::make_unique<Scheduler>("scheduler", clock_, config.scheduler);

@@ -27,7 +27,7 @@ class RtuTop : public sc_core::sc_module {
  public:
   // `memory` and the trace must outlive the top; `trace` may be null.
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-         std::vector<TraversalJob> jobs, CycleTrace* trace);
+         std::vector<HostRecord> records, CycleTrace* trace);
 
   const CycleClock& clock() const { return clock_; }
   const HostSink& sink() const { return *sink_; }
