@@ -53,6 +53,15 @@ std::vector<TraversalJob> makeFrameJobs(const Camera& camera, uint32_t root, dou
   return jobs;
 }
 
+std::vector<RayRecord> makeFrameRayRecords(const Camera& camera, uint32_t modelAddress) {
+  const std::vector<Ray> rays = frameRays(camera);
+  std::vector<RayRecord> records;
+  records.reserve(rays.size());
+  for (size_t id = 0; id < rays.size(); ++id)
+    records.push_back(makeRayRecord(static_cast<uint32_t>(id), rays[id], modelAddress));
+  return records;
+}
+
 glm::dvec3 parseVector(const std::string& text, const std::string& what) {
   std::istringstream in(text);
   glm::dvec3 v;

@@ -1,6 +1,7 @@
 #pragma once
 // A pinhole camera producing one primary ray per pixel, and the job stream the thesis driver
-// would send for a frame (appendix F): job id = x + y * width, row 0 at the top.
+// would send for a frame (appendix F) or the frame's ray records: job id = x + y * width, row 0
+// at the top.
 
 #include <cstdint>
 #include <string>
@@ -9,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "ray_setup.h"
+#include "ray_transform.h"
 #include "traversal_job.h"
 
 namespace rtu {
@@ -34,6 +36,9 @@ struct Camera {
 std::vector<Ray> frameRays(const Camera& camera);
 std::vector<TraversalJob> makeFrameJobs(const Camera& camera, uint32_t root,
                                         double epsilon = kDefaultDirectionEpsilon);
+// The world-space ray records of a frame for the model whose header is at `modelAddress`
+// (directions normalised, so t is a world distance).
+std::vector<RayRecord> makeFrameRayRecords(const Camera& camera, uint32_t modelAddress);
 
 // "x,y,z" -> vector; throws std::invalid_argument naming `what` on malformed text.
 glm::dvec3 parseVector(const std::string& text, const std::string& what);

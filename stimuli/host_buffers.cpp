@@ -119,6 +119,47 @@ std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& re
   return words;
 }
 
+std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words) {
+  if (words.size() % kRecordWords != 0)
+    throw std::runtime_error("ray buffer holds " + std::to_string(words.size()) +
+                             " words, not a multiple of 8");
+  std::vector<RayRecord> records(words.size() / kRecordWords);
+  for (size_t i = 0; i < records.size(); ++i) {
+    const uint32_t* word = &words[i * kRecordWords];
+    RayRecord& record = records[i];
+    record.id = word[0];
+    for (int k = 0; k < 3; ++k) {
+      record.origin[k] = bitsToFloat(word[1 + k]);
+      record.direction[k] = bitsToFloat(word[4 + k]);
+    }
+    record.modelAddress = word[7];
+    try {
+      record.validate();
+    } catch (const std::runtime_error& error) {
+      throw recordError(i, error.what());
+    }
+  }
+  return records;
+}
+
+std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records) {
+  std::vector<uint32_t> words;
+  words.reserve(records.size() * kRecordWords);
+  for (size_t i = 0; i < records.size(); ++i) {
+    const RayRecord& record = records[i];
+    try {
+      record.validate();
+    } catch (const std::runtime_error& error) {
+      throw std::invalid_argument("ray record " + std::to_string(i) + ": " + error.what());
+    }
+    words.push_back(record.id);
+    for (float component : record.origin) words.push_back(floatBits(component));
+    for (float component : record.direction) words.push_back(floatBits(component));
+    words.push_back(record.modelAddress);
+  }
+  return words;
+}
+
 std::vector<TraversalJob> readJobBuffer(const std::string& path) {
   return readBuffer(path, "job buffer", decodeJobRecords);
 }
@@ -133,6 +174,14 @@ std::vector<TraversalResult> readResultBuffer(const std::string& path) {
 
 void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results) {
   writeWordFile(path, encodeResultRecords(results));
+}
+
+std::vector<RayRecord> readRayBuffer(const std::string& path) {
+  return readBuffer(path, "ray buffer", decodeRayRecords);
+}
+
+void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records) {
+  writeWordFile(path, encodeRayRecords(records));
 }
 
 }  // namespace rtu

@@ -5,10 +5,13 @@
 //   output: [job_id | a << 28, hit, t_hit, nx, ny, nz (fixed point), cost, flags]
 // The output's job word is returned as received, as the RTL does. `flags` is 0 on the RTL; rtusim
 // sets bit 0 when the traversal ran out of stack frames.
+// The second input kind, for a job manager that moves rays into animated models (ray_transform.h):
+//   rays:   [job_id (bits 31:28 zero), ox, oy, oz, dx, dy, dz (float32 bits, world), model address]
 
 #include <string>
 #include <vector>
 
+#include "ray_transform.h"
 #include "traversal_job.h"
 
 namespace rtu {
@@ -29,9 +32,16 @@ std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& wo
 // Throws std::invalid_argument when t_hit or the normal do not fit 32 bits (formats over 32 bits).
 std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results);
 
+// Throws std::runtime_error naming the record for anything RayRecord::validate() rejects.
+std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words);
+// Throws std::invalid_argument naming the record for the same.
+std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records);
+
 std::vector<TraversalJob> readJobBuffer(const std::string& path);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
 std::vector<TraversalResult> readResultBuffer(const std::string& path);
 void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results);
+std::vector<RayRecord> readRayBuffer(const std::string& path);
+void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records);
 
 }  // namespace rtu

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model_header.h"
 #include "svo_memory.h"
 
 namespace rtu {
@@ -18,6 +19,11 @@ struct SvoImage {
   SvoMemory memory() const { return SvoMemory(words); }
   size_t bytes() const { return words.size() * sizeof(uint32_t); }
 };
+
+// Appends the header of a model placed at `placement` whose tree is the image's (root = image.root)
+// after the image's words, and returns its word address (the image's size before). Throws
+// std::invalid_argument as makeModelHeader does.
+uint32_t appendModelHeader(SvoImage& image, const ModelPlacement& placement);
 
 // Throws std::runtime_error naming the file on I/O errors or a size that is not a whole number
 // of words. The image is not validated here: see svo_validator.h.
