@@ -54,7 +54,7 @@ class ReadyValidIn : public virtual sc_core::sc_interface {
 };
 
 template <class Payload>
-class ReadyValid : public sc_core::sc_prim_channel,
+class ReadyValid final : public sc_core::sc_prim_channel,
                    public ReadyValidOut<Payload>,
                    public ReadyValidIn<Payload> {
  public:

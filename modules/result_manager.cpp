@@ -11,9 +11,8 @@ void ResultManager::end_of_elaboration() {
   coreCount_ = cores.size();
   buffer_.resize(static_cast<size_t>(coreCount_));
   full_.assign(static_cast<size_t>(coreCount_), false);
-  std::vector<const sc_core::sc_event*> handovers;
-  for (int i = 0; i < coreCount_; ++i) handovers.push_back(&cores[i]->edge());
-  spawnMethod("evaluate", [this] { evaluate(); }, {&out->edge(), &wake_.event()}, handovers);
+  for (int i = 0; i < coreCount_; ++i) handoverEdges_.push_back(&cores[i]->edge());
+  spawnMethod("evaluate", [this] { evaluate(); }, {&out->edge(), &wake_.event()}, handoverEdges_);
 }
 
 void ResultManager::evaluate() {
@@ -31,7 +30,9 @@ void ResultManager::takeTransfers(uint64_t now) {
   handledCycle_ = now;
   const uint64_t edge = now - 1;
   for (int i = 0; i < coreCount_; ++i) {
-    if (!cores[i]->transferredIn(edge)) continue;
+    // A handover in the previous cycle triggers the channel's edge now, in this first delta.
+    if (!handoverEdges_[static_cast<size_t>(i)]->triggered() || !cores[i]->transferredIn(edge))
+      continue;
     buffer_[static_cast<size_t>(i)] = cores[i]->transferred();
     full_[static_cast<size_t>(i)] = true;
     cores[i]->setReady(false);

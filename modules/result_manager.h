@@ -44,6 +44,7 @@ class ResultManager : public sc_core::sc_module {
 
   const CycleClock& clock_;
   int coreCount_ = 0;
+  std::vector<const sc_core::sc_event*> handoverEdges_;
   std::vector<CoreResult> buffer_;
   std::vector<bool> full_;
   uint64_t buffered_ = 0;
