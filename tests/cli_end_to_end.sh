@@ -65,4 +65,38 @@ expect_error "past the end" "$rtusim" golden --svo sphere.svo --rays rays.bin --
 expect_error "bits 31:28" "$rtusim" golden --svo moved.svo --rays jobs.bin --out x.bin
 head -c 100 rays.bin >short_rays.bin
 expect_error "not a multiple" "$rtusim" golden --svo moved.svo --rays short_rays.bin --out x.bin
+# The cycle-accurate model: same results as the golden model (in arrival order), statistics JSON
+# with the total cycle count, and a VCD trace; ray records through the job manager likewise.
+sorted_records() { od -An -v -tx4 -w32 "$1" | sort; }
+# Without word 6 (cost): cached memory adds blocked cycles to the cost, nothing else changes.
+sorted_without_cost() { od -An -v -tx4 -w32 "$1" | awk '{$7 = ""; print}' | sort; }
+for memory in ideal cached; do
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out replay.bin --cores 4 --memory "$memory" \
+    --stats stats.json --vcd trace.vcd --vcd-to 200 --vcd-scope rtu.core_1 >replay.txt
+  [[ $(sorted_without_cost replay.bin) == $(sorted_without_cost results.bin) ]] \
+    || fail "replay ($memory) differs from golden"
+  [[ $memory == cached || $(sorted_records replay.bin) == $(sorted_records results.bin) ]] \
+    || fail "replay (ideal) cost differs from golden"
+  grep -q '"total_cycles": [1-9]' stats.json || fail "stats JSON without total_cycles"
+  grep -q 'enddefinitions' trace.vcd && grep -q 'core_1' trace.vcd && ! grep -q 'core_0' trace.vcd \
+    || fail "VCD scope filter"
+done
+"$rtusim" golden --svo moved.svo --rays rays.bin --out golden_rays.bin >/dev/null
+"$rtusim" replay --svo moved.svo --rays rays.bin --out replay_rays.bin --scheduler fa >/dev/null
+[[ $(sorted_records replay_rays.bin) == $(sorted_records golden_rays.bin) ]] \
+  || fail "replay of ray records differs from golden"
+# render defaults to the SystemC model and reports the frame rate at the clock.
+"$rtusim" render --svo sphere.svo --width 32 --height 24 --clock-mhz 200 >sc_render.txt
+grep -q "at 200.00 MHz" sc_render.txt || fail "render frame rate"
+[[ $(grep -E "^(hits|cost)" sc_render.txt) == $(grep -E "^(hits|cost)" golden.txt) ]] \
+  || fail "SystemC render and golden disagree"
+expect_error "1 to 1024 cores" "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out x.bin --cores 0
+expect_error "do not hold one 32-byte line" "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out x.bin \
+  --memory cached --l1-size 16
+expect_error "stack frames" "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out x.bin \
+  --stack-frames 2
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out x.bin --stack-frames 2 \
+  --allow-stack-overflow 2>/dev/null | grep -q "stack overflows" || fail "overflows not reported"
+expect_error "positive frequency" "$rtusim" render --scene sphere --depth 4 --clock-mhz 0
+expect_error "give the input" "$rtusim" replay --svo sphere.svo --out x.bin
 echo "cli end-to-end: ok"
