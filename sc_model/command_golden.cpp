@@ -1,7 +1,6 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <set>
 
 #include "cli_options.h"
 #include "commands.h"
@@ -9,25 +8,11 @@
 #include "host_buffers.h"
 #include "result_summary.h"
 #include "svo_image.h"
-#include "svo_validator.h"
+#include "stack_check.h"
 
 namespace rtu {
 
 namespace {
-
-// Every root the jobs name must hold a valid tree that the configured stack can traverse.
-void validateRoots(SvoImage image, const std::vector<TraversalJob>& jobs, int stackFrames) {
-  std::set<uint32_t> roots;
-  for (const TraversalJob& job : jobs) roots.insert(job.root);
-  for (uint32_t root : roots) {
-    image.root = root;
-    const SvoReport report = validateSvo(image, SvoLimits{});
-    if (report.depth - 1 > stackFrames)
-      std::cerr << "rtusim: warning: the tree at root " << root << " has depth " << report.depth
-                << " and needs " << report.depth - 1 << " stack frames; " << stackFrames
-                << " are configured, deeper rays will be flagged\n";
-  }
-}
 
 // The job manager's set-up of world-space ray records against the model headers in the image.
 std::vector<TraversalJob> jobsFromRayBuffer(const SvoImage& image, const std::string& path,
@@ -75,7 +60,7 @@ void addGoldenCommand(CLI::App& app) {
     const std::vector<TraversalJob> jobs =
         options->rays.empty() ? readJobBuffer(options->jobs)
                               : jobsFromRayBuffer(image, options->rays, options->epsilon);
-    validateRoots(image, jobs, options->config.stackFrames);
+    checkStackDepth(image, jobs, options->config.stackFrames, /*allowOverflow=*/true);
     GoldenModel model(image.memory(), options->config);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<TraversalResult> results = model.traceAll(jobs);

@@ -10,6 +10,7 @@
 #include "result_summary.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
+#include "stack_check.h"
 
 namespace rtu {
 namespace {

@@ -7,6 +7,7 @@
 #include "result_summary.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
+#include "stack_check.h"
 #include "svo_image.h"
 
 namespace rtu {

@@ -33,11 +33,6 @@ struct RtuOptions {
 
 void addRtuOptions(CLI::App& command, RtuOptions& options);
 
-// Throws std::invalid_argument when a tree the jobs use is deeper than the stack can hold, unless
-// overflow is allowed (then it only warns): an RTL with that stack would corrupt its memory.
-void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
-                     bool allowOverflow);
-
 // Prints the report and writes the --stats JSON if asked for.
 void reportRun(const RtuRun& run, const RtuOptions& options, std::ostream& out);
 
