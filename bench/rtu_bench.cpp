@@ -1,14 +1,17 @@
 // Cycle-accurate SystemC model throughput: simulated rays per host second for 1280x720 primary
 // rays of the default camera on depth-8 procedural scenes with 16 cores, ideal memory and the
-// default cached hierarchy. Not a test: run it and record the figures in docs/performance.md.
+// default cached hierarchy; for scale, the naive per-cycle RTL transcription on the same frame.
+// Not a test: run it and record the figures in docs/performance.md.
 //   build/bench/rtu_bench [scene ...]
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "camera.h"
 #include "procedural_scenes.h"
+#include "rtl_cycle_model.h"
 #include "rtu_simulation.h"
 #include "svo_builder.h"
 
@@ -52,6 +55,14 @@ int main(int argc, char** argv) {
                   s.hostSeconds, raysPerSecond / 1e6,
                   raysPerSecond >= mode.target ? "met" : "MISSED");
     }
+    const auto start = std::chrono::steady_clock::now();
+    const RtlTopRun rtl = runRtlTop(build.image.memory(), jobs, RtlTopConfig{});
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%-10s %-7s %12llu %10.2f %10.3f %12.3f %8s\n", name.c_str(), "RTL ref",
+                static_cast<unsigned long long>(rtl.totalCycles),
+                static_cast<double>(rtl.totalCycles) / jobs.size(), seconds,
+                jobs.size() / seconds / 1e6, "-");
   }
   return allMet ? 0 : 1;
 }

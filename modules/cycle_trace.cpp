@@ -116,15 +116,22 @@ void CycleTrace::write() const {
                    [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
   std::vector<bool> known(signals_.size());
   std::vector<uint64_t> current(signals_.size());
-  out << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
   for (size_t i = 0; i < signals_.size(); ++i) {
     known[i] = signals_[i].hasInitial;
     current[i] = signals_[i].initialValue;
-    writeValue(out, signals_[i].width, signals_[i].code, known[i], current[i]);
   }
+  // The window's first cycle goes into the initial dump, so no time stamp appears twice.
+  size_t first = 0;
+  for (; first < changes.size() && changes[first].cycle == options_.fromCycle; ++first) {
+    known[static_cast<size_t>(changes[first].signal)] = true;
+    current[static_cast<size_t>(changes[first].signal)] = changes[first].value;
+  }
+  out << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
+  for (size_t i = 0; i < signals_.size(); ++i)
+    writeValue(out, signals_[i].width, signals_[i].code, known[i], current[i]);
   out << "$end\n";
 
-  for (size_t begin = 0; begin < changes.size();) {
+  for (size_t begin = first; begin < changes.size();) {
     size_t end = begin;
     while (end < changes.size() && changes[end].cycle == changes[begin].cycle) ++end;
     // The last record of a signal in this cycle is its value; emit it if it changed.

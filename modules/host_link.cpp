@@ -9,11 +9,23 @@ namespace rtu {
 
 HostLinkPacer::HostLinkPacer(HostLinkConfig config) : config_(config), generator_(config.seed) {}
 
+// Slot boundaries are computed from the last restart, not accumulated, so rounding cannot drift
+// them across a cycle boundary over millions of records.
+uint64_t HostLinkPacer::slotStart(uint64_t records) const {
+  const double slot = static_cast<double>(kHostRecordBytes) / config_.bytesPerCycle;
+  return restartCycle_ + static_cast<uint64_t>(std::ceil(static_cast<double>(records) * slot - 1e-6));
+}
+
 uint64_t HostLinkPacer::nextAllowed(uint64_t cycle) {
   if (config_.bytesPerCycle <= 0.0) return cycle + 1;
-  earliest_ = std::max(earliest_, static_cast<double>(cycle)) +
-              static_cast<double>(kHostRecordBytes) / config_.bytesPerCycle;
-  return std::max(cycle + 1, static_cast<uint64_t>(std::ceil(earliest_)));
+  // A record that crossed as early as allowed keeps the fraction of its slot; one held back
+  // (an idle producer or consumer) restarts the pacing from its own cycle.
+  if (cycle > slotStart(recordsSinceRestart_)) {
+    restartCycle_ = cycle;
+    recordsSinceRestart_ = 0;
+  }
+  ++recordsSinceRestart_;
+  return std::max(cycle + 1, slotStart(recordsSinceRestart_));
 }
 
 bool HostLinkPacer::drawActive() {

@@ -28,8 +28,11 @@ class HostLinkPacer {
   bool drawActive();
 
  private:
+  uint64_t slotStart(uint64_t records) const;
+
   HostLinkConfig config_;
-  double earliest_ = 0.0;  // fractional cycle the next record may cross
+  uint64_t restartCycle_ = 0;          // pacing runs from here ...
+  uint64_t recordsSinceRestart_ = 0;   // ... with this many records crossed since
   std::mt19937_64 generator_;
 };
 

@@ -18,7 +18,7 @@ void validate(const RtuConfig& config) {
   if (config.reorderCapacity < 0)
     throw std::invalid_argument("reorder buffer capacity must not be negative");
   config.jobManager.format.validate();
-  if (!config.memory.ideal) validate(config.memory);
+  validate(config.memory);  // settings are checked even when ideal memory ignores them
   validate(config.hostInput, "host input");
   validate(config.hostOutput, "host output");
 }
