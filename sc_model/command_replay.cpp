@@ -28,6 +28,11 @@ void addReplayCommand(CLI::App& app) {
   command->add_option("--rays", options->rays, "ray buffer (8 u32 per world-space ray record)")
       ->check(CLI::ExistingFile)
       ->excludes(jobs);
+  command->add_option("--epsilon", options->rtu.config.jobManager.epsilon,
+                      "job manager: direction components below epsilon times the largest count "
+                      "as zero (--rays)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   command->add_option("--out", options->out, "host output buffer to write, in arrival order")
       ->required();
   addGoldenOptions(*command, options->golden);

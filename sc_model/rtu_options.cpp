@@ -47,6 +47,15 @@ void addRtuOptions(CLI::App& command, RtuOptions& options) {
   command.add_option("--dram-bytes-per-cycle", config.memory.dram.bytesPerCycle,
                      "DRAM bandwidth in bytes per cycle")
       ->capture_default_str();
+  command.add_option("--jm-stages", config.jobManager.stages,
+                     "job manager pipeline stages for t-value records (RTL: 6)")
+      ->capture_default_str();
+  command.add_option("--jm-ray-stages", config.jobManager.rayStages,
+                     "extra stages for ray records: transform and t-parameters")
+      ->capture_default_str();
+  command.add_option("--jm-header-fetch", config.jobManager.headerFetchCycles,
+                     "cycles to fetch a model header, once per model")
+      ->capture_default_str();
   command.add_option("--reorder", config.reorderCapacity,
                      "reorder buffer of this many results: results in submission order (0: none)")
       ->capture_default_str()
