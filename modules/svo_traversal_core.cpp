@@ -47,7 +47,7 @@ void SvoTraversalCore::evaluate() {
       resumeAfterSharedRead();
       run();
       return;
-    case Phase::Running:
+    case Phase::ResultDue:
       offerResult();
       return;
     case Phase::Out:
@@ -67,7 +67,6 @@ void SvoTraversalCore::start(uint64_t now) {
 
 // Steps the state machine until OUT or until a read needs the shared level.
 void SvoTraversalCore::run() {
-  const auto readWord = [this](uint32_t address) { return words_->read(address); };
   while (core_.busy()) {
     traceState(localCycle_, static_cast<uint64_t>(core_.state()));
     if (!combinational_ && core_.readsMemory()) {
@@ -82,18 +81,21 @@ void SvoTraversalCore::run() {
       }
       consumeWordIn(reply.cycle);
     }
-    core_.step(readWord);
-    ++localCycle_;
-    if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
+    stepState();
   }
   outCycle_ = localCycle_;
   traceState(outCycle_, static_cast<uint64_t>(CoreState::Out));
-  phase_ = Phase::Running;
+  phase_ = Phase::ResultDue;
   wake_.at(outCycle_);
 }
 
 void SvoTraversalCore::resumeAfterSharedRead() {
   consumeWordIn(memory->sharedReplyCycle(index_));
+  stepState();
+}
+
+// The current state's cycle: the word it reads, if any, is there by now.
+void SvoTraversalCore::stepState() {
   core_.step([this](uint32_t address) { return words_->read(address); });
   ++localCycle_;
   if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));

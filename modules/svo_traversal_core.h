@@ -50,13 +50,16 @@ class SvoTraversalCore : public sc_core::sc_module {
   const CoreStatistics& statistics() const { return statistics_; }
 
  private:
-  enum class Phase { Idle, Running, AwaitingShared, Out };
+  // Idle: ready for a job. AwaitingShared: a read waits for the shared memory level.
+  // ResultDue: traversal computed, OUT starts at outCycle_. Out: result offered.
+  enum class Phase { Idle, AwaitingShared, ResultDue, Out };
 
   void end_of_elaboration() override;
   void evaluate();
   void start(uint64_t now);
   void run();
   void resumeAfterSharedRead();
+  void stepState();
   void consumeWordIn(uint64_t dataCycle);
   void offerResult();
   void handOver(uint64_t now);
