@@ -30,7 +30,6 @@ class CycleTrace {
   int declare(const std::string& scope, const std::string& name, int width);
   // The value `signal` holds from `cycle` on. Within one cycle the last record wins.
   void record(int signal, uint64_t cycle, uint64_t value);
-  bool traces(int signal) const { return signal != kNoSignal; }
 
   // Writes the VCD file; throws std::runtime_error when it cannot be written.
   void write() const;

@@ -22,8 +22,6 @@ class HostSource : public sc_core::sc_module {
   HostSource(sc_core::sc_module_name name, const CycleClock& clock,
              std::vector<HostRecord> records, HostLinkConfig link);
 
-  uint64_t sent() const { return next_; }
-
  private:
   void end_of_elaboration() override;
   void evaluate();

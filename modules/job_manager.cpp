@@ -76,7 +76,6 @@ void JobManager::accept(const HostJob& host, uint64_t edge) {
   uint64_t outputCycle = edge + latency;
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
   pipeline_.push_back(InFlight{convert(host.sequence, job), outputCycle});
-  ++statistics_.jobs;
 }
 
 CoreJob JobManager::convert(uint64_t sequence, const TraversalJob& host) const {

@@ -37,7 +37,6 @@ struct JobManagerConfig {
 };
 
 struct JobManagerStatistics {
-  uint64_t jobs = 0;
   uint64_t stallCycles = 0;  // cycles the output was valid and not taken
 };
 

@@ -38,7 +38,6 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
     return *cores_[static_cast<size_t>(core)].replied;
   }
 
-  const MemoryConfig& config() const { return config_; }
   CacheStats l1Statistics(int core) const { return cores_[static_cast<size_t>(core)].l1->stats(); }
   L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }
 

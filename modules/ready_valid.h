@@ -90,9 +90,6 @@ class ReadyValid final : public sc_core::sc_prim_channel,
   }
   // The payload of the most recent completed transfer.
   const Payload& transferred() const override { return pending_ < clock_.now() ? pendingPayload_ : lastPayload_; }
-  uint64_t transfers() const {
-    return count_ + (pending_ != kNever && pending_ < clock_.now() ? 1 : 0);
-  }
 
   const sc_core::sc_event& edge() const override { return edge_; }
   // Notified after every producer write: valid rose or fell, or a new payload is offered.
@@ -148,7 +145,6 @@ class ReadyValid final : public sc_core::sc_prim_channel,
     if (pending_ == kNever || pending_ >= now) return;
     last_ = pending_;
     lastPayload_ = pendingPayload_;
-    ++count_;
     pending_ = kNever;
   }
 
@@ -169,7 +165,6 @@ class ReadyValid final : public sc_core::sc_prim_channel,
   uint64_t validSince_ = 0;
   uint64_t pending_ = kNever;  // cycle whose levels currently make a transfer
   uint64_t last_ = kNever;     // last completed transfer
-  uint64_t count_ = 0;
   sc_core::sc_event edge_, offerChanged_, readyChanged_;
   mutable bool offerListened_ = false, readyListened_ = false;
   CycleTrace* trace_ = nullptr;

@@ -40,7 +40,6 @@ void ReorderBuffer::takeTransfers(uint64_t now) {
   }
   if (offering_ && out->transferredIn(now - 1)) {
     held_.erase(nextDue_++);
-    ++statistics_.results;
     out->withdraw();
     offering_ = false;
   }

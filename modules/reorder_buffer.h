@@ -17,7 +17,6 @@
 namespace rtu {
 
 struct ReorderBufferStatistics {
-  uint64_t results = 0;
   uint64_t maxOccupancy = 0;
 };
 

@@ -43,7 +43,6 @@ void ResultManager::takeTransfers(uint64_t now) {
     full_[static_cast<size_t>(offered_)] = false;
     cores[offered_]->setReady(true);
     --buffered_;
-    ++statistics_.results;
     out->withdraw();
     offered_ = kNone;
   }

@@ -19,7 +19,6 @@
 namespace rtu {
 
 struct ResultManagerStatistics {
-  uint64_t results = 0;
   uint64_t maxBuffered = 0;  // most buffers full at once
 };
 

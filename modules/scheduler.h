@@ -42,7 +42,6 @@ class Scheduler : public sc_core::sc_module {
 
   Scheduler(sc_core::sc_module_name name, const CycleClock& clock, SchedulerPolicy policy);
 
-  SchedulerPolicy policy() const { return policy_; }
   const SchedulerStatistics& statistics() const { return statistics_; }
 
  private:

@@ -29,7 +29,6 @@ class RtuTop : public sc_core::sc_module {
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
          std::vector<HostRecord> records, CycleTrace* trace);
 
-  const CycleClock& clock() const { return clock_; }
   const HostSink& sink() const { return *sink_; }
   const JobManager& jobManager() const { return *jobManager_; }
   const Scheduler& scheduler() const { return *scheduler_; }
