@@ -89,7 +89,11 @@ class ReadyValid final : public sc_core::sc_prim_channel,
     return (pending_ == cycle && clock_.now() > cycle) || last_ == cycle;
   }
   // The payload of the most recent completed transfer.
-  const Payload& transferred() const override { return pending_ < clock_.now() ? pendingPayload_ : lastPayload_; }
+  // Until the producer writes again (in the cycle after the transfer) the payload it offered is
+  // still the current one.
+  const Payload& transferred() const override {
+    return pending_ != kNever && pending_ < clock_.now() ? payload_ : lastPayload_;
+  }
 
   const sc_core::sc_event& edge() const override { return edge_; }
   // Notified after every producer write: valid rose or fell, or a new payload is offered.
@@ -129,11 +133,10 @@ class ReadyValid final : public sc_core::sc_prim_channel,
       if (readyListened_) readyChanged_.notify(sc_core::SC_ZERO_TIME);
       if (trace_) trace_->record(readySignal_, now, ready_);
     }
-    payload_ = nextPayload_;
+    if (producerWrote_) payload_ = nextPayload_;
     producerWrote_ = false;
     if (valid_ && ready_) {
       pending_ = now;
-      pendingPayload_ = payload_;
       edge_.notify(clock_.period());
     } else if (pending_ == now) {
       pending_ = kNever;
@@ -144,7 +147,7 @@ class ReadyValid final : public sc_core::sc_prim_channel,
   void commitEarlierTransfer(uint64_t now) {
     if (pending_ == kNever || pending_ >= now) return;
     last_ = pending_;
-    lastPayload_ = pendingPayload_;
+    lastPayload_ = payload_;  // not yet replaced: commits run before a write is applied
     pending_ = kNever;
   }
 
@@ -161,7 +164,7 @@ class ReadyValid final : public sc_core::sc_prim_channel,
   OfferRule rule_;
   bool valid_ = false, ready_ = false, nextValid_ = false, nextReady_ = false;
   bool producerWrote_ = false;
-  Payload payload_{}, nextPayload_{}, pendingPayload_{}, lastPayload_{};
+  Payload payload_{}, nextPayload_{}, lastPayload_{};
   uint64_t validSince_ = 0;
   uint64_t pending_ = kNever;  // cycle whose levels currently make a transfer
   uint64_t last_ = kNever;     // last completed transfer

@@ -11,14 +11,17 @@ void ResultManager::end_of_elaboration() {
   coreCount_ = cores.size();
   buffer_.resize(static_cast<size_t>(coreCount_));
   full_.assign(static_cast<size_t>(coreCount_), false);
-  for (int i = 0; i < coreCount_; ++i) handoverEdges_.push_back(&cores[i]->edge());
+  for (int i = 0; i < coreCount_; ++i) {
+    core_.push_back(cores[i]);
+    handoverEdges_.push_back(&core_.back()->edge());
+  }
   spawnMethod("evaluate", [this] { evaluate(); }, {&out->edge(), &wake_.event()}, handoverEdges_);
 }
 
 void ResultManager::evaluate() {
   const uint64_t now = clock_.now();
   if (now == 0)
-    for (int i = 0; i < coreCount_; ++i) cores[i]->setReady(true);
+    for (int i = 0; i < coreCount_; ++i) core_[static_cast<size_t>(i)]->setReady(true);
   takeTransfers(now);
   select(now);
   const uint64_t wake = offered_ != kNone && coreCount_ > 1 ? now + 1 : nextFullSelect(now);
@@ -31,17 +34,17 @@ void ResultManager::takeTransfers(uint64_t now) {
   const uint64_t edge = now - 1;
   for (int i = 0; i < coreCount_; ++i) {
     // A handover in the previous cycle triggers the channel's edge now, in this first delta.
-    if (!handoverEdges_[static_cast<size_t>(i)]->triggered() || !cores[i]->transferredIn(edge))
+    if (!handoverEdges_[static_cast<size_t>(i)]->triggered() || !core_[static_cast<size_t>(i)]->transferredIn(edge))
       continue;
-    buffer_[static_cast<size_t>(i)] = cores[i]->transferred();
+    buffer_[static_cast<size_t>(i)] = core_[static_cast<size_t>(i)]->transferred();
     full_[static_cast<size_t>(i)] = true;
-    cores[i]->setReady(false);
+    core_[static_cast<size_t>(i)]->setReady(false);
     ++buffered_;
   }
   statistics_.maxBuffered = std::max(statistics_.maxBuffered, buffered_);
   if (offered_ != kNone && out->transferredIn(edge)) {
     full_[static_cast<size_t>(offered_)] = false;
-    cores[offered_]->setReady(true);
+    core_[static_cast<size_t>(offered_)]->setReady(true);
     --buffered_;
     out->withdraw();
     offered_ = kNone;

@@ -43,6 +43,8 @@ class ResultManager : public sc_core::sc_module {
 
   const CycleClock& clock_;
   int coreCount_ = 0;
+  // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
+  std::vector<ReadyValidIn<CoreResult>*> core_;
   std::vector<const sc_core::sc_event*> handoverEdges_;
   std::vector<CoreResult> buffer_;
   std::vector<bool> full_;

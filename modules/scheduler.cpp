@@ -28,7 +28,10 @@ Scheduler::Scheduler(sc_core::sc_module_name name, const CycleClock& clock, Sche
 void Scheduler::end_of_elaboration() {
   coreCount_ = cores.size();
   std::vector<const sc_core::sc_event*> coreReadiness;
-  for (int i = 0; i < coreCount_; ++i) coreReadiness.push_back(&cores[i]->readyChanged());
+  for (int i = 0; i < coreCount_; ++i) {
+    core_.push_back(cores[i]);
+    coreReadiness.push_back(&core_.back()->readyChanged());
+  }
   spawnMethod("evaluate", [this] { evaluate(); },
               {&in->edge(), &in->offerChanged(), &wake_.event()}, coreReadiness);
 }
@@ -72,7 +75,7 @@ void Scheduler::notePending(uint64_t now) {
 
 bool Scheduler::anyCoreReady() const {
   for (int i = 0; i < coreCount_; ++i)
-    if (cores[i]->ready()) return true;
+    if (core_[static_cast<size_t>(i)]->ready()) return true;
   return false;
 }
 
@@ -82,7 +85,7 @@ int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
       const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
       int best = coreCount_;
       for (int i = 0; i < coreCount_; ++i) {
-        if (!cores[i]->ready()) continue;
+        if (!core_[static_cast<size_t>(i)]->ready()) continue;
         best = std::min(best, (i - selected + coreCount_) % coreCount_);
       }
       if (best == 0) return selected;
@@ -90,10 +93,10 @@ int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
       return kNone;
     }
     case SchedulerPolicy::RoundRobin:
-      return cores[nextInLine_]->ready() ? nextInLine_ : kNone;
+      return core_[static_cast<size_t>(nextInLine_)]->ready() ? nextInLine_ : kNone;
     case SchedulerPolicy::FirstAvailable:
       for (int i = 0; i < coreCount_; ++i)
-        if (cores[i]->ready()) return i;
+        if (core_[static_cast<size_t>(i)]->ready()) return i;
       return kNone;
   }
   return kNone;
@@ -102,12 +105,12 @@ int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
 void Scheduler::dispatch(int core) {
   const bool sameOffer = core == target_ && (core == kNone || offeredSequence_ == in->payload().sequence);
   if (sameOffer) return;
-  if (target_ != kNone) cores[target_]->withdraw();
+  if (target_ != kNone) core_[static_cast<size_t>(target_)]->withdraw();
   target_ = core;
   in->setReady(core != kNone);
   if (core == kNone) return;
   offeredSequence_ = in->payload().sequence;
-  cores[core]->offer(in->payload());
+  core_[static_cast<size_t>(core)]->offer(in->payload());
 }
 
 }  // namespace rtu

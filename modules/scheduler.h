@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <systemc>
 
@@ -60,6 +61,8 @@ class Scheduler : public sc_core::sc_module {
   const CycleClock& clock_;
   SchedulerPolicy policy_;
   int coreCount_ = 0;
+  // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
+  std::vector<ReadyValidOut<CoreJob>*> core_;
   int target_ = kNone;           // core currently offered the job
   uint64_t offeredSequence_ = 0;
   int nextInLine_ = 0;           // round-robin
