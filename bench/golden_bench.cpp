@@ -8,11 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "camera.h"
+#include "bench_frame.h"
 #include "golden_model.h"
-#include "procedural_scenes.h"
 #include "result_summary.h"
-#include "svo_builder.h"
 
 using namespace rtu;
 
@@ -35,18 +33,15 @@ double bestSecondsToTrace(GoldenModel& model, const std::vector<TraversalJob>& j
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> scenes(argv + 1, argv + argc);
-  if (scenes.empty()) scenes = proceduralSceneNames();
-  Camera camera;
-  camera.width = 1280;
-  camera.height = 720;
+  const Camera camera = benchCamera();
   std::printf("golden model, 1 thread, %dx%d primary rays, depth-8 scenes, best of %d\n",
               camera.width, camera.height, kRepetitions);
   std::printf("%-10s %10s %10s %12s %8s\n", "scene", "hits %", "mean cost", "M rays/s", "target");
   bool allMet = true;
-  for (const std::string& name : scenes) {
-    const SvoBuild build = buildSvo(*makeProceduralScene(name, 8));
-    const std::vector<TraversalJob> jobs = makeFrameJobs(camera, build.image.root);
+  for (const std::string& name : benchScenes(argc, argv)) {
+    const BenchFrame frame = benchFrame(name);
+    const SvoBuild& build = frame.build;
+    const std::vector<TraversalJob>& jobs = frame.jobs;
     GoldenModel model(build.image.memory(), GoldenConfig{});
     std::vector<TraversalResult> results;
     const double seconds = bestSecondsToTrace(model, jobs, results);

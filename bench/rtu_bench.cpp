@@ -9,11 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "camera.h"
-#include "procedural_scenes.h"
+#include "bench_frame.h"
 #include "rtl_cycle_model.h"
 #include "rtu_simulation.h"
-#include "svo_builder.h"
 
 using namespace rtu;
 
@@ -28,11 +26,7 @@ struct Mode {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> scenes(argv + 1, argv + argc);
-  if (scenes.empty()) scenes = proceduralSceneNames();
-  Camera camera;
-  camera.width = 1280;
-  camera.height = 720;
+  const Camera camera = benchCamera();
   const std::vector<Mode> modes = {{"ideal", RtuConfig::idealMemory(), 1e6},
                                    {"cached", MemoryConfig{}, 3e5}};
   std::printf("SystemC RTU model, 16 cores, cfa, %dx%d primary rays, depth-8 scenes\n",
@@ -40,9 +34,10 @@ int main(int argc, char** argv) {
   std::printf("%-10s %-7s %12s %10s %10s %12s %8s\n", "scene", "memory", "cycles", "cyc/ray",
               "seconds", "M rays/s", "target");
   bool allMet = true;
-  for (const std::string& name : scenes) {
-    const SvoBuild build = buildSvo(*makeProceduralScene(name, 8));
-    const std::vector<TraversalJob> jobs = makeFrameJobs(camera, build.image.root);
+  for (const std::string& name : benchScenes(argc, argv)) {
+    const BenchFrame frame = benchFrame(name);
+    const SvoBuild& build = frame.build;
+    const std::vector<TraversalJob>& jobs = frame.jobs;
     for (const Mode& mode : modes) {
       RtuConfig config;
       config.memory = mode.memory;

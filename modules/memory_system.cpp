@@ -45,7 +45,6 @@ MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
     trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
     trace_->record(port.missSignal, cycle, port.l1->stats().misses);
   }
-  port.pendingAddress = address;
   return {result.hit, result.cycle};
 }
 

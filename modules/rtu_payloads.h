@@ -29,10 +29,9 @@ struct CoreJob {
   uint64_t pendingSince = 0;  // cycle the job reached the job manager's output
 };
 
-// The RTL's result_t, tagged with the core that produced it.
+// The RTL's result_t.
 struct CoreResult {
   uint64_t sequence = 0;
-  int core = 0;
   TraversalResult result;
 };
 

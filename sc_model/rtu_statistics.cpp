@@ -47,6 +47,18 @@ double RtuStatistics::simulatedRaysPerHostSecond() const {
 uint64_t RtuStatistics::idleCycles(const CoreStatistics& core) const {
   return totalCycles - std::min(totalCycles, core.busyCycles + core.blockedCycles + core.outCycles);
 }
+CoreStatistics RtuStatistics::allCores() const {
+  CoreStatistics total;
+  for (const CoreStatistics& c : coreTimes) {
+    total.jobs += c.jobs;
+    total.busyCycles += c.busyCycles;
+    total.blockedCycles += c.blockedCycles;
+    total.outCycles += c.outCycles;
+    total.stackOverflows += c.stackOverflows;
+  }
+  return total;
+}
+
 int64_t RtuStatistics::waitBound() const {
   if (scheduler == "cfa") return cores - 1;
   if (scheduler == "fa") return 0;
@@ -55,11 +67,9 @@ int64_t RtuStatistics::waitBound() const {
 
 nlohmann::json RtuStatistics::toJson() const {
   nlohmann::json coresJson = nlohmann::json::array();
-  uint64_t busy = 0, blocked = 0;
+  const CoreStatistics total = allCores();
   for (size_t i = 0; i < coreTimes.size(); ++i) {
     const CoreStatistics& c = coreTimes[i];
-    busy += c.busyCycles;
-    blocked += c.blockedCycles;
     nlohmann::json core = {{"core", i},          {"jobs", c.jobs},
                            {"idle", idleCycles(c)}, {"busy", c.busyCycles},
                            {"blocked", c.blockedCycles}, {"out", c.outCycles}};
@@ -76,7 +86,7 @@ nlohmann::json RtuStatistics::toJson() const {
       {"rays_per_second", raysPerSecond()},
       {"frames_per_second", framesPerSecond()},
       {"cores", coresJson},
-      {"blocked_share", ratio(blocked, busy + blocked)},
+      {"blocked_share", ratio(total.blockedCycles, total.busyCycles + total.blockedCycles)},
       {"stack_overflows", stackOverflows},
       {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
       {"scheduler",
@@ -110,17 +120,12 @@ void RtuStatistics::writeReport(std::ostream& out) const {
       << " per ray)\n";
   out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, "
       << framesPerSecond() << " frames/s\n";
-  uint64_t busy = 0, blocked = 0, out_ = 0, idle = 0;
-  for (const CoreStatistics& c : coreTimes) {
-    busy += c.busyCycles;
-    blocked += c.blockedCycles;
-    out_ += c.outCycles;
-    idle += idleCycles(c);
-  }
-  const uint64_t all = busy + blocked + out_ + idle;
-  out << "core time (" << cores << " cores): busy " << 100 * ratio(busy, all) << " %, blocked "
-      << 100 * ratio(blocked, all) << " %, waiting to hand over " << 100 * ratio(out_, all)
-      << " %, idle " << 100 * ratio(idle, all) << " %\n";
+  const CoreStatistics total = allCores();
+  const uint64_t all = totalCycles * coreTimes.size();
+  const uint64_t idle = all - std::min(all, total.busyCycles + total.blockedCycles + total.outCycles);
+  out << "core time (" << cores << " cores): busy " << 100 * ratio(total.busyCycles, all)
+      << " %, blocked " << 100 * ratio(total.blockedCycles, all) << " %, waiting to hand over "
+      << 100 * ratio(total.outCycles, all) << " %, idle " << 100 * ratio(idle, all) << " %\n";
   out << "scheduler " << scheduler << ": max wait " << maxWait << " cycles, "
       << maxWaitWithReadyCore << " with a core ready (eq. 6.7 bound: "
       << (waitBound() < 0 ? std::string("W_J") : std::to_string(waitBound())) << ")\n";
@@ -144,10 +149,8 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.clockMhz = config.clockMhz;
   stats.cores = config.cores;
   stats.scheduler = toString(config.scheduler);
-  for (const auto& core : top.cores()) {
-    stats.coreTimes.push_back(core->statistics());
-    stats.stackOverflows += core->statistics().stackOverflows;
-  }
+  for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
+  stats.stackOverflows = stats.allCores().stackOverflows;
   stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
   const SchedulerStatistics& scheduler = top.scheduler().statistics();
   stats.waitHistogram = scheduler.waitHistogram;

@@ -41,6 +41,7 @@ struct RtuStatistics {
   double dramBytesPerCycle() const;
   double simulatedRaysPerHostSecond() const;
   uint64_t idleCycles(const CoreStatistics& core) const;
+  CoreStatistics allCores() const;  // the cores' times summed
   // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
   int64_t waitBound() const;
 

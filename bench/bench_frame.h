@@ -1,0 +1,37 @@
+#pragma once
+// The workload every benchmark measures: 1280x720 primary rays of the default camera on the
+// depth-8 procedural scenes named on the command line (all of them when none is).
+
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "procedural_scenes.h"
+#include "svo_builder.h"
+
+namespace rtu {
+
+inline std::vector<std::string> benchScenes(int argc, char** argv) {
+  std::vector<std::string> scenes(argv + 1, argv + argc);
+  return scenes.empty() ? proceduralSceneNames() : scenes;
+}
+
+inline Camera benchCamera() {
+  Camera camera;
+  camera.width = 1280;
+  camera.height = 720;
+  return camera;
+}
+
+struct BenchFrame {
+  SvoBuild build;
+  std::vector<TraversalJob> jobs;
+};
+
+inline BenchFrame benchFrame(const std::string& scene) {
+  BenchFrame frame{buildSvo(*makeProceduralScene(scene, 8)), {}};
+  frame.jobs = makeFrameJobs(benchCamera(), frame.build.image.root);
+  return frame;
+}
+
+}  // namespace rtu
