@@ -1,5 +1,6 @@
 #pragma once
-// Pacing of a host stream (the thesis' AXI DMA, about 300 MB/s at 100 MHz: 3 bytes per cycle).
+// Pacing of a host stream (the thesis' 64-bit AXI DMA moves 8 bytes per cycle: a record every 4
+// cycles, as its Table 8.5 measures; docs/exploration.md).
 // One 32-byte record crosses at most every 32 / bytesPerCycle cycles after the previous one; 0
 // means unlimited (a record every cycle, the thesis configuration of the exactness claim). For
 // tests, a seeded random pattern makes the link inactive in some cycles (back-pressure).

@@ -25,6 +25,7 @@ class HostSink : public sc_core::sc_module {
   const std::vector<CoreResult>& results() const { return results_; }
   const std::vector<uint64_t>& arrivalCycles() const { return arrivalCycles_; }
   bool complete() const { return results_.size() == expected_; }
+  uint64_t expected() const { return expected_; }
 
  private:
   void end_of_elaboration() override;

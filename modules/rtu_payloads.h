@@ -32,7 +32,8 @@ struct CoreJob {
 // The RTL's result_t.
 struct CoreResult {
   uint64_t sequence = 0;
-  TraversalResult result;
+  TraversalResult result;       // its cost counts traversal states only, as the golden model's
+  uint32_t blockedCycles = 0;   // cycles the core spent BLOCKED on memory for this ray
 };
 
 }  // namespace rtu

@@ -110,8 +110,7 @@ void SvoTraversalCore::consumeWordIn(uint64_t dataCycle) {
 }
 
 void SvoTraversalCore::offerResult() {
-  CoreResult result{job_.sequence, makeResult(job_.idWord, core_)};
-  result.result.cost += static_cast<uint32_t>(blocked_);
+  CoreResult result{job_.sequence, makeResult(job_.idWord, core_), static_cast<uint32_t>(blocked_)};
   statistics_.busyCycles += core_.cost();
   statistics_.blockedCycles += blocked_;
   if (core_.stackOverflow()) ++statistics_.stackOverflows;

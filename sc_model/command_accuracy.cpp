@@ -2,8 +2,8 @@
 #include <memory>
 
 #include "accuracy.h"
-#include "cli_options.h"
 #include "commands.h"
+#include "config_options.h"
 
 namespace rtu {
 
@@ -24,7 +24,6 @@ size_t countConversionDifferences(const std::vector<TraversalJob>& jobs, const F
 
 void addAccuracyCommand(CLI::App& app) {
   struct Options {
-    FrameOptions frame;
     double tolerance = 1e-3;
   };
   auto options = std::make_shared<Options>();
@@ -32,29 +31,34 @@ void addAccuracyCommand(CLI::App& app) {
       "accuracy",
       "compare the fixed-point golden model with the float64 reference, and the RTL "
       "float-to-fixed conversion with the exact one, on one frame");
-  addFrameOptions(*command, options->frame);
+  auto request = addConfigOptions(*command, kUseArithmetic | kUseScene | kUseCamera);
   command->add_option("--tolerance", options->tolerance, "largest t difference that agrees")
       ->capture_default_str();
-  command->callback([options] {
-    const Scene scene = loadScene(options->frame.scene);
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    const RunConfig& frame = configuration.values();
+    const GoldenConfig golden = frame.golden();
+    golden.format.validate();
+    frame.camera.validate();
+    const Scene scene = loadScene(frame.scene);
     const SvoMemory memory = scene.image.memory();
-    const std::vector<Ray> rays = frameRays(options->frame.camera);
-    const AccuracyReport report = measureAccuracy(memory, scene.image.root, rays, options->frame.config,
-                                                  options->frame.epsilon, options->tolerance);
+    const std::vector<Ray> rays = frameRays(frame.camera);
+    const AccuracyReport report = measureAccuracy(memory, scene.image.root, rays, golden,
+                                                  frame.epsilon, options->tolerance);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "golden      " << options->frame.config.format.describe() << ", "
-              << toString(options->frame.config.conversion) << " conversion vs float64 reference\n"
+              << "golden      " << golden.format.describe() << ", "
+              << toString(golden.conversion) << " conversion vs float64 reference\n"
               << report.describe();
 
     const std::vector<TraversalJob> jobs =
-        makeFrameJobs(options->frame.camera, scene.image.root, options->frame.epsilon);
-    GoldenConfig rtl = options->frame.config;
+        makeFrameJobs(frame.camera, scene.image.root, frame.epsilon);
+    GoldenConfig rtl = golden;
     rtl.conversion = FloatConversion::Rtl;
-    GoldenConfig exact = options->frame.config;
+    GoldenConfig exact = golden;
     exact.conversion = FloatConversion::Exact;
     const size_t resultDifferences = countDifferences(GoldenModel(memory, rtl).traceAll(jobs),
                                                       GoldenModel(memory, exact).traceAll(jobs));
-    std::cout << "rtl/exact   " << countConversionDifferences(jobs, options->frame.config.format)
+    std::cout << "rtl/exact   " << countConversionDifferences(jobs, golden.format)
               << " of " << jobs.size() * 6 << " t-values convert differently; "
               << resultDifferences << " of " << jobs.size() << " results differ\n";
   });

@@ -3,13 +3,13 @@
 
 #include "cli_options.h"
 #include "commands.h"
+#include "config_options.h"
 #include "svo_image.h"
 
 namespace rtu {
 
 void addBuildCommand(CLI::App& app) {
   struct Options {
-    SceneSpec scene;
     std::string out;
     bool modelHeader = false;
     ModelPlacement placement;
@@ -18,14 +18,14 @@ void addBuildCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "build", "build an SVO memory image from a procedural scene, a mesh or a .binvox file");
-  addSceneOptions(*command, options->scene);
+  auto request = addConfigOptions(*command, kUseScene);
   command->add_option("--out", options->out, "output .svo file")->required();
   CLI::Option* header = command->add_flag(
       "--model-header", options->modelHeader,
       "append an animated model's header (16 words) after the image and print its word address");
   addPlacementOptions(*command, options->placement, options->rotationDegrees, header);
-  command->callback([options] {
-    Scene scene = loadScene(options->scene);
+  command->callback([options, request] {
+    Scene scene = loadScene(request->resolve().values().scene);
     std::string headerReport;
     if (options->modelHeader) {
       options->placement.rotation = rotationFromEulerDegrees(options->rotationDegrees);

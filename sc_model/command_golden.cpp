@@ -2,8 +2,8 @@
 #include <iostream>
 #include <memory>
 
-#include "cli_options.h"
 #include "commands.h"
+#include "config_options.h"
 #include "golden_model.h"
 #include "host_buffers.h"
 #include "result_summary.h"
@@ -29,39 +29,26 @@ std::vector<TraversalJob> jobsFromRayBuffer(const SvoImage& image, const std::st
 
 void addGoldenCommand(CLI::App& app) {
   struct Options {
-    std::string svo, jobs, rays, out;
-    double epsilon = kDefaultDirectionEpsilon;
-    GoldenConfig config;
+    std::string out;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "golden", "replay a host input buffer (job or ray records) through the untimed bit-exact "
       "golden model");
-  command->add_option("--svo", options->svo, "SVO memory image")->required()->check(CLI::ExistingFile);
-  CLI::Option* jobs =
-      command->add_option("--jobs", options->jobs, "host input buffer (8 u32 per job)")
-          ->check(CLI::ExistingFile);
-  CLI::Option* rays =
-      command->add_option("--rays", options->rays, "ray buffer (8 u32 per world-space ray record)")
-          ->check(CLI::ExistingFile)
-          ->excludes(jobs);
-  command->add_option("--epsilon", options->epsilon,
-                      "job manager: direction components below epsilon times the largest count "
-                      "as zero (--rays)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0))
-      ->needs(rays);
+  auto request = addConfigOptions(*command, kUseArithmetic | kUseBuffers);
   command->add_option("--out", options->out, "host output buffer to write")->required();
-  addGoldenOptions(*command, options->config);
-  command->callback([options] {
-    if (options->jobs.empty() && options->rays.empty())
-      throw std::invalid_argument("give the input: --jobs (job records) or --rays (ray records)");
-    const SvoImage image = readSvoFile(options->svo);
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    const RunConfig& settings = configuration.values();
+    checkOneInputBuffer(settings);
+    const GoldenConfig golden = settings.golden();
+    golden.format.validate();
+    const SvoImage image = readSvoFile(settings.scene.svoFile);
     const std::vector<TraversalJob> jobs =
-        options->rays.empty() ? readJobBuffer(options->jobs)
-                              : jobsFromRayBuffer(image, options->rays, options->epsilon);
-    checkStackDepth(image, jobs, options->config.stackFrames, /*allowOverflow=*/true);
-    GoldenModel model(image.memory(), options->config);
+        settings.rays.empty() ? readJobBuffer(settings.jobs)
+                              : jobsFromRayBuffer(image, settings.rays, settings.rtu.jobManager.epsilon);
+    checkStackDepth(image, jobs, golden.stackFrames, /*allowOverflow=*/true);
+    GoldenModel model(image.memory(), golden);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<TraversalResult> results = model.traceAll(jobs);
     const double seconds =

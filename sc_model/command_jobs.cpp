@@ -1,8 +1,8 @@
 #include <iostream>
 #include <memory>
 
-#include "cli_options.h"
 #include "commands.h"
+#include "config_options.h"
 #include "host_buffers.h"
 
 namespace rtu {
@@ -18,8 +18,6 @@ void reportWritten(size_t records, const std::string& kind, const std::string& p
 
 void addJobsCommand(CLI::App& app) {
   struct Options {
-    Camera camera;
-    double epsilon = kDefaultDirectionEpsilon;
     uint32_t root = 0;
     std::string out;
     std::string rays;
@@ -29,7 +27,7 @@ void addJobsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "jobs", "write one frame's primary rays as host job records (thesis driver format) or as "
               "ray records for an animated model");
-  addCameraOptions(*command, options->camera, options->epsilon);
+  auto request = addConfigOptions(*command, kUseCamera);
   command->add_option("--root", options->root, "root descriptor address written into each job")
       ->capture_default_str();
   CLI::Option* out = command->add_option("--out", options->out, "output job buffer");
@@ -40,18 +38,21 @@ void addJobsCommand(CLI::App& app) {
       "word address of the model header written into each ray record (see build --model-header)");
   rays->needs(modelAddress);
   modelAddress->needs(rays);
-  command->callback([options, out, rays] {
+  command->callback([options, request, out, rays] {
+    const Configuration configuration = request->resolve();
+    const Camera& camera = configuration.values().camera;
+    camera.validate();
     if (!*out && !*rays)
       throw std::invalid_argument("give --out (job records), --rays (ray records) or both");
     if (*out) {
       const std::vector<TraversalJob> jobs =
-          makeFrameJobs(options->camera, options->root, options->epsilon);
+          makeFrameJobs(camera, options->root, configuration.values().epsilon);
       writeJobBuffer(options->out, jobs);
       reportWritten(jobs.size(), "jobs", options->out);
     }
     if (*rays) {
       const std::vector<RayRecord> records =
-          makeFrameRayRecords(options->camera, options->modelAddress);
+          makeFrameRayRecords(camera, options->modelAddress);
       writeRayBuffer(options->rays, records);
       reportWritten(records.size(), "ray records", options->rays);
     }

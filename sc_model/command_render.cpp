@@ -3,29 +3,29 @@
 #include <iostream>
 #include <memory>
 
-#include "cli_options.h"
 #include "commands.h"
+#include "config_options.h"
 #include "frame_images.h"
 #include "golden_model.h"
 #include "result_summary.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
 #include "stack_check.h"
+#include "sweep_workers.h"
 
 namespace rtu {
 namespace {
 
 struct RenderOptions {
-  FrameOptions frame;
-  RtuOptions rtu;
+  RunOutputs outputs;
   std::string model = "systemc";
   std::string image, depthImage, costImage;
 };
 
 std::vector<TraversalResult> traceWithGolden(const Scene& scene,
                                              const std::vector<TraversalJob>& jobs,
-                                             const RenderOptions& options) {
-  GoldenModel model(scene.image.memory(), options.frame.config);
+                                             const Configuration& configuration) {
+  GoldenModel model(scene.image.memory(), configuration.values().golden());
   const auto start = std::chrono::steady_clock::now();
   std::vector<TraversalResult> results = model.traceAll(jobs);
   const double seconds =
@@ -39,14 +39,15 @@ std::vector<TraversalResult> traceWithGolden(const Scene& scene,
 
 std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
                                               const std::vector<TraversalJob>& jobs,
+                                              const Configuration& configuration,
                                               const RenderOptions& options) {
-  const RtuConfig config = options.rtu.resolve(options.frame.config);
-  validate(config);
-  checkStackDepth(scene.image, jobs, config.stackFrames, options.rtu.allowStackOverflow);
-  const RtuRun run = simulateRtu(scene.image.memory(), jobs, config);
+  const RtuConfig config = options.outputs.traced(configuration.values().rtu);
+  checkStackDepth(scene.image, jobs, config.stackFrames, configuration.values().allowStackOverflow);
+  RunProgressLine progress("render", "rays");
+  const RtuRun run = simulateRtu(scene.image.memory(), jobs, config, progress.callback());
   std::vector<TraversalResult> results = resultsInJobOrder(run);
   std::cout << ResultSummary::of(results).describe();
-  reportRun(run, options.rtu, std::cout);
+  reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
   return results;
 }
@@ -58,8 +59,8 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "render one frame of primary rays on the cycle-accurate RTU model (or the golden "
                 "model) and report it");
-  addFrameOptions(*command, options->frame);
-  addRtuOptions(*command, options->rtu);
+  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera);
+  addRunOutputOptions(*command, options->outputs);
   command->add_option("--model", options->model,
                       "systemc (cycle-accurate, with statistics and frame rate) or golden "
                       "(untimed, bit-exact)")
@@ -70,22 +71,24 @@ void addRenderCommand(CLI::App& app) {
                       "depth image: float t in EXR/TIFF, grey levels otherwise");
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
-  command->callback([options] {
-    const Scene scene = loadScene(options->frame.scene);
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    const RunConfig& settings = configuration.values();
+    settings.camera.validate();
+    if (options->model != "golden") validate(options->outputs.traced(settings.rtu));
+    const GoldenConfig golden = settings.golden();
+    const Scene scene = loadScene(settings.scene);
     const std::vector<TraversalJob> jobs =
-        makeFrameJobs(options->frame.camera, scene.image.root, options->frame.epsilon);
+        makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "model       " << options->model << ", "
-              << options->frame.config.format.describe() << ", "
-              << toString(options->frame.config.conversion) << " conversion, "
-              << options->frame.config.stackFrames << " stack frames\n"
-              << "frame       " << options->frame.camera.width << "x"
-              << options->frame.camera.height << "\n";
-    const std::vector<TraversalResult> results = options->model == "golden"
-                                                     ? traceWithGolden(scene, jobs, *options)
-                                                     : traceWithSystemC(scene, jobs, *options);
-    const RenderedFrame rendered =
-        RenderedFrame::fromResults(options->frame.camera, options->frame.config.format, results);
+              << "model       " << options->model << ", " << golden.format.describe() << ", "
+              << toString(golden.conversion) << " conversion, " << golden.stackFrames
+              << " stack frames\n"
+              << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
+    const std::vector<TraversalResult> results =
+        options->model == "golden" ? traceWithGolden(scene, jobs, configuration)
+                                   : traceWithSystemC(scene, jobs, configuration, *options);
+    const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
     if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);

@@ -12,5 +12,9 @@ void addGoldenCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addReplayCommand(CLI::App& app);
 void addAccuracyCommand(CLI::App& app);
+void addConfigCommand(CLI::App& app);
+void addFpsCommand(CLI::App& app);
+void addSweepCommand(CLI::App& app);
+void addPlotCommands(CLI::App& app);  // plot and report
 
 }  // namespace rtu

@@ -1,6 +1,7 @@
 #pragma once
 // Images of a rendered frame, written through OpenImageIO (format from the file extension:
-// PNG, EXR, TIFF, ...).
+// PNG, EXR, TIFF, ...). OpenImageIO is called in librtusim_images.so (image_plugin.cpp), loaded
+// on first use (stimuli/plugin_loader.h): a missing module is a std::runtime_error naming it.
 
 #include <string>
 #include <vector>
@@ -26,8 +27,12 @@ void writeShadedImage(const RenderedFrame& frame, const std::string& path);
 // t_hit per pixel: float t with misses 0 for EXR/TIFF/HDR files, otherwise grey levels from
 // near (white) to far (dark) over the frame's hit range, misses black.
 void writeDepthImage(const RenderedFrame& frame, const std::string& path);
-// Thesis figure 8.2 and the driver's save_output: misses red, the more cycles the deeper
-// (0.95^((cost - 2) / 2) in green and blue), hits grey by normal axis (x 0.7, y 0.9, z 0.5).
+// Cost heat map after thesis figure 8.2: every pixel coloured by its cost in cycles on one
+// logarithmic scale from the frame's cheapest to its dearest ray; hits in viridis (dark blue
+// cheap, yellow dear), misses in red (pale pink cheap, dark red dear). Frames at least 96 pixels
+// wide get a 46-pixel strip below: both colour ramps, ticks and labels in cycles (the minimum,
+// round values, the maximum), and from 200 pixels a hit/miss/cycles legend. Labels use
+// DejaVu Sans through OpenImageIO, or a built-in 5x7 bitmap font when no font loads.
 void writeCostImage(const RenderedFrame& frame, const std::string& path);
 
 }  // namespace rtu

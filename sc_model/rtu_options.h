@@ -1,6 +1,6 @@
 #pragma once
-// Command-line options of the SystemC RTU model (replay, render), bound to CLI11, and what the
-// commands do with a finished run: the report, the --stats JSON.
+// What the commands that run the SystemC model write besides their main output: the --stats JSON
+// (statistics with the whole effective configuration and the rtusim version) and the VCD trace.
 
 #include <cstdint>
 #include <iosfwd>
@@ -9,31 +9,33 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
-#include "golden_model.h"
+#include "configuration.h"
 #include "rtu_config.h"
 #include "rtu_simulation.h"
-#include "svo_image.h"
 
 namespace rtu {
 
-struct RtuOptions {
-  RtuConfig config;
-  std::string memory = "ideal";
+struct RunOutputs {
   std::string statsPath;
   std::string vcdPath;
   uint64_t vcdFrom = 0;
   uint64_t vcdTo = std::numeric_limits<uint64_t>::max();
   std::vector<std::string> vcdScopes;
-  bool allowStackOverflow = false;
 
-  // The configuration after parsing: memory kind, trace and the golden model's arithmetic.
-  RtuConfig resolve(const GoldenConfig& golden) const;
+  // The model configuration with the trace asked for.
+  RtuConfig traced(const RtuConfig& config) const;
 };
 
-void addRtuOptions(CLI::App& command, RtuOptions& options);
+void addRunOutputOptions(CLI::App& command, RunOutputs& outputs);
+
+// {"rtusim": {"version"}, "config": {every key}, "statistics": {...}}: a result file that says
+// how to reproduce it.
+nlohmann::ordered_json runJson(const RtuStatistics& statistics, const Configuration& configuration);
 
 // Prints the report and writes the --stats JSON if asked for.
-void reportRun(const RtuRun& run, const RtuOptions& options, std::ostream& out);
+void reportRun(const RtuRun& run, const Configuration& configuration, const RunOutputs& outputs,
+               std::ostream& out);
 
 }  // namespace rtu

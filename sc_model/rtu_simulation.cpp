@@ -18,15 +18,26 @@ void freshKernel() {
   sc_core::sc_default_global_context = sc_core::sc_curr_simcontext;
 }
 
+// Simulates until no event is left. With a progress callback it stops every 2^18 cycles to report;
+// stopping and resuming does not change what happens in any cycle.
+void runToCompletion(const HostSink& sink, const sc_core::sc_time& period, const RunProgress& progress) {
+  if (!progress) return sc_core::sc_start();
+  constexpr double kSliceCycles = 262144;
+  do {
+    sc_core::sc_start(period * kSliceCycles);
+    progress(sink.results().size(), sink.expected());
+  } while (sc_core::sc_pending_activity());
+}
+
 }  // namespace
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
-                   const RtuConfig& config) {
-  return simulateRtu(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
+                   const RtuConfig& config, const RunProgress& progress) {
+  return simulateRtu(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, progress);
 }
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config) {
+                   const RtuConfig& config, const RunProgress& progress) {
   validate(config);
   freshKernel();
   std::unique_ptr<CycleTrace> trace;
@@ -38,7 +49,7 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
 
   const auto start = std::chrono::steady_clock::now();
-  sc_core::sc_start();
+  runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz).period(), progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -52,6 +63,7 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   for (const CoreResult& result : sink.results()) {
     run.results.push_back(result.result);
     run.jobIndices.push_back(result.sequence);
+    run.blockedCycles.push_back(result.blockedCycles);
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;

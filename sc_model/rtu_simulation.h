@@ -4,6 +4,7 @@
 // in one process (tests, sweeps); they do not share any kernel state.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "rtu_config.h"
@@ -18,17 +19,21 @@ struct RtuRun {
   std::vector<TraversalResult> results;  // in the order the host received them
   std::vector<uint64_t> jobIndices;      // the job each result answers
   std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
+  std::vector<uint32_t> blockedCycles;   // each result's cycles BLOCKED on memory (beside its cost)
   // From the first cycle after reset up to and including the cycle the last result is taken.
   uint64_t totalCycles = 0;
   RtuStatistics statistics;
 };
 
+// Told now and then how many results the host has received of how many.
+using RunProgress = std::function<void(size_t results, size_t total)>;
+
 // Throws std::invalid_argument for impossible configurations and std::runtime_error when the
 // simulation ends without every result (which would be a model defect).
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config);
+                   const RtuConfig& config, const RunProgress& progress = {});
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
-                   const RtuConfig& config);
+                   const RtuConfig& config, const RunProgress& progress = {});
 
 // Results ordered by job index, as the golden model returns them.
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run);

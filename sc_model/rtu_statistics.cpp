@@ -13,7 +13,7 @@ double ratio(uint64_t part, uint64_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
 
-nlohmann::json cacheJson(const CacheStats& stats) {
+nlohmann::ordered_json cacheJson(const CacheStats& stats) {
   return {{"accesses", stats.accesses}, {"hits", stats.hits},       {"merged", stats.merged},
           {"misses", stats.misses},     {"evictions", stats.evictions},
           {"hit_rate", ratio(stats.hits + stats.merged, stats.accesses)}};
@@ -65,67 +65,123 @@ int64_t RtuStatistics::waitBound() const {
   return -1;
 }
 
-nlohmann::json RtuStatistics::toJson() const {
-  nlohmann::json coresJson = nlohmann::json::array();
+std::vector<uint64_t> RtuStatistics::waitHistogramArray() const {
+  std::vector<uint64_t> histogram(waitHistogram.empty() ? 0 : waitHistogram.rbegin()->first + 1);
+  for (const auto& [wait, jobs] : waitHistogram) histogram[wait] = jobs;
+  return histogram;
+}
+
+RtuStatistics::CoreTimeShares RtuStatistics::coreTimeShares() const {
   const CoreStatistics total = allCores();
+  const uint64_t all = totalCycles * coreTimes.size();
+  const uint64_t used = total.busyCycles + total.blockedCycles + total.outCycles;
+  return {ratio(total.busyCycles, all), ratio(total.blockedCycles, all),
+          ratio(total.outCycles, all), ratio(all - std::min(all, used), all)};
+}
+
+double RtuStatistics::frameMilliseconds() const {
+  return static_cast<double>(totalCycles) / (clockMhz * 1e3);
+}
+
+namespace {
+
+// Share of the run a host link spends moving records; an unlimited link moves one a cycle.
+double linkUtilisation(uint64_t records, double bytesPerCycle, uint64_t cycles) {
+  const double cyclesPerRecord =
+      bytesPerCycle > 0 ? static_cast<double>(kHostRecordBytes) / bytesPerCycle : 1.0;
+  return cycles == 0 ? 0.0 : std::min(1.0, records * cyclesPerRecord / cycles);
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> RtuStatistics::utilisation() const {
+  const CoreTimeShares shares = coreTimeShares();
+  // The job manager and scheduler issue at most one job a cycle.
+  const double issue = totalCycles == 0 ? 0.0 : ratio(rays, totalCycles);
+  return {{"cores", shares.busy},
+          {"memory", shares.blocked},
+          {"host_in", hostInBytesPerCycle > 0 ? linkUtilisation(rays, hostInBytesPerCycle, totalCycles) : 0.0},
+          {"host_out", hostOutBytesPerCycle > 0 ? linkUtilisation(rays, hostOutBytesPerCycle, totalCycles) : 0.0},
+          {"job_manager", issue}};
+}
+
+std::string RtuStatistics::limit() const {
+  const auto all = utilisation();
+  return std::max_element(all.begin(), all.end(),
+                          [](const auto& a, const auto& b) { return a.second < b.second; })
+      ->first;
+}
+
+nlohmann::ordered_json RtuStatistics::toJson() const {
+  using json = nlohmann::ordered_json;
+  json coresJson = json::array();
   for (size_t i = 0; i < coreTimes.size(); ++i) {
     const CoreStatistics& c = coreTimes[i];
-    nlohmann::json core = {{"core", i},          {"jobs", c.jobs},
-                           {"idle", idleCycles(c)}, {"busy", c.busyCycles},
-                           {"blocked", c.blockedCycles}, {"out", c.outCycles}};
+    json core = {{"core", i},           {"jobs", c.jobs},
+                 {"busy", c.busyCycles}, {"blocked", c.blockedCycles},
+                 {"handover", c.outCycles}, {"idle", idleCycles(c)}};
     if (!idealMemory) core["l1"] = cacheJson(l1[i]);
     coresJson.push_back(core);
   }
-  nlohmann::json histogram = nlohmann::json::object();
-  for (const auto& [wait, jobs] : waitHistogram) histogram[std::to_string(wait)] = jobs;
-  nlohmann::json json = {
+  const CoreTimeShares shares = coreTimeShares();
+  json utilisationJson = json::object();
+  for (const auto& [resource, value] : utilisation()) utilisationJson[resource] = value;
+  json result = {
       {"rays", rays},
       {"total_cycles", totalCycles},
       {"cycles_per_ray", cyclesPerRay()},
       {"clock_mhz", clockMhz},
+      {"frame_ms", frameMilliseconds()},
+      {"fps", framesPerSecond()},
       {"rays_per_second", raysPerSecond()},
-      {"frames_per_second", framesPerSecond()},
+      {"limit", limit()},
+      {"utilisation", utilisationJson},
+      {"cost", {{"mean", ratio(totalCost, rays)}, {"max", maxCost}, {"total", totalCost}}},
+      {"blocked_cycles", {{"mean", ratio(totalBlocked, rays)}, {"max", maxBlocked}, {"total", totalBlocked}}},
+      {"core_time",
+       {{"busy", shares.busy}, {"blocked", shares.blocked}, {"handover", shares.handover},
+        {"idle", shares.idle}}},
       {"cores", coresJson},
-      {"blocked_share", ratio(total.blockedCycles, total.busyCycles + total.blockedCycles)},
       {"stack_overflows", stackOverflows},
       {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
       {"scheduler",
        {{"policy", scheduler},
-        {"wait_histogram", histogram},
+        {"wait_histogram", waitHistogramArray()},
         {"max_wait", maxWait},
         {"max_wait_with_ready_core", maxWaitWithReadyCore},
-        {"eq_6_7_bound", waitBound() < 0 ? nlohmann::json("W_J") : nlohmann::json(waitBound())}}},
+        {"eq_6_7_bound", waitBound() < 0 ? json("W_J") : json(waitBound())}}},
       {"result_manager", {{"max_buffers_full", resultBuffersMaxFull}}},
       {"memory", {{"kind", idealMemory ? "ideal" : "cached"}}},
       {"simulation", {{"host_seconds", hostSeconds},
                       {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
-  if (reorderMaxOccupancy > 0) json["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
+  if (reorderMaxOccupancy > 0) result["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
   if (!idealMemory) {
-    json["memory"]["l1"] = cacheJson(sum(l1));
-    json["memory"]["l2"] = cacheJson(l2.cache);
-    json["memory"]["l2"]["port_queue_cycles"] = l2.portQueueCycles;
-    json["memory"]["l2"]["mshr_queue_cycles"] = l2.mshrQueueCycles;
-    json["memory"]["dram"] = {{"reads", l2.dram.reads},
-                              {"bytes", l2.dram.bytes},
-                              {"busy_cycles", l2.dram.busyCycles},
-                              {"bytes_per_cycle", dramBytesPerCycle()},
-                              {"bandwidth_mb_per_second", dramBytesPerCycle() * clockMhz}};
+    result["memory"]["l1"] = cacheJson(sum(l1));
+    result["memory"]["l2"] = cacheJson(l2.cache);
+    result["memory"]["l2"]["port_queue_cycles"] = l2.portQueueCycles;
+    result["memory"]["l2"]["mshr_queue_cycles"] = l2.mshrQueueCycles;
+    result["memory"]["dram"] = {{"reads", l2.dram.reads},
+                                {"bytes", l2.dram.bytes},
+                                {"busy_cycles", l2.dram.busyCycles},
+                                {"bytes_per_cycle", dramBytesPerCycle()},
+                                {"bandwidth_mb_per_second", dramBytesPerCycle() * clockMhz}};
   }
-  return json;
+  return result;
 }
 
 void RtuStatistics::writeReport(std::ostream& out) const {
   out << std::fixed << std::setprecision(2);
   out << "rays " << rays << ", total cycles " << totalCycles << " (" << cyclesPerRay()
       << " per ray)\n";
-  out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, "
-      << framesPerSecond() << " frames/s\n";
-  const CoreStatistics total = allCores();
-  const uint64_t all = totalCycles * coreTimes.size();
-  const uint64_t idle = all - std::min(all, total.busyCycles + total.blockedCycles + total.outCycles);
-  out << "core time (" << cores << " cores): busy " << 100 * ratio(total.busyCycles, all)
-      << " %, blocked " << 100 * ratio(total.blockedCycles, all) << " %, waiting to hand over "
-      << 100 * ratio(total.outCycles, all) << " %, idle " << 100 * ratio(idle, all) << " %\n";
+  out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, frame "
+      << frameMilliseconds() << " ms, " << framesPerSecond() << " frames/s, limited by "
+      << limit() << "\n";
+  out << "per ray: cost " << ratio(totalCost, rays) << " states (max " << maxCost
+      << "), blocked " << ratio(totalBlocked, rays) << " cycles (max " << maxBlocked << ")\n";
+  const CoreTimeShares shares = coreTimeShares();
+  out << "core time (" << cores << " cores): busy " << 100 * shares.busy << " %, blocked "
+      << 100 * shares.blocked << " %, handover " << 100 * shares.handover << " %, idle "
+      << 100 * shares.idle << " %\n";
   out << "scheduler " << scheduler << ": max wait " << maxWait << " cycles, "
       << maxWaitWithReadyCore << " with a core ready (eq. 6.7 bound: "
       << (waitBound() < 0 ? std::string("W_J") : std::to_string(waitBound())) << ")\n";
@@ -151,6 +207,14 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.scheduler = toString(config.scheduler);
   for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
   stats.stackOverflows = stats.allCores().stackOverflows;
+  for (const CoreResult& result : top.sink().results()) {
+    stats.totalCost += result.result.cost;
+    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.result.cost);
+    stats.totalBlocked += result.blockedCycles;
+    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, result.blockedCycles);
+  }
+  stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
+  stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
   stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
   const SchedulerStatistics& scheduler = top.scheduler().statistics();
   stats.waitHistogram = scheduler.waitHistogram;

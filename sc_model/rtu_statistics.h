@@ -33,7 +33,21 @@ struct RtuStatistics {
   std::vector<CacheStats> l1;
   L2Stats l2;
   uint64_t stackOverflows = 0;
+  uint64_t totalCost = 0, maxCost = 0;  // traversal states per ray, as the golden model counts
+  uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
+  double hostInBytesPerCycle = 0.0, hostOutBytesPerCycle = 0.0;  // 0: a record a cycle
   double hostSeconds = 0.0;
+
+  // Shares of the cores' time (cores x total cycles); they add up to 1.
+  struct CoreTimeShares {
+    double busy = 0, blocked = 0, handover = 0, idle = 0;
+  };
+  CoreTimeShares coreTimeShares() const;
+  // Utilisation of each resource that can bound the frame rate, and the one that does; the
+  // rule is in docs/exploration.md.
+  std::vector<std::pair<std::string, double>> utilisation() const;
+  std::string limit() const;
+  double frameMilliseconds() const;
 
   double cyclesPerRay() const;
   double raysPerSecond() const;    // at the simulated clock
@@ -41,11 +55,12 @@ struct RtuStatistics {
   double dramBytesPerCycle() const;
   double simulatedRaysPerHostSecond() const;
   uint64_t idleCycles(const CoreStatistics& core) const;
+  std::vector<uint64_t> waitHistogramArray() const;  // index: wait in cycles
   CoreStatistics allCores() const;  // the cores' times summed
   // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
   int64_t waitBound() const;
 
-  nlohmann::json toJson() const;
+  nlohmann::ordered_json toJson() const;
   void writeReport(std::ostream& out) const;
 };
 

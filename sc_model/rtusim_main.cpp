@@ -6,9 +6,11 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.h"
+#include "configuration.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rtusim: models of a ray tracing unit for sparse voxel octrees"};
+  app.set_version_flag("--version", rtu::rtusimVersion());
   app.require_subcommand(1);
   rtu::addBuildCommand(app);
   rtu::addValidateCommand(app);
@@ -17,6 +19,10 @@ int main(int argc, char** argv) {
   rtu::addReplayCommand(app);
   rtu::addRenderCommand(app);
   rtu::addAccuracyCommand(app);
+  rtu::addConfigCommand(app);
+  rtu::addFpsCommand(app);
+  rtu::addSweepCommand(app);
+  rtu::addPlotCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

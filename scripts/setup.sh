@@ -2,7 +2,8 @@
 # Shared set-up for run.sh and test.sh: install missing Debian packages, configure and build
 # Release into build/. Sourced, so the callers keep `set -euo pipefail`.
 packages=(cmake g++ make libsystemc-dev libglm-dev libopenimageio-dev catch2 libcli11-dev
-          nlohmann-json3-dev libassimp-dev pkg-config)
+          nlohmann-json3-dev libassimp-dev pkg-config libtomlplusplus-dev python3-matplotlib
+          slurm-wlm munge)
 
 missing=()
 for package in "${packages[@]}"; do

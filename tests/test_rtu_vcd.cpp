@@ -296,13 +296,16 @@ void checkTrace(const Traced& t, int cores) {
 
   // The result of job k: from core c_k, taken in a cycle with result_select = c_k, at least
   // cost + 2 cycles after the dispatch.
-  const std::vector<TraversalResult> byJob = resultsInJobOrder(run);
-  std::vector<uint64_t> arrivalOf(rays);
-  for (size_t i = 0; i < rays; ++i) arrivalOf[run.jobIndices[i]] = run.arrivalCycles[i];
+  // A core is occupied for the ray's cost (states) plus its cycles BLOCKED on memory.
+  std::vector<uint64_t> arrivalOf(rays), occupiedOf(rays);
+  for (size_t i = 0; i < rays; ++i) {
+    arrivalOf[run.jobIndices[i]] = run.arrivalCycles[i];
+    occupiedOf[run.jobIndices[i]] = run.results[i].cost + run.blockedCycles[i];
+  }
   for (size_t k = 0; k < rays; ++k) {
     INFO("job " << k << " on core " << all[k].core << ", dispatched " << all[k].cycle);
     CHECK(arrivalOf[k] % static_cast<uint64_t>(cores) == static_cast<uint64_t>(all[k].core));
-    CHECK(arrivalOf[k] >= all[k].cycle + byJob[k].cost + 2);
+    CHECK(arrivalOf[k] >= all[k].cycle + occupiedOf[k] + 2);
   }
 
   for (int i = 0; i < cores; ++i) {
@@ -373,7 +376,7 @@ void checkTrace(const Traced& t, int cores) {
       INFO("job " << k << " dispatched in " << d);
       REQUIRE(c < t.horizon);
       CHECK(state[c] == 6);
-      CHECK(c - (d + 1) == byJob[k].cost);
+      CHECK(c - (d + 1) == occupiedOf[k]);
       CHECK(handed[job] >= c);
       ++job;
     }

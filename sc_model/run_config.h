@@ -1,0 +1,25 @@
+#pragma once
+// Everything one run of rtusim is configured by: the simulated RTU and the workload (scene,
+// camera, job or ray buffers). Its settings are declared once, in config_schema.cpp; this is
+// only their storage.
+
+#include <string>
+
+#include "camera.h"
+#include "rtu_config.h"
+#include "scene_loader.h"
+
+namespace rtu {
+
+struct RunConfig {
+  RtuConfig rtu;
+  SceneSpec scene;
+  Camera camera;
+  double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
+  std::string jobs, rays;                     // host input buffers of `replay` and `golden`
+  bool allowStackOverflow = false;
+
+  GoldenConfig golden() const { return rtu.golden(); }
+};
+
+}  // namespace rtu

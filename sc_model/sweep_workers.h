@@ -1,0 +1,71 @@
+#pragma once
+// Rows of an exploration run in parallel worker processes, with a progress line.
+//
+// Each row runs in a process forked for it, so rows share what the parent built before (the
+// scenes) without copying, a row that crashes or is killed takes only itself down, and every
+// row gets a fresh SystemC kernel. The parent hands each finished row's line to `done` as it
+// arrives, so callers can write rows as they finish.
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rtu {
+
+// "sweep 12/40 rows, 1 failed, 0:00:30 elapsed, ETA 0:00:42" on standard error: a bar redrawn in
+// place on a terminal, plain lines at most every five seconds otherwise; silent for runs shorter
+// than two seconds.
+class Progress {
+ public:
+  Progress(std::string label, size_t total, std::string unit = "rows");
+  void update(size_t done, size_t failed);
+  void finish();
+
+ private:
+  std::string line(size_t done, size_t failed) const;
+
+  std::string label_;
+  size_t total_;
+  std::string unit_;
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_, lastPrinted_;
+  bool printed_ = false;
+};
+
+// Progress of one simulation (rays received by the host), for simulateRtu's callback.
+class RunProgressLine {
+ public:
+  RunProgressLine(std::string label, std::string unit) : label_(std::move(label)), unit_(std::move(unit)) {}
+  ~RunProgressLine() {
+    if (progress_) progress_->finish();
+  }
+  std::function<void(size_t, size_t)> callback() {
+    return [this](size_t done, size_t total) {
+      if (!progress_) progress_ = std::make_unique<Progress>(label_, total, unit_);
+      progress_->update(done, 0);
+    };
+  }
+
+ private:
+  std::string label_, unit_;
+  std::unique_ptr<Progress> progress_;
+};
+
+struct WorkerOutcome {
+  bool answered = false;  // false: the worker died (signal, crash) before answering
+  std::string line;       // its answer
+  std::string failure;    // why it did not answer
+};
+
+// Runs `work(row)` for each row in up to `jobs` workers at once and calls `done(row, outcome)`
+// in the parent as each finishes. `work` returns one line (it must not throw).
+void runInWorkers(const std::vector<size_t>& rows, int jobs,
+                  const std::function<std::string(size_t)>& work,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done);
+
+int defaultWorkerCount();
+
+}  // namespace rtu

@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# Exploration end to end: config --dump round trip, sweep rows equal to single runs, fps rows
+# equal to render, resume after a killed sweep, failed rows, plots.
+# Usage: exploration_end_to_end.sh path/to/rtusim
+set -euo pipefail
+rtusim=$1
+source "$(dirname "${BASH_SOURCE[0]}")/shell_test_helpers.sh"
+# Debian's python3 (json only here; matplotlib for the plots).
+python=/usr/bin/python3
+[[ -x $python ]] || python=python3
+
+# Statistics of two run files equal, but for the host's own time.
+same_statistics() {
+  "$python" - "$1" "$2" <<'PY'
+import json, sys
+def load(path):
+    data = json.load(open(path)) if path.endswith(".json") else json.loads(open(path).read())
+    data["statistics"].pop("simulation")
+    return data["statistics"], data["config"]
+a, b = load(sys.argv[1]), load(sys.argv[2])
+sys.exit(0 if a == b else 1)
+PY
+}
+
+"$rtusim" build --scene sphere --depth 6 --out sphere.svo >/dev/null
+"$rtusim" jobs --width 16 --height 12 --out jobs.bin >/dev/null
+
+# config --dump -> --config gives the same run as the settings it was dumped from.
+"$rtusim" config --dump --preset cached --set cores=4 --l1-size 1KiB >c.toml
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out a.bin --preset cached --set cores=4 \
+  --l1-size 1KiB --stats a.json >/dev/null
+"$rtusim" replay --config c.toml --svo sphere.svo --jobs jobs.bin --out b.bin --stats b.json >/dev/null
+same_statistics a.json b.json || fail "config --dump round trip changes the run"
+grep -q '"memory.l1.size": "1KiB"' a.json || fail "stats JSON without the configuration"
+grep -q '"version"' a.json || fail "stats JSON without the version"
+expect_error "did you mean 'memory.l1.size'" "$rtusim" config --dump --set memory.l1.sise=4KiB
+expect_error "cores: 0 is out of range 1 .. 1024" "$rtusim" sweep --grid cores=1,0 --out x.csv
+
+# Sweep rows equal single runs of their configurations.
+"$rtusim" sweep --scene sphere --depth 5 --width 24 --height 16 --memory cached \
+  --grid cores=1,4 --grid memory.l1.size=512,2KiB -j 2 --out rows.csv >sweep.txt
+[[ $(wc -l <rows.jsonl) -eq 4 && $(wc -l <rows.csv) -eq 5 ]] || fail "sweep row count"
+head -1 rows.csv | grep -q '^cores,scheduler,clock_mhz,' || fail "CSV header starts with the keys"
+i=0
+while read -r row; do
+  i=$((i + 1))
+  "$python" -c 'import json,sys; print(json.dumps(json.loads(sys.argv[1])["config"]))' "$row" >row$i.json
+  echo "$row" >row$i.jsonl
+  "$rtusim" render --config row$i.json --stats single$i.json >/dev/null
+  same_statistics row$i.jsonl single$i.json || fail "sweep row $i differs from its single run"
+done <rows.jsonl
+
+# fps rows equal render's statistics for the same configuration.
+"$rtusim" fps --scene sphere --depth 5 --resolutions 24x16,32x18 --cores 2,8 -j 2 --csv fps.csv >fps.txt
+head -1 fps.csv | grep -q '^width,height,cores,rays,total_cycles,cycles_per_ray,frame_ms,fps,limit' \
+  || fail "fps CSV columns"
+[[ $(wc -l <fps.csv) -eq 5 ]] || fail "fps row count"
+"$rtusim" render --scene sphere --depth 5 --width 32 --height 18 --cores 8 --stats r.json >/dev/null
+cycles=$("$python" -c 'import json; print(json.load(open("r.json"))["statistics"]["total_cycles"])')
+grep -q "^32,18,8,576,$cycles," fps.csv || fail "fps row differs from render ($cycles cycles)"
+
+# A configuration that cannot run gets its error in its row; the sweep goes on.
+"$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
+  --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt
+grep -q '"status":"failed"' bad.jsonl && grep -q 'do not hold one 32-byte line' bad.jsonl \
+  || fail "failed row without its error"
+grep -q '"status":"ok"' bad.jsonl || fail "the sweep stopped at a failed row"
+
+# Resume: kill a sweep (and its workers) after its first row; the rerun completes it, each
+# configuration once. How many rows the kill left depends on the machine's load, so the count
+# of rows kept is checked below on a cut file instead.
+grid=(--scene sphere --depth 6 --width 96 --height 64 --grid cores=1,2,3,4,5,6 -j 1 --out resume.csv)
+setsid "$rtusim" sweep "${grid[@]}" >/dev/null 2>&1 &
+leader=$!
+for _ in $(seq 1 300); do
+  [[ -s resume.jsonl ]] && break
+  sleep 0.05
+done
+kill -KILL -- -"$leader" 2>/dev/null || true
+wait "$leader" 2>/dev/null || true
+[[ -s resume.jsonl ]] || fail "the killed sweep wrote no row"
+first_row=$(head -1 resume.jsonl)
+"$rtusim" sweep "${grid[@]}" >resume.txt
+[[ $(wc -l <resume.jsonl) -eq 6 && $(head -1 resume.jsonl) == "$first_row" ]] || fail "resume rows"
+one_run_each() {
+  [[ $("$python" -c 'import json,sys; print(len({json.dumps(json.loads(l)["config"]) for l in open(sys.argv[1])}))' "$1") -eq 6 ]]
+}
+one_run_each resume.jsonl || fail "a configuration ran twice"
+
+# A sweep cut after two rows and in the middle of the third keeps the two and reruns the rest.
+head -2 resume.jsonl >cut.jsonl
+sed -n 3p resume.jsonl | head -c 40 >>cut.jsonl
+cp cut.jsonl resume.jsonl
+"$rtusim" sweep "${grid[@]}" >resume.txt
+grep -q "2 already done" resume.txt || fail "resume did not skip the two rows done"
+[[ $(wc -l <resume.jsonl) -eq 6 && $(head -2 resume.jsonl) == "$(head -2 cut.jsonl)" ]] || fail "cut resume rows"
+one_run_each resume.jsonl || fail "a configuration ran twice after the cut"
+
+# Plots and the report from the rows.
+if "$python" -c 'import matplotlib' 2>/dev/null; then
+  "$rtusim" plot rows.jsonl --out-dir plots >/dev/null
+  [[ -s plots/fps_vs_cores.png && -s plots/fps_vs_cores.svg ]] || fail "plots missing"
+  "$rtusim" report rows.jsonl --out report.html >/dev/null
+  grep -q "<table" report.html || fail "report without its table"
+fi
+echo "exploration end-to-end: ok"

@@ -1,0 +1,158 @@
+// The configuration schema: parsing, files, presets, errors that name the key, the round trip of
+// config --dump, and sweep expansion.
+
+#include <catch2/catch.hpp>
+
+#include "configuration.h"
+#include "sweep_spec.h"
+
+using namespace rtu;
+using Catch::Matchers::Contains;
+
+TEST_CASE("Sizes take binary and decimal units", "[config]") {
+  CHECK(parseBytes("4096", "k") == 4096);
+  CHECK(parseBytes("4KiB", "k") == 4096);
+  CHECK(parseBytes("1 MiB", "k") == 1048576);
+  CHECK(parseBytes("2GiB", "k") == 2147483648ull);
+  CHECK(parseBytes("1kB", "k") == 1000);
+  CHECK_THROWS_WITH(parseBytes("4QiB", "memory.l1.size"), Contains("memory.l1.size"));
+  CHECK_THROWS(parseBytes("1.5", "k"));
+  CHECK(formatBytes(4096) == "4KiB");
+  CHECK(formatBytes(3 * 1048576) == "3MiB");
+  CHECK(formatBytes(1000) == "1000");
+}
+
+TEST_CASE("Settings reach the run configuration by hierarchical name", "[config]") {
+  Configuration c;
+  c.set("cores", "4", ConfigSource::CommandLine);
+  c.set("memory.kind", "cached", ConfigSource::CommandLine);
+  c.set("memory.l1.size", "16KiB", ConfigSource::CommandLine);
+  c.set("memory.l2.replacement", "fifo", ConfigSource::CommandLine);
+  c.set("scheduler", "rr", ConfigSource::CommandLine);
+  c.set("camera.position", "1,2,3", ConfigSource::CommandLine);
+  c.set("format.conversion", "exact", ConfigSource::CommandLine);
+  const RunConfig& v = c.values();
+  CHECK(v.rtu.cores == 4);
+  CHECK_FALSE(v.rtu.memory.ideal);
+  CHECK(v.rtu.memory.l1.sizeBytes == 16384);
+  CHECK(v.rtu.memory.l2.replacement == Replacement::Fifo);
+  CHECK(v.rtu.scheduler == SchedulerPolicy::RoundRobin);
+  CHECK(v.camera.position == glm::dvec3(1, 2, 3));
+  CHECK(v.rtu.jobManager.conversion == FloatConversion::Exact);
+  CHECK(c.source("cores") == ConfigSource::CommandLine);
+  CHECK(c.source("width") == ConfigSource::Default);
+}
+
+TEST_CASE("An unknown key names the nearest known key; a bad value names key and range", "[config]") {
+  Configuration c;
+  CHECK_THROWS_WITH(c.set("memory.l1.sise", "4KiB", ConfigSource::CommandLine),
+                    Contains("did you mean 'memory.l1.size'"));
+  CHECK_THROWS_WITH(c.set("core", "4", ConfigSource::CommandLine),
+                    Contains("did you mean 'cores'"));
+  CHECK_THROWS_WITH(c.set("cores", "0", ConfigSource::CommandLine),
+                    Contains("cores: 0 is out of range 1 .. 1024"));
+  CHECK_THROWS_WITH(c.set("cores", "2.5", ConfigSource::CommandLine),
+                    Contains("not a whole number"));
+  CHECK_THROWS_WITH(c.set("scheduler", "lifo", ConfigSource::CommandLine),
+                    Contains("cfa|rr|fa"));
+  CHECK_THROWS_WITH(c.setAssignment("cores", ConfigSource::CommandLine), Contains("key=value"));
+  CHECK_THROWS_WITH(c.loadText("cores = 4\n[memory.l1]\nsise = 3\n", "toml", "'x.toml'",
+                               ConfigSource::File),
+                    Contains("'x.toml': unknown setting 'memory.l1.sise'"));
+  CHECK_THROWS_WITH(c.loadText("cores = [", "toml", "'y.toml'", ConfigSource::File),
+                    Contains("'y.toml'"));
+}
+
+TEST_CASE("TOML and JSON files, nested or dotted, give the same configuration", "[config]") {
+  Configuration toml, json, dotted;
+  toml.loadText("cores = 8\n[memory]\nkind = \"cached\"\n[memory.l1]\nsize = \"8KiB\"\nways = 2\n",
+                "toml", "t", ConfigSource::File);
+  json.loadText(R"({"cores": 8, "memory": {"kind": "cached", "l1": {"size": "8KiB", "ways": 2}}})",
+                "json", "j", ConfigSource::File);
+  dotted.loadText(R"({"cores": 8, "memory.kind": "cached", "memory.l1.size": 8192, "memory.l1.ways": 2})",
+                  "json", "d", ConfigSource::File);
+  CHECK(toml.toJson() == json.toJson());
+  CHECK(toml.toJson() == dotted.toJson());
+  CHECK(toml.values().rtu.memory.l1.ways == 2);
+}
+
+TEST_CASE("config --dump loads again to the same configuration", "[config]") {
+  Configuration original;
+  original.applyPreset("cached");
+  original.set("cores", "4", ConfigSource::CommandLine);
+  original.set("scene.depth", "5", ConfigSource::CommandLine);  // beside the key `scene`
+  original.set("camera.fov", "37.5", ConfigSource::CommandLine);
+  original.set("job_manager.epsilon", "0.001", ConfigSource::CommandLine);
+  Configuration loaded;
+  loaded.loadText(original.toToml(), "toml", "dump", ConfigSource::File);
+  CHECK(loaded.toJson() == original.toJson());
+  CHECK(loaded.toToml() == original.toToml());
+  Configuration fromJson;
+  fromJson.loadText(original.toJson().dump(), "json", "dump", ConfigSource::File);
+  CHECK(fromJson.toJson() == original.toJson());
+}
+
+TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]") {
+  const std::vector<std::string> names = presetNames();
+  CHECK(names == std::vector<std::string>{"asic", "cached", "thesis"});
+  for (const std::string& name : names) {
+    INFO(name);
+    Configuration c;
+    c.applyPreset(name);
+    CHECK_NOTHROW(validate(c.values().rtu));
+    CHECK(c.source("cores") == ConfigSource::Preset);
+  }
+  Configuration thesis;
+  thesis.applyPreset("thesis");
+  CHECK(thesis.values().rtu.cores == 16);
+  CHECK(thesis.values().rtu.memory.ideal);
+  CHECK(thesis.values().rtu.clockMhz == 100.0);
+  CHECK(thesis.values().rtu.hostInput.bytesPerCycle == 8.0);  // 64-bit AXI DMA, 4 cycles a ray
+  CHECK_THROWS_WITH(thesis.applyPreset("fast"), Contains("asic, cached, thesis"));
+}
+
+TEST_CASE("Settings a user gives that have no effect are reported", "[config]") {
+  Configuration both;
+  both.set("svo", "a.svo", ConfigSource::CommandLine);
+  both.set("scene", "sphere", ConfigSource::CommandLine);
+  CHECK_THROWS_WITH(both.checkApplicable(kUseScene, "render"),
+                    Contains("scene (command line) has no effect: svo is given"));
+  Configuration camera;
+  camera.set("width", "64", ConfigSource::CommandLine);
+  CHECK_THROWS_WITH(camera.checkApplicable(kUseBuffers | kUseModel, "replay"),
+                    Contains("rtusim replay does not use it"));
+  // Cache settings with ideal memory: a warning, so scripts with today's flags keep running.
+  Configuration ideal;
+  ideal.set("memory.l1.size", "1KiB", ConfigSource::CommandLine);
+  CHECK_NOTHROW(ideal.checkApplicable(kUseModel, "replay"));
+  // A preset's settings are never reported.
+  Configuration preset;
+  preset.applyPreset("cached");
+  preset.set("memory.kind", "ideal", ConfigSource::CommandLine);
+  CHECK_NOTHROW(preset.checkApplicable(kUseModel, "replay"));
+}
+
+TEST_CASE("A sweep is the product of its grids times its explicit list", "[config][sweep]") {
+  Configuration base;
+  base.set("width", "32", ConfigSource::CommandLine);
+  SweepSpec spec;
+  spec.addGrid("cores=1,2,4");
+  spec.addGrid("memory.l1.size=1KiB,4KiB");
+  const std::vector<Configuration> grid = spec.expand(base);
+  REQUIRE(grid.size() == 6);
+  CHECK(grid[0].values().rtu.cores == 1);
+  CHECK(grid[0].values().rtu.memory.l1.sizeBytes == 1024);
+  CHECK(grid[1].values().rtu.memory.l1.sizeBytes == 4096);
+  CHECK(grid[5].values().rtu.cores == 4);
+  CHECK(grid[5].values().camera.width == 32);
+  spec.list = {{{"scheduler", "rr"}}, {{"scheduler", "fa"}, {"reorder", "4"}}};
+  const std::vector<Configuration> both = spec.expand(base);
+  REQUIRE(both.size() == 12);
+  CHECK(both[0].values().rtu.scheduler == SchedulerPolicy::RoundRobin);
+  CHECK(both[11].values().rtu.scheduler == SchedulerPolicy::FirstAvailable);
+  CHECK(both[11].values().rtu.reorderCapacity == 4);
+  CHECK_THROWS_WITH(spec.addGrid("cors=1,2"), Contains("did you mean 'cores'"));
+  SweepSpec bad;
+  bad.addGrid("cores=1,0");
+  CHECK_THROWS_WITH(bad.expand(base), Contains("cores: 0 is out of range"));
+}
