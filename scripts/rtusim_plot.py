@@ -32,6 +32,7 @@ import io
 import json
 import math
 import os
+import re
 import sys
 import textwrap
 
@@ -112,6 +113,21 @@ def number(text):
     return text
 
 
+SIZE_UNITS = {"": 1, "B": 1, "KiB": 1024, "MiB": 1024 ** 2, "GiB": 1024 ** 3, "kB": 1000,
+              "KB": 1000, "MB": 1000 ** 2, "GB": 1000 ** 3}
+
+
+def config_value(value):
+    """A configuration value as rtusim writes it, numbers and sizes ("4KiB") as numbers."""
+    if not isinstance(value, str):
+        return value
+    match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]+)?)\s*([A-Za-z]*)\s*", value)
+    if match and match.group(2) in SIZE_UNITS:
+        amount = float(match.group(1)) * SIZE_UNITS[match.group(2)]
+        return int(amount) if amount.is_integer() else amount
+    return value
+
+
 def read_jsonl(path, handle):
     rows = []
     for line_number, line in enumerate(handle, 1):
@@ -188,7 +204,7 @@ def load(paths):
     for index, row in enumerate(rows, 1):
         row["index"] = index  # the row's number in the report's table
         row["input"] = os.path.basename(row["source"].rsplit(":", 1)[0])
-        config = row["config"]
+        config = row["config"] = {key: config_value(value) for key, value in row["config"].items()}
         if "width" in config and "height" in config:
             config["resolution"] = "%sx%s" % (config["width"], config["height"])
     return rows

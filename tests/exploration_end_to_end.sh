@@ -100,6 +100,8 @@ one_run_each resume.jsonl || fail "a configuration ran twice after the cut"
 if "$python" -c 'import matplotlib' 2>/dev/null; then
   "$rtusim" plot rows.jsonl --out-dir plots >/dev/null
   [[ -s plots/fps_vs_cores.png && -s plots/fps_vs_cores.svg ]] || fail "plots missing"
+  # Sizes are written as "512" and "2KiB": the plot reads them as numbers.
+  [[ -s plots/hit_rate_vs_l1_size.png ]] || fail "no hit-rate plot from an L1 size sweep"
   "$rtusim" report rows.jsonl --out report.html >/dev/null
   grep -q "<table" report.html || fail "report without its table"
 fi
