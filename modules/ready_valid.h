@@ -15,6 +15,7 @@
 // on, so its output is declared `MayWithdraw`.
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,9 @@ class ReadyValidOut : public virtual sc_core::sc_interface {
   virtual bool transferredIn(uint64_t cycle) const = 0;
   virtual const sc_core::sc_event& edge() const = 0;
   virtual const sc_core::sc_event& readyChanged() const = 0;
+  // Calls `watcher` with the new level whenever ready changes, in the update phase: a module
+  // with many channels keeps their levels in its own index instead of querying each.
+  virtual void watchReady(std::function<void(bool)> watcher) = 0;
 };
 
 // What the consumer's port sees.
@@ -51,6 +55,10 @@ class ReadyValidIn : public virtual sc_core::sc_interface {
   virtual const Payload& transferred() const = 0;
   virtual const sc_core::sc_event& edge() const = 0;
   virtual const sc_core::sc_event& offerChanged() const = 0;
+  // Calls `watcher` in the update phase of a cycle whose levels make a transfer (the levels may
+  // still change later in that cycle: confirm with transferredIn), so a module with many
+  // channels visits only those with a transfer.
+  virtual void watchTransfer(std::function<void()> watcher) = 0;
 };
 
 template <class Payload>
@@ -107,6 +115,11 @@ class ReadyValid final : public sc_core::sc_prim_channel,
     return readyChanged_;
   }
 
+  void watchReady(std::function<void(bool)> watcher) override { readyWatcher_ = std::move(watcher); }
+  void watchTransfer(std::function<void()> watcher) override {
+    transferWatcher_ = std::move(watcher);
+  }
+
   void trace(CycleTrace& trace, const std::string& scope) {
     trace_ = &trace;
     validSignal_ = trace.declare(scope, "valid", 1);
@@ -131,6 +144,7 @@ class ReadyValid final : public sc_core::sc_prim_channel,
     if (nextReady_ != ready_) {
       ready_ = nextReady_;
       if (readyListened_) readyChanged_.notify(sc_core::SC_ZERO_TIME);
+      if (readyWatcher_) readyWatcher_(ready_);
       if (trace_) trace_->record(readySignal_, now, ready_);
     }
     if (producerWrote_) payload_ = nextPayload_;
@@ -138,6 +152,7 @@ class ReadyValid final : public sc_core::sc_prim_channel,
     if (valid_ && ready_) {
       pending_ = now;
       edge_.notify(clock_.period());
+      if (transferWatcher_) transferWatcher_();
     } else if (pending_ == now) {
       pending_ = kNever;
       edge_.cancel();
@@ -170,6 +185,8 @@ class ReadyValid final : public sc_core::sc_prim_channel,
   uint64_t last_ = kNever;     // last completed transfer
   sc_core::sc_event edge_, offerChanged_, readyChanged_;
   mutable bool offerListened_ = false, readyListened_ = false;
+  std::function<void(bool)> readyWatcher_;
+  std::function<void()> transferWatcher_;
   CycleTrace* trace_ = nullptr;
   int validSignal_ = CycleTrace::kNoSignal, readySignal_ = CycleTrace::kNoSignal;
 };

@@ -11,6 +11,7 @@
 
 #include <systemc>
 
+#include "core_set.h"
 #include "cycle_clock.h"
 #include "module_process.h"
 #include "ready_valid.h"
@@ -46,8 +47,13 @@ class ResultManager : public sc_core::sc_module {
   // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
   std::vector<ReadyValidIn<CoreResult>*> core_;
   std::vector<const sc_core::sc_event*> handoverEdges_;
+  struct Handover {
+    int core;
+    uint64_t cycle;  // whose levels made the transfer
+  };
+  std::vector<Handover> handingOver_;  // since the last look
   std::vector<CoreResult> buffer_;
-  std::vector<bool> full_;
+  CoreSet full_;
   uint64_t buffered_ = 0;
   int offered_ = kNone;
   uint64_t handledCycle_ = ~0ull;

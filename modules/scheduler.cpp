@@ -27,10 +27,12 @@ Scheduler::Scheduler(sc_core::sc_module_name name, const CycleClock& clock, Sche
 
 void Scheduler::end_of_elaboration() {
   coreCount_ = cores.size();
+  readyCores_ = CoreSet(coreCount_);
   std::vector<const sc_core::sc_event*> coreReadiness;
   for (int i = 0; i < coreCount_; ++i) {
     core_.push_back(cores[i]);
     coreReadiness.push_back(&core_.back()->readyChanged());
+    core_.back()->watchReady([this, i](bool ready) { readyCores_.assign(i, ready); });
   }
   spawnMethod("evaluate", [this] { evaluate(); },
               {&in->edge(), &in->offerChanged(), &wake_.event()}, coreReadiness);
@@ -70,34 +72,22 @@ void Scheduler::notePending(uint64_t now) {
   const CoreJob& job = in->payload();
   if (job.sequence == notedSequence_ && job.pendingSince != now) return;
   notedSequence_ = job.sequence;
-  readyAtPending_ = anyCoreReady();
-}
-
-bool Scheduler::anyCoreReady() const {
-  for (int i = 0; i < coreCount_; ++i)
-    if (core_[static_cast<size_t>(i)]->ready()) return true;
-  return false;
+  readyAtPending_ = !readyCores_.empty();
 }
 
 int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
   switch (policy_) {
     case SchedulerPolicy::CyclicFirstAvailable: {
       const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
-      int best = coreCount_;
-      for (int i = 0; i < coreCount_; ++i) {
-        if (!core_[static_cast<size_t>(i)]->ready()) continue;
-        best = std::min(best, (i - selected + coreCount_) % coreCount_);
-      }
-      if (best == 0) return selected;
-      if (best < coreCount_) wakeCycle = now + static_cast<uint64_t>(best);
+      const int first = readyCores_.firstFrom(selected);
+      if (first == selected || first == CoreSet::kNone) return first;
+      wakeCycle = now + static_cast<uint64_t>((first - selected + coreCount_) % coreCount_);
       return kNone;
     }
     case SchedulerPolicy::RoundRobin:
-      return core_[static_cast<size_t>(nextInLine_)]->ready() ? nextInLine_ : kNone;
+      return readyCores_.contains(nextInLine_) ? nextInLine_ : kNone;
     case SchedulerPolicy::FirstAvailable:
-      for (int i = 0; i < coreCount_; ++i)
-        if (core_[static_cast<size_t>(i)]->ready()) return i;
-      return kNone;
+      return readyCores_.firstFrom(0);
   }
   return kNone;
 }

@@ -16,6 +16,7 @@
 
 #include <systemc>
 
+#include "core_set.h"
 #include "cycle_clock.h"
 #include "module_process.h"
 #include "ready_valid.h"
@@ -52,7 +53,6 @@ class Scheduler : public sc_core::sc_module {
   void evaluate();
   void takeTransfer(uint64_t now);
   void notePending(uint64_t now);
-  bool anyCoreReady() const;
   // The core the job goes to in cycle `now`, or kNone; `wakeCycle` is set when only a later cycle
   // of the cyclic counter can find a ready core.
   int choose(uint64_t now, uint64_t& wakeCycle) const;
@@ -63,6 +63,7 @@ class Scheduler : public sc_core::sc_module {
   int coreCount_ = 0;
   // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
   std::vector<ReadyValidOut<CoreJob>*> core_;
+  CoreSet readyCores_;
   int target_ = kNone;           // core currently offered the job
   uint64_t offeredSequence_ = 0;
   int nextInLine_ = 0;           // round-robin
