@@ -1,6 +1,7 @@
 #pragma once
 // The workload every benchmark measures: 1280x720 primary rays of the default camera on the
-// depth-8 procedural scenes named on the command line (all of them when none is).
+// procedural scenes named on the command line (all of them when none is), depth 8 unless a
+// benchmark says otherwise.
 
 #include <string>
 #include <vector>
@@ -28,8 +29,8 @@ struct BenchFrame {
   std::vector<TraversalJob> jobs;
 };
 
-inline BenchFrame benchFrame(const std::string& scene) {
-  BenchFrame frame{buildSvo(*makeProceduralScene(scene, 8)), {}};
+inline BenchFrame benchFrame(const std::string& scene, int depth = 8) {
+  BenchFrame frame{buildSvo(*makeProceduralScene(scene, depth)), {}};
   frame.jobs = makeFrameJobs(benchCamera(), frame.build.image.root);
   return frame;
 }
