@@ -4,24 +4,6 @@
 
 namespace rtu {
 
-SchedulerPolicy parseSchedulerPolicy(const std::string& name) {
-  if (name == "cfa") return SchedulerPolicy::CyclicFirstAvailable;
-  if (name == "rr") return SchedulerPolicy::RoundRobin;
-  if (name == "fa") return SchedulerPolicy::FirstAvailable;
-  throw std::invalid_argument("unknown scheduler '" + name +
-                              "': choose cfa (cyclic first-available), rr (round-robin) or fa "
-                              "(first-available)");
-}
-
-const char* toString(SchedulerPolicy policy) {
-  switch (policy) {
-    case SchedulerPolicy::CyclicFirstAvailable: return "cfa";
-    case SchedulerPolicy::RoundRobin: return "rr";
-    case SchedulerPolicy::FirstAvailable: return "fa";
-  }
-  return "?";
-}
-
 Scheduler::Scheduler(sc_core::sc_module_name name, const CycleClock& clock, SchedulerPolicy policy)
     : sc_core::sc_module(name), clock_(clock), policy_(policy), wake_(clock) {}
 

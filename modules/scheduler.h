@@ -1,10 +1,6 @@
 #pragma once
 // The scheduler (thesis 6.2.2, appendix C.3): hands the job at the job manager's output to a
-// ready core. Policies:
-//  - cyclic first-available (the RTL): a select counter advances every cycle from reset; the job
-//    goes to the selected core when that core is ready;
-//  - round-robin: cores in turn; the job waits for the next core in line;
-//  - first-available: the lowest-numbered ready core, in the same cycle.
+// ready core, by one of the policies of scheduling_policy.h.
 // The RTL's scheduler is combinational: the job manager's handshake and the core's are the same
 // cycle. Here it is a process that runs only when the job, a core's readiness or the selected core
 // changes; for cyclic first-available it computes the cycle the counter reaches a ready core.
@@ -21,13 +17,9 @@
 #include "module_process.h"
 #include "ready_valid.h"
 #include "rtu_payloads.h"
+#include "scheduling_policy.h"
 
 namespace rtu {
-
-enum class SchedulerPolicy { CyclicFirstAvailable, RoundRobin, FirstAvailable };
-// "cfa", "rr" or "fa"; throws std::invalid_argument naming the choices.
-SchedulerPolicy parseSchedulerPolicy(const std::string& name);
-const char* toString(SchedulerPolicy policy);
 
 struct SchedulerStatistics {
   uint64_t jobs = 0;

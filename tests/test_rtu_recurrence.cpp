@@ -1,0 +1,150 @@
+// The recurrence of golden/rtu_recurrence.h: on cases counted by hand, against the naive RTL
+// transcription, and (through sc_model/analytic_run.h) against the SystemC model in every
+// configuration it claims to model, statistics included.
+
+#include <catch2/catch.hpp>
+
+#include "analytic_run.h"
+#include "camera.h"
+#include "procedural_scenes.h"
+#include "rtl_cycle_model.h"
+#include "rtu_recurrence.h"
+#include "svo_builder.h"
+#include "svo_image.h"
+
+namespace rtu {
+namespace {
+
+std::vector<RecurrenceJob> jobsOfCost(std::vector<uint64_t> costs) {
+  std::vector<RecurrenceJob> jobs;
+  for (uint64_t cost : costs) jobs.push_back(RecurrenceJob{cost, 6, 0});
+  return jobs;
+}
+
+RecurrenceConfig onCores(int cores) {
+  RecurrenceConfig config;
+  config.cores = cores;
+  return config;
+}
+
+Camera smallCamera(int width, int height) {
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
+struct Frame {
+  SvoImage image;
+  std::vector<HostRecord> tValueRecords, rayRecords;
+};
+
+Frame smallFrame(const std::string& scene) {
+  Frame frame{buildSvo(*makeProceduralScene(scene, 5)).image, {}, {}};
+  const Camera camera = smallCamera(20, 12);
+  for (const TraversalJob& job : makeFrameJobs(camera, frame.image.root))
+    frame.tValueRecords.push_back(job);
+  const uint32_t header = appendModelHeader(frame.image, ModelPlacement{});
+  for (const RayRecord& ray : makeFrameRayRecords(camera, header)) frame.rayRecords.push_back(ray);
+  return frame;
+}
+
+nlohmann::ordered_json withoutHostTime(nlohmann::ordered_json statistics) {
+  statistics.erase("simulation");
+  return statistics;
+}
+
+}  // namespace
+
+TEST_CASE("Recurrence on one core, counted by hand", "[recurrence]") {
+  // Job 0: accepted 0, pending 6 (6 stages), dispatched 6, OUT from 12 (INIT in 7, 5 states),
+  // handed over 12, buffered from 13 and drained 13. Job 1: accepted 1, pending 7, waits for the
+  // core to be idle in 13; its result is handed over 19 (the buffer is free from 14) and drained
+  // 20. Job 2: accepted 2, held 6 cycles behind job 1's stall: pending 14, dispatched 20.
+  const RecurrenceRun run = runRecurrence(jobsOfCost({5, 5, 5}), onCores(1));
+  CHECK(run.acceptCycles == std::vector<uint64_t>{0, 1, 2});
+  CHECK(run.pendingCycles == std::vector<uint64_t>{6, 7, 14});
+  CHECK(run.dispatchCycles == std::vector<uint64_t>{6, 13, 20});
+  CHECK(run.handoverCycles == std::vector<uint64_t>{12, 19, 26});
+  CHECK(run.drainCycles == std::vector<uint64_t>{13, 20, 27});
+  CHECK(run.totalCycles == 28);
+}
+
+TEST_CASE("Recurrence: a full pipeline stalls the host", "[recurrence]") {
+  // One core, eight jobs of cost 20: jobs 0..5 enter in cycles 0..5 and job 6 in 6 (job 0 leaves
+  // in 6); job 1 then waits at the output from 7 to 28 (job 0's core is idle from 28), so job 7
+  // enters only in 28.
+  const RecurrenceRun run = runRecurrence(jobsOfCost(std::vector<uint64_t>(8, 20)), onCores(1));
+  CHECK(run.acceptCycles == std::vector<uint64_t>{0, 1, 2, 3, 4, 5, 6, 28});
+  CHECK(run.dispatchCycles[1] == 28);
+}
+
+TEST_CASE("Recurrence: two cores under cfa take turns with the select counter", "[recurrence]") {
+  // Job 0 pends in 6 (core 0 selected: 6 mod 2 = 0), job 1 in 7 (core 1), job 2 in 8 (core 0,
+  // busy until its handover in 6 + 1 + 10 = 17; idle from 18, an even cycle).
+  const RecurrenceRun run = runRecurrence(jobsOfCost({10, 10, 1}), onCores(2));
+  CHECK(run.dispatchCycles == std::vector<uint64_t>{6, 7, 18});
+  CHECK(run.cores == std::vector<int>{0, 1, 0});
+  // Buffered from 18 and 19; core 0 is selected in even cycles, core 1 in odd ones.
+  CHECK(run.drainCycles == std::vector<uint64_t>{18, 19, 22});
+}
+
+TEST_CASE("Recurrence equals the RTL transcription in the thesis configuration", "[recurrence]") {
+  const auto scene = GENERATE(as<std::string>{}, "sphere", "menger");
+  const int cores = GENERATE(1, 3, 16);
+  const Frame frame = smallFrame(scene);
+  RtuConfig config;
+  config.cores = cores;
+  std::vector<TraversalJob> jobs;
+  for (const HostRecord& record : frame.tValueRecords) jobs.push_back(std::get<TraversalJob>(record));
+  const RtuRun analytic = runAnalytic(frame.image.memory(), jobs, config);
+  const RtlTopRun rtl = runRtlTop(frame.image.memory(), jobs, RtlTopConfig{cores, config.golden()});
+  INFO(scene << ", " << cores << " cores");
+  CHECK(analytic.totalCycles == rtl.totalCycles);
+  CHECK(analytic.arrivalCycles == rtl.resultCycles);
+  CHECK(analytic.results == rtl.results);
+}
+
+TEST_CASE("Recurrence equals the SystemC model, statistics included", "[recurrence]") {
+  const auto scene = GENERATE(as<std::string>{}, "sphere", "menger");
+  const Frame frame = smallFrame(scene);
+  const auto policy = GENERATE(SchedulerPolicy::CyclicFirstAvailable, SchedulerPolicy::RoundRobin,
+                               SchedulerPolicy::FirstAvailable);
+  const int cores = GENERATE(1, 4, 16);
+  const auto links = GENERATE(std::pair<double, double>{0, 0}, std::pair<double, double>{8, 0},
+                              std::pair<double, double>{0, 8}, std::pair<double, double>{3, 5},
+                              std::pair<double, double>{32, 2.5});
+  const bool rays = GENERATE(false, true);
+  RtuConfig config;
+  config.cores = cores;
+  config.scheduler = policy;
+  config.hostInput.bytesPerCycle = links.first;
+  config.hostOutput.bytesPerCycle = links.second;
+  const std::vector<HostRecord>& records = rays ? frame.rayRecords : frame.tValueRecords;
+  const RtuRun analytic = runAnalytic(frame.image.memory(), records, config);
+  const RtuRun simulated = simulateRtu(frame.image.memory(), records, config);
+  INFO(scene << ", " << toString(policy) << ", " << cores << " cores, links " << links.first
+             << "/" << links.second << (rays ? ", ray records" : ", t-value records"));
+  CHECK(analytic.totalCycles == simulated.totalCycles);
+  CHECK(analytic.arrivalCycles == simulated.arrivalCycles);
+  CHECK(analytic.jobIndices == simulated.jobIndices);
+  CHECK(analytic.results == simulated.results);
+  CHECK(withoutHostTime(analytic.statistics.toJson()) == withoutHostTime(simulated.statistics.toJson()));
+}
+
+TEST_CASE("The recurrence refuses what it cannot model", "[recurrence]") {
+  RtuConfig config;
+  CHECK_FALSE(whyNotAnalytic(config));
+  config.memory.ideal = false;
+  CHECK(whyNotAnalytic(config) == std::string("the memory is cached"));
+  config = RtuConfig{};
+  config.reorderCapacity = 4;
+  CHECK(whyNotAnalytic(config));
+  config = RtuConfig{};
+  config.hostOutput.activeProbability = 0.5;
+  CHECK(whyNotAnalytic(config));
+  REQUIRE_THROWS_WITH(runAnalytic(SvoImage{}.memory(), std::vector<TraversalJob>{}, config),
+                      Catch::Contains("randomly inactive"));
+}
+
+}  // namespace rtu
