@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
-#include <set>
+#include <optional>
+#include <queue>
 #include <stdexcept>
 #include <utility>
 
@@ -22,62 +22,87 @@ namespace {
 constexpr uint64_t kUnknown = std::numeric_limits<uint64_t>::max();
 constexpr size_t kNoJob = std::numeric_limits<size_t>::max();
 
-// The result buffers and the output link: drains are found in cycle order.
+// The result buffers and the output link: drains are found in cycle order. A buffer of core x
+// filled from cycle f drains in the first cycle >= max(f, r) whose select counter shows x, with
+// r the first cycle the link is ready. While r <= f that cycle is fixed, so such buffers wait in
+// a heap by it; once r passes it, they all compete from r on, in the select counter's order.
 class Drains {
  public:
   Drains(int cores, HostLinkConfig output)
-      : cores_(static_cast<uint64_t>(cores)), link_(output), bufferedFrom_(cores_, 0) {}
+      : cores_(static_cast<uint64_t>(cores)), link_(output), compete_((cores_ + 63) / 64, 0) {}
 
   // The buffer of `core` holds a result from cycle `from`.
   void add(int core, uint64_t from) {
-    bufferedFrom_[static_cast<size_t>(core)] = from;
-    if (from <= linkReadyFrom_)
-      ready_.insert(core);
-    else
-      later_.insert({from, core});
+    byCycle_.push({firstSelect(from, core), core});
+    next_.reset();
   }
-  bool empty() const { return ready_.empty() && later_.empty(); }
+  bool empty() const { return byCycle_.empty() && competing_ == 0; }
 
-  // The next drain: its cycle and core (the buffer whose select cycle comes first once both the
-  // result is buffered and the link is ready).
+  // The next drain: its cycle and core.
   std::pair<uint64_t, int> next() {
-    while (!later_.empty() && later_.begin()->first <= linkReadyFrom_) {
-      ready_.insert(later_.begin()->second);
-      later_.erase(later_.begin());
+    if (!next_) next_ = find();
+    return *next_;
+  }
+
+  void take(const std::pair<uint64_t, int>& drain) {
+    if (!byCycle_.empty() && byCycle_.top() == drain)
+      byCycle_.pop();
+    else
+      setCompeting(drain.second, false);
+    linkReadyFrom_ = link_.nextAllowed(drain.first);
+    next_.reset();
+  }
+
+ private:
+  using Candidate = std::pair<uint64_t, int>;  // (drain cycle, core)
+
+  std::pair<uint64_t, int> find() {
+    while (!byCycle_.empty() && byCycle_.top().first < linkReadyFrom_) {
+      setCompeting(byCycle_.top().second, true);
+      byCycle_.pop();
     }
-    std::pair<uint64_t, int> best{kUnknown, -1};
-    if (!ready_.empty()) {
-      const int selected = static_cast<int>(linkReadyFrom_ % cores_);
-      auto it = ready_.lower_bound(selected);
-      if (it == ready_.end()) it = ready_.begin();
-      best = {firstSelect(linkReadyFrom_, *it), *it};
-    }
-    // Buffered later than the link is ready: each drains within N cycles of being buffered.
-    for (const auto& [from, core] : later_) {
-      if (from >= best.first) break;
-      best = std::min(best, std::pair<uint64_t, int>{firstSelect(from, core), core});
+    Candidate best{kUnknown, -1};
+    if (!byCycle_.empty()) best = byCycle_.top();
+    if (competing_ > 0) {
+      const int core = firstCompetingFrom(static_cast<int>(linkReadyFrom_ % cores_));
+      best = std::min(best, Candidate{firstSelect(linkReadyFrom_, core), core});
     }
     return best;
   }
 
-  void take(uint64_t cycle, int core) {
-    ready_.erase(core);
-    later_.erase({bufferedFrom_[static_cast<size_t>(core)], core});
-    linkReadyFrom_ = link_.nextAllowed(cycle);
-  }
-
- private:
   // The first cycle >= from in which the select counter shows `core`.
   uint64_t firstSelect(uint64_t from, int core) const {
     return from + (static_cast<uint64_t>(core) + cores_ - from % cores_) % cores_;
   }
 
+  void setCompeting(int core, bool on) {
+    uint64_t& word = compete_[static_cast<size_t>(core) / 64];
+    const uint64_t bit = uint64_t{1} << (core % 64);
+    competing_ += on ? 1 : -1;
+    word = on ? word | bit : word & ~bit;
+  }
+
+  // The first competing core from `start` on, cyclically.
+  int firstCompetingFrom(int start) const {
+    const size_t words = compete_.size();
+    const size_t first = static_cast<size_t>(start) / 64;
+    for (size_t n = 0; n <= words; ++n) {
+      const size_t w = (first + n) % words;
+      uint64_t word = compete_[w];
+      if (n == 0) word &= ~uint64_t{0} << (start % 64);
+      if (n == words) word &= (uint64_t{1} << (start % 64)) - 1;
+      if (word != 0) return static_cast<int>(w * 64 + static_cast<size_t>(__builtin_ctzll(word)));
+    }
+    return -1;
+  }
+
   uint64_t cores_;
   HostLinkPacer link_;
   uint64_t linkReadyFrom_ = 0;
-  std::vector<uint64_t> bufferedFrom_;        // per core with a buffered result
-  std::set<int> ready_;                       // buffered by the time the link is ready
-  std::set<std::pair<uint64_t, int>> later_;  // (buffered from, core)
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> byCycle_;
+  std::vector<uint64_t> compete_;  // bit per core: its buffer waits for the link
+  int competing_ = 0;
+  std::optional<Candidate> next_;
 };
 
 class Recurrence {
@@ -99,6 +124,7 @@ class Recurrence {
     run_.cores.resize(n);
     run_.handoverCycles.resize(n);
     run_.drainCycles.resize(n);
+    run_.hostOrder.reserve(n);
   }
 
   RecurrenceRun run() {
@@ -106,11 +132,7 @@ class Recurrence {
       enterPipeline(i);
       dispatch(i);
     }
-    while (!drains_.empty()) drainNext();
-    run_.hostOrder.resize(jobs_.size());
-    std::iota(run_.hostOrder.begin(), run_.hostOrder.end(), size_t{0});
-    std::sort(run_.hostOrder.begin(), run_.hostOrder.end(),
-              [this](size_t a, size_t b) { return run_.drainCycles[a] < run_.drainCycles[b]; });
+    while (!drains_.empty()) drainNext();  // drains come in cycle order
     run_.totalCycles = jobs_.empty() ? 0 : run_.drainCycles[run_.hostOrder.back()] + 1;
     return std::move(run_);
   }
@@ -192,10 +214,12 @@ class Recurrence {
   }
 
   void drainNext() {
-    const auto [cycle, core] = drains_.next();
+    const auto drain = drains_.next();
+    const auto [cycle, core] = drain;
     const size_t c = static_cast<size_t>(core);
-    drains_.take(cycle, core);
+    drains_.take(drain);
     run_.drainCycles[buffered_[c]] = cycle;
+    run_.hostOrder.push_back(buffered_[c]);
     buffered_[c] = kNoJob;
     lastDrain_[c] = cycle;
     if (waiting_[c] != kNoJob) handOver(core);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <queue>
 #include <stdexcept>
 #include <utility>
 
@@ -15,57 +16,53 @@ namespace {
 
 // Each record's result and its timing inputs, with the job manager's latencies (job_manager.h):
 // a ray record adds the ray stages, and the first ray of a model its header fetch.
-struct TracedRecords {
+class RecordTracer {
+ public:
+  RecordTracer(const SvoMemory& memory, const RtuConfig& config)
+      : memory_(memory), manager_(config.jobManager), golden_(memory, config.golden()) {}
+
+  void trace(const TraversalJob& job) { add(job, RecurrenceJob{0, stages(), 0}); }
+  void trace(const RayRecord& ray) {
+    RecurrenceJob timing{0, stages() + static_cast<uint64_t>(manager_.rayStages), 0};
+    auto header = headers_.find(ray.modelAddress);
+    if (header == headers_.end()) {
+      header = headers_.emplace(ray.modelAddress, readModelHeader(memory_, ray.modelAddress)).first;
+      timing.headerFetch = static_cast<uint64_t>(manager_.headerFetchCycles);
+      timing.pipelineCycles += timing.headerFetch;
+    }
+    add(rayRecordToJob(ray, header->second, manager_.epsilon), timing);
+  }
+  void trace(const HostRecord& record) {
+    std::visit([this](const auto& r) { trace(r); }, record);
+  }
+
   std::vector<TraversalResult> results;
   std::vector<RecurrenceJob> timing;
+
+ private:
+  uint64_t stages() const { return static_cast<uint64_t>(manager_.stages); }
+  void add(const TraversalJob& job, RecurrenceJob jobTiming) {
+    results.push_back(golden_.trace(job));
+    jobTiming.cost = results.back().cost;
+    timing.push_back(jobTiming);
+  }
+
+  const SvoMemory& memory_;
+  const JobManagerConfig& manager_;
+  GoldenModel golden_;
+  std::map<uint32_t, ModelHeader> headers_;
 };
 
-TracedRecords traceRecords(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                           const RtuConfig& config) {
-  const JobManagerConfig& manager = config.jobManager;
-  GoldenModel golden(memory, config.golden());
-  std::map<uint32_t, ModelHeader> headers;
-  TracedRecords traced;
-  traced.results.reserve(records.size());
-  traced.timing.reserve(records.size());
-  for (const HostRecord& record : records) {
-    RecurrenceJob timing;
-    timing.pipelineCycles = static_cast<uint64_t>(manager.stages);
-    TraversalJob job;
-    if (const auto* ray = std::get_if<RayRecord>(&record)) {
-      auto header = headers.find(ray->modelAddress);
-      if (header == headers.end()) {
-        header = headers.emplace(ray->modelAddress, readModelHeader(memory, ray->modelAddress)).first;
-        timing.headerFetch = static_cast<uint64_t>(manager.headerFetchCycles);
-      }
-      job = rayRecordToJob(*ray, header->second, manager.epsilon);
-      timing.pipelineCycles += static_cast<uint64_t>(manager.rayStages) + timing.headerFetch;
-    } else {
-      job = std::get<TraversalJob>(record);
-    }
-    traced.results.push_back(golden.trace(job));
-    timing.cost = traced.results.back().cost;
-    traced.timing.push_back(timing);
-  }
-  return traced;
-}
-
 // Per job: whether some core was idle in the cycle it became pending (eq. 6.7's case). A core is
-// busy from the cycle after its dispatch to its handover.
+// busy from the cycle after its dispatch to its handover; every earlier job was dispatched
+// before that cycle and no later one, so the busy cores are the earlier jobs not yet handed over.
 std::vector<bool> coreIdleWhenPending(const RecurrenceRun& run, int cores) {
-  std::vector<std::pair<uint64_t, int>> changes;  // (cycle, +1 busy / -1 idle again)
-  for (size_t j = 0; j < run.dispatchCycles.size(); ++j) {
-    changes.push_back({run.dispatchCycles[j] + 1, +1});
-    changes.push_back({run.handoverCycles[j] + 1, -1});
-  }
-  std::sort(changes.begin(), changes.end());
+  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<>> handovers;  // earlier jobs
   std::vector<bool> idle(run.pendingCycles.size());
-  size_t next = 0;
-  int busy = 0;
-  for (size_t i = 0; i < idle.size(); ++i) {  // pending cycles rise with the job index
-    for (; next < changes.size() && changes[next].first <= run.pendingCycles[i]; ++next)
-      busy += changes[next].second;
-    idle[i] = busy < cores;
+  for (size_t i = 0; i < idle.size(); ++i) {
+    while (!handovers.empty() && handovers.top() < run.pendingCycles[i]) handovers.pop();
+    idle[i] = handovers.size() < static_cast<size_t>(cores);
+    handovers.push(run.handoverCycles[i]);
   }
   return idle;
 }
@@ -73,18 +70,20 @@ std::vector<bool> coreIdleWhenPending(const RecurrenceRun& run, int cores) {
 // The most result buffers full at once, as the result manager counts them: a result counts from
 // the cycle it is buffered to the cycle after it drained.
 uint64_t maxBuffersFull(const RecurrenceRun& run) {
-  std::vector<std::pair<uint64_t, int>> changes;  // at equal cycles, ends (-1) before starts
-  for (size_t j = 0; j < run.handoverCycles.size(); ++j) {
-    changes.push_back({run.handoverCycles[j] + 1, +1});
-    changes.push_back({run.drainCycles[j] + 2, -1});
+  std::vector<uint64_t> starts(run.handoverCycles.size()), ends(run.drainCycles.size());
+  for (size_t j = 0; j < starts.size(); ++j) {
+    starts[j] = run.handoverCycles[j] + 1;
+    ends[j] = run.drainCycles[j] + 2;
   }
-  std::sort(changes.begin(), changes.end());
-  int64_t full = 0, most = 0;
-  for (const auto& change : changes) {
-    full += change.second;
-    most = std::max(most, full);
+  std::sort(starts.begin(), starts.end());
+  std::sort(ends.begin(), ends.end());
+  uint64_t full = 0, most = 0;
+  size_t ended = 0;
+  for (uint64_t start : starts) {
+    for (; ended < ends.size() && ends[ended] <= start; ++ended) --full;
+    most = std::max(most, ++full);
   }
-  return static_cast<uint64_t>(most);
+  return most;
 }
 
 RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<TraversalResult>& results,
@@ -130,33 +129,48 @@ std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
   return std::nullopt;
 }
 
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
-                   const RtuConfig& config) {
-  return runAnalytic(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
-}
+namespace {
 
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config) {
+template <typename Record>
+RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records, const RtuConfig& config) {
   validate(config);
   if (const auto why = whyNotAnalytic(config))
     throw std::invalid_argument("the analytic model does not apply: " + *why);
   const auto start = std::chrono::steady_clock::now();
-  const TracedRecords traced = traceRecords(memory, records, config);
+  RecordTracer traced(memory, config);
+  traced.results.reserve(records.size());
+  traced.timing.reserve(records.size());
+  for (const Record& record : records) traced.trace(record);
   const RecurrenceRun timing =
       runRecurrence(traced.timing, RecurrenceConfig{config.cores, config.scheduler,
                                                     config.hostInput, config.hostOutput});
   RtuRun run;
   run.totalCycles = timing.totalCycles;
+  run.results.reserve(records.size());
+  run.jobIndices = timing.hostOrder;
+  run.arrivalCycles.reserve(records.size());
   for (size_t job : timing.hostOrder) {
     run.results.push_back(traced.results[job]);
-    run.jobIndices.push_back(job);
     run.arrivalCycles.push_back(timing.drainCycles[job]);
-    run.blockedCycles.push_back(0);
   }
+  run.blockedCycles.assign(records.size(), 0);
   run.statistics = statisticsOf(timing, traced.results, config);
+  run.statistics.model = "recurrence";
   run.statistics.hostSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
+}
+
+}  // namespace
+
+RtuRun runAnalytic(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                   const RtuConfig& config) {
+  return analyticRun(memory, jobs, config);
+}
+
+RtuRun runAnalytic(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                   const RtuConfig& config) {
+  return analyticRun(memory, records, config);
 }
 
 }  // namespace rtu

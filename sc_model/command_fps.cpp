@@ -95,6 +95,17 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
+// The models that answered the rows, for the heading.
+std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
+  bool recurrence = false, simulation = false;
+  for (const nlohmann::ordered_json& row : rows) {
+    if (row["status"] != "ok") continue;
+    (row["statistics"]["simulation"]["model"] == "recurrence" ? recurrence : simulation) = true;
+  }
+  if (recurrence && simulation) return "answered by the recurrence where exact, else simulated";
+  return recurrence ? "answered by the exact recurrence (--simulate: SystemC)" : "simulated (SystemC)";
+}
+
 }  // namespace
 
 void addFpsCommand(CLI::App& app) {
@@ -104,6 +115,7 @@ void addFpsCommand(CLI::App& app) {
     std::vector<int> cores = {1, 2, 4, 8, 16};
     std::string csv;
     int jobs = defaultWorkerCount();
+    bool simulate = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -120,6 +132,9 @@ void addFpsCommand(CLI::App& app) {
   command->add_option("--csv", options->csv,
                       "write the rows: width,height,cores,rays,total_cycles,cycles_per_ray,"
                       "frame_ms,fps,limit, then more statistics");
+  command->add_flag("--simulate", options->simulate,
+                     "run the SystemC model even where the recurrence gives the same answer "
+                     "(ideal memory, no reorder buffer, steady host links)");
   command->add_option("-j,--jobs", options->jobs, "rows run in parallel (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->callback([options, request] {
@@ -140,7 +155,9 @@ void addFpsCommand(CLI::App& app) {
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     std::vector<nlohmann::ordered_json> rows(configurations.size());
     const size_t failures = runRows(configurations, all, options->jobs, "fps",
-                                    [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; });
+                                    [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; },
+                                    options->simulate ? RowModel::Simulation
+                                                      : RowModel::RecurrenceWhereExact);
     const RunConfig& settings = base.values();
     std::cout << "scene " << (settings.scene.svoFile.empty() && settings.scene.meshFile.empty() &&
                                       settings.scene.binvoxFile.empty()
@@ -150,7 +167,7 @@ void addFpsCommand(CLI::App& app) {
                                         settings.scene.binvoxFile)
               << ", " << toString(settings.rtu.scheduler) << ", "
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory, "
-              << settings.rtu.clockMhz << " MHz\n";
+              << settings.rtu.clockMhz << " MHz, " << answeredBy(rows) << "\n";
     printTable(rows, std::cout);
     printMatrix(rows, options->cores, std::cout);
     if (!options->csv.empty()) {

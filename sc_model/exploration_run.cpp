@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "analytic_run.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
 #include "stack_check.h"
@@ -75,22 +76,26 @@ void SceneCache::load(const std::string& directory) {
   }
 }
 
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene) {
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+                                   RowModel model) {
   const RunConfig& settings = configuration.values();
   settings.camera.validate();
   validate(settings.rtu);
   const std::vector<TraversalJob> jobs =
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
   checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
-  const RtuRun run = simulateRtu(scene.image.memory(), jobs, settings.rtu);
+  const bool recurrence = model == RowModel::RecurrenceWhereExact && !whyNotAnalytic(settings.rtu);
+  const RtuRun run = recurrence ? runAnalytic(scene.image.memory(), jobs, settings.rtu)
+                                : simulateRtu(scene.image.memory(), jobs, settings.rtu);
   nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
   row.update(runJson(run.statistics, configuration));
   return row;
 }
 
-nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes) {
+nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
+                                    RowModel model) {
   try {
-    return runFrameRow(configuration, scenes.scene(configuration.values().scene));
+    return runFrameRow(configuration, scenes.scene(configuration.values().scene), model);
   } catch (const std::exception& error) {
     return failedRow(configuration, error.what());
   }
@@ -106,14 +111,15 @@ nlohmann::ordered_json failedRow(const Configuration& configuration, const std::
 
 size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
                int jobs, const std::string& label,
-               const std::function<void(size_t, const nlohmann::ordered_json&)>& done) {
+               const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
+               RowModel model) {
   SceneCache scenes;
   std::vector<Configuration> used;
   for (size_t row : rows) used.push_back(configurations[row]);
   scenes.build(used);
   Progress progress(label, rows.size());
   size_t finished = 0, failures = 0;
-  const auto work = [&](size_t row) { return runRowSafely(configurations[row], scenes).dump(); };
+  const auto work = [&](size_t row) { return runRowSafely(configurations[row], scenes, model).dump(); };
   runInWorkers(rows, jobs, work, [&](size_t row, const WorkerOutcome& outcome) {
     nlohmann::ordered_json result;
     try {
@@ -154,7 +160,8 @@ const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() 
       {"l2_hit_rate", Json::json_pointer("/memory/l2/hit_rate")},
       {"dram_bytes", Json::json_pointer("/memory/dram/bytes")},
       {"dram_bytes_per_cycle", Json::json_pointer("/memory/dram/bytes_per_cycle")},
-      {"host_seconds", Json::json_pointer("/simulation/host_seconds")}};
+      {"host_seconds", Json::json_pointer("/simulation/host_seconds")},
+      {"model", Json::json_pointer("/simulation/model")}};
   return columns;
 }
 

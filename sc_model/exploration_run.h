@@ -32,10 +32,17 @@ class SceneCache {
   std::map<std::string, std::string> errors_;
 };
 
+// Which model answers a row: always the SystemC simulation, or the recurrence of
+// golden/rtu_recurrence.h where it is exact for the configuration (the same cycles and statistics,
+// tests/test_rtu_recurrence.cpp) and the SystemC simulation elsewhere.
+enum class RowModel { Simulation, RecurrenceWhereExact };
+
 // The run JSON with "status": "ok"; throws for an impossible configuration or a stalled run.
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene);
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+                                   RowModel model = RowModel::Simulation);
 // runFrameRow, or the failed row of a configuration that cannot run.
-nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes);
+nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
+                                    RowModel model = RowModel::Simulation);
 
 // The row of a configuration that failed ("failed": it cannot run) or whose worker died ("lost":
 // it may run another time), with the error.
@@ -48,7 +55,8 @@ nlohmann::ordered_json failedRow(const Configuration& configuration, const std::
 // rows that are not "ok".
 size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
                int jobs, const std::string& label,
-               const std::function<void(size_t, const nlohmann::ordered_json&)>& done);
+               const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
+               RowModel model = RowModel::Simulation);
 
 // The statistics columns of the CSV outputs: rays,total_cycles,cycles_per_ray,frame_ms,fps,limit
 // first, then hit rates, core time shares, scheduler waits and DRAM traffic.

@@ -152,7 +152,8 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
         {"eq_6_7_bound", waitBound() < 0 ? json("W_J") : json(waitBound())}}},
       {"result_manager", {{"max_buffers_full", resultBuffersMaxFull}}},
       {"memory", {{"kind", idealMemory ? "ideal" : "cached"}}},
-      {"simulation", {{"host_seconds", hostSeconds},
+      {"simulation", {{"model", model},
+                      {"host_seconds", hostSeconds},
                       {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
   if (reorderMaxOccupancy > 0) result["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
   if (!idealMemory) {
@@ -194,7 +195,7 @@ void RtuStatistics::writeReport(std::ostream& out) const {
         << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
   }
   if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
-  out << "simulated in " << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
+  out << (model == "systemc" ? "simulated in " : "answered by the " + model + " in ") << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
       << " M rays per host second)\n";
 }
 

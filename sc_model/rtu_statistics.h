@@ -37,6 +37,7 @@ struct RtuStatistics {
   uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
   double hostInBytesPerCycle = 0.0, hostOutBytesPerCycle = 0.0;  // 0: a record a cycle
   double hostSeconds = 0.0;
+  std::string model = "systemc";  // what answered: the SystemC simulation or the "recurrence"
 
   // Shares of the cores' time (cores x total cycles); they add up to 1.
   struct CoreTimeShares {
