@@ -1,6 +1,7 @@
 #include "host_buffers.h"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -25,30 +26,17 @@ uint32_t toWord32(int64_t value, const char* field) {
 
 int64_t signExtend32(uint32_t word) { return static_cast<int32_t>(word); }
 
-// Reads a buffer file and decodes it; decoding errors are prefixed with the file.
-template <class Decode>
-auto readBuffer(const std::string& path, const std::string& what, Decode decode) {
-  const std::vector<uint32_t> words = readWordFile(path, kRecordBytes, what);
-  try {
-    return decode(words);
-  } catch (const std::runtime_error& error) {
-    throw std::runtime_error(what + " '" + path + "': " + error.what());
-  }
-}
+// One codec per record kind: decode(words of record i, i) checks and returns the record, encode
+// writes its 8 words. The vector and file functions below share them.
+struct JobCodec {
+  using Record = TraversalJob;
+  static constexpr const char* kWhat = "job buffer";
 
-}  // namespace
-
-std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
-  if (words.size() % kRecordWords != 0)
-    throw std::runtime_error("job buffer holds " + std::to_string(words.size()) +
-                             " words, not a multiple of 8");
-  const char* axes = "xyz";
-  std::vector<TraversalJob> jobs(words.size() / kRecordWords);
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    const uint32_t* record = &words[i * kRecordWords];
+  static TraversalJob decode(const uint32_t* record, size_t i) {
+    static const char* axes = "xyz";
     if (record[0] >> 31)
       throw recordError(i, "bit 31 of the job word is set (ids have 28 bits, a has 3)");
-    TraversalJob& job = jobs[i];
+    TraversalJob job;
     job.id = record[0] & TraversalJob::kMaxId;
     job.a = static_cast<uint8_t>(record[0] >> 28 & 7);
     for (int k = 0; k < 3; ++k) {
@@ -63,36 +51,30 @@ std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
                                  ": after mirroring every direction is positive, so t0 <= t1");
     }
     job.root = record[7];
+    return job;
   }
-  return jobs;
-}
 
-std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs) {
-  std::vector<uint32_t> words;
-  words.reserve(jobs.size() * kRecordWords);
-  for (const TraversalJob& job : jobs) {
+  static void encode(const TraversalJob& job, size_t, uint32_t* words) {
     if (job.id > TraversalJob::kMaxId || job.a > 7)
       throw std::invalid_argument("job id " + std::to_string(job.id) +
                                   " or a does not fit the job word");
-    words.push_back(job.idWord());
-    words.insert(words.end(), job.t0Bits.begin(), job.t0Bits.end());
-    words.insert(words.end(), job.t1Bits.begin(), job.t1Bits.end());
-    words.push_back(job.root);
+    words[0] = job.idWord();
+    for (int k = 0; k < 3; ++k) {
+      words[1 + k] = job.t0Bits[k];
+      words[4 + k] = job.t1Bits[k];
+    }
+    words[7] = job.root;
   }
-  return words;
-}
+};
 
-std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words) {
-  if (words.size() % kRecordWords != 0)
-    throw std::runtime_error("result buffer holds " + std::to_string(words.size()) +
-                             " words, not a multiple of 8");
-  std::vector<TraversalResult> results(words.size() / kRecordWords);
-  for (size_t i = 0; i < results.size(); ++i) {
-    const uint32_t* record = &words[i * kRecordWords];
+struct ResultCodec {
+  using Record = TraversalResult;
+  static constexpr const char* kWhat = "result buffer";
+
+  static TraversalResult decode(const uint32_t* record, size_t i) {
     if (record[1] > 1) throw recordError(i, "hit word is " + std::to_string(record[1]) + ", not 0 or 1");
-    if (record[7] & ~kResultFlagStackOverflow)
-      throw recordError(i, "unknown flag bits in word 7");
-    TraversalResult& result = results[i];
+    if (record[7] & ~kResultFlagStackOverflow) throw recordError(i, "unknown flag bits in word 7");
+    TraversalResult result;
     result.idWord = record[0];
     result.hit = record[1] == 1;
     result.tHit = signExtend32(record[2]);
@@ -101,32 +83,25 @@ std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& wo
       throw recordError(i, "a miss with a non-zero normal");
     result.cost = record[6];
     result.stackOverflow = (record[7] & kResultFlagStackOverflow) != 0;
+    return result;
   }
-  return results;
-}
 
-std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results) {
-  std::vector<uint32_t> words;
-  words.reserve(results.size() * kRecordWords);
-  for (const TraversalResult& result : results) {
-    words.push_back(result.idWord);
-    words.push_back(result.hit ? 1u : 0u);
-    words.push_back(toWord32(result.tHit, "t_hit"));
-    for (int k = 0; k < 3; ++k) words.push_back(toWord32(result.normal[k], "normal"));
-    words.push_back(result.cost);
-    words.push_back(result.stackOverflow ? kResultFlagStackOverflow : 0u);
+  static void encode(const TraversalResult& result, size_t, uint32_t* words) {
+    words[0] = result.idWord;
+    words[1] = result.hit ? 1u : 0u;
+    words[2] = toWord32(result.tHit, "t_hit");
+    for (int k = 0; k < 3; ++k) words[3 + k] = toWord32(result.normal[k], "normal");
+    words[6] = result.cost;
+    words[7] = result.stackOverflow ? kResultFlagStackOverflow : 0u;
   }
-  return words;
-}
+};
 
-std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words) {
-  if (words.size() % kRecordWords != 0)
-    throw std::runtime_error("ray buffer holds " + std::to_string(words.size()) +
-                             " words, not a multiple of 8");
-  std::vector<RayRecord> records(words.size() / kRecordWords);
-  for (size_t i = 0; i < records.size(); ++i) {
-    const uint32_t* word = &words[i * kRecordWords];
-    RayRecord& record = records[i];
+struct RayCodec {
+  using Record = RayRecord;
+  static constexpr const char* kWhat = "ray buffer";
+
+  static RayRecord decode(const uint32_t* word, size_t i) {
+    RayRecord record;
     record.id = word[0];
     for (int k = 0; k < 3; ++k) {
       record.origin[k] = bitsToFloat(word[1 + k]);
@@ -138,50 +113,109 @@ std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words) {
     } catch (const std::runtime_error& error) {
       throw recordError(i, error.what());
     }
+    return record;
   }
-  return records;
-}
 
-std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records) {
-  std::vector<uint32_t> words;
-  words.reserve(records.size() * kRecordWords);
-  for (size_t i = 0; i < records.size(); ++i) {
-    const RayRecord& record = records[i];
+  static void encode(const RayRecord& record, size_t i, uint32_t* words) {
     try {
       record.validate();
     } catch (const std::runtime_error& error) {
       throw std::invalid_argument("ray record " + std::to_string(i) + ": " + error.what());
     }
-    words.push_back(record.id);
-    for (float component : record.origin) words.push_back(floatBits(component));
-    for (float component : record.direction) words.push_back(floatBits(component));
-    words.push_back(record.modelAddress);
+    words[0] = record.id;
+    for (int k = 0; k < 3; ++k) {
+      words[1 + k] = floatBits(record.origin[k]);
+      words[4 + k] = floatBits(record.direction[k]);
+    }
+    words[7] = record.modelAddress;
   }
+};
+
+template <class Codec>
+std::vector<typename Codec::Record> decodeAll(const std::vector<uint32_t>& words) {
+  if (words.size() % kRecordWords != 0)
+    throw std::runtime_error(std::string(Codec::kWhat) + " holds " + std::to_string(words.size()) +
+                             " words, not a multiple of 8");
+  std::vector<typename Codec::Record> records;
+  records.reserve(words.size() / kRecordWords);
+  for (size_t i = 0; i < words.size() / kRecordWords; ++i)
+    records.push_back(Codec::decode(&words[i * kRecordWords], i));
+  return records;
+}
+
+template <class Codec>
+std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& records) {
+  std::vector<uint32_t> words(records.size() * kRecordWords);
+  for (size_t i = 0; i < records.size(); ++i) Codec::encode(records[i], i, &words[i * kRecordWords]);
   return words;
 }
 
-std::vector<TraversalJob> readJobBuffer(const std::string& path) {
-  return readBuffer(path, "job buffer", decodeJobRecords);
+// Decoding errors are prefixed with the file.
+template <class Codec>
+std::vector<typename Codec::Record> readAll(const std::string& path) {
+  const std::string what = Codec::kWhat;
+  RecordFileReader reader(path, kRecordBytes, what);
+  std::vector<typename Codec::Record> records;
+  records.reserve(reader.records());
+  size_t count = 0;
+  try {
+    while (const uint32_t* chunk = reader.next(count))
+      for (size_t r = 0; r < count; ++r)
+        records.push_back(Codec::decode(chunk + r * kRecordWords, records.size()));
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error(what + " '" + path + "': " + error.what());
+  }
+  return records;
 }
 
+// A record that cannot be encoded leaves no file behind.
+template <class Codec>
+void writeAll(const std::string& path, const std::vector<typename Codec::Record>& records) {
+  WordFileWriter writer(path);
+  try {
+    for (size_t i = 0; i < records.size(); ++i)
+      Codec::encode(records[i], i, writer.append(kRecordWords));
+    writer.close();
+  } catch (...) {
+    std::remove(path.c_str());
+    throw;
+  }
+}
+
+}  // namespace
+
+std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
+  return decodeAll<JobCodec>(words);
+}
+std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs) {
+  return encodeAll<JobCodec>(jobs);
+}
+std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words) {
+  return decodeAll<ResultCodec>(words);
+}
+std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results) {
+  return encodeAll<ResultCodec>(results);
+}
+std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words) {
+  return decodeAll<RayCodec>(words);
+}
+std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records) {
+  return encodeAll<RayCodec>(records);
+}
+
+std::vector<TraversalJob> readJobBuffer(const std::string& path) { return readAll<JobCodec>(path); }
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
-  writeWordFile(path, encodeJobRecords(jobs));
+  writeAll<JobCodec>(path, jobs);
 }
-
 std::vector<TraversalResult> readResultBuffer(const std::string& path) {
-  return readBuffer(path, "result buffer", decodeResultRecords);
+  return readAll<ResultCodec>(path);
 }
-
 void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results) {
-  writeWordFile(path, encodeResultRecords(results));
+  writeAll<ResultCodec>(path, results);
 }
-
-std::vector<RayRecord> readRayBuffer(const std::string& path) {
-  return readBuffer(path, "ray buffer", decodeRayRecords);
-}
-
+std::vector<RayRecord> readRayBuffer(const std::string& path) { return readAll<RayCodec>(path); }
 void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records) {
-  writeWordFile(path, encodeRayRecords(records));
+  writeAll<RayCodec>(path, records);
 }
 
 }  // namespace rtu

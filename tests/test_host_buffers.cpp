@@ -92,3 +92,30 @@ TEST_CASE("Result buffers round-trip and reject impossible records", "[buffers]"
   hit.tHit = int64_t{1} << 40;
   REQUIRE_THROWS_WITH(encodeResultRecords({hit}), Catch::Contains("32 bits"));
 }
+
+TEST_CASE("Buffers larger than a read chunk keep record numbers across chunks", "[buffers]") {
+  Camera camera;
+  camera.width = 250;
+  camera.height = 160;  // 40,000 records, 1.28 MB: two chunks of 1 MiB
+  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, 7);
+  const std::string path = tempPath("large_jobs.bin");
+  writeJobBuffer(path, jobs);
+  const std::vector<TraversalJob> back = readJobBuffer(path);
+  REQUIRE(back.size() == jobs.size());
+  CHECK(back.back().idWord() == jobs.back().idWord());
+  CHECK(back.back().t1Bits == jobs.back().t1Bits);
+  std::vector<uint32_t> words = encodeJobRecords(jobs);
+  words[8 * 39000] |= 0x80000000u;  // in the second chunk (a chunk holds 32,768 records)
+  writeWordFile(path, words);
+  REQUIRE_THROWS_WITH(readJobBuffer(path), Catch::Contains(path) && Catch::Contains("record 39000:"));
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("A result that does not fit leaves no result buffer behind", "[buffers]") {
+  TraversalResult fits, tooWide;
+  tooWide.hit = true;
+  tooWide.tHit = int64_t{1} << 40;
+  const std::string path = tempPath("unwritable_results.bin");
+  REQUIRE_THROWS_WITH(writeResultBuffer(path, {fits, tooWide}), Catch::Contains("t_hit"));
+  CHECK_FALSE(std::filesystem::exists(path));
+}
