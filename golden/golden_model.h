@@ -29,6 +29,8 @@ class GoldenModel {
   std::vector<TraversalResult> traceRays(const std::vector<RayRecord>& records, float epsilon);
 
   const GoldenConfig& config() const { return config_; }
+  // The voxel the last traced job hit (TraversalCore::hitVoxel), when it hit.
+  uint64_t lastHitVoxel() const { return core_.hitVoxel(); }
 
  private:
   SvoMemory memory_;

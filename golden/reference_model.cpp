@@ -16,6 +16,7 @@ ReferenceResult ReferenceModel::trace(const Ray& ray, uint32_t root) {
   result.normalAxis = core_.normalAxis();
   result.cost = core_.cost();
   result.stackOverflow = core_.stackOverflow();
+  if (result.hit) result.voxel = core_.hitVoxel();
   return result;
 }
 

@@ -16,6 +16,7 @@ struct ReferenceResult {
   int normalAxis = 0;
   uint32_t cost = 0;
   bool stackOverflow = false;
+  uint64_t voxel = 0;  // on a hit: TraversalCore::hitVoxel()
 };
 
 class ReferenceModel {

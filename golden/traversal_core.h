@@ -158,6 +158,9 @@ class TraversalCore {
   int normalAxis() const { return normalAxis_; }
   uint32_t cost() const { return cost_; }
   bool stackOverflow() const { return stackOverflow_; }
+  // After a hit: the leaf hit, as its parent descriptor's address and its slot there. It names the
+  // voxel uniquely in the image, so two arithmetics can be compared on which voxel they hit.
+  uint64_t hitVoxel() const { return uint64_t{frame_.entry} << 3 | static_cast<uint64_t>(frame_.child ^ a_); }
   int stackSize() const { return stackSize_; }
   const Arith& arith() const { return arith_; }
 

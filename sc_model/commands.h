@@ -12,6 +12,7 @@ void addGoldenCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addReplayCommand(CLI::App& app);
 void addAccuracyCommand(CLI::App& app);
+void addPrecisionCommand(CLI::App& app);
 void addConfigCommand(CLI::App& app);
 void addFpsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);

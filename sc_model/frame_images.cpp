@@ -267,6 +267,21 @@ void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
   writeRgb(frame, path, shadeLambert);
 }
 
+void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,
+                         const std::string& path) {
+  static const std::array<Pixel, 5> colours = {
+      Pixel(0.08f),                  // BothMiss
+      Pixel(0.45f),                  // Agree
+      Pixel(0.20f, 0.50f, 1.00f),    // FalseHit
+      Pixel(1.00f, 0.20f, 0.20f),    // MissedHit
+      Pixel(1.00f, 0.85f, 0.10f)};   // DifferentVoxel
+  Canvas canvas(camera.width, camera.height, colours[0]);
+  for (size_t i = 0; i < verdicts.size(); ++i)
+    canvas.set(static_cast<int>(i % camera.width), static_cast<int>(i / camera.width),
+               colours[static_cast<size_t>(verdicts[i])]);
+  writeImage(path, canvas.width, canvas.height, 3, canvas.rgb, false);
+}
+
 void writeCostImage(const RenderedFrame& frame, const std::string& path) {
   const int width = frame.camera.width;
   const int height = frame.camera.height;

@@ -8,6 +8,7 @@
 
 #include "camera.h"
 #include "fixed_point.h"
+#include "precision.h"
 #include "traversal_job.h"
 
 namespace rtu {
@@ -34,5 +35,9 @@ void writeDepthImage(const RenderedFrame& frame, const std::string& path);
 // round values, the maximum), and from 200 pixels a hit/miss/cycles legend. Labels use
 // DejaVu Sans through OpenImageIO, or a built-in 5x7 bitmap font when no font loads.
 void writeCostImage(const RenderedFrame& frame, const std::string& path);
+// One format against float64 per pixel (verdicts in pixel order): both miss near black, agreeing
+// hits grey, false hits blue, missed hits red, hits on a different first voxel yellow.
+void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,
+                         const std::string& path);
 
 }  // namespace rtu

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   rtu::addReplayCommand(app);
   rtu::addRenderCommand(app);
   rtu::addAccuracyCommand(app);
+  rtu::addPrecisionCommand(app);
   rtu::addConfigCommand(app);
   rtu::addFpsCommand(app);
   rtu::addSweepCommand(app);

@@ -1,0 +1,83 @@
+// rtusim precision's measure (golden/precision.h): formats against float64.
+
+#include <catch2/catch.hpp>
+
+#include "camera.h"
+#include "precision.h"
+#include "procedural_scenes.h"
+#include "svo_builder.h"
+
+namespace rtu {
+namespace {
+
+struct Study {
+  SvoBuild build;
+  PrecisionStudy study;
+};
+
+Study sphereStudy(int depth, int size) {
+  Study s{buildSvo(*makeProceduralScene("sphere", depth)), {}};
+  Camera camera;
+  camera.width = size;
+  camera.height = size;
+  s.study.rays = frameRays(camera);
+  s.study.root = s.build.image.root;
+  return s;
+}
+
+size_t count(const FormatPrecision& p, PrecisionVerdict verdict) {
+  return static_cast<size_t>(std::count(p.verdicts.begin(), p.verdicts.end(), verdict));
+}
+
+}  // namespace
+
+TEST_CASE("Formats are written TOTAL.FRACTION or QI.F", "[precision]") {
+  CHECK(parseFixedFormat("32.16").totalBits == 32);
+  CHECK(parseFixedFormat("32.16").fractionBits == 16);
+  CHECK(parseFixedFormat("Q12.20").totalBits == 32);
+  CHECK(parseFixedFormat("Q12.20").fractionBits == 20);
+  CHECK(parseFixedFormat("48.32").totalBits == 48);
+  CHECK_THROWS_WITH(parseFixedFormat("32"), Catch::Contains("format '32'") && Catch::Contains("32.16"));
+  CHECK_THROWS_WITH(parseFixedFormat("32.x"), Catch::Contains("format '32.x'"));
+  CHECK_THROWS_WITH(parseFixedFormat("64.16"), Catch::Contains("format '64.16'"));
+  CHECK_THROWS_WITH(parseFixedFormat("1.2.3"), Catch::Contains("format '1.2.3'"));
+}
+
+TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precision]") {
+  const Study s = sphereStudy(6, 48);
+  const auto results = measurePrecision(s.build.image.memory(), s.study, {FixedFormat{16, 8}, FixedFormat{32, 16}});
+  for (const FormatPrecision& p : results) {
+    REQUIRE(p.verdicts.size() == s.study.rays.size());
+    CHECK(count(p, PrecisionVerdict::FalseHit) == p.falseHits);
+    CHECK(count(p, PrecisionVerdict::MissedHit) == p.missedHits);
+    CHECK(count(p, PrecisionVerdict::DifferentVoxel) == p.differentVoxels);
+    // float64 hits are the rays where it hits: agreeing, missed, or on another voxel.
+    CHECK(count(p, PrecisionVerdict::Agree) + p.missedHits + p.differentVoxels == p.referenceHits);
+    CHECK(p.referenceHits > 0);
+  }
+}
+
+TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth-8 leaves", "[precision]") {
+  // A depth-8 leaf spans 2^-7 of the cube: with 8 fraction bits a child's t-interval is a few
+  // steps wide, and truncated midpoints put hits into neighbouring leaves.
+  const Study s = sphereStudy(8, 64);
+  const auto results = measurePrecision(s.build.image.memory(), s.study,
+                                        {FixedFormat{16, 8}, FixedFormat{32, 16}, FixedFormat{48, 24}});
+  const FormatPrecision& narrow = results[0];
+  const FormatPrecision& thesis = results[1];
+  const FormatPrecision& wide = results[2];
+  CHECK(narrow.differentVoxelRate() > 0.05);
+  CHECK(thesis.differentVoxelRate() < 0.01);
+  CHECK(wide.differentVoxels + wide.falseHits + wide.missedHits == 0);
+  // Truncation errs by a few steps of the format, not more, where the voxels agree.
+  CHECK(thesis.tErrorMeanSteps < 4.0);
+  CHECK(thesis.tErrorMeanSteps > 0.5);
+}
+
+TEST_CASE("An invalid format is refused before tracing", "[precision]") {
+  const Study s = sphereStudy(4, 4);
+  CHECK_THROWS_AS(measurePrecision(s.build.image.memory(), s.study, {FixedFormat{32, 16}, FixedFormat{64, 16}}),
+                  std::invalid_argument);
+}
+
+}  // namespace rtu
