@@ -73,8 +73,12 @@ void addPrecisionCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "precision",
       "one frame in several fixed-point formats against the float64 reference: false and missed "
-      "hits, different first voxels, t error in steps of each format, cost");
-  auto request = addConfigOptions(*command, kUseArithmetic | kUseScene | kUseCamera);
+      "hits, hits on another voxel, t error in steps of each format, cost");
+  // The formats come from --formats, and the stack is as deep as any tree (kMaxStackFrames), so
+  // that only the arithmetic differs.
+  auto request = addConfigOptions(*command, kUseArithmetic | kUseScene | kUseCamera,
+                                  {"--total-bits", "--fraction-bits", "--stack-frames",
+                                   "--allow-stack-overflow"});
   command->add_option("--formats", options->formats,
                       "formats as TOTAL.FRACTION bits (32.16) or QI.F (Q16.16)")
       ->delimiter(',')
