@@ -14,6 +14,7 @@ TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& cor
   result.idWord = idWord;
   result.cost = core.cost();
   result.stackOverflow = core.stackOverflow();
+  result.tOverflow = core.tOverflow();
   result.hit = core.hit();
   if (core.hit()) {
     result.tHit = core.tHit();

@@ -37,6 +37,7 @@ FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, co
     referenceCost += exact.cost;
     p.referenceHits += exact.hit;
     p.overflowRays += fixed.stackOverflow;
+    p.tOverflowRays += fixed.tOverflow;
     PrecisionVerdict verdict = PrecisionVerdict::BothMiss;
     if (fixed.hit && !exact.hit) {
       verdict = PrecisionVerdict::FalseHit;
@@ -53,6 +54,8 @@ FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, co
       verdict = sameVoxel ? PrecisionVerdict::Agree : PrecisionVerdict::DifferentVoxel;
       p.differentVoxels += !sameVoxel;
     }
+    p.wrongUnflagged += verdict != PrecisionVerdict::BothMiss && verdict != PrecisionVerdict::Agree &&
+                        !fixed.tOverflow;
     p.verdicts.push_back(verdict);
   }
   if (!errors.empty()) {

@@ -11,6 +11,7 @@ ResultSummary ResultSummary::of(const std::vector<TraversalResult>& results) {
   for (const TraversalResult& result : results) {
     summary.hits += result.hit;
     summary.stackOverflows += result.stackOverflow;
+    summary.tOverflows += result.tOverflow;
     summary.totalCost += result.cost;
     summary.maxCost = std::max(summary.maxCost, result.cost);
   }
@@ -28,6 +29,10 @@ std::string ResultSummary::describe() const {
   if (stackOverflows)
     lines += "WARNING     " + std::to_string(stackOverflows) +
              " rays ran out of stack frames and were reported as misses\n";
+  if (tOverflows)
+    lines += "WARNING     " + std::to_string(tOverflows) +
+             " rays have t-values beyond the fixed-point range: a t sum wrapped, so their results "
+             "are unreliable (flag 2); give the format more integer bits or move the camera closer\n";
   return lines;
 }
 

@@ -13,6 +13,7 @@ struct ResultSummary {
   size_t rays = 0;
   size_t hits = 0;
   size_t stackOverflows = 0;
+  size_t tOverflows = 0;
   uint64_t totalCost = 0;
   uint32_t maxCost = 0;
 

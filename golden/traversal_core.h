@@ -25,6 +25,10 @@ struct FixedArith {
   using Value = int64_t;
   FixedFormat format;
   Value add(Value a, Value b) const { return format.wrap(a + b); }
+  // Whether add(a, b) wraps: the sum is beyond the format's range.
+  bool overflows(Value a, Value b) const {
+    return a + b > format.maxRaw() || a + b < format.minRaw();
+  }
   static Value half(Value v) { return v >> 1; }
   Value one() const { return format.one(); }
 };
@@ -32,6 +36,7 @@ struct FixedArith {
 struct Float64Arith {
   using Value = double;
   static Value add(Value a, Value b) { return a + b; }
+  static bool overflows(Value, Value) { return false; }
   static Value half(Value v) { return v * 0.5; }
   static Value one() { return 1.0; }
 };
@@ -98,13 +103,16 @@ class TraversalCore {
   // The job handshake in IDLE: latches the job, the next cycle is INIT.
   void start(const Vec3& t0, const Vec3& t1, uint8_t a, uint32_t root) {
     a_ = a & 7;
-    frame_ = Frame{root, t0, midpoints(t0, t1), t1, 0};
     stackSize_ = 0;
     cost_ = 0;
     hit_ = false;
     stackOverflow_ = false;
+    tOverflow_ = false;
+    frame_ = Frame{root, t0, midpoints(t0, t1), t1, 0};
     // get_ray_valid: registered from the job's t-values, so it is ready by the first EVAL.
     rayValid_ = !(maxComponent(t0).value >= minComponent(t1).value);
+    // A ray that misses the root cube ends as a miss whatever its midpoints are.
+    tOverflow_ = tOverflow_ && rayValid_;
     state_ = CoreState::Init;
   }
 
@@ -158,6 +166,10 @@ class TraversalCore {
   int normalAxis() const { return normalAxis_; }
   uint32_t cost() const { return cost_; }
   bool stackOverflow() const { return stackOverflow_; }
+  // A midpoint sum exceeded the format's range and wrapped: the job's t-values were too large for
+  // its integer bits (a camera far from the model), and the result is unreliable. (t-values the
+  // conversion saturated are not flagged: mostly harmless, see docs/precision.md.)
+  bool tOverflow() const { return tOverflow_; }
   // After a hit: the leaf hit, as its parent descriptor's address and its slot there. It names the
   // voxel uniquely in the image, so two arithmetics can be compared on which voxel they hit.
   uint64_t hitVoxel() const { return uint64_t{frame_.entry} << 3 | static_cast<uint64_t>(frame_.child ^ a_); }
@@ -170,7 +182,9 @@ class TraversalCore {
     Vec3 t0, tm, t1;
     uint8_t child;
   };
-  Vec3 midpoints(const Vec3& t0, const Vec3& t1) const {
+  // The RTL's adders wrap; a sum that does so is noted (tOverflow), as the midpoint is garbage.
+  Vec3 midpoints(const Vec3& t0, const Vec3& t1) {
+    for (int k = 0; k < 3; ++k) tOverflow_ = tOverflow_ || arith_.overflows(t0[k], t1[k]);
     return {Arith::half(arith_.add(t0[0], t1[0])), Arith::half(arith_.add(t0[1], t1[1])),
             Arith::half(arith_.add(t0[2], t1[2]))};
   }
@@ -253,6 +267,7 @@ class TraversalCore {
   Value tHit_{};
   int normalAxis_ = 0;
   bool stackOverflow_ = false;
+  bool tOverflow_ = false;
 };
 
 // Runs a started core to OUT against an ideal memory (data in the same cycle).

@@ -114,6 +114,7 @@ void SvoTraversalCore::offerResult() {
   statistics_.busyCycles += core_.cost();
   statistics_.blockedCycles += blocked_;
   if (core_.stackOverflow()) ++statistics_.stackOverflows;
+  if (core_.tOverflow()) ++statistics_.tOverflows;
   out->offer(result);
   phase_ = Phase::Out;
 }

@@ -36,6 +36,7 @@ struct CoreStatistics {
   uint64_t blockedCycles = 0;  // BLOCKED
   uint64_t outCycles = 0;      // OUT: result waiting for the result manager
   uint64_t stackOverflows = 0;
+  uint64_t tOverflows = 0;
 };
 
 class SvoTraversalCore : public sc_core::sc_module {

@@ -55,6 +55,7 @@ CoreStatistics RtuStatistics::allCores() const {
     total.blockedCycles += c.blockedCycles;
     total.outCycles += c.outCycles;
     total.stackOverflows += c.stackOverflows;
+    total.tOverflows += c.tOverflows;
   }
   return total;
 }
@@ -143,6 +144,7 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
         {"idle", shares.idle}}},
       {"cores", coresJson},
       {"stack_overflows", stackOverflows},
+      {"t_overflows", allCores().tOverflows},
       {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
       {"scheduler",
        {{"policy", scheduler},
@@ -195,6 +197,8 @@ void RtuStatistics::writeReport(std::ostream& out) const {
         << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
   }
   if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
+  if (const uint64_t wrapped = allCores().tOverflows)
+    out << "t overflows: " << wrapped << " rays (t-values beyond the fixed-point range; flag 2)\n";
   out << (model == "systemc" ? "simulated in " : "answered by the " + model + " in ") << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
       << " M rays per host second)\n";
 }

@@ -73,7 +73,8 @@ struct ResultCodec {
 
   static TraversalResult decode(const uint32_t* record, size_t i) {
     if (record[1] > 1) throw recordError(i, "hit word is " + std::to_string(record[1]) + ", not 0 or 1");
-    if (record[7] & ~kResultFlagStackOverflow) throw recordError(i, "unknown flag bits in word 7");
+    if (record[7] & ~(kResultFlagStackOverflow | kResultFlagTOverflow))
+      throw recordError(i, "unknown flag bits in word 7");
     TraversalResult result;
     result.idWord = record[0];
     result.hit = record[1] == 1;
@@ -83,6 +84,7 @@ struct ResultCodec {
       throw recordError(i, "a miss with a non-zero normal");
     result.cost = record[6];
     result.stackOverflow = (record[7] & kResultFlagStackOverflow) != 0;
+    result.tOverflow = (record[7] & kResultFlagTOverflow) != 0;
     return result;
   }
 
@@ -92,7 +94,8 @@ struct ResultCodec {
     words[2] = toWord32(result.tHit, "t_hit");
     for (int k = 0; k < 3; ++k) words[3 + k] = toWord32(result.normal[k], "normal");
     words[6] = result.cost;
-    words[7] = result.stackOverflow ? kResultFlagStackOverflow : 0u;
+    words[7] = (result.stackOverflow ? kResultFlagStackOverflow : 0u) |
+               (result.tOverflow ? kResultFlagTOverflow : 0u);
   }
 };
 

@@ -119,3 +119,19 @@ TEST_CASE("A result that does not fit leaves no result buffer behind", "[buffers
   REQUIRE_THROWS_WITH(writeResultBuffer(path, {fits, tooWide}), Catch::Contains("t_hit"));
   CHECK_FALSE(std::filesystem::exists(path));
 }
+
+TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow", "[buffers]") {
+  TraversalResult wrapped;
+  wrapped.tOverflow = true;
+  TraversalResult both = wrapped;
+  both.stackOverflow = true;
+  const std::vector<uint32_t> words = encodeResultRecords({wrapped, both});
+  CHECK(words[7] == 2u);
+  CHECK(words[15] == 3u);
+  const std::vector<TraversalResult> back = decodeResultRecords(words);
+  CHECK(back[0] == wrapped);
+  CHECK(back[1] == both);
+  std::vector<uint32_t> unknown = words;
+  unknown[7] = 4u;
+  CHECK_THROWS_WITH(decodeResultRecords(unknown), Catch::Contains("unknown flag bits"));
+}

@@ -81,3 +81,39 @@ TEST_CASE("An invalid format is refused before tracing", "[precision]") {
 }
 
 }  // namespace rtu
+
+namespace rtu {
+
+TEST_CASE("t-values beyond the range are flagged where a sum wraps, and only there", "[precision]") {
+  const Study s = sphereStudy(8, 96);
+  // The default camera's t-values reach about 5 inside the cube, but a slanted axis leaves its
+  // slab much later, and midpoints add two t-values: Q4.12 (range +-8) wraps for most rays, Q7.12
+  // (+-64) for none (docs/precision.md).
+  const auto results = measurePrecision(s.build.image.memory(), s.study,
+                                        {FixedFormat{16, 12}, FixedFormat{19, 12}, FixedFormat{32, 16}});
+  const FormatPrecision& tooFewIntegerBits = results[0];
+  CHECK(tooFewIntegerBits.wrongHitMissRate() > 0.2);
+  CHECK(tooFewIntegerBits.tOverflowRays > tooFewIntegerBits.falseHits + tooFewIntegerBits.missedHits);
+  // What the flag leaves is ordinary 12-fraction-bit imprecision, as Q7.12 has.
+  CHECK(tooFewIntegerBits.wrongUnflagged <= results[1].differentVoxels + results[1].falseHits +
+                                                 results[1].missedHits + 5);
+  CHECK(results[1].tOverflowRays == 0);
+  CHECK(results[2].tOverflowRays == 0);
+}
+
+TEST_CASE("A camera far outside the volume is flagged, not silently wrong", "[precision]") {
+  // 20,000 units away in Q16.16 (range +-32768): t0 + t1 of the root exceeds the range.
+  Study s = sphereStudy(6, 1);  // its one default ray is replaced below
+  Camera far;
+  far.width = 16;
+  far.height = 16;
+  far.position = glm::dvec3(0.0, 0.0, -20000.0);
+  far.verticalFovDegrees = 0.004;
+  s.study.rays = frameRays(far);
+  const FormatPrecision thesis = measurePrecision(s.build.image.memory(), s.study, {FixedFormat{32, 16}})[0];
+  CHECK(thesis.referenceHits > 0);
+  CHECK(thesis.tOverflowRays >= thesis.referenceHits);
+  CHECK(thesis.wrongUnflagged == 0);
+}
+
+}  // namespace rtu
