@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -68,6 +69,7 @@ void restoreFatalSignals() {
 [[noreturn]] void runChild(int fd, const std::function<std::string()>& work,
                            const ProcessLimits& limits) {
   restoreFatalSignals();
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed parent (Ctrl-C) takes the child with it
   limitChild(limits);
   std::set_new_handler([] { ::_exit(kOutOfMemoryExit); });
   char status = kAnswered;
