@@ -26,8 +26,10 @@ struct PlyHeader {
   size_t bytes = 0;  // up to and including the end_header line
 };
 
-bool isHeaderText(char c) {
-  return (c >= ' ' && c <= '~') || c == '\n' || c == '\r' || c == '\t';
+// Header lines are ASCII; comments may hold UTF-8 (a tool's or an author's name).
+bool isHeaderText(char c, bool comment) {
+  const auto byte = static_cast<unsigned char>(c);
+  return (byte >= ' ' && byte <= '~') || c == '\r' || c == '\t' || (comment && byte >= 0x80);
 }
 
 bool parseCount(const std::string& text, uint64_t& count) {
@@ -42,12 +44,15 @@ bool parseCount(const std::string& text, uint64_t& count) {
 
 // Adds the element an `element NAME COUNT` line declares; other lines are left to assimp.
 void readHeaderLine(const std::string& line, size_t lineNumber, PlyHeader& header) {
-  for (char c : line)
-    if (!isHeaderText(c)) throw HeaderProblem{"line " + std::to_string(lineNumber) + " is not text"};
   std::istringstream words(line);
   std::string keyword, count;
+  words >> keyword;
+  const bool comment = keyword == "comment" || keyword == "obj_info";
+  for (char c : line)
+    if (!isHeaderText(c, comment))
+      throw HeaderProblem{"line " + std::to_string(lineNumber) + " is not text"};
   PlyElement element;
-  if (!(words >> keyword) || keyword != "element") return;
+  if (keyword != "element") return;
   words >> element.name >> count;
   if (!parseCount(count, element.count))
     throw HeaderProblem{"line " + std::to_string(lineNumber) + ": element '" + element.name +

@@ -119,3 +119,10 @@ TEST_CASE("Mesh loading limits come from the input size or the environment", "[m
   ::unsetenv("RTUSIM_MESH_SECONDS");
   ::unsetenv("RTUSIM_MESH_MEMORY_MIB");
 }
+
+TEST_CASE("The PLY header check lets UTF-8 comments through", "[mesh]") {
+  const rtu::TriangleMesh mesh =
+      rtu::loadTriangleMesh(std::string(RTUSIM_TEST_DATA) + "/meshes/tetrahedron-utf8-comment.ply");
+  CHECK(mesh.triangles.size() == 4);
+  CHECK(mesh.vertices.size() == 4);
+}
