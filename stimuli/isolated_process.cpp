@@ -102,7 +102,8 @@ ChildOutput readChild(int fd, pid_t pid, Clock::time_point deadline, uint64_t ma
   ChildOutput output;
   char buffer[1 << 16];
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
     pollfd request{fd, POLLIN, 0};
     const int ready = left.count() <= 0 ? 0 : ::poll(&request, 1, static_cast<int>(left.count()));
     if (ready < 0 && errno == EINTR) continue;
@@ -144,7 +145,8 @@ std::string signalName(int signal) {
 // The answer of a child that exited with `status` after writing `output`, or the error that
 // says why there is none.
 std::string interpret(const ChildOutput& output, int status, const ProcessLimits& limits) {
-  if (output.timedOut) throw IsolatedProcessError("did not finish within " + secondsText(limits.seconds));
+  if (output.timedOut)
+    throw IsolatedProcessError("did not finish within " + secondsText(limits.seconds));
   if (output.tooLong)
     throw IsolatedProcessError("answered more than " + mebibytesText(limits.memoryBytes));
   if (WIFSIGNALED(status)) {

@@ -72,8 +72,9 @@ PlyHeader parseHeader(const std::string& start) {
   for (size_t lineNumber = 1;; ++lineNumber) {
     const size_t lineEnd = start.find('\n', header.bytes);
     if (lineEnd == std::string::npos)
-      throw HeaderProblem{"has no end_header line" +
-                          std::string(start.size() == kMaxHeaderBytes ? " in its first 64 KiB" : "")};
+      throw HeaderProblem{start.size() == kMaxHeaderBytes
+                              ? "has no end_header line in its first 64 KiB"
+                              : "has no end_header line"};
     const std::string line = start.substr(header.bytes, lineEnd - header.bytes);
     header.bytes = lineEnd + 1;
     if (isEndHeader(line)) return header;
@@ -100,7 +101,7 @@ void checkPlyHeader(const std::string& path) {
   std::string start(kMaxHeaderBytes, '\0');
   file.read(start.data(), static_cast<std::streamsize>(start.size()));
   start.resize(static_cast<size_t>(file.gcount()));
-  if (start.compare(0, 3, "ply") != 0) return;
+  if (start.compare(0, 3, "ply") != 0 && start.compare(0, 3, "PLY") != 0) return;  // as assimp
   try {
     checkElementCounts(parseHeader(start), fileBytes);
   } catch (const HeaderProblem& problem) {

@@ -6,10 +6,10 @@
 
 namespace rtu {
 
-// When the file at `path` starts with "ply", requires its header to be printable ASCII (UTF-8 in
-// comments), to end with an `end_header` line within the first 64 KiB, and every
-// `element NAME COUNT` to have a decimal count no larger than the bytes after the header (each
-// element takes at least one).
+// When the file at `path` starts with "ply" or "PLY" (assimp's magic numbers), requires its
+// header to be printable ASCII (UTF-8 in comments), to end with an `end_header` line within the
+// first 64 KiB, and every `element NAME COUNT` to have a decimal count no larger than the bytes
+// after the header (each element takes at least one).
 // Throws std::runtime_error naming `path` and the problem. Other files pass unchecked.
 void checkPlyHeader(const std::string& path);
 
