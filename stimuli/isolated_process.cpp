@@ -17,6 +17,10 @@
 #include <new>
 #include <sstream>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/asan_interface.h>
+#endif
+
 namespace rtu {
 namespace {
 
@@ -66,12 +70,25 @@ void restoreFatalSignals() {
     std::signal(signal, SIG_DFL);
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer reports a failed allocation and exits instead of calling the new handler:
+// recognising its report keeps the sanitizer build's message that of the release build.
+void onSanitizerReport(const char* report) {
+  if (std::strstr(report, "out of memory") != nullptr ||
+      std::strstr(report, "allocation-size-too-big") != nullptr)
+    ::_exit(kOutOfMemoryExit);
+}
+#endif
+
 [[noreturn]] void runChild(int fd, const std::function<std::string()>& work,
                            const ProcessLimits& limits) {
   restoreFatalSignals();
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed parent (Ctrl-C) takes the child with it
   limitChild(limits);
   std::set_new_handler([] { ::_exit(kOutOfMemoryExit); });
+#if defined(__SANITIZE_ADDRESS__)
+  __asan_set_error_report_callback(onSanitizerReport);
+#endif
   char status = kAnswered;
   std::string answer;
   try {

@@ -38,10 +38,13 @@ INTERESTING_WORDS = [0, 1, 0xFFFFFFFF, 0x80000000, 0x7FFFFFFF, 0xFFFF, 0x10000, 
 
 class Format:
     """A file format: its extension, whether it is text, and the rtusim commands that read it
-    ({file} is the input, {dir} the scratch directory with the seed files of other formats)."""
+    ({file} is the input, {dir} the scratch directory with the seed files of other formats).
+    `check_commands` read it too but take long on a valid file: only malformed files (--check)
+    are given to them."""
 
-    def __init__(self, name, extension, text, commands):
-        self.name, self.extension, self.text, self.commands = name, extension, text, commands
+    def __init__(self, name, extension, text, commands, check_commands=()):
+        self.name, self.extension, self.text = name, extension, text
+        self.commands, self.check_commands = commands, list(check_commands)
 
 
 FORMATS = {f.name: f for f in [
@@ -52,7 +55,7 @@ FORMATS = {f.name: f for f in [
          "--cores", "2"],
         ["render", "--svo", "{file}", "--width", "8", "--height", "6", "--cores", "2"],
         ["accuracy", "--svo", "{file}", "--width", "8", "--height", "6"],
-    ]),
+    ], check_commands=[["fps", "--svo", "{file}"]]),
     Format("jobs", "jobs", False, [
         ["golden", "--svo", "{dir}/seed.svo", "--jobs", "{file}", "--out", "{dir}/out.bin"],
         ["replay", "--svo", "{dir}/seed.svo", "--jobs", "{file}", "--out", "{dir}/out.bin",
@@ -339,7 +342,7 @@ def check(args, runner):
             for entry in sorted(os.listdir(os.path.join(root, name))):
                 path = os.path.abspath(os.path.join(root, name, entry))
                 files += 1
-                for command in FORMATS[name].commands:
+                for command in FORMATS[name].commands + FORMATS[name].check_commands:
                     start = time.monotonic()
                     outcome, message = runner.outcome(command, path)
                     seconds = time.monotonic() - start
