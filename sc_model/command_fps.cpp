@@ -106,6 +106,14 @@ std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
   return recurrence ? "answered by the exact recurrence (--simulate: SystemC)" : "simulated (SystemC)";
 }
 
+// The error of the first failed row: with a malformed scene file every row fails alike, and the
+// final message names the file.
+std::string firstError(const std::vector<nlohmann::ordered_json>& rows) {
+  for (const nlohmann::ordered_json& row : rows)
+    if (row["status"] != "ok") return row["error"].get<std::string>();
+  return {};
+}
+
 }  // namespace
 
 void addFpsCommand(CLI::App& app) {
@@ -174,7 +182,9 @@ void addFpsCommand(CLI::App& app) {
       writeCsv(rows, options->csv);
       std::cout << "wrote " << options->csv << "\n";
     }
-    if (failures > 0) throw std::runtime_error(std::to_string(failures) + " rows failed");
+    if (failures > 0)
+      throw std::runtime_error(std::to_string(failures) + " rows failed, the first: " +
+                               firstError(rows));
   });
 }
 

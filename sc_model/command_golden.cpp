@@ -6,26 +6,11 @@
 #include "config_options.h"
 #include "golden_model.h"
 #include "host_buffers.h"
+#include "host_inputs.h"
 #include "result_summary.h"
 #include "svo_image.h"
-#include "stack_check.h"
 
 namespace rtu {
-
-namespace {
-
-// The job manager's set-up of world-space ray records against the model headers in the image.
-std::vector<TraversalJob> jobsFromRayBuffer(const SvoImage& image, const std::string& path,
-                                            double epsilon) {
-  const std::vector<RayRecord> records = readRayBuffer(path);
-  try {
-    return rayRecordsToJobs(image.memory(), records, static_cast<float>(epsilon));
-  } catch (const std::runtime_error& error) {
-    throw std::runtime_error("ray buffer '" + path + "': " + error.what());
-  }
-}
-
-}  // namespace
 
 void addGoldenCommand(CLI::App& app) {
   struct Options {
@@ -46,8 +31,9 @@ void addGoldenCommand(CLI::App& app) {
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     const std::vector<TraversalJob> jobs =
         settings.rays.empty() ? readJobBuffer(settings.jobs)
-                              : jobsFromRayBuffer(image, settings.rays, settings.rtu.jobManager.epsilon);
-    checkStackDepth(image, jobs, golden.stackFrames, /*allowOverflow=*/true);
+                              : jobsFromRayRecords(image, readRayBuffer(settings.rays), settings.rays,
+                                                   static_cast<float>(settings.rtu.jobManager.epsilon));
+    checkInputTrees(image, jobs, golden.stackFrames, /*allowOverflow=*/true, settings);
     GoldenModel model(image.memory(), golden);
     const auto start = std::chrono::steady_clock::now();
     const std::vector<TraversalResult> results = model.traceAll(jobs);

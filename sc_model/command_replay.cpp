@@ -4,10 +4,10 @@
 #include "commands.h"
 #include "config_options.h"
 #include "host_buffers.h"
+#include "host_inputs.h"
 #include "result_summary.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
-#include "stack_check.h"
 #include "sweep_workers.h"
 #include "svo_image.h"
 
@@ -37,13 +37,13 @@ void addReplayCommand(CLI::App& app) {
     if (!settings.rays.empty()) {
       const std::vector<RayRecord> rays = readRayBuffer(settings.rays);
       // The job manager's own set-up, run ahead once to check every header and tree up front.
-      jobs = rayRecordsToJobs(image.memory(), rays, config.jobManager.epsilon);
+      jobs = jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
       records.assign(rays.begin(), rays.end());
     } else {
       jobs = readJobBuffer(settings.jobs);
       records.assign(jobs.begin(), jobs.end());
     }
-    checkStackDepth(image, jobs, config.stackFrames, settings.allowStackOverflow);
+    checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
     RunProgressLine progress("replay", "rays");
     const RtuRun run = simulateRtu(image.memory(), records, config, progress.callback());
     writeResultBuffer(options->out, run.results);

@@ -1,5 +1,6 @@
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "commands.h"
 #include "svo_image.h"
@@ -22,7 +23,12 @@ void addValidateCommand(CLI::App& app) {
       ->capture_default_str();
   command->callback([options] {
     const SvoImage image = readSvoFile(options->file, options->root);
-    const SvoReport report = validateSvo(image, options->limits);
+    SvoReport report;
+    try {
+      report = validateSvo(image, options->limits);
+    } catch (const SvoFormatError& error) {
+      throw std::runtime_error("SVO image '" + options->file + "': " + error.what());
+    }
     std::cout << options->file << ": valid, " << describe(report) << "\n";
   });
 }

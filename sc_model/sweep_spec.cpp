@@ -30,6 +30,16 @@ void flatten(const toml::table& table, const std::string& prefix, const Leaf& le
   }
 }
 
+// Every value must be one its key accepts, so that a bad value is an error naming the file
+// rather than a failure of the expansion later.
+void checkValues(const SweepSpec& spec) {
+  Configuration probe;
+  for (const auto& [key, values] : spec.grid)
+    for (const std::string& value : values) probe.set(key, value, ConfigSource::File);
+  for (const SweepSpec::Assignments& entry : spec.list)
+    for (const auto& [key, value] : entry) probe.set(key, value, ConfigSource::File);
+}
+
 }  // namespace
 
 void SweepSpec::addGrid(const std::string& argument) {
@@ -73,6 +83,7 @@ void SweepSpec::loadFile(const std::string& path) {
                                     "' (a sweep file has [grid] and [[configs]])");
       }
     }
+    checkValues(*this);
   } catch (const toml::parse_error& error) {
     throw std::invalid_argument("sweep file '" + path + "': " + std::string(error.description()));
   } catch (const std::invalid_argument& error) {

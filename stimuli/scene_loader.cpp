@@ -25,7 +25,12 @@ std::string fileName(const std::string& path) {
 std::unique_ptr<VoxelSource> voxelSourceFor(const SceneSpec& spec, std::string& name) {
   if (!spec.meshFile.empty()) {
     name = fileName(spec.meshFile) + " (depth " + std::to_string(spec.depth) + ")";
-    return std::make_unique<MeshVoxelizer>(loadTriangleMesh(spec.meshFile), spec.depth);
+    const TriangleMesh mesh = loadTriangleMesh(spec.meshFile);
+    try {
+      return std::make_unique<MeshVoxelizer>(mesh, spec.depth);
+    } catch (const std::invalid_argument& error) {  // e.g. every vertex at one point
+      throw std::invalid_argument("mesh '" + spec.meshFile + "': " + error.what());
+    }
   }
   if (!spec.binvoxFile.empty()) {
     auto grid = std::make_unique<BinvoxGrid>(spec.binvoxFile);

@@ -1,0 +1,26 @@
+#pragma once
+// Checks of golden's and replay's inputs whose errors name the file at fault: the ray records'
+// set-up against the image, and the trees the job or ray records start from.
+
+#include <string>
+#include <vector>
+
+#include "ray_transform.h"
+#include "run_config.h"
+#include "svo_image.h"
+#include "traversal_job.h"
+
+namespace rtu {
+
+// The job manager's set-up of world-space ray records against the model headers in the image;
+// errors name the ray buffer `path`.
+std::vector<TraversalJob> jobsFromRayRecords(const SvoImage& image,
+                                             const std::vector<RayRecord>& records,
+                                             const std::string& path, float epsilon);
+
+// checkStackDepth (stack_check.h) on the trees the jobs start from; a malformed tree is an
+// error naming the SVO image and the job or ray buffer of `settings` that points into it.
+void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs,
+                     int stackFrames, bool allowOverflow, const RunConfig& settings);
+
+}  // namespace rtu
