@@ -7,6 +7,7 @@
 #include "golden_model.h"
 #include "host_buffers.h"
 #include "result_summary.h"
+#include "output_paths.h"
 #include "svo_image.h"
 #include "stack_check.h"
 
@@ -43,6 +44,8 @@ void addGoldenCommand(CLI::App& app) {
     checkOneInputBuffer(settings);
     const GoldenConfig golden = settings.golden();
     golden.format.validate();
+    checkFitsResultRecords(golden.format);
+    checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     const std::vector<TraversalJob> jobs =
         settings.rays.empty() ? readJobBuffer(settings.jobs)

@@ -38,6 +38,13 @@ auto readBuffer(const std::string& path, const std::string& what, Decode decode)
 
 }  // namespace
 
+void checkFitsResultRecords(const FixedFormat& format) {
+  if (format.totalBits > 32)
+    throw std::invalid_argument("--total-bits " + std::to_string(format.totalBits) +
+                                ": the host result records (--out) hold formats of at most 32 "
+                                "bits");
+}
+
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
   if (words.size() % kRecordWords != 0)
     throw std::runtime_error("job buffer holds " + std::to_string(words.size()) +
