@@ -23,12 +23,18 @@ struct RenderOptions {
   std::string image, depthImage, costImage;
 
   bool golden() const { return model == "golden"; }
+  std::vector<NamedPath> imagePaths() const {
+    return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
+  }
   std::vector<NamedPath> outputPaths() const {
     std::vector<NamedPath> paths = outputs.paths();
-    paths.push_back({"--image", image});
-    paths.push_back({"--depth-image", depthImage});
-    paths.push_back({"--cost-image", costImage});
+    const std::vector<NamedPath> images = imagePaths();
+    paths.insert(paths.end(), images.begin(), images.end());
     return paths;
+  }
+  void checkImageFormats() const {
+    for (const NamedPath& file : imagePaths())
+      if (!file.path.empty()) checkImageFormat(file.option, file.path);
   }
 };
 
@@ -102,6 +108,7 @@ void addRenderCommand(CLI::App& app) {
                                settings.allowStackOverflow);
     }
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
+    options->checkImageFormats();
     const GoldenConfig golden = settings.golden();
     golden.format.validate();
     const Scene scene = loadScene(settings.scene);
