@@ -121,7 +121,7 @@ void addRenderCommand(CLI::App& app) {
               << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
     const std::vector<TraversalResult> results =
         options->golden() ? traceWithGolden(scene, jobs, configuration)
-                                   : traceWithSystemC(scene, jobs, configuration, *options);
+                          : traceWithSystemC(scene, jobs, configuration, *options);
     const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
