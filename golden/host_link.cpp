@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "timing_limits.h"
+
 namespace rtu {
 
 HostLinkPacer::HostLinkPacer(HostLinkConfig config) : config_(config), generator_(config.seed) {}
@@ -33,8 +35,10 @@ bool HostLinkPacer::drawActive() {
 }
 
 void validate(const HostLinkConfig& config, const char* which) {
-  if (!(config.bytesPerCycle >= 0.0) || !std::isfinite(config.bytesPerCycle))
-    throw std::invalid_argument(std::string(which) + " bytes per cycle must be 0 (unlimited) or positive");
+  const double rate = config.bytesPerCycle;
+  if (rate != 0.0 && !(rate >= kMinBytesPerCycle && rate <= kMaxBytesPerCycle))  // NaN fails too
+    throw std::invalid_argument(std::string(which) + " bytes per cycle must be 0 (unlimited) or in " +
+                                rateRange() + ", not " + std::to_string(rate));
   if (!(config.activeProbability > 0.0 && config.activeProbability <= 1.0))
     throw std::invalid_argument(std::string(which) + " activity must be in (0, 1]");
 }

@@ -48,6 +48,10 @@ class CacheArray {
   bool contains(uint64_t byteAddress) const;
 
   const CacheConfig& config() const { return config_; }
+  // Memory the tag store of `config` takes; it is allocated whole when the cache is made.
+  static uint64_t tagBytes(const CacheConfig& config) {
+    return uint64_t{config.sizeBytes / config.lineBytes} * sizeof(Way);
+  }
   const CacheStats& stats() const { return stats_; }
 
  private:

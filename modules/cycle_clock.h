@@ -3,8 +3,12 @@
 // in the cycles where it has work and converts between cycles and SystemC time here.
 
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include <systemc>
+
+#include "timing_limits.h"
 
 namespace rtu {
 
@@ -19,8 +23,12 @@ class CycleClock {
 
   sc_core::sc_time period() const { return period_; }
   uint64_t now() const { return sc_core::sc_time_stamp().value() / period_.value(); }
-  // The delay from now to the start of `cycle` (a later cycle).
+  // The delay from now to the start of `cycle` (a later cycle). Throws std::overflow_error past
+  // kMaxCycles rather than let the picosecond count wrap.
   sc_core::sc_time until(uint64_t cycle) const {
+    if (cycle > kMaxCycles)
+      throw std::overflow_error("the run reached cycle " + std::to_string(cycle) +
+                                ", past the last simulated cycle " + std::to_string(kMaxCycles));
     return sc_core::sc_time::from_value(period_.value() * (cycle - now()));
   }
 

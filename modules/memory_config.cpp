@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "timing_limits.h"
+
 namespace rtu {
 
 namespace {
@@ -50,13 +52,19 @@ void validate(const CacheConfig& cache, const std::string& level) {
   // The set index is a field of the address.
   require(isPowerOfTwo(sets), prefix + std::to_string(sets) + " sets is not a power of two");
   require(cache.maxOutstandingMisses > 0, prefix + "needs at least one outstanding miss");
+  require(cache.hitLatency <= kMaxLatencyCycles,
+          prefix + "hit latency " + std::to_string(cache.hitLatency) + " is above the limit of " +
+              std::to_string(kMaxLatencyCycles) + " cycles");
 }
 
 void validate(const DramConfig& dram) {
   // Written so that NaN fails too.
-  require(dram.bytesPerCycle > 0 && std::isfinite(dram.bytesPerCycle),
-          "DRAM: bytes per cycle must be positive and finite, not " +
+  require(dram.bytesPerCycle >= kMinBytesPerCycle && dram.bytesPerCycle <= kMaxBytesPerCycle,
+          "DRAM: bytes per cycle must be in " + rateRange() + ", not " +
               std::to_string(dram.bytesPerCycle));
+  require(dram.latency <= kMaxLatencyCycles,
+          "DRAM: latency " + std::to_string(dram.latency) + " is above the limit of " +
+              std::to_string(kMaxLatencyCycles) + " cycles");
 }
 
 void validate(const MemoryConfig& memory) {

@@ -30,4 +30,12 @@ void addPlacementOptions(CLI::App& command, ModelPlacement& placement, glm::dvec
       ->needs(enabledBy);
 }
 
+const CLI::Validator kNotNegative(
+    [](std::string& text) {
+      const size_t first = text.find_first_not_of(" \t");
+      if (first == std::string::npos || text[first] != '-') return std::string();
+      return "must not be negative, got " + text;
+    },
+    "NOT NEGATIVE");
+
 }  // namespace rtu

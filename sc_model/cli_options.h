@@ -12,4 +12,7 @@ namespace rtu {
 void addPlacementOptions(CLI::App& command, ModelPlacement& placement, glm::dvec3& rotationDegrees,
                          CLI::Option* enabledBy);
 
+// For unsigned options: CLI11 reads "-5" as 2^64 - 5 (--vcd-from -5 ran with a wrapped value).
+extern const CLI::Validator kNotNegative;
+
 }  // namespace rtu

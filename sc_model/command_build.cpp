@@ -4,6 +4,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "config_options.h"
+#include "output_paths.h"
 #include "svo_image.h"
 
 namespace rtu {
@@ -25,7 +26,9 @@ void addBuildCommand(CLI::App& app) {
       "append an animated model's header (16 words) after the image and print its word address");
   addPlacementOptions(*command, options->placement, options->rotationDegrees, header);
   command->callback([options, request] {
-    Scene scene = loadScene(request->resolve().values().scene);
+    const Configuration configuration = request->resolve();
+    checkOutputPaths({{"--out", options->out}}, inputPaths(configuration.values()));
+    Scene scene = loadScene(configuration.values().scene);
     std::string headerReport;
     if (options->modelHeader) {
       options->placement.rotation = rotationFromEulerDegrees(options->rotationDegrees);

@@ -8,6 +8,7 @@
 #include "host_buffers.h"
 #include "host_inputs.h"
 #include "result_summary.h"
+#include "output_paths.h"
 #include "svo_image.h"
 
 namespace rtu {
@@ -28,6 +29,8 @@ void addGoldenCommand(CLI::App& app) {
     checkOneInputBuffer(settings);
     const GoldenConfig golden = settings.golden();
     golden.format.validate();
+    checkFitsResultRecords(golden.format);
+    checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     const std::vector<TraversalJob> jobs =
         settings.rays.empty() ? readJobBuffer(settings.jobs)

@@ -1,6 +1,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_options.h"
 #include "commands.h"
 #include "config_options.h"
 #include "host_buffers.h"
@@ -29,13 +30,15 @@ void addJobsCommand(CLI::App& app) {
               "ray records for an animated model");
   auto request = addConfigOptions(*command, kUseCamera);
   command->add_option("--root", options->root, "root descriptor address written into each job")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kNotNegative);
   CLI::Option* out = command->add_option("--out", options->out, "output job buffer");
   CLI::Option* rays =
       command->add_option("--rays", options->rays, "output ray buffer (world-space ray records)");
   CLI::Option* modelAddress = command->add_option(
       "--model-address", options->modelAddress,
-      "word address of the model header written into each ray record (see build --model-header)");
+      "word address of the model header written into each ray record (see build --model-header)")
+      ->check(kNotNegative);
   rays->needs(modelAddress);
   modelAddress->needs(rays);
   command->callback([options, request, out, rays] {

@@ -7,6 +7,7 @@
 #include "config_options.h"
 #include "frame_images.h"
 #include "golden_model.h"
+#include "output_paths.h"
 #include "result_summary.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
@@ -20,7 +21,32 @@ struct RenderOptions {
   RunOutputs outputs;
   std::string model = "systemc";
   std::string image, depthImage, costImage;
+
+  bool golden() const { return model == "golden"; }
+  std::vector<NamedPath> imagePaths() const {
+    return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
+  }
+  std::vector<NamedPath> outputPaths() const {
+    std::vector<NamedPath> paths = outputs.paths();
+    const std::vector<NamedPath> images = imagePaths();
+    paths.insert(paths.end(), images.begin(), images.end());
+    return paths;
+  }
+  void checkImageFormats() const {
+    for (const NamedPath& file : imagePaths())
+      if (!file.path.empty()) checkImageFormat(file.option, file.path);
+  }
 };
+
+// The untimed golden model has no cores, memory, links, statistics or trace: settings of the
+// timed model are errors there rather than silently dropped.
+void restrictToGoldenModel(const RenderOptions& options, ConfigRequest& request) {
+  if (options.outputs.any())
+    throw std::invalid_argument("--stats and --vcd need --model systemc: the golden model is "
+                                "untimed");
+  request.uses &= ~kUseModel;
+  request.command = "render --model golden";
+}
 
 std::vector<TraversalResult> traceWithGolden(const Scene& scene,
                                              const std::vector<TraversalJob>& jobs,
@@ -72,11 +98,19 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
   command->callback([options, request] {
+    if (options->golden()) restrictToGoldenModel(*options, *request);
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     settings.camera.validate();
-    if (options->model != "golden") validate(options->outputs.traced(settings.rtu));
+    if (!options->golden()) {
+      validate(options->outputs.traced(settings.rtu));
+      checkBuiltSceneFitsStack(settings.scene, settings.rtu.stackFrames,
+                               settings.allowStackOverflow);
+    }
+    checkOutputPaths(options->outputPaths(), inputPaths(settings));
+    options->checkImageFormats();
     const GoldenConfig golden = settings.golden();
+    golden.format.validate();
     const Scene scene = loadScene(settings.scene);
     const std::vector<TraversalJob> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
@@ -86,8 +120,8 @@ void addRenderCommand(CLI::App& app) {
               << " stack frames\n"
               << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
     const std::vector<TraversalResult> results =
-        options->model == "golden" ? traceWithGolden(scene, jobs, configuration)
-                                   : traceWithSystemC(scene, jobs, configuration, *options);
+        options->golden() ? traceWithGolden(scene, jobs, configuration)
+                          : traceWithSystemC(scene, jobs, configuration, *options);
     const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);

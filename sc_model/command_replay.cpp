@@ -6,6 +6,7 @@
 #include "host_buffers.h"
 #include "host_inputs.h"
 #include "result_summary.h"
+#include "output_paths.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
 #include "sweep_workers.h"
@@ -31,6 +32,10 @@ void addReplayCommand(CLI::App& app) {
     checkOneInputBuffer(settings);
     const RtuConfig config = options->outputs.traced(settings.rtu);
     validate(config);
+    checkFitsResultRecords(config.jobManager.format);
+    std::vector<NamedPath> outputs = options->outputs.paths();
+    outputs.insert(outputs.begin(), NamedPath{"--out", options->out});
+    checkOutputPaths(outputs, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     std::vector<HostRecord> records;
     std::vector<TraversalJob> jobs;

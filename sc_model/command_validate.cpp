@@ -2,6 +2,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "cli_options.h"
 #include "commands.h"
 #include "svo_image.h"
 #include "svo_validator.h"
@@ -18,7 +19,8 @@ void addValidateCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("validate", "check an SVO memory image");
   command->add_option("file", options->file, ".svo file")->required()->check(CLI::ExistingFile);
   command->add_option("--root", options->root, "word address of the root descriptor")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(kNotNegative);
   command->add_option("--max-depth", options->limits.maxDepth, "deepest octree level allowed")
       ->capture_default_str();
   command->callback([options] {

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "procedural_scenes.h"
+#include "timing_limits.h"
 
 namespace rtu {
 namespace {
@@ -58,6 +59,7 @@ double parseNumber(const std::string& text, const std::string& key, bool integer
 }
 
 void checkRange(double value, const Setting& setting) {
+  if (value == 0 && setting.zeroAllowed) return;
   if (value < setting.min || value > setting.max)
     fail(setting.key, formatReal(value) + " is out of range " + setting.range());
 }
@@ -76,11 +78,12 @@ Setting declare(std::string key, std::string flag, SettingKind kind, std::string
 
 template <class F>
 Setting number(SettingKind kind, std::string key, std::string flag, std::string unit, double min,
-               double max, unsigned uses, std::string doc, F field) {
+               double max, unsigned uses, std::string doc, F field, bool zeroAllowed = false) {
   using T = FieldType<F>;
   Setting s = declare(std::move(key), std::move(flag), kind, std::move(unit), uses, std::move(doc));
   s.min = min;
   s.max = max;
+  s.zeroAllowed = zeroAllowed;
   s.get = [field, kind](const RunConfig& c) -> std::string {
     const T value = read(field, c);
     if (kind == SettingKind::Bytes) return formatBytes(static_cast<uint64_t>(value));
@@ -109,6 +112,14 @@ Setting real(std::string key, std::string flag, std::string unit, double min, do
              unsigned uses, std::string doc, F field) {
   return number(SettingKind::Real, std::move(key), std::move(flag), std::move(unit), min, max, uses,
                 std::move(doc), field);
+}
+
+// A rate where 0 means unlimited.
+template <class F>
+Setting realOrZero(std::string key, std::string flag, std::string unit, double min, double max,
+                   unsigned uses, std::string doc, F field) {
+  return number(SettingKind::Real, std::move(key), std::move(flag), std::move(unit), min, max, uses,
+                std::move(doc), field, /*zeroAllowed=*/true);
 }
 
 template <class F>
@@ -212,7 +223,7 @@ void addCache(std::vector<Setting>& schema, const std::string& level,
                          kUseModel, name + " replacement policy",
                          [cache](C& c) -> Replacement& { return cache(c).replacement; },
                          replacementName, parseReplacement));
-  added.push_back(integer(key + "latency", flag + "latency", "cycles", 0, 1e6, kUseModel,
+  added.push_back(integer(key + "latency", flag + "latency", "cycles", 0, kMaxLatencyCycles, kUseModel,
                           name + " hit latency", [cache](C& c) -> uint32_t& { return cache(c).hitLatency; }));
   added.push_back(integer(key + "mshrs", flag + "mshrs", "", 1, 4096, kUseModel,
                           name + " outstanding-miss limit",
@@ -234,7 +245,7 @@ std::vector<Setting> makeSchema() {
                      "cfa (cyclic first-available, the RTL), rr (round-robin) or fa (first-available)",
                      [](C& c) -> SchedulerPolicy& { return c.rtu.scheduler; }, schedulerName,
                      parseSchedulerPolicy));
-  s.push_back(real("clock_mhz", "--clock-mhz", "MHz", 1e-3, 1e6, model,
+  s.push_back(real("clock_mhz", "--clock-mhz", "MHz", kMinClockMhz, kMaxClockMhz, model,
                    "clock for rates and frame rates", [](C& c) -> double& { return c.rtu.clockMhz; }));
   s.push_back(choice("memory.kind", "--memory", {"ideal", "cached"}, model,
                      "ideal (thesis ROM, every word at once) or cached (L1, L2, DRAM)",
@@ -242,20 +253,22 @@ std::vector<Setting> makeSchema() {
                      parseMemoryKind));
   addCache(s, "l1", [](C& c) -> CacheConfig& { return c.rtu.memory.l1; });
   addCache(s, "l2", [](C& c) -> CacheConfig& { return c.rtu.memory.l2; });
-  s.push_back(integer("memory.dram.latency", "--dram-latency", "cycles", 0, 1e6, model,
+  s.push_back(integer("memory.dram.latency", "--dram-latency", "cycles", 0, kMaxLatencyCycles, model,
                       "cycles from issuing a read to the start of its data",
                       [](C& c) -> uint32_t& { return c.rtu.memory.dram.latency; }));
   s.back().ignoredBecause = ignoredWithIdealMemory;
-  s.push_back(real("memory.dram.bytes_per_cycle", "--dram-bytes-per-cycle", "bytes/cycle", 1e-3,
-                   1e6, model, "DRAM bus bandwidth",
+  s.push_back(real("memory.dram.bytes_per_cycle", "--dram-bytes-per-cycle", "bytes/cycle",
+                   kMinBytesPerCycle, kMaxBytesPerCycle, model, "DRAM bus bandwidth",
                    [](C& c) -> double& { return c.rtu.memory.dram.bytesPerCycle; }));
   s.back().ignoredBecause = ignoredWithIdealMemory;
-  s.push_back(real("host.in.bytes_per_cycle", "--host-in-bytes-per-cycle", "bytes/cycle", 0, 1e6,
-                   model, "host input link rate, 32-byte records (0: one record a cycle)",
-                   [](C& c) -> double& { return c.rtu.hostInput.bytesPerCycle; }));
-  s.push_back(real("host.out.bytes_per_cycle", "--host-out-bytes-per-cycle", "bytes/cycle", 0, 1e6,
-                   model, "host output link rate, 32-byte records (0: one record a cycle)",
-                   [](C& c) -> double& { return c.rtu.hostOutput.bytesPerCycle; }));
+  s.push_back(realOrZero("host.in.bytes_per_cycle", "--host-in-bytes-per-cycle", "bytes/cycle",
+                         kMinBytesPerCycle, kMaxBytesPerCycle, model,
+                         "host input link rate, 32-byte records (0: one record a cycle)",
+                         [](C& c) -> double& { return c.rtu.hostInput.bytesPerCycle; }));
+  s.push_back(realOrZero("host.out.bytes_per_cycle", "--host-out-bytes-per-cycle", "bytes/cycle",
+                         kMinBytesPerCycle, kMaxBytesPerCycle, model,
+                         "host output link rate, 32-byte records (0: one record a cycle)",
+                         [](C& c) -> double& { return c.rtu.hostOutput.bytesPerCycle; }));
   s.push_back(integer("reorder", "--reorder", "results", 0, 1 << 24, model,
                       "reorder buffer capacity: results in submission order (0: none)",
                       [](C& c) -> int& { return c.rtu.reorderCapacity; }));
@@ -265,7 +278,7 @@ std::vector<Setting> makeSchema() {
   s.push_back(integer("job_manager.ray_stages", "--jm-ray-stages", "cycles", 0, 64, model,
                       "extra stages for ray records: transform and t-parameters",
                       [](C& c) -> int& { return c.rtu.jobManager.rayStages; }));
-  s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0, 1e6, model,
+  s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0, kMaxLatencyCycles, model,
                       "cycles to fetch a model header, once per model",
                       [](C& c) -> int& { return c.rtu.jobManager.headerFetchCycles; }));
   s.push_back(real("job_manager.epsilon", "--epsilon", "", 0, 1, buffers,
@@ -360,7 +373,8 @@ std::string Setting::range() const {
     case SettingKind::Bytes: return formatBytes(static_cast<uint64_t>(min)) + " .. " +
                                     formatBytes(static_cast<uint64_t>(max));
     case SettingKind::Integer:
-    case SettingKind::Real: return formatReal(min) + " .. " + formatReal(max);
+    case SettingKind::Real:
+      return (zeroAllowed ? "0 or " : "") + formatReal(min) + " .. " + formatReal(max);
     case SettingKind::Flag: return "true|false";
     case SettingKind::Vector: return "x,y,z";
     default: return "file";

@@ -31,6 +31,7 @@ struct Setting {
   std::string doc;
   std::vector<std::string> choices;  // Choice
   double min = 0, max = 0;           // Integer, Real, Bytes (inclusive)
+  bool zeroAllowed = false;          // Real: 0 (unlimited) is accepted besides min .. max
   unsigned uses = 0;                 // SettingUse bits
 
   // The value as text that `assign` reads back (sizes in bytes, vectors as "x,y,z").

@@ -32,6 +32,18 @@ void writeImage(const std::string& path, int width, int height, int channels,
     throw std::runtime_error("cannot write image '" + path + "': " + error);
 }
 
+}  // namespace
+
+void checkImageFormat(const std::string& option, const std::string& path) {
+  using CheckFunction = const char*(const char*);
+  static CheckFunction* const check =
+      pluginFunction<CheckFunction>(kImagesModule, "rtusim_images_format_error", kImagesPurpose);
+  if (const char* error = check(path.c_str()))
+    throw std::invalid_argument(option + " '" + path + "': no image format: " + error);
+}
+
+namespace {
+
 // An RGB float image, rows top to bottom.
 struct Canvas {
   int width = 0;

@@ -23,6 +23,10 @@ struct RenderedFrame {
                            const std::vector<TraversalResult>& results);
 };
 
+// Throws std::invalid_argument naming `option` when no image format writes `path`'s extension;
+// for checking outputs before a run.
+void checkImageFormat(const std::string& option, const std::string& path);
+
 // Lambert-shaded hits over a dark background; the face normal is turned toward the viewer.
 void writeShadedImage(const RenderedFrame& frame, const std::string& path);
 // t_hit per pixel: float t with misses 0 for EXR/TIFF/HDR files, otherwise grey levels from

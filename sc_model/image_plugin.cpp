@@ -43,6 +43,15 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, int width
   });
 }
 
+// Whether OpenImageIO can write the format `path`'s extension names, without creating the file.
+// Returns nullptr, or the error message (valid until the thread's next call).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_format_error(const char* path) {
+  return rtu::pluginCall([&]() -> std::string {
+    if (!OIIO::ImageOutput::create(path)) return "OpenImageIO: " + OIIO::geterror();
+    return {};
+  });
+}
+
 // Width in pixels of `text` at `fontSize` pixels, or -1 when no font can be loaded.
 RTUSIM_PLUGIN_EXPORT int rtusim_images_text_width(const char* text, int fontSize) {
   try {

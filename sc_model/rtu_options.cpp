@@ -4,6 +4,9 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "cli_options.h"
+#include "timing_limits.h"
+
 namespace rtu {
 
 RtuConfig RunOutputs::traced(const RtuConfig& config) const {
@@ -16,8 +19,15 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
   command.add_option("--stats", outputs.statsPath,
                      "write the statistics with the effective configuration as JSON");
   CLI::Option* vcd = command.add_option("--vcd", outputs.vcdPath, "write a VCD trace (GTKWave)");
-  command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")->needs(vcd);
-  command.add_option("--vcd-to", outputs.vcdTo, "cycle the trace stops before")->needs(vcd);
+  const CLI::Range cycles(uint64_t{0}, kMaxCycles, "cycle in 0 .. 1e13");
+  command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")
+      ->needs(vcd)
+      ->check(kNotNegative)
+      ->check(cycles);
+  command.add_option("--vcd-to", outputs.vcdTo, "cycle the trace stops before")
+      ->needs(vcd)
+      ->check(kNotNegative)
+      ->check(cycles);
   command.add_option("--vcd-scope", outputs.vcdScopes,
                      "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
       ->needs(vcd);

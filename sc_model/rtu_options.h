@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "configuration.h"
+#include "output_paths.h"
 #include "rtu_config.h"
 #include "rtu_simulation.h"
 
@@ -26,6 +27,8 @@ struct RunOutputs {
 
   // The model configuration with the trace asked for.
   RtuConfig traced(const RtuConfig& config) const;
+  std::vector<NamedPath> paths() const { return {{"--stats", statsPath}, {"--vcd", vcdPath}}; }
+  bool any() const { return !statsPath.empty() || !vcdPath.empty(); }
 };
 
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs);

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "scene_loader.h"
 #include "svo_image.h"
 #include "traversal_job.h"
 
@@ -13,5 +14,9 @@ namespace rtu {
 // such rays would corrupt it; rtusim ends them as flagged misses.
 void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
                      bool allowOverflow);
+
+// The same check before a procedural scene or a mesh is built, from its --depth alone: a tree of
+// depth d has descriptors down to level d - 1. Scenes read from files are checked once loaded.
+void checkBuiltSceneFitsStack(const SceneSpec& scene, int stackFrames, bool allowOverflow);
 
 }  // namespace rtu

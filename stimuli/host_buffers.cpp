@@ -187,6 +187,13 @@ void writeAll(const std::string& path, const std::vector<typename Codec::Record>
 
 }  // namespace
 
+void checkFitsResultRecords(const FixedFormat& format) {
+  if (format.totalBits > 32)
+    throw std::invalid_argument("--total-bits " + std::to_string(format.totalBits) +
+                                ": the host result records (--out) hold formats of at most 32 "
+                                "bits");
+}
+
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
   return decodeAll<JobCodec>(words);
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fixed_point.h"
 #include "ray_transform.h"
 #include "traversal_job.h"
 
@@ -42,6 +43,9 @@ std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records);
 std::vector<TraversalJob> readJobBuffer(const std::string& path);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
 std::vector<TraversalResult> readResultBuffer(const std::string& path);
+// Before a run: result records carry t and the normal as 32-bit words, so a wider format fails
+// (depending on the data) only when they are written; throws std::invalid_argument.
+void checkFitsResultRecords(const FixedFormat& format);
 void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results);
 std::vector<RayRecord> readRayBuffer(const std::string& path);
 void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records);

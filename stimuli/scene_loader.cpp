@@ -5,9 +5,11 @@
 #include <stdexcept>
 
 #include "binvox.h"
+#include "host_memory.h"
 #include "mesh_voxelizer.h"
 #include "procedural_scenes.h"
 #include "svo_builder.h"
+#include "svo_size_estimate.h"
 #include "svo_validator.h"
 
 namespace rtu {
@@ -41,6 +43,27 @@ std::unique_ptr<VoxelSource> voxelSourceFor(const SceneSpec& spec, std::string& 
   return makeProceduralScene(spec.procedural, spec.depth, spec.seed);
 }
 
+// Refuses, before building, a root so far out that the image is mostly zeros and a tree that would
+// not fit in this machine's memory (menger at depth 14 ran past 16 GB).
+void checkBuildFits(const VoxelSource& source, const SceneSpec& spec, const std::string& name) {
+  if (spec.root > kMaxBuildRoot)
+    throw std::invalid_argument("--root " + std::to_string(spec.root) +
+                                ": a built image would start with that many zero words; at most " +
+                                std::to_string(kMaxBuildRoot) + " (256 MiB)");
+  const SvoSizeEstimate size = estimateSvoSize(source, spec.root);
+  if (size.imageBytes / 4 > 4294967296.0)
+    throw std::runtime_error("building " + name + " would take about " +
+                             std::to_string(static_cast<uint64_t>(size.imageBytes / 4)) +
+                             " words, more than 32-bit word addresses reach: lower --depth");
+  const uint64_t available = physicalMemoryBytes();
+  if (size.peakBytes <= static_cast<double>(available)) return;
+  throw std::runtime_error("building " + name + " would need about " + formatGiB(size.peakBytes) +
+                           " of memory (estimated " + std::to_string(static_cast<uint64_t>(size.descriptors)) +
+                           " descriptors), more than the " +
+                           formatGiB(static_cast<double>(available)) +
+                           " of this machine: lower --depth");
+}
+
 }  // namespace
 
 Scene loadScene(const SceneSpec& spec) {
@@ -59,6 +82,7 @@ Scene loadScene(const SceneSpec& spec) {
   }
   std::string name;
   const std::unique_ptr<VoxelSource> source = voxelSourceFor(spec, name);
+  checkBuildFits(*source, spec, name);
   return sceneFromBuild(buildSvo(*source, spec.root), name);
 }
 

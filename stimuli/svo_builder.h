@@ -38,5 +38,7 @@ struct SvoBuild {
 SvoBuild buildSvo(const VoxelSource& source, uint32_t rootAddress = 0);
 
 constexpr int kMaxSvoDepth = 16;
+// Highest root address of a built image: the words before it are written as zeros.
+constexpr uint32_t kMaxBuildRoot = uint32_t{1} << 26;
 
 }  // namespace rtu

@@ -36,18 +36,20 @@ struct Block {
 // then is a cycle) and Done after, when its heights are final and reused by every other parent.
 class Validator {
  public:
-  Validator(const SvoImage& image, const SvoLimits& limits)
+  explicit Validator(const SvoImage& image)
       : image_(image),
         // Addresses are 32-bit: words beyond 2^32 cannot be named.
         size_(std::min<uint64_t>(image.words.size(), uint64_t{1} << 32)),
-        limits_(limits),
         state_(size_) {}
 
-  SvoReport run() {
-    if (image_.root >= size_)
-      throw SvoFormatError(image_.root, "the root descriptor is outside the image of " +
-                                            std::to_string(size_) + " words");
-    enter(image_.root);
+  // Walks the tree at `root`. Words a walk from another root finished are not entered again, so
+  // any number of roots cost one pass over the image.
+  void walk(uint32_t root) {
+    if (root >= size_)
+      throw SvoFormatError(root, "the root descriptor is outside the image of " +
+                                     std::to_string(size_) + " words");
+    if (state_[root].visit == Visit::Done) return;
+    enter(root);
     while (!path_.empty()) {
       Frame& frame = path_.back();
       if (frame.next == frame.children.count) {
@@ -57,10 +59,19 @@ class Validator {
         visitChild(parent, frame.children.first + frame.next++);  // may grow path_
       }
     }
-    checkDepth();
+  }
+
+  // The report of the one tree walked, at image_.root.
+  SvoReport report(const SvoLimits& limits) {
+    checkDepth(limits.maxDepth);
     report_.depth = static_cast<int>(state_[image_.root].leafHeight);
+    report_.descriptorDepth = static_cast<int>(state_[image_.root].descriptorHeight);
     report_.words = image_.words.size();
     return report_;
+  }
+
+  int descriptorDepth(uint32_t root) const {
+    return static_cast<int>(state_[root].descriptorHeight);
   }
 
  private:
@@ -71,6 +82,7 @@ class Validator {
     uint8_t references = 0;   // child pointers naming this word, saturating at 2
     uint32_t reach = 0;       // levels below the descriptor down to its deepest valid child
     uint32_t leafHeight = 0;  // levels below it down to its deepest leaf, 0 without leaves
+    uint32_t descriptorHeight = 0;  // levels below it down to its deepest descriptor
   };
 
   struct Frame {
@@ -131,6 +143,7 @@ class Validator {
     const WordState& from = state_[child];
     into.reach = std::max(into.reach, from.reach + 1);
     if (from.leafHeight > 0) into.leafHeight = std::max(into.leafHeight, from.leafHeight + 1);
+    into.descriptorHeight = std::max(into.descriptorHeight, from.descriptorHeight + 1);
   }
 
   static void checkSlots(uint32_t address, Descriptor descriptor) {
@@ -170,8 +183,8 @@ class Validator {
   }
 
   // Follows the deepest path from the root to the descriptor whose children are too deep.
-  void checkDepth() const {
-    const auto maxDepth = static_cast<uint32_t>(limits_.maxDepth);
+  void checkDepth(int limit) const {
+    const auto maxDepth = static_cast<uint32_t>(limit);
     uint32_t address = image_.root;
     for (uint32_t level = 0; level + state_[address].reach > maxDepth; ++level) {
       if (level == maxDepth)
@@ -191,7 +204,6 @@ class Validator {
 
   const SvoImage& image_;
   const uint64_t size_;
-  const SvoLimits limits_;
   std::vector<WordState> state_;
   std::vector<Frame> path_;
   SvoReport report_;
@@ -203,7 +215,20 @@ SvoReport validateSvo(const SvoImage& image, const SvoLimits& limits) {
   if (limits.maxDepth < 0)
     throw std::invalid_argument("SVO depth limit must not be negative, got " +
                                 std::to_string(limits.maxDepth));
-  return Validator(image, limits).run();
+  Validator validator(image);
+  validator.walk(image.root);
+  return validator.report(limits);
+}
+
+std::vector<int> descriptorDepths(const SvoImage& image, const std::vector<uint32_t>& roots) {
+  Validator validator(image);
+  std::vector<int> depths;
+  depths.reserve(roots.size());
+  for (uint32_t root : roots) {
+    validator.walk(root);
+    depths.push_back(validator.descriptorDepth(root));
+  }
+  return depths;
 }
 
 }  // namespace rtu

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "svo_image.h"
 
@@ -25,6 +26,9 @@ struct SvoReport {
   size_t farPointers = 0;        // descriptors whose children are reached through a far word
   size_t sharedDescriptors = 0;  // descriptors named by more than one child pointer
   int depth = 0;                 // deepest level holding a leaf; the root's leaf children are 1
+  // Deepest level holding a descriptor, leafless or not: the traversal stack frames the tree
+  // needs, one per descent (a chain of leafless descriptors needs them too).
+  int descriptorDepth = 0;
   size_t words = 0;              // size of the image
 };
 
@@ -41,6 +45,10 @@ class SvoFormatError : public std::runtime_error {
 // leaf bit on an invalid slot, a descriptor reachable from itself, or a valid child deeper than
 // limits.maxDepth.
 SvoReport validateSvo(const SvoImage& image, const SvoLimits& limits = {});
+
+// The descriptorDepth of the tree at each root, with the checks of validateSvo but no depth limit,
+// in one pass over the image however many roots share it.
+std::vector<int> descriptorDepths(const SvoImage& image, const std::vector<uint32_t>& roots);
 
 std::string describe(const SvoReport& report);  // one line for reports
 

@@ -13,6 +13,7 @@
 #include "l1_cache_timing.h"
 #include "l2_cache_timing.h"
 #include "memory_config.h"
+#include "timing_limits.h"
 
 using namespace rtu;
 
@@ -160,10 +161,18 @@ TEST_CASE("Memory configuration: impossible caches are rejected with the reason"
     CHECK_THROWS_WITH(validate(memory), Contains("L2 cache") && Contains("outstanding miss"));
   }
   SECTION("DRAM without bandwidth") {
-    for (double bytesPerCycle : {0.0, -8.0, std::nan(""), HUGE_VAL}) {
+    // 1e-18 overflowed the transfer time into a fast bus, 1e-13 .. 1e-16 stalled.
+    for (double bytesPerCycle : {0.0, -8.0, std::nan(""), HUGE_VAL, 1e-18, 1e-13, 9e-4, 2e6}) {
       memory.dram.bytesPerCycle = bytesPerCycle;
       CHECK_THROWS_WITH(validate(memory), Contains("DRAM: bytes per cycle"));
     }
+  }
+  SECTION("latencies beyond the limit") {
+    memory.dram.latency = kMaxLatencyCycles + 1;
+    CHECK_THROWS_WITH(validate(memory), Contains("DRAM: latency 1000001 is above the limit"));
+    memory.dram.latency = kMaxLatencyCycles;
+    memory.l2.hitLatency = kMaxLatencyCycles + 1;
+    CHECK_THROWS_WITH(validate(memory), Contains("L2 cache: hit latency 1000001"));
   }
   SECTION("L2 line shorter than the L1 line") {
     memory.l2.lineBytes = 16;

@@ -64,6 +64,15 @@ TEST_CASE("Malformed job buffers are rejected with the record and the reason", "
   REQUIRE_THROWS_WITH(readJobBuffer(tempPath("does_not_exist")), Catch::Contains("cannot open"));
 }
 
+// --total-bits 48 failed only when a t value happened not to fit while the results were written.
+TEST_CASE("Formats wider than the result records are refused before a run", "[buffers]") {
+  CHECK_NOTHROW(checkFitsResultRecords(FixedFormat{32, 16}));
+  CHECK_NOTHROW(checkFitsResultRecords(FixedFormat{8, 4}));
+  CHECK_THROWS_WITH(checkFitsResultRecords(FixedFormat{48, 46}),
+                    Catch::Contains("--total-bits 48") && Catch::Contains("at most 32 bits"));
+  CHECK_THROWS_AS(checkFitsResultRecords(FixedFormat{33, 16}), std::invalid_argument);
+}
+
 TEST_CASE("Result buffers round-trip and reject impossible records", "[buffers]") {
   TraversalResult hit;
   hit.idWord = 7 | 3u << 28;

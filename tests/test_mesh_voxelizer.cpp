@@ -201,7 +201,7 @@ TEST_CASE("loadTriangleMesh rejects bad files with the file and the problem", "[
                       Contains("'/nonexistent/model.obj' does not exist"));
   }
   SECTION("unsupported format") {
-    const TempFile file("garbage.unknownformat", std::string("\x01\x02\x03 not a mesh", 17));
+    const TempFile file("garbage.unknownformat", std::string("\x01\x02\x03 not a mesh"));
     CHECK_THROWS_AS(loadTriangleMesh(file.path()), std::runtime_error);
     CHECK_THROWS_WITH(loadTriangleMesh(file.path()),
                       Contains("cannot read mesh '" + file.path() + "'"));

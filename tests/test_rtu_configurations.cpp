@@ -28,12 +28,15 @@
 #include <string>
 #include <vector>
 
+#include "cache_array.h"
 #include "camera.h"
+#include "cycle_clock.h"
 #include "golden_model.h"
 #include "procedural_scenes.h"
 #include "ray_setup.h"
 #include "rtu_simulation.h"
 #include "svo_builder.h"
+#include "timing_limits.h"
 #include "traversal_core.h"
 
 namespace rtu {
@@ -482,7 +485,7 @@ TEST_CASE("The clock changes the time unit only", "[rtu]") {
   config.cores = 4;
   config.memory = MemoryConfig{};
   const RtuRun reference = simulateRtu(scene.memory(), scene.jobs, config);
-  for (double mhz : {0.5, 333.0, 1e6}) {
+  for (double mhz : {1.0, 333.0, 1e6}) {
     config.clockMhz = mhz;
     INFO(mhz << " MHz");
     const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
@@ -858,7 +861,8 @@ TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
     config.stackFrames = frames;
     rejects(config);
   }
-  for (double mhz : {0.0, -100.0, std::nan("")}) {
+  // Below 1 MHz 2^64 ps would not hold kMaxCycles; 1e-12 MHz overflowed picosecond time.
+  for (double mhz : {0.0, -100.0, std::nan(""), 0.5, 1e-12, 2e6}) {
     config = RtuConfig{};
     config.clockMhz = mhz;
     rejects(config);
@@ -872,6 +876,12 @@ TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
   config = RtuConfig{};
   config.hostOutput.bytesPerCycle = -3.0;
   rejects(config);
+  // 1e-300 behaved as unlimited (the slot length overflowed uint64).
+  for (double rate : {1e-300, 1e-4, 2e6, HUGE_VAL}) {
+    config = RtuConfig{};
+    config.hostInput.bytesPerCycle = rate;
+    rejects(config);
+  }
 
   // The limits themselves are fine.
   config = RtuConfig{};
@@ -884,6 +894,33 @@ TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
   config.memory = MemoryConfig{};
   config.memory.l1.sizeBytes = config.memory.l1.lineBytes * config.memory.l1.ways;
   CHECK_NOTHROW(simulateRtu(memory, jobs, config));
+}
+
+TEST_CASE("The cycle clock stops at kMaxCycles instead of wrapping picosecond time", "[rtu]") {
+  const CycleClock slowest = CycleClock::atMegahertz(kMinClockMhz);
+  CHECK(slowest.period().value() == 1000000);
+  CHECK(slowest.until(kMaxCycles).value() <= UINT64_MAX);  // reached without throwing
+  CHECK_THROWS_AS(slowest.until(kMaxCycles + 1), std::overflow_error);
+  CHECK(CycleClock::atMegahertz(kMaxClockMhz).period().value() == 1);
+}
+
+TEST_CASE("Cache tag arrays that would not fit in memory are refused before the run", "[rtu]") {
+  CacheConfig oneLine;
+  oneLine.sizeBytes = oneLine.lineBytes = 4;
+  oneLine.ways = 1;
+  CacheConfig huge = oneLine;
+  huge.sizeBytes = 1u << 30;  // 2^28 lines of 4 bytes
+  CHECK(CacheArray::tagBytes(huge) == (uint64_t{1} << 28) * CacheArray::tagBytes(oneLine));
+
+  RtuConfig config;
+  config.memory = MemoryConfig{};
+  config.memory.l1 = huge;
+  config.memory.l2.lineBytes = 4;
+  config.cores = kMaxCores;  // terabytes of tags
+  CHECK_THROWS_WITH(validate(config), Catch::Contains("the cache tag arrays would need") &&
+                                          Catch::Contains("--l1-size"));
+  config.memory.ideal = true;  // no caches are made
+  CHECK_NOTHROW(validate(config));
 }
 
 TEST_CASE("An impossible cache is an error even with ideal memory", "[rtu]") {

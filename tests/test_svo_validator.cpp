@@ -204,6 +204,27 @@ TEST_CASE("validator: the depth limit is inclusive and the walk needs no call st
   CHECK_THROWS_AS(validateSvo(SvoImage{chain(1), 0}, SvoLimits{-1}), std::invalid_argument);
 }
 
+// The stack a tree needs counts descriptors, with or without leaves, and any number of roots cost
+// one pass over the image.
+TEST_CASE("validator: descriptor depth of many roots in one pass", "[validator]") {
+  std::vector<uint32_t> leafless = chain(12);
+  leafless.back() = descriptor(false, 0, 0x00, 0x00);  // no children at all
+  const SvoReport report = validateSvo(SvoImage{leafless, 0});
+  CHECK(report.depth == 0);
+  CHECK(report.descriptorDepth == 12);
+  CHECK(descriptorDepths(SvoImage{chain(30), 0}, {0, 5, 29, 30}) == std::vector<int>{30, 25, 1, 0});
+  CHECK(descriptorDepths(SvoImage{chain(11), 0}, {0}) == std::vector<int>{11});
+
+  // Every word of a million-link chain is a root: a walk per root would take 5e11 steps.
+  const size_t links = 1000000;
+  std::vector<uint32_t> roots(links + 1);
+  for (uint32_t i = 0; i <= links; ++i) roots[i] = static_cast<uint32_t>(links - i);  // deepest last
+  const std::vector<int> depths = descriptorDepths(SvoImage{chain(links), 0}, roots);
+  REQUIRE(depths.size() == roots.size());
+  for (size_t i = 0; i < roots.size(); ++i) REQUIRE(depths[i] == static_cast<int>(links - roots[i]));
+  CHECK_THROWS_AS(descriptorDepths(SvoImage{chain(3), 0}, {0, 9}), SvoFormatError);
+}
+
 TEST_CASE("validator: far pointers written by the builder lead to the right children",
           "[validator]") {
   const DenseFirstOctant source;

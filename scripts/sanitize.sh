@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (float-cast-overflow
+# included), built at -O1 into its own directory, build-sanitize/. Any finding fails the run.
+# Leak checking stays on; only SystemC's by-design kernel leak is suppressed
+# (tests/sanitizers/lsan.supp). Usage: scripts/sanitize.sh [extra ctest arguments]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# The packages are those of scripts/setup.sh; .ci/run runs test.sh, which installs them, first.
+
+flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,float-cast-overflow"
+flags+=" -fno-sanitize-recover=all"
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE= -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" "${launcher[@]}" >/dev/null
+cmake --build build-sanitize -j "$(nproc)"
+
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:strict_string_checks=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The Slurm test brings up daemons that are not ours to instrument; the plot script is Python.
+ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -E '^(slurm_sweep|plot_script)$' "$@"
