@@ -1,7 +1,7 @@
 #include "cycle_trace.h"
 
 #include <algorithm>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -53,6 +53,10 @@ CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
     throw std::invalid_argument("trace window is empty: from cycle " +
                                 std::to_string(options_.fromCycle) + " is not before " +
                                 std::to_string(options_.toCycle));
+  if (options_.flushCycles == 0)
+    throw std::invalid_argument("trace flush interval must be at least one cycle");
+  out_.open(options_.path);
+  if (!out_) throw std::runtime_error("cannot write trace file " + options_.path);
 }
 
 bool CycleTrace::scopeKept(const std::string& scope) const {
@@ -65,12 +69,18 @@ bool CycleTrace::scopeKept(const std::string& scope) const {
 
 int CycleTrace::declare(const std::string& scope, const std::string& name, int width) {
   if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
+  if (declared_)
+    throw std::logic_error("trace signal " + scope + "." + name + " declared after the first flush");
   if (!scopeKept(scope)) return kNoSignal;
   signals_.push_back(Signal{scope, name, identifierCode(signals_.size()), width});
   return static_cast<int>(signals_.size() - 1);
 }
 
 void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
+  if (cycle < written_)
+    throw std::logic_error("trace record for cycle " + std::to_string(cycle) +
+                           " arrived after the cycles before " + std::to_string(written_) +
+                           " were written");
   if (signal == kNoSignal || cycle >= options_.toCycle) return;
   if (cycle >= options_.fromCycle) {
     changes_.push_back(Change{cycle, signal, value});
@@ -84,12 +94,45 @@ void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
   }
 }
 
-void CycleTrace::write() const {
-  std::ofstream out(options_.path);
-  if (!out) throw std::runtime_error("cannot write trace file " + options_.path);
-  out << "$timescale 1ps $end\n";
+void CycleTrace::flush(uint64_t cycle) {
+  if (cycle <= written_) return;
+  written_ = cycle;
+  if (!declared_) writeDeclarations();
+  // Stable: within a cycle the records stay in arrival order, so the last one still wins.
+  std::stable_sort(changes_.begin(), changes_.end(),
+                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
+  const auto byCycle = [](const Change& change, uint64_t c) { return change.cycle < c; };
+  const auto end = std::lower_bound(changes_.begin(), changes_.end(), cycle, byCycle);
+  auto begin = changes_.cbegin();
+  if (!dumped_ && cycle > options_.fromCycle) {
+    // The window's first cycle goes into the initial dump, so no time stamp appears twice.
+    initialValues();
+    for (; begin != end && begin->cycle == options_.fromCycle; ++begin) {
+      known_[static_cast<size_t>(begin->signal)] = true;
+      current_[static_cast<size_t>(begin->signal)] = begin->value;
+    }
+    writeInitialValues();
+  }
+  while (begin != end) {
+    auto next = begin;
+    while (next != end && next->cycle == begin->cycle) ++next;
+    writeCycle(begin->cycle, begin, next);
+    begin = next;
+  }
+  changes_.erase(changes_.begin(), end);
+  if (!out_) throw std::runtime_error("error writing trace file " + options_.path);
+}
 
-  // Declarations, nested by scope path (std::map keeps scopes together and sorted).
+void CycleTrace::finish() {
+  flush(std::numeric_limits<uint64_t>::max());
+  out_.close();
+  if (!out_) throw std::runtime_error("error writing trace file " + options_.path);
+}
+
+void CycleTrace::writeDeclarations() {
+  declared_ = true;
+  out_ << "$timescale 1ps $end\n";
+  // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
   std::vector<std::string> open;
@@ -97,59 +140,54 @@ void CycleTrace::write() const {
     const std::vector<std::string> path = splitScope(scope);
     size_t common = 0;
     while (common < open.size() && common < path.size() && open[common] == path[common]) ++common;
-    for (size_t i = open.size(); i > common; --i) out << "$upscope $end\n";
+    for (size_t i = open.size(); i > common; --i) out_ << "$upscope $end\n";
     open.resize(common);
     for (size_t i = common; i < path.size(); ++i) {
-      out << "$scope module " << path[i] << " $end\n";
+      out_ << "$scope module " << path[i] << " $end\n";
       open.push_back(path[i]);
     }
     for (size_t index : members) {
       const Signal& s = signals_[index];
-      out << "$var wire " << s.width << ' ' << s.code << ' ' << s.name << " $end\n";
+      out_ << "$var wire " << s.width << ' ' << s.code << ' ' << s.name << " $end\n";
     }
   }
-  for (size_t i = open.size(); i > 0; --i) out << "$upscope $end\n";
-  out << "$enddefinitions $end\n";
+  for (size_t i = open.size(); i > 0; --i) out_ << "$upscope $end\n";
+  out_ << "$enddefinitions $end\n";
+}
 
-  std::vector<Change> changes = changes_;
-  std::stable_sort(changes.begin(), changes.end(),
-                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
-  std::vector<bool> known(signals_.size());
-  std::vector<uint64_t> current(signals_.size());
+// The values before the window, final once the simulation has passed its first cycle.
+void CycleTrace::initialValues() {
+  known_.resize(signals_.size());
+  current_.resize(signals_.size());
   for (size_t i = 0; i < signals_.size(); ++i) {
-    known[i] = signals_[i].hasInitial;
-    current[i] = signals_[i].initialValue;
+    known_[i] = signals_[i].hasInitial;
+    current_[i] = signals_[i].initialValue;
   }
-  // The window's first cycle goes into the initial dump, so no time stamp appears twice.
-  size_t first = 0;
-  for (; first < changes.size() && changes[first].cycle == options_.fromCycle; ++first) {
-    known[static_cast<size_t>(changes[first].signal)] = true;
-    current[static_cast<size_t>(changes[first].signal)] = changes[first].value;
-  }
-  out << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
-  for (size_t i = 0; i < signals_.size(); ++i)
-    writeValue(out, signals_[i].width, signals_[i].code, known[i], current[i]);
-  out << "$end\n";
+}
 
-  for (size_t begin = first; begin < changes.size();) {
-    size_t end = begin;
-    while (end < changes.size() && changes[end].cycle == changes[begin].cycle) ++end;
-    // The last record of a signal in this cycle is its value; emit it if it changed.
-    std::map<int, uint64_t> settled;
-    for (size_t i = begin; i < end; ++i) settled[changes[i].signal] = changes[i].value;
-    bool stamped = false;
-    for (const auto& [signal, value] : settled) {
-      const auto index = static_cast<size_t>(signal);
-      if (known[index] && current[index] == value) continue;
-      if (!stamped) out << '#' << changes[begin].cycle * options_.periodPs << '\n';
-      stamped = true;
-      known[index] = true;
-      current[index] = value;
-      writeValue(out, signals_[index].width, signals_[index].code, true, value);
-    }
-    begin = end;
+void CycleTrace::writeInitialValues() {
+  dumped_ = true;
+  out_ << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
+  for (size_t i = 0; i < signals_.size(); ++i)
+    writeValue(out_, signals_[i].width, signals_[i].code, known_[i], current_[i]);
+  out_ << "$end\n";
+}
+
+void CycleTrace::writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
+                            std::vector<Change>::const_iterator end) {
+  // The last record of a signal in this cycle is its value; emit it if it changed.
+  std::map<int, uint64_t> settled;
+  for (auto change = begin; change != end; ++change) settled[change->signal] = change->value;
+  bool stamped = false;
+  for (const auto& [signal, value] : settled) {
+    const auto index = static_cast<size_t>(signal);
+    if (known_[index] && current_[index] == value) continue;
+    if (!stamped) out_ << '#' << cycle * options_.periodPs << '\n';
+    stamped = true;
+    known_[index] = true;
+    current_[index] = value;
+    writeValue(out_, signals_[index].width, signals_[index].code, true, value);
   }
-  if (!out) throw std::runtime_error("error writing trace file " + options_.path);
 }
 
 }  // namespace rtu

@@ -1,10 +1,14 @@
 #pragma once
 // A value-change-dump (VCD) recorder in clock cycles, for GTKWave. Modules record a value with the
-// cycle it takes effect, which may lie ahead of simulated time: a core that runs ahead through
-// cycles nothing else can observe still records each state in its own cycle. Only a cycle window
-// and the module scopes asked for are kept, so traces of long runs stay small.
+// cycle it takes effect, which may lie ahead of simulated time (a core that runs ahead through
+// cycles nothing else can observe still records each state in its own cycle) but never behind it.
+// So every cycle before the current simulated one is final: the simulation calls flush() with
+// that cycle now and then, which writes those cycles in time order and frees them; only the
+// records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle
+// window and the module scopes asked for are kept.
 
 #include <cstdint>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -17,22 +21,30 @@ struct TraceOptions {
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
   uint64_t periodPs = 10000;                                // VCD time of one cycle
+  uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
 };
 
 class CycleTrace {
  public:
   static constexpr int kNoSignal = -1;
 
+  // Opens the file; throws std::runtime_error when it cannot be written.
   explicit CycleTrace(TraceOptions options);
 
   // A signal of `width` bits (1 to 64) in the dot-separated module path `scope`; kNoSignal when
-  // the scope filter leaves it out.
+  // the scope filter leaves it out. All signals are declared before the first flush.
   int declare(const std::string& scope, const std::string& name, int width);
-  // The value `signal` holds from `cycle` on. Within one cycle the last record wins.
+  // The value `signal` holds from `cycle` on. Within one cycle the last record wins. Throws
+  // std::logic_error for a cycle already written.
   void record(int signal, uint64_t cycle, uint64_t value);
 
-  // Writes the VCD file; throws std::runtime_error when it cannot be written.
-  void write() const;
+  // Writes every cycle before `cycle`: no record for them can arrive any more.
+  void flush(uint64_t cycle);
+  // Writes the rest; throws std::runtime_error when the file could not be written.
+  void finish();
+
+  // Records held in memory, waiting for their cycle to become final.
+  size_t pendingRecords() const { return changes_.size(); }
 
  private:
   struct Signal {
@@ -47,10 +59,20 @@ class CycleTrace {
     uint64_t value;
   };
   bool scopeKept(const std::string& scope) const;
+  void writeDeclarations();
+  void initialValues();
+  void writeInitialValues();
+  void writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
+                  std::vector<Change>::const_iterator end);
 
   TraceOptions options_;
+  std::ofstream out_;
   std::vector<Signal> signals_;
-  std::vector<Change> changes_;
+  std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
+  uint64_t written_ = 0;         // every cycle before it is written
+  bool declared_ = false, dumped_ = false;
+  std::vector<bool> known_;
+  std::vector<uint64_t> current_;
 };
 
 }  // namespace rtu

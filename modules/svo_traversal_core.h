@@ -61,6 +61,7 @@ class SvoTraversalCore : public sc_core::sc_module {
   void resumeAfterSharedRead();
   void stepState();
   void consumeWordIn(uint64_t dataCycle);
+  void waitForWord(uint64_t dataCycle);
   void offerResult();
   void handOver(uint64_t now);
   void traceState(uint64_t cycle, uint64_t code);

@@ -18,6 +18,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -598,6 +599,29 @@ TEST_CASE("VCD of cached memory: L1 and L2 counters and BLOCKED states", "[rtu]"
   // Every read waits at least the L1 hit latency: core 0 is BLOCKED at some point.
   const std::vector<int64_t> state = t.levels("rtu.core_0.state");
   CHECK(std::count(state.begin(), state.end(), 7) > 0);
+}
+
+// A slow L1 wakes a core for the shared level several cycles after its read: the BLOCKED state
+// must still reach the trace before those cycles are written. Flushing every cycle (the recorder
+// refuses a record for a cycle already written) gives the file of a rarely flushed trace.
+TEST_CASE("VCD streamed every cycle equals the VCD streamed rarely, with a slow L1", "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 4;
+  config.memory = MemoryConfig{};
+  config.memory.l1.hitLatency = 4;
+  TraceOptions everyCycle;
+  everyCycle.flushCycles = 1;
+  const Traced t = traced(sphere(), config, dir, "every.vcd", everyCycle);
+  checkTrace(t, 4);
+  const std::vector<int64_t> state = t.levels("rtu.core_0.state");
+  CHECK(std::count(state.begin(), state.end(), 7) > 0);
+  const Traced rarely = traced(sphere(), config, dir, "rarely.vcd");
+  const auto text = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(text(dir.file("every.vcd")) == text(dir.file("rarely.vcd")));
 }
 
 TEST_CASE("VCD time stamps follow the clock", "[rtu]") {
