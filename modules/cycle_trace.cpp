@@ -8,31 +8,6 @@
 namespace rtu {
 namespace {
 
-// VCD identifier codes: base-94 numbers in the printable characters '!' to '~'.
-std::string identifierCode(size_t index) {
-  std::string code;
-  do {
-    code += static_cast<char>('!' + index % 94);
-    index /= 94;
-  } while (index > 0);
-  return code;
-}
-
-std::string binary(uint64_t value, int width) {
-  std::string bits(static_cast<size_t>(width), '0');
-  for (int i = 0; i < width; ++i)
-    if (value >> i & 1) bits[static_cast<size_t>(width - 1 - i)] = '1';
-  return bits;
-}
-
-void writeValue(std::ostream& out, int width, const std::string& code, bool known,
-                uint64_t value) {
-  if (width == 1)
-    out << (known ? (value ? '1' : '0') : 'x') << code << '\n';
-  else
-    out << 'b' << (known ? binary(value, width) : std::string("x")) << ' ' << code << '\n';
-}
-
 std::vector<std::string> splitScope(const std::string& scope) {
   std::vector<std::string> parts;
   size_t start = 0;
@@ -55,8 +30,7 @@ CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
                                 std::to_string(options_.toCycle));
   if (options_.flushCycles == 0)
     throw std::invalid_argument("trace flush interval must be at least one cycle");
-  out_.open(options_.path);
-  if (!out_) throw std::runtime_error("cannot write trace file " + options_.path);
+  writer_ = openTraceWriter(options_.path);
 }
 
 bool CycleTrace::scopeKept(const std::string& scope) const {
@@ -67,12 +41,13 @@ bool CycleTrace::scopeKept(const std::string& scope) const {
   });
 }
 
-int CycleTrace::declare(const std::string& scope, const std::string& name, int width) {
+int CycleTrace::declare(const std::string& scope, const std::string& name, int width,
+                        std::vector<std::string> valueNames) {
   if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
   if (declared_)
     throw std::logic_error("trace signal " + scope + "." + name + " declared after the first flush");
   if (!scopeKept(scope)) return kNoSignal;
-  signals_.push_back(Signal{scope, name, identifierCode(signals_.size()), width});
+  signals_.push_back(Signal{scope, {name, width, std::move(valueNames)}});
   return static_cast<int>(signals_.size() - 1);
 }
 
@@ -120,18 +95,15 @@ void CycleTrace::flush(uint64_t cycle) {
     begin = next;
   }
   changes_.erase(changes_.begin(), end);
-  if (!out_) throw std::runtime_error("error writing trace file " + options_.path);
 }
 
 void CycleTrace::finish() {
   flush(std::numeric_limits<uint64_t>::max());
-  out_.close();
-  if (!out_) throw std::runtime_error("error writing trace file " + options_.path);
+  writer_->close();
 }
 
 void CycleTrace::writeDeclarations() {
   declared_ = true;
-  out_ << "$timescale 1ps $end\n";
   // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
@@ -140,19 +112,16 @@ void CycleTrace::writeDeclarations() {
     const std::vector<std::string> path = splitScope(scope);
     size_t common = 0;
     while (common < open.size() && common < path.size() && open[common] == path[common]) ++common;
-    for (size_t i = open.size(); i > common; --i) out_ << "$upscope $end\n";
+    for (size_t i = open.size(); i > common; --i) writer_->leaveScope();
     open.resize(common);
     for (size_t i = common; i < path.size(); ++i) {
-      out_ << "$scope module " << path[i] << " $end\n";
+      writer_->enterScope(path[i]);
       open.push_back(path[i]);
     }
-    for (size_t index : members) {
-      const Signal& s = signals_[index];
-      out_ << "$var wire " << s.width << ' ' << s.code << ' ' << s.name << " $end\n";
-    }
+    for (size_t index : members) writer_->variable(index, signals_[index].variable);
   }
-  for (size_t i = open.size(); i > 0; --i) out_ << "$upscope $end\n";
-  out_ << "$enddefinitions $end\n";
+  for (size_t i = open.size(); i > 0; --i) writer_->leaveScope();
+  writer_->endDeclarations();
 }
 
 // The values before the window, final once the simulation has passed its first cycle.
@@ -167,10 +136,9 @@ void CycleTrace::initialValues() {
 
 void CycleTrace::writeInitialValues() {
   dumped_ = true;
-  out_ << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
-  for (size_t i = 0; i < signals_.size(); ++i)
-    writeValue(out_, signals_[i].width, signals_[i].code, known_[i], current_[i]);
-  out_ << "$end\n";
+  writer_->beginInitial(options_.fromCycle * options_.periodPs);
+  for (size_t i = 0; i < signals_.size(); ++i) writer_->value(i, known_[i], current_[i]);
+  writer_->endInitial();
 }
 
 void CycleTrace::writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
@@ -182,11 +150,11 @@ void CycleTrace::writeCycle(uint64_t cycle, std::vector<Change>::const_iterator 
   for (const auto& [signal, value] : settled) {
     const auto index = static_cast<size_t>(signal);
     if (known_[index] && current_[index] == value) continue;
-    if (!stamped) out_ << '#' << cycle * options_.periodPs << '\n';
+    if (!stamped) writer_->time(cycle * options_.periodPs);
     stamped = true;
     known_[index] = true;
     current_[index] = value;
-    writeValue(out_, signals_[index].width, signals_[index].code, true, value);
+    writer_->value(index, true, value);
   }
 }
 

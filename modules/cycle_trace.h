@@ -1,5 +1,5 @@
 #pragma once
-// A value-change-dump (VCD) recorder in clock cycles, for GTKWave. Modules record a value with the
+// A trace recorder in clock cycles, for GTKWave: FST or VCD (modules/trace_writer.h). Modules record a value with the
 // cycle it takes effect, which may lie ahead of simulated time (a core that runs ahead through
 // cycles nothing else can observe still records each state in its own cycle) but never behind it.
 // So every cycle before the current simulated one is final: the simulation calls flush() with
@@ -8,10 +8,12 @@
 // window and the module scopes asked for are kept.
 
 #include <cstdint>
-#include <fstream>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "trace_writer.h"
 
 namespace rtu {
 
@@ -20,7 +22,7 @@ struct TraceOptions {
   uint64_t fromCycle = 0;
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
-  uint64_t periodPs = 10000;                                // VCD time of one cycle
+  uint64_t periodPs = 10000;                                // trace time of one cycle
   uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
 };
 
@@ -32,8 +34,10 @@ class CycleTrace {
   explicit CycleTrace(TraceOptions options);
 
   // A signal of `width` bits (1 to 64) in the dot-separated module path `scope`; kNoSignal when
-  // the scope filter leaves it out. All signals are declared before the first flush.
-  int declare(const std::string& scope, const std::string& name, int width);
+  // the scope filter leaves it out. `valueNames` name the values 0, 1, ... (FST shows them). All
+  // signals are declared before the first flush.
+  int declare(const std::string& scope, const std::string& name, int width,
+              std::vector<std::string> valueNames = {});
   // The value `signal` holds from `cycle` on. Within one cycle the last record wins. Throws
   // std::logic_error for a cycle already written.
   void record(int signal, uint64_t cycle, uint64_t value);
@@ -48,8 +52,8 @@ class CycleTrace {
 
  private:
   struct Signal {
-    std::string scope, name, code;
-    int width;
+    std::string scope;
+    TraceVariable variable;
     bool hasInitial = false;
     uint64_t initialCycle = 0, initialValue = 0;
   };
@@ -66,7 +70,7 @@ class CycleTrace {
                   std::vector<Change>::const_iterator end);
 
   TraceOptions options_;
-  std::ofstream out_;
+  std::unique_ptr<TraceWriter> writer_;
   std::vector<Signal> signals_;
   std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
   uint64_t written_ = 0;         // every cycle before it is written

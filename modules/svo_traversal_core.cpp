@@ -14,7 +14,7 @@ SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleCloc
       wake_(clock),
       trace_(trace) {
   if (trace_) {
-    stateSignal_ = trace_->declare(this->name(), "state", 3);
+    stateSignal_ = trace_->declare(this->name(), "state", 3, kCoreStateNames);
     stackSignal_ = trace_->declare(this->name(), "stack_depth", 7);
   }
 }

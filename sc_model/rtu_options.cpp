@@ -15,7 +15,8 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
   command.add_option("--stats", outputs.statsPath,
                      "write the statistics with the effective configuration as JSON");
-  CLI::Option* vcd = command.add_option("--vcd", outputs.vcdPath, "write a VCD trace (GTKWave)");
+  CLI::Option* vcd = command.add_option("--trace,--vcd", outputs.vcdPath,
+                                        "write a trace for GTKWave: FST for a .fst path, else VCD");
   command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")->needs(vcd);
   command.add_option("--vcd-to", outputs.vcdTo, "cycle the trace stops before")->needs(vcd);
   command.add_option("--vcd-scope", outputs.vcdScopes,
