@@ -33,12 +33,27 @@ CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
   writer_ = openTraceWriter(options_.path);
 }
 
-bool CycleTrace::scopeKept(const std::string& scope) const {
+bool CycleTrace::scopeKept(const std::string& scope) {
   if (options_.scopes.empty()) return true;
-  return std::any_of(options_.scopes.begin(), options_.scopes.end(), [&](const std::string& kept) {
-    return scope.compare(0, kept.size(), kept) == 0 &&
-           (scope.size() == kept.size() || scope[kept.size()] == '.');
-  });
+  scopeMatched_.resize(options_.scopes.size());
+  bool kept = false;
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    const std::string& prefix = options_.scopes[i];
+    if (scope.compare(0, prefix.size(), prefix) == 0 &&
+        (scope.size() == prefix.size() || scope[prefix.size()] == '.'))
+      kept = scopeMatched_[i] = true;
+  }
+  return kept;
+}
+
+void CycleTrace::checkScopesMatched() const {
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    if (i < scopeMatched_.size() && scopeMatched_[i]) continue;
+    std::string existing;
+    for (const std::string& scope : declaredScopes_) existing += "\n  " + scope;
+    throw std::invalid_argument("trace scope '" + options_.scopes[i] +
+                                "' matches no module; the scopes are:" + existing);
+  }
 }
 
 int CycleTrace::declare(const std::string& scope, const std::string& name, int width,
@@ -46,6 +61,7 @@ int CycleTrace::declare(const std::string& scope, const std::string& name, int w
   if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
   if (declared_)
     throw std::logic_error("trace signal " + scope + "." + name + " declared after the first flush");
+  declaredScopes_.insert(scope);
   if (!scopeKept(scope)) return kNoSignal;
   signals_.push_back(Signal{scope, {name, width, std::move(valueNames)}});
   return static_cast<int>(signals_.size() - 1);

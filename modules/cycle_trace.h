@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ class CycleTrace {
   // std::logic_error for a cycle already written.
   void record(int signal, uint64_t cycle, uint64_t value);
 
+  // Throws std::invalid_argument, listing the scopes declared, when a scope of the filter matched
+  // none of them (a typo, or core_7 of 4 cores). Called once every signal is declared.
+  void checkScopesMatched() const;
+
   // Writes every cycle before `cycle`: no record for them can arrive any more.
   void flush(uint64_t cycle);
   // Writes the rest; throws std::runtime_error when the file could not be written.
@@ -62,7 +67,7 @@ class CycleTrace {
     int signal;
     uint64_t value;
   };
-  bool scopeKept(const std::string& scope) const;
+  bool scopeKept(const std::string& scope);
   void writeDeclarations();
   void initialValues();
   void writeInitialValues();
@@ -72,6 +77,8 @@ class CycleTrace {
   TraceOptions options_;
   std::unique_ptr<TraceWriter> writer_;
   std::vector<Signal> signals_;
+  std::set<std::string> declaredScopes_;  // kept or not
+  std::vector<bool> scopeMatched_;        // per scope of the filter
   std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
   uint64_t written_ = 0;         // every cycle before it is written
   bool declared_ = false, dumped_ = false;

@@ -19,7 +19,7 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
                                         "write a trace for GTKWave: FST for a .fst path, else VCD");
   command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")->needs(vcd);
   command.add_option("--vcd-to", outputs.vcdTo, "cycle the trace stops before")->needs(vcd);
-  command.add_option("--vcd-scope", outputs.vcdScopes,
+  command.add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
                      "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
       ->needs(vcd);
 }

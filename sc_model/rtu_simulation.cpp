@@ -57,6 +57,7 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
     trace = std::make_unique<CycleTrace>(options);
   }
   auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
+  if (trace) trace->checkScopesMatched();
 
   const auto start = std::chrono::steady_clock::now();
   runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz), trace.get(),

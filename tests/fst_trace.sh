@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # FST traces (--trace t.fst, modules/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
 # same values in the same cycles as the VCD of the same run, for ideal and cached memory, and an
-# enum table that names the core states. --vcd stays an alias of --trace.
+# enum table that names the core states. --vcd stays an alias of --trace. A --trace-scope that
+# matches nothing is an error.
 # Usage: fst_trace.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -31,4 +32,9 @@ grep -q 'IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED 000 001 010 011 100 101 110 11
   fail "no enum table of the core states in the FST"
 [[ $(grep -c '^\$attrbegin misc 07 "" 1' extensions.vcd) == 3 ]] ||
   fail "not every core's state refers to the enum table"
+# --trace-scope (alias --vcd-scope): a scope that matches nothing fails, naming what exists.
+expect_error "'rtu.core_7' matches no module" \
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 4 --trace t.fst \
+  --trace-scope rtu.core_7
+grep -q "rtu.core_3.in" err.txt || fail "the scope error does not list rtu.core_3.in"
 echo "FST traces equal the VCD traces; core states named"

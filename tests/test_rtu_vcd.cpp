@@ -533,6 +533,28 @@ TEST_CASE("VCD scope filter keeps only the scopes asked for", "[rtu]") {
   CHECK_FALSE(two.vcd.has("rtu.job_manager.in.valid"));
 }
 
+TEST_CASE("VCD scope that matches nothing is an error listing the scopes", "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 4;
+  TraceOptions options;
+  options.path = dir.file("typo.vcd");
+  for (const std::string scope : {"rtu.core_7", "rtu.schedular", "rtu.memory"}) {
+    INFO(scope);
+    options.scopes = {"rtu.core_1", scope};  // the ideal memory declares no signal
+    config.trace = options;
+    try {
+      simulateRtu(sphere().memory(), sphere().jobs, config);
+      FAIL("no error");
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      CHECK(message.find("'" + scope + "' matches no module") != std::string::npos);
+      CHECK(message.find("rtu.core_3.in") != std::string::npos);
+      CHECK(message.find("rtu.scheduler.in") != std::string::npos);
+    }
+  }
+}
+
 TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "[rtu]") {
   TempDir dir;
   RtuConfig config;
