@@ -1,5 +1,7 @@
 #include "cycle_trace.h"
 
+#include "gtkw_save_file.h"
+
 #include <algorithm>
 #include <limits>
 #include <map>
@@ -113,9 +115,13 @@ void CycleTrace::flush(uint64_t cycle) {
   changes_.erase(changes_.begin(), end);
 }
 
-void CycleTrace::finish() {
+void CycleTrace::finish(uint64_t markerCycle) {
   flush(std::numeric_limits<uint64_t>::max());
   writer_->close();
+  std::vector<SaveFileSignal> shown;
+  for (const Signal& s : signals_)
+    shown.push_back({s.scope, s.variable.name, s.variable.width, !s.variable.valueNames.empty()});
+  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs);
 }
 
 void CycleTrace::writeDeclarations() {

@@ -49,8 +49,9 @@ class CycleTrace {
 
   // Writes every cycle before `cycle`: no record for them can arrive any more.
   void flush(uint64_t cycle);
-  // Writes the rest; throws std::runtime_error when the file could not be written.
-  void finish();
+  // Writes the rest, and a GTKWave save file next to the trace (modules/gtkw_save_file.h) with a
+  // marker at `markerCycle`; throws std::runtime_error when a file could not be written.
+  void finish(uint64_t markerCycle);
 
   // Records held in memory, waiting for their cycle to become final.
   size_t pendingRecords() const { return changes_.size(); }

@@ -65,8 +65,9 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  if (trace) trace->finish();  // before the stall check: the trace of a stalled run shows why
   const HostSink& sink = top->sink();
+  // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
+  if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
   if (!sink.complete())
     throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
                              " of " + std::to_string(records.size()) + " results");

@@ -2,7 +2,7 @@
 # FST traces (--trace t.fst, modules/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
 # same values in the same cycles as the VCD of the same run, for ideal and cached memory, and an
 # enum table that names the core states. --vcd stays an alias of --trace. A --trace-scope that
-# matches nothing is an error.
+# matches nothing is an error. Each trace comes with a GTKWave save file.
 # Usage: fst_trace.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -18,15 +18,43 @@ for options in "--cores 4" "--cores 3 --memory cached"; do
   read -r -a run <<<"$options"
   replay=("$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin "${run[@]}")
   "${replay[@]}" --trace t.fst >/dev/null
-  "${replay[@]}" --vcd t.vcd >/dev/null
+  "${replay[@]}" --vcd v.vcd >/dev/null
   ! grep -q 'timescale' t.fst || fail "t.fst is a VCD"
   fst2vcd t.fst >from_fst.vcd
-  [[ -s t.vcd ]] || fail "--vcd wrote no trace"
-  normalise t.vcd >vcd.txt
+  [[ -s v.vcd ]] || fail "--vcd wrote no trace"
+  normalise v.vcd >vcd.txt
   normalise from_fst.vcd >fst.txt
   (( $(wc -l <vcd.txt) > 1000 )) || fail "$options: the VCD holds only $(wc -l <vcd.txt) changes"
   cmp -s vcd.txt fst.txt || { diff vcd.txt fst.txt | head -5; fail "$options: FST and VCD differ"; }
 done
+
+# The save file next to the last trace: this trace, every signal of it, grouped per module in
+# pipeline order, a marker at the first result.
+[[ -f t.gtkw ]] || fail "no save file t.gtkw"
+grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.gtkw || fail "t.gtkw does not open $PWD/t.fst"
+groups=$(grep '^-' t.gtkw | uniq | tr -d '-' | tr '\n' ' ')
+[[ $groups == "job_manager scheduler core_0 core_1 core_2 memory result_manager " ]] ||
+  fail "groups out of pipeline order: $groups"
+grep -v '^[-@*[]' t.gtkw | sed 's/\[[0-9]*:0\]$//' | sort >shown.txt
+awk '{ print $2 }' fst.txt | sort -u >traced.txt
+cmp -s shown.txt traced.txt || fail "t.gtkw does not show exactly the traced signals"
+# Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
+first_result=$(python3 - fst.txt <<'PY'
+import sys
+level, changes = {}, {}
+for line in open(sys.argv[1]):
+    cycle, name, value = line.split()
+    changes.setdefault(int(cycle), []).append((name, value))
+for cycle in sorted(changes):
+    level.update(changes[cycle])
+    if level.get("rtu.result_manager.out.valid") == level.get("rtu.result_manager.out.ready") == "1":
+        print(cycle)
+        break
+PY
+)
+[[ $(awk '/^\*/ { print $2 }' t.gtkw) == $((first_result * 10000)) ]] ||
+  fail "the marker is not at the first result (cycle $first_result)"
+
 fst2vcd --extensions t.fst >extensions.vcd
 grep -q 'IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED 000 001 010 011 100 101 110 111' extensions.vcd ||
   fail "no enum table of the core states in the FST"

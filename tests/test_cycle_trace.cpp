@@ -55,7 +55,7 @@ std::string recorded(const std::string& name, bool flushInBetween) {
   trace.record(valid, 4, 0);  // no change: not written
   if (flushInBetween) trace.flush(5);
   trace.record(state, 5, 3);  // replaces the early record of cycle 5
-  trace.finish();
+  trace.finish(0);
   const std::string text = contents(options.path);
   fs::remove(options.path);
   return text;
@@ -79,7 +79,7 @@ TEST_CASE("Trace refuses a record behind the written cycles and a late declarati
   CHECK_NOTHROW(trace.record(state, 8, 2));
   CHECK_THROWS_AS(trace.record(state, 7, 2), std::logic_error);
   CHECK_THROWS_AS(trace.declare("top", "late", 1), std::logic_error);
-  trace.finish();
+  trace.finish(0);
   fs::remove(options.path);
 }
 
@@ -96,7 +96,7 @@ TEST_CASE("Trace window: records before it set the initial values when it starts
   trace.record(level, 3, 0);
   trace.record(level, 5, 1);
   trace.record(level, 6, 0);  // after the window
-  trace.finish();
+  trace.finish(0);
   const std::string text = contents(options.path);
   fs::remove(options.path);
   CHECK(text.substr(text.find("#4")) == "#4\n$dumpvars\n0!\n$end\n#5\n1!\n");
