@@ -24,7 +24,8 @@ run() {
   local name=$1; shift
   /usr/bin/time -f '%e %M' -o "$work/time" "$@" >/dev/null
   read -r seconds kib <"$work/time"
-  printf '%-10s %8.1f s %8.1f MB resident' "$name" "$seconds" "$(awk -v k="$kib" 'BEGIN { print k / 1024 }')"
+  printf '%-10s %8.1f s %8.1f MB resident' "$name" "$seconds" \
+    "$(awk -v k="$kib" 'BEGIN { print k / 1024 }')"
 }
 
 echo "${width}x${height}, $((width * height)) rays, 16 cores, cached memory"

@@ -62,7 +62,8 @@ int CycleTrace::declare(const std::string& scope, const std::string& name, int w
                         std::vector<std::string> valueNames) {
   if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
   if (declared_)
-    throw std::logic_error("trace signal " + scope + "." + name + " declared after the first flush");
+    throw std::logic_error("trace signal " + scope + "." + name +
+                           " declared after the first flush");
   declaredScopes_.insert(scope);
   if (!scopeKept(scope)) return kNoSignal;
   signals_.push_back(Signal{scope, {name, width, std::move(valueNames)}});

@@ -1,7 +1,8 @@
 #pragma once
-// A trace recorder in clock cycles, for GTKWave: FST or VCD (modules/trace_writer.h). Modules record a value with the
-// cycle it takes effect, which may lie ahead of simulated time (a core that runs ahead through
-// cycles nothing else can observe still records each state in its own cycle) but never behind it.
+// A trace recorder in clock cycles, for GTKWave: FST or VCD (modules/trace_writer.h). Modules
+// record a value with the cycle it takes effect, which may lie ahead of simulated time (a core
+// that runs ahead through cycles nothing else can observe still records each state in its own
+// cycle) but never behind it.
 // So every cycle before the current simulated one is final: the simulation calls flush() with
 // that cycle now and then, which writes those cycles in time order and frees them; only the
 // records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle

@@ -23,7 +23,8 @@ std::string moduleOf(const std::string& scope) {
   const size_t first = scope.find('.');
   if (first == std::string::npos) return scope;
   const size_t second = scope.find('.', first + 1);
-  return scope.substr(first + 1, second == std::string::npos ? std::string::npos : second - first - 1);
+  const size_t length = second == std::string::npos ? std::string::npos : second - first - 1;
+  return scope.substr(first + 1, length);
 }
 
 // Pipeline position of a module, then its instance number (core_10 after core_9).

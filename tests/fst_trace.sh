@@ -47,13 +47,21 @@ for line in open(sys.argv[1]):
     changes.setdefault(int(cycle), []).append((name, value))
 for cycle in sorted(changes):
     level.update(changes[cycle])
-    if level.get("rtu.result_manager.out.valid") == level.get("rtu.result_manager.out.ready") == "1":
+    host = "rtu.result_manager.out."
+    if level.get(host + "valid") == level.get(host + "ready") == "1":
         print(cycle)
         break
 PY
 )
 [[ $(awk '/^\*/ { print $2 }' t.gtkw) == $((first_result * 10000)) ]] ||
   fail "the marker is not at the first result (cycle $first_result)"
+
+# rtusim wave: GTKWave (here a stand-in that prints its arguments) gets the trace and its save file.
+expect_error "no such trace file: missing.fst" "$rtusim" wave missing.fst
+expect_error "gtkwave not found on PATH" env PATH=/nonexistent "$rtusim" wave t.fst
+mkdir bin && printf '#!/bin/sh\necho "$@"\n' >bin/gtkwave && chmod +x bin/gtkwave
+[[ $(PATH=$PWD/bin:$PATH "$rtusim" wave t.fst) == "t.fst t.gtkw" ]] ||
+  fail "rtusim wave did not open t.gtkw"
 
 fst2vcd --extensions t.fst >extensions.vcd
 grep -q 'IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED 000 001 010 011 100 101 110 111' extensions.vcd ||
