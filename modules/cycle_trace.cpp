@@ -1,37 +1,14 @@
 #include "cycle_trace.h"
 
+#include "gtkw_save_file.h"
+
 #include <algorithm>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
 namespace rtu {
 namespace {
-
-// VCD identifier codes: base-94 numbers in the printable characters '!' to '~'.
-std::string identifierCode(size_t index) {
-  std::string code;
-  do {
-    code += static_cast<char>('!' + index % 94);
-    index /= 94;
-  } while (index > 0);
-  return code;
-}
-
-std::string binary(uint64_t value, int width) {
-  std::string bits(static_cast<size_t>(width), '0');
-  for (int i = 0; i < width; ++i)
-    if (value >> i & 1) bits[static_cast<size_t>(width - 1 - i)] = '1';
-  return bits;
-}
-
-void writeValue(std::ostream& out, int width, const std::string& code, bool known,
-                uint64_t value) {
-  if (width == 1)
-    out << (known ? (value ? '1' : '0') : 'x') << code << '\n';
-  else
-    out << 'b' << (known ? binary(value, width) : std::string("x")) << ' ' << code << '\n';
-}
 
 std::vector<std::string> splitScope(const std::string& scope) {
   std::vector<std::string> parts;
@@ -53,24 +30,51 @@ CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
     throw std::invalid_argument("trace window is empty: from cycle " +
                                 std::to_string(options_.fromCycle) + " is not before " +
                                 std::to_string(options_.toCycle));
+  if (options_.flushCycles == 0)
+    throw std::invalid_argument("trace flush interval must be at least one cycle");
+  writer_ = openTraceWriter(options_.path);
 }
 
-bool CycleTrace::scopeKept(const std::string& scope) const {
+bool CycleTrace::scopeKept(const std::string& scope) {
   if (options_.scopes.empty()) return true;
-  return std::any_of(options_.scopes.begin(), options_.scopes.end(), [&](const std::string& kept) {
-    return scope.compare(0, kept.size(), kept) == 0 &&
-           (scope.size() == kept.size() || scope[kept.size()] == '.');
-  });
+  scopeMatched_.resize(options_.scopes.size());
+  bool kept = false;
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    const std::string& prefix = options_.scopes[i];
+    if (scope.compare(0, prefix.size(), prefix) == 0 &&
+        (scope.size() == prefix.size() || scope[prefix.size()] == '.'))
+      kept = scopeMatched_[i] = true;
+  }
+  return kept;
 }
 
-int CycleTrace::declare(const std::string& scope, const std::string& name, int width) {
+void CycleTrace::checkScopesMatched() const {
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    if (i < scopeMatched_.size() && scopeMatched_[i]) continue;
+    std::string existing;
+    for (const std::string& scope : declaredScopes_) existing += "\n  " + scope;
+    throw std::invalid_argument("trace scope '" + options_.scopes[i] +
+                                "' matches no module; the scopes are:" + existing);
+  }
+}
+
+int CycleTrace::declare(const std::string& scope, const std::string& name, int width,
+                        std::vector<std::string> valueNames) {
   if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
+  if (declared_)
+    throw std::logic_error("trace signal " + scope + "." + name +
+                           " declared after the first flush");
+  declaredScopes_.insert(scope);
   if (!scopeKept(scope)) return kNoSignal;
-  signals_.push_back(Signal{scope, name, identifierCode(signals_.size()), width});
+  signals_.push_back(Signal{scope, {name, width, std::move(valueNames)}});
   return static_cast<int>(signals_.size() - 1);
 }
 
 void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
+  if (cycle < written_)
+    throw std::logic_error("trace record for cycle " + std::to_string(cycle) +
+                           " arrived after the cycles before " + std::to_string(written_) +
+                           " were written");
   if (signal == kNoSignal || cycle >= options_.toCycle) return;
   if (cycle >= options_.fromCycle) {
     changes_.push_back(Change{cycle, signal, value});
@@ -84,12 +88,46 @@ void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
   }
 }
 
-void CycleTrace::write() const {
-  std::ofstream out(options_.path);
-  if (!out) throw std::runtime_error("cannot write trace file " + options_.path);
-  out << "$timescale 1ps $end\n";
+void CycleTrace::flush(uint64_t cycle) {
+  if (cycle <= written_) return;
+  written_ = cycle;
+  if (!declared_) writeDeclarations();
+  // Stable: within a cycle the records stay in arrival order, so the last one still wins.
+  std::stable_sort(changes_.begin(), changes_.end(),
+                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
+  const auto byCycle = [](const Change& change, uint64_t c) { return change.cycle < c; };
+  const auto end = std::lower_bound(changes_.begin(), changes_.end(), cycle, byCycle);
+  auto begin = changes_.cbegin();
+  if (!dumped_ && cycle > options_.fromCycle) {
+    // The window's first cycle goes into the initial dump, so no time stamp appears twice.
+    initialValues();
+    for (; begin != end && begin->cycle == options_.fromCycle; ++begin) {
+      known_[static_cast<size_t>(begin->signal)] = true;
+      current_[static_cast<size_t>(begin->signal)] = begin->value;
+    }
+    writeInitialValues();
+  }
+  while (begin != end) {
+    auto next = begin;
+    while (next != end && next->cycle == begin->cycle) ++next;
+    writeCycle(begin->cycle, begin, next);
+    begin = next;
+  }
+  changes_.erase(changes_.begin(), end);
+}
 
-  // Declarations, nested by scope path (std::map keeps scopes together and sorted).
+void CycleTrace::finish(uint64_t markerCycle) {
+  flush(std::numeric_limits<uint64_t>::max());
+  writer_->close();
+  std::vector<SaveFileSignal> shown;
+  for (const Signal& s : signals_)
+    shown.push_back({s.scope, s.variable.name, s.variable.width, !s.variable.valueNames.empty()});
+  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs);
+}
+
+void CycleTrace::writeDeclarations() {
+  declared_ = true;
+  // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
   std::vector<std::string> open;
@@ -97,59 +135,50 @@ void CycleTrace::write() const {
     const std::vector<std::string> path = splitScope(scope);
     size_t common = 0;
     while (common < open.size() && common < path.size() && open[common] == path[common]) ++common;
-    for (size_t i = open.size(); i > common; --i) out << "$upscope $end\n";
+    for (size_t i = open.size(); i > common; --i) writer_->leaveScope();
     open.resize(common);
     for (size_t i = common; i < path.size(); ++i) {
-      out << "$scope module " << path[i] << " $end\n";
+      writer_->enterScope(path[i]);
       open.push_back(path[i]);
     }
-    for (size_t index : members) {
-      const Signal& s = signals_[index];
-      out << "$var wire " << s.width << ' ' << s.code << ' ' << s.name << " $end\n";
-    }
+    for (size_t index : members) writer_->variable(index, signals_[index].variable);
   }
-  for (size_t i = open.size(); i > 0; --i) out << "$upscope $end\n";
-  out << "$enddefinitions $end\n";
+  for (size_t i = open.size(); i > 0; --i) writer_->leaveScope();
+  writer_->endDeclarations();
+}
 
-  std::vector<Change> changes = changes_;
-  std::stable_sort(changes.begin(), changes.end(),
-                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
-  std::vector<bool> known(signals_.size());
-  std::vector<uint64_t> current(signals_.size());
+// The values before the window, final once the simulation has passed its first cycle.
+void CycleTrace::initialValues() {
+  known_.resize(signals_.size());
+  current_.resize(signals_.size());
   for (size_t i = 0; i < signals_.size(); ++i) {
-    known[i] = signals_[i].hasInitial;
-    current[i] = signals_[i].initialValue;
+    known_[i] = signals_[i].hasInitial;
+    current_[i] = signals_[i].initialValue;
   }
-  // The window's first cycle goes into the initial dump, so no time stamp appears twice.
-  size_t first = 0;
-  for (; first < changes.size() && changes[first].cycle == options_.fromCycle; ++first) {
-    known[static_cast<size_t>(changes[first].signal)] = true;
-    current[static_cast<size_t>(changes[first].signal)] = changes[first].value;
-  }
-  out << '#' << options_.fromCycle * options_.periodPs << "\n$dumpvars\n";
-  for (size_t i = 0; i < signals_.size(); ++i)
-    writeValue(out, signals_[i].width, signals_[i].code, known[i], current[i]);
-  out << "$end\n";
+}
 
-  for (size_t begin = first; begin < changes.size();) {
-    size_t end = begin;
-    while (end < changes.size() && changes[end].cycle == changes[begin].cycle) ++end;
-    // The last record of a signal in this cycle is its value; emit it if it changed.
-    std::map<int, uint64_t> settled;
-    for (size_t i = begin; i < end; ++i) settled[changes[i].signal] = changes[i].value;
-    bool stamped = false;
-    for (const auto& [signal, value] : settled) {
-      const auto index = static_cast<size_t>(signal);
-      if (known[index] && current[index] == value) continue;
-      if (!stamped) out << '#' << changes[begin].cycle * options_.periodPs << '\n';
-      stamped = true;
-      known[index] = true;
-      current[index] = value;
-      writeValue(out, signals_[index].width, signals_[index].code, true, value);
-    }
-    begin = end;
+void CycleTrace::writeInitialValues() {
+  dumped_ = true;
+  writer_->beginInitial(options_.fromCycle * options_.periodPs);
+  for (size_t i = 0; i < signals_.size(); ++i) writer_->value(i, known_[i], current_[i]);
+  writer_->endInitial();
+}
+
+void CycleTrace::writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
+                            std::vector<Change>::const_iterator end) {
+  // The last record of a signal in this cycle is its value; emit it if it changed.
+  std::map<int, uint64_t> settled;
+  for (auto change = begin; change != end; ++change) settled[change->signal] = change->value;
+  bool stamped = false;
+  for (const auto& [signal, value] : settled) {
+    const auto index = static_cast<size_t>(signal);
+    if (known_[index] && current_[index] == value) continue;
+    if (!stamped) writer_->time(cycle * options_.periodPs);
+    stamped = true;
+    known_[index] = true;
+    current_[index] = value;
+    writer_->value(index, true, value);
   }
-  if (!out) throw std::runtime_error("error writing trace file " + options_.path);
 }
 
 }  // namespace rtu

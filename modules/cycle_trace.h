@@ -1,13 +1,21 @@
 #pragma once
-// A value-change-dump (VCD) recorder in clock cycles, for GTKWave. Modules record a value with the
-// cycle it takes effect, which may lie ahead of simulated time: a core that runs ahead through
-// cycles nothing else can observe still records each state in its own cycle. Only a cycle window
-// and the module scopes asked for are kept, so traces of long runs stay small.
+// A trace recorder in clock cycles, for GTKWave: FST or VCD (modules/trace_writer.h). Modules
+// record a value with the cycle it takes effect, which may lie ahead of simulated time (a core
+// that runs ahead through cycles nothing else can observe still records each state in its own
+// cycle) but never behind it.
+// So every cycle before the current simulated one is final: the simulation calls flush() with
+// that cycle now and then, which writes those cycles in time order and frees them; only the
+// records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle
+// window and the module scopes asked for are kept.
 
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
+
+#include "trace_writer.h"
 
 namespace rtu {
 
@@ -16,28 +24,43 @@ struct TraceOptions {
   uint64_t fromCycle = 0;
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
-  uint64_t periodPs = 10000;                                // VCD time of one cycle
+  uint64_t periodPs = 10000;                                // trace time of one cycle
+  uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
 };
 
 class CycleTrace {
  public:
   static constexpr int kNoSignal = -1;
 
+  // Opens the file; throws std::runtime_error when it cannot be written.
   explicit CycleTrace(TraceOptions options);
 
   // A signal of `width` bits (1 to 64) in the dot-separated module path `scope`; kNoSignal when
-  // the scope filter leaves it out.
-  int declare(const std::string& scope, const std::string& name, int width);
-  // The value `signal` holds from `cycle` on. Within one cycle the last record wins.
+  // the scope filter leaves it out. `valueNames` name the values 0, 1, ... (FST shows them). All
+  // signals are declared before the first flush.
+  int declare(const std::string& scope, const std::string& name, int width,
+              std::vector<std::string> valueNames = {});
+  // The value `signal` holds from `cycle` on. Within one cycle the last record wins. Throws
+  // std::logic_error for a cycle already written.
   void record(int signal, uint64_t cycle, uint64_t value);
 
-  // Writes the VCD file; throws std::runtime_error when it cannot be written.
-  void write() const;
+  // Throws std::invalid_argument, listing the scopes declared, when a scope of the filter matched
+  // none of them (a typo, or core_7 of 4 cores). Called once every signal is declared.
+  void checkScopesMatched() const;
+
+  // Writes every cycle before `cycle`: no record for them can arrive any more.
+  void flush(uint64_t cycle);
+  // Writes the rest, and a GTKWave save file next to the trace (modules/gtkw_save_file.h) with a
+  // marker at `markerCycle`; throws std::runtime_error when a file could not be written.
+  void finish(uint64_t markerCycle);
+
+  // Records held in memory, waiting for their cycle to become final.
+  size_t pendingRecords() const { return changes_.size(); }
 
  private:
   struct Signal {
-    std::string scope, name, code;
-    int width;
+    std::string scope;
+    TraceVariable variable;
     bool hasInitial = false;
     uint64_t initialCycle = 0, initialValue = 0;
   };
@@ -46,11 +69,23 @@ class CycleTrace {
     int signal;
     uint64_t value;
   };
-  bool scopeKept(const std::string& scope) const;
+  bool scopeKept(const std::string& scope);
+  void writeDeclarations();
+  void initialValues();
+  void writeInitialValues();
+  void writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
+                  std::vector<Change>::const_iterator end);
 
   TraceOptions options_;
+  std::unique_ptr<TraceWriter> writer_;
   std::vector<Signal> signals_;
-  std::vector<Change> changes_;
+  std::set<std::string> declaredScopes_;  // kept or not
+  std::vector<bool> scopeMatched_;        // per scope of the filter
+  std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
+  uint64_t written_ = 0;         // every cycle before it is written
+  bool declared_ = false, dumped_ = false;
+  std::vector<bool> known_;
+  std::vector<uint64_t> current_;
 };
 
 }  // namespace rtu

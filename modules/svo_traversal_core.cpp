@@ -14,7 +14,7 @@ SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleCloc
       wake_(clock),
       trace_(trace) {
   if (trace_) {
-    stateSignal_ = trace_->declare(this->name(), "state", 3);
+    stateSignal_ = trace_->declare(this->name(), "state", 3, kCoreStateNames);
     stackSignal_ = trace_->declare(this->name(), "stack_depth", 7);
   }
 }
@@ -73,6 +73,10 @@ void SvoTraversalCore::run() {
       const uint32_t address = core_.memoryAddress();
       const MemoryReply reply = memory->lookup(index_, address, localCycle_);
       if (!reply.known) {
+        // BLOCKED until the shared level answers. Recorded now, as a trace takes no record behind
+        // simulated time and the core resumes only in reply.cycle. (Should the word come in
+        // this very cycle, the next state's record in the same cycle replaces it.)
+        traceState(localCycle_ + 1, kBlockedStateCode);
         sharedAddress_ = address;
         sharedRequested_ = false;
         phase_ = Phase::AwaitingShared;
@@ -90,7 +94,7 @@ void SvoTraversalCore::run() {
 }
 
 void SvoTraversalCore::resumeAfterSharedRead() {
-  consumeWordIn(memory->sharedReplyCycle(index_));
+  waitForWord(memory->sharedReplyCycle(index_));
   stepState();
 }
 
@@ -105,6 +109,10 @@ void SvoTraversalCore::stepState() {
 void SvoTraversalCore::consumeWordIn(uint64_t dataCycle) {
   if (dataCycle == localCycle_) return;
   traceState(localCycle_ + 1, kBlockedStateCode);
+  waitForWord(dataCycle);
+}
+
+void SvoTraversalCore::waitForWord(uint64_t dataCycle) {
   blocked_ += dataCycle - localCycle_;
   localCycle_ = dataCycle;
 }

@@ -14,6 +14,8 @@
 // in the result counts every cycle from INIT to the last before OUT, blocked ones included.
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include <systemc>
 
@@ -27,8 +29,11 @@
 
 namespace rtu {
 
-// VCD encoding of the core state: CoreState's values, and this one for BLOCKED.
+// Trace encoding of the core state: CoreState's values, and this one for BLOCKED.
 constexpr uint64_t kBlockedStateCode = 7;
+// The names of the codes, for the trace's enum table.
+inline const std::vector<std::string> kCoreStateNames{"IDLE", "INIT", "EVAL", "NEXT",
+                                                      "PUSH", "POP",  "OUT",  "BLOCKED"};
 
 struct CoreStatistics {
   uint64_t jobs = 0;
@@ -62,6 +67,7 @@ class SvoTraversalCore : public sc_core::sc_module {
   void resumeAfterSharedRead();
   void stepState();
   void consumeWordIn(uint64_t dataCycle);
+  void waitForWord(uint64_t dataCycle);
   void offerResult();
   void handOver(uint64_t now);
   void traceState(uint64_t cycle, uint64_t code);

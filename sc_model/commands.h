@@ -17,5 +17,6 @@ void addConfigCommand(CLI::App& app);
 void addFpsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
 void addPlotCommands(CLI::App& app);  // plot and report
+void addWaveCommand(CLI::App& app);
 
 }  // namespace rtu

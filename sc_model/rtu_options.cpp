@@ -18,7 +18,8 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
   command.add_option("--stats", outputs.statsPath,
                      "write the statistics with the effective configuration as JSON");
-  CLI::Option* vcd = command.add_option("--vcd", outputs.vcdPath, "write a VCD trace (GTKWave)");
+  CLI::Option* vcd = command.add_option("--trace,--vcd", outputs.vcdPath,
+                                        "write a trace for GTKWave: FST for a .fst path, else VCD");
   const CLI::Range cycles(uint64_t{0}, kMaxCycles, "cycle in 0 .. 1e13");
   command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")
       ->needs(vcd)
@@ -28,7 +29,7 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
       ->needs(vcd)
       ->check(kNotNegative)
       ->check(cycles);
-  command.add_option("--vcd-scope", outputs.vcdScopes,
+  command.add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
                      "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
       ->needs(vcd);
 }

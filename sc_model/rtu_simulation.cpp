@@ -19,13 +19,23 @@ void freshKernel() {
 }
 
 // Simulates until no event is left. With a progress callback it stops every 2^18 cycles to report;
-// stopping and resuming does not change what happens in any cycle.
-void runToCompletion(const HostSink& sink, const sc_core::sc_time& period, const RunProgress& progress) {
-  if (!progress) return sc_core::sc_start();
-  constexpr double kSliceCycles = 262144;
+// with a trace every TraceOptions::flushCycles to write the cycles that are final, which bounds
+// the trace's memory. Stopping and resuming does not change what happens in any cycle.
+void runToCompletion(const HostSink& sink, const CycleClock& clock, CycleTrace* trace,
+                     uint64_t flushCycles, const RunProgress& progress) {
+  if (!progress && !trace) return sc_core::sc_start();
+  constexpr uint64_t kProgressCycles = uint64_t{1} << 18;
+  const uint64_t slice = trace ? flushCycles : kProgressCycles;
+  uint64_t simulated = 0, nextProgress = kProgressCycles;
   do {
-    sc_core::sc_start(period * kSliceCycles);
-    progress(sink.results().size(), sink.expected());
+    sc_core::sc_start(clock.period() * static_cast<double>(slice));
+    simulated += slice;
+    // Modules record no cycle before the current one any more (modules/cycle_trace.h).
+    if (trace) trace->flush(clock.now());
+    if (progress && simulated >= nextProgress) {
+      progress(sink.results().size(), sink.expected());
+      nextProgress = (simulated / kProgressCycles + 1) * kProgressCycles;
+    }
   } while (sc_core::sc_pending_activity());
 }
 
@@ -47,13 +57,17 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
     trace = std::make_unique<CycleTrace>(options);
   }
   auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
+  if (trace) trace->checkScopesMatched();
 
   const auto start = std::chrono::steady_clock::now();
-  runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz).period(), progress);
+  runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz), trace.get(),
+                  config.trace ? config.trace->flushCycles : 0, progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const HostSink& sink = top->sink();
+  // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
+  if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
   if (!sink.complete())
     throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
                              " of " + std::to_string(records.size()) + " results");
@@ -67,7 +81,6 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
-  if (trace) trace->write();
   return run;
 }
 

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   rtu::addFpsCommand(app);
   rtu::addSweepCommand(app);
   rtu::addPlotCommands(app);
+  rtu::addWaveCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -18,6 +18,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -532,6 +533,28 @@ TEST_CASE("VCD scope filter keeps only the scopes asked for", "[rtu]") {
   CHECK_FALSE(two.vcd.has("rtu.job_manager.in.valid"));
 }
 
+TEST_CASE("VCD scope that matches nothing is an error listing the scopes", "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 4;
+  TraceOptions options;
+  options.path = dir.file("typo.vcd");
+  for (const std::string scope : {"rtu.core_7", "rtu.schedular", "rtu.memory"}) {
+    INFO(scope);
+    options.scopes = {"rtu.core_1", scope};  // the ideal memory declares no signal
+    config.trace = options;
+    try {
+      simulateRtu(sphere().memory(), sphere().jobs, config);
+      FAIL("no error");
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      CHECK(message.find("'" + scope + "' matches no module") != std::string::npos);
+      CHECK(message.find("rtu.core_3.in") != std::string::npos);
+      CHECK(message.find("rtu.scheduler.in") != std::string::npos);
+    }
+  }
+}
+
 TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "[rtu]") {
   TempDir dir;
   RtuConfig config;
@@ -598,6 +621,29 @@ TEST_CASE("VCD of cached memory: L1 and L2 counters and BLOCKED states", "[rtu]"
   // Every read waits at least the L1 hit latency: core 0 is BLOCKED at some point.
   const std::vector<int64_t> state = t.levels("rtu.core_0.state");
   CHECK(std::count(state.begin(), state.end(), 7) > 0);
+}
+
+// A slow L1 wakes a core for the shared level several cycles after its read: the BLOCKED state
+// must still reach the trace before those cycles are written. Flushing every cycle (the recorder
+// refuses a record for a cycle already written) gives the file of a rarely flushed trace.
+TEST_CASE("VCD streamed every cycle equals the VCD streamed rarely, with a slow L1", "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 4;
+  config.memory = MemoryConfig{};
+  config.memory.l1.hitLatency = 4;
+  TraceOptions everyCycle;
+  everyCycle.flushCycles = 1;
+  const Traced t = traced(sphere(), config, dir, "every.vcd", everyCycle);
+  checkTrace(t, 4);
+  const std::vector<int64_t> state = t.levels("rtu.core_0.state");
+  CHECK(std::count(state.begin(), state.end(), 7) > 0);
+  const Traced rarely = traced(sphere(), config, dir, "rarely.vcd");
+  const auto text = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  CHECK(text(dir.file("every.vcd")) == text(dir.file("rarely.vcd")));
 }
 
 TEST_CASE("VCD time stamps follow the clock", "[rtu]") {

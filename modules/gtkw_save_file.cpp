@@ -1,0 +1,78 @@
+#include "gtkw_save_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+namespace rtu {
+namespace {
+
+// GTKWave's display flags (gtkwave analyzer.h): right-justified binary, decimal or hexadecimal
+// (its default) values, and the comment lines that open and close a group.
+constexpr const char* kBinary = "@28";
+constexpr const char* kDecimal = "@24";
+constexpr const char* kDefault = "@22";
+constexpr const char* kGroupBegin = "@800200";
+constexpr const char* kGroupEnd = "@1000200";
+
+// The module: the scope's second part (rtu.core_3.in -> core_3).
+std::string moduleOf(const std::string& scope) {
+  const size_t first = scope.find('.');
+  if (first == std::string::npos) return scope;
+  const size_t second = scope.find('.', first + 1);
+  const size_t length = second == std::string::npos ? std::string::npos : second - first - 1;
+  return scope.substr(first + 1, length);
+}
+
+// Pipeline position of a module, then its instance number (core_10 after core_9).
+std::tuple<int, long, std::string> pipelineKey(const std::string& module) {
+  static const std::vector<std::string> order{"job_manager", "scheduler",      "core_",
+                                              "memory",      "result_manager", "reorder_buffer"};
+  for (size_t i = 0; i < order.size(); ++i)
+    if (module.rfind(order[i], 0) == 0) {
+      const std::string suffix = module.substr(order[i].size());
+      const bool numbered = !suffix.empty() && std::all_of(suffix.begin(), suffix.end(), ::isdigit);
+      return {static_cast<int>(i), numbered ? std::stol(suffix) : 0, module};
+    }
+  return {static_cast<int>(order.size()), 0, module};
+}
+
+std::string displayName(const SaveFileSignal& signal) {
+  const std::string name = signal.scope + "." + signal.name;
+  return signal.width == 1 ? name : name + "[" + std::to_string(signal.width - 1) + ":0]";
+}
+
+}  // namespace
+
+std::string saveFilePath(const std::string& tracePath) {
+  return std::filesystem::path(tracePath).replace_extension(".gtkw").string();
+}
+
+void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
+                   uint64_t markerPs) {
+  const std::string path = saveFilePath(tracePath);
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write GTKWave save file " + path);
+  out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
+  out << "*-20.000000 " << markerPs;
+  for (int i = 0; i < 26; ++i) out << " -1";  // no named markers
+  out << "\n[sst_expanded] 1\n";
+
+  std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;
+  for (const SaveFileSignal& signal : signals)
+    byModule[pipelineKey(moduleOf(signal.scope))].push_back(&signal);
+  for (const auto& [key, members] : byModule) {
+    const std::string& module = std::get<2>(key);
+    out << kGroupBegin << "\n-" << module << '\n';
+    for (const SaveFileSignal* signal : members)
+      out << (signal->width == 1 ? kBinary : signal->named ? kDefault : kDecimal) << '\n'
+          << displayName(*signal) << '\n';
+    out << kGroupEnd << "\n-" << module << '\n';
+  }
+  if (!out) throw std::runtime_error("error writing GTKWave save file " + path);
+}
+
+}  // namespace rtu

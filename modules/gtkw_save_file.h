@@ -1,0 +1,25 @@
+#pragma once
+// A GTKWave save file (.gtkw) for a trace: the trace to open, its signals grouped per module in
+// pipeline order (job manager = host in, scheduler, cores, memory, result manager, reorder buffer
+// = host out), full hierarchical names, and a marker.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtu {
+
+struct SaveFileSignal {
+  std::string scope, name;  // scope: dot-separated module path, e.g. rtu.core_3.in
+  int width;
+  bool named;  // values with names (an FST enum table): GTKWave's default format shows them
+};
+
+// The save file's path: the trace's, with ".gtkw" for its extension.
+std::string saveFilePath(const std::string& tracePath);
+
+// Writes saveFilePath(tracePath); throws std::runtime_error when it cannot be written.
+void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
+                   uint64_t markerPs);
+
+}  // namespace rtu

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# FST traces (--trace t.fst, modules/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
+# same values in the same cycles as the VCD of the same run, for ideal and cached memory, and an
+# enum table that names the core states. --vcd stays an alias of --trace. A --trace-scope that
+# matches nothing is an error. Each trace comes with a GTKWave save file.
+# Usage: fst_trace.sh path/to/rtusim
+set -euo pipefail
+rtusim=$1
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+source "$here/shell_test_helpers.sh"
+command -v fst2vcd >/dev/null || fail "fst2vcd not found: install gtkwave (scripts/setup.sh)"
+
+"$rtusim" build --scene sphere --depth 5 --out sphere.svo >/dev/null
+"$rtusim" jobs --width 16 --height 12 --out jobs.bin >/dev/null
+normalise() { python3 "$here/vcd_normalise.py" "$1" 10000; }
+
+for options in "--cores 4" "--cores 3 --memory cached"; do
+  read -r -a run <<<"$options"
+  replay=("$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin "${run[@]}")
+  "${replay[@]}" --trace t.fst >/dev/null
+  "${replay[@]}" --vcd v.vcd >/dev/null
+  ! grep -q 'timescale' t.fst || fail "t.fst is a VCD"
+  fst2vcd t.fst >from_fst.vcd
+  [[ -s v.vcd ]] || fail "--vcd wrote no trace"
+  normalise v.vcd >vcd.txt
+  normalise from_fst.vcd >fst.txt
+  (( $(wc -l <vcd.txt) > 1000 )) || fail "$options: the VCD holds only $(wc -l <vcd.txt) changes"
+  cmp -s vcd.txt fst.txt || { diff vcd.txt fst.txt | head -5; fail "$options: FST and VCD differ"; }
+done
+
+# The save file next to the last trace: this trace, every signal of it, grouped per module in
+# pipeline order, a marker at the first result.
+[[ -f t.gtkw ]] || fail "no save file t.gtkw"
+grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.gtkw || fail "t.gtkw does not open $PWD/t.fst"
+groups=$(grep '^-' t.gtkw | uniq | tr -d '-' | tr '\n' ' ')
+[[ $groups == "job_manager scheduler core_0 core_1 core_2 memory result_manager " ]] ||
+  fail "groups out of pipeline order: $groups"
+grep -v '^[-@*[]' t.gtkw | sed 's/\[[0-9]*:0\]$//' | sort >shown.txt
+awk '{ print $2 }' fst.txt | sort -u >traced.txt
+cmp -s shown.txt traced.txt || fail "t.gtkw does not show exactly the traced signals"
+# Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
+first_result=$(python3 - fst.txt <<'PY'
+import sys
+level, changes = {}, {}
+for line in open(sys.argv[1]):
+    cycle, name, value = line.split()
+    changes.setdefault(int(cycle), []).append((name, value))
+for cycle in sorted(changes):
+    level.update(changes[cycle])
+    host = "rtu.result_manager.out."
+    if level.get(host + "valid") == level.get(host + "ready") == "1":
+        print(cycle)
+        break
+PY
+)
+[[ $(awk '/^\*/ { print $2 }' t.gtkw) == $((first_result * 10000)) ]] ||
+  fail "the marker is not at the first result (cycle $first_result)"
+
+# rtusim wave: GTKWave (here a stand-in that prints its arguments) gets the trace and its save file.
+expect_error "no such trace file: missing.fst" "$rtusim" wave missing.fst
+expect_error "gtkwave not found on PATH" env PATH=/nonexistent "$rtusim" wave t.fst
+mkdir bin && printf '#!/bin/sh\necho "$@"\n' >bin/gtkwave && chmod +x bin/gtkwave
+[[ $(PATH=$PWD/bin:$PATH "$rtusim" wave t.fst) == "t.fst t.gtkw" ]] ||
+  fail "rtusim wave did not open t.gtkw"
+
+fst2vcd --extensions t.fst >extensions.vcd
+grep -q 'IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED 000 001 010 011 100 101 110 111' extensions.vcd ||
+  fail "no enum table of the core states in the FST"
+[[ $(grep -c '^\$attrbegin misc 07 "" 1' extensions.vcd) == 3 ]] ||
+  fail "not every core's state refers to the enum table"
+# --trace-scope (alias --vcd-scope): a scope that matches nothing fails, naming what exists.
+expect_error "'rtu.core_7' matches no module" \
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 4 --trace t.fst \
+  --trace-scope rtu.core_7
+grep -q "rtu.core_3.in" err.txt || fail "the scope error does not list rtu.core_3.in"
+echo "FST traces equal the VCD traces; core states named"
