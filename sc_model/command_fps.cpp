@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "config_options.h"
 #include "exploration_run.h"
+#include "output_paths.h"
 #include "sweep_workers.h"
 
 namespace rtu {
@@ -147,6 +148,7 @@ void addFpsCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   command->callback([options, request] {
     const Configuration base = request->resolve();
+    checkOutputPaths({{"--csv", options->csv}}, inputPaths(base.values()));
     std::vector<Configuration> configurations;
     for (const std::string& text : options->resolutions) {
       const Resolution resolution = parseResolution(text);
