@@ -1,6 +1,8 @@
 #include "exploration_run.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <fstream>
 #include <stdexcept>
 
@@ -23,12 +25,26 @@ std::string sceneKey(const SceneSpec& spec) {
 }  // namespace
 
 void SceneCache::build(const std::vector<Configuration>& configurations) {
+  // A scene too deep for every stack that will run it is refused before it is built (a deep
+  // procedural scene takes minutes and gigabytes); each row still checks its own stack.
+  struct Use {
+    const SceneSpec* spec;
+    int stackFrames;
+    bool allowOverflow;
+  };
+  std::map<std::string, Use> uses;
   for (const Configuration& configuration : configurations) {
-    const SceneSpec& spec = configuration.values().scene;
-    const std::string key = sceneKey(spec);
+    const RunConfig& settings = configuration.values();
+    auto [use, added] = uses.emplace(sceneKey(settings.scene),
+                                     Use{&settings.scene, settings.rtu.stackFrames, settings.allowStackOverflow});
+    use->second.stackFrames = std::max(use->second.stackFrames, settings.rtu.stackFrames);
+    use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
+  }
+  for (const auto& [key, use] : uses) {
     if (scenes_.count(key) || errors_.count(key)) continue;
     try {
-      scenes_.emplace(key, loadScene(spec));
+      checkBuiltSceneFitsStack(*use.spec, use.stackFrames, use.allowOverflow);
+      scenes_.emplace(key, loadScene(*use.spec));
     } catch (const std::exception& error) {
       errors_.emplace(key, error.what());
     }

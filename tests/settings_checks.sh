@@ -40,6 +40,8 @@ expect_error "--out './sphere.svo' is the input --svo 'sphere.svo'" \
 expect_error "folder 'missing' does not exist" \
   "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out r.bin --stats missing/s.json
 [[ ! -e r.bin ]] || fail "replay ran although its --stats could not be written"
+expect_error "needs 12 stack frames; 11 are configured" \
+  "$rtusim" fps --scene sphere --depth 13 --resolutions 8x8 --cores 1
 expect_error "--csv 'missing/f.csv': folder 'missing' does not exist" \
   "$rtusim" fps --svo sphere.svo --resolutions 8x8 --cores 1 --csv missing/f.csv
 expect_error "--depth-image 'd.unknownext': no image format" \
