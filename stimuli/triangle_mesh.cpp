@@ -52,9 +52,11 @@ TriangleMesh decodeMesh(const std::string& bytes, const std::string& path) {
   mesh.vertices.resize(counts[0]);
   mesh.triangles.resize(counts[1]);
   const char* next = bytes.data() + kCountsBytes;
-  std::memcpy(mesh.vertices.data(), next, counts[0] * sizeof(glm::dvec3));
+  // An empty vector's data() may be null, which memcpy must not get even for 0 bytes.
+  if (counts[0] > 0) std::memcpy(mesh.vertices.data(), next, counts[0] * sizeof(glm::dvec3));
   next += counts[0] * sizeof(glm::dvec3);
-  std::memcpy(mesh.triangles.data(), next, counts[1] * sizeof(std::array<uint32_t, 3>));
+  if (counts[1] > 0)
+    std::memcpy(mesh.triangles.data(), next, counts[1] * sizeof(std::array<uint32_t, 3>));
   for (const auto& triangle : mesh.triangles)
     for (uint32_t index : triangle)
       if (index >= counts[0]) throw broken();
