@@ -921,6 +921,13 @@ TEST_CASE("Cache tag arrays that would not fit in memory are refused before the 
                                           Catch::Contains("--l1-size"));
   config.memory.ideal = true;  // no caches are made
   CHECK_NOTHROW(validate(config));
+  // The issue's case fits a 24 GiB machine but passes the 4 GiB cap: 256 MiB L1s of 4-byte lines.
+  config = RtuConfig{};
+  config.memory = MemoryConfig{};
+  config.memory.l1.sizeBytes = 256u << 20;
+  config.memory.l1.lineBytes = 4;
+  config.cores = 4;
+  CHECK_THROWS_WITH(validate(config), Catch::Contains("at most 4 GiB"));
 }
 
 TEST_CASE("An impossible cache is an error even with ideal memory", "[rtu]") {
