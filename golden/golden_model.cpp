@@ -15,6 +15,7 @@ TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& cor
   result.cost = core.cost();
   result.stackOverflow = core.stackOverflow();
   result.tOverflow = core.tOverflow();
+  result.belowResolution = core.belowResolution();
   result.hit = core.hit();
   if (core.hit()) {
     result.tHit = core.tHit();

@@ -38,6 +38,7 @@ FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, co
     p.referenceHits += exact.hit;
     p.overflowRays += fixed.stackOverflow;
     p.tOverflowRays += fixed.tOverflow;
+    p.belowResolutionRays += fixed.belowResolution;
     PrecisionVerdict verdict = PrecisionVerdict::BothMiss;
     if (fixed.hit && !exact.hit) {
       verdict = PrecisionVerdict::FalseHit;
@@ -55,7 +56,7 @@ FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, co
       p.differentVoxels += !sameVoxel;
     }
     p.wrongUnflagged += verdict != PrecisionVerdict::BothMiss && verdict != PrecisionVerdict::Agree &&
-                        !fixed.tOverflow;
+                        !fixed.tOverflow && !fixed.belowResolution;
     p.verdicts.push_back(verdict);
   }
   if (!errors.empty()) {

@@ -30,6 +30,9 @@ struct RayParameters {
 // around the cube centre and computes t0 = (-1 - o) / d and t1 = (1 - o) / d, all in `Real`
 // arithmetic: float for the hardware job, double for the float64 reference.
 // a is the OR of the sign bits (the printed driver's `a = 2**comp` loses all but the last one).
+// The direction is first scaled by a power of two (exact), so tiny or huge components neither
+// underflow nor overflow. Throws std::invalid_argument for a NaN or infinite component or a zero
+// direction.
 template <class Real>
 RayParameters<Real> computeRayParameters(const Ray& ray, Real epsilon);
 

@@ -12,6 +12,8 @@ ResultSummary ResultSummary::of(const std::vector<TraversalResult>& results) {
     summary.hits += result.hit;
     summary.stackOverflows += result.stackOverflow;
     summary.tOverflows += result.tOverflow;
+    summary.belowResolution += result.belowResolution;
+    summary.hitsBehindOrigin += result.hit && result.tHit < 0;
     summary.totalCost += result.cost;
     summary.maxCost = std::max(summary.maxCost, result.cost);
   }
@@ -31,8 +33,17 @@ std::string ResultSummary::describe() const {
              " rays ran out of stack frames and were reported as misses\n";
   if (tOverflows)
     lines += "WARNING     " + std::to_string(tOverflows) +
-             " rays have t-values beyond the fixed-point range: a t sum wrapped, so their results "
-             "are unreliable (flag 2); give the format more integer bits or move the camera closer\n";
+             " rays have t-values beyond the fixed-point range: a t sum wrapped or a t-value "
+             "saturated, so their results are unreliable (flag 2); give the format more integer "
+             "bits or move the camera closer\n";
+  if (belowResolution)
+    lines += "WARNING     " + std::to_string(belowResolution) +
+             " rays reached nodes narrower than a step of the format: their hits are decided by "
+             "truncation and unreliable (flag 4); give the format more fraction bits\n";
+  if (hitsBehindOrigin)
+    lines += "WARNING     " + std::to_string(hitsBehindOrigin) +
+             " hits lie behind the ray origin (t < 0): the camera is inside the volume, and the "
+             "traversal reports the first voxel from where the ray line enters the root cube\n";
   return lines;
 }
 

@@ -14,6 +14,8 @@ struct ResultSummary {
   size_t hits = 0;
   size_t stackOverflows = 0;
   size_t tOverflows = 0;
+  size_t belowResolution = 0;
+  size_t hitsBehindOrigin = 0;  // hits at t < 0: the camera is inside the root cube
   uint64_t totalCost = 0;
   uint32_t maxCost = 0;
 

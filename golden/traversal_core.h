@@ -29,6 +29,10 @@ struct FixedArith {
   bool overflows(Value a, Value b) const {
     return a + b > format.maxRaw() || a + b < format.minRaw();
   }
+  // Whether a converted t-value sits at the end of the range: the conversion saturated it.
+  bool saturated(Value v) const { return v == format.maxRaw() || v == format.minRaw(); }
+  // Whether a node's t-extent on an axis is too small to split into children a step wide.
+  static bool unresolved(Value t0, Value t1) { return t1 - t0 < 2; }
   static Value half(Value v) { return v >> 1; }
   Value one() const { return format.one(); }
 };
@@ -37,6 +41,8 @@ struct Float64Arith {
   using Value = double;
   static Value add(Value a, Value b) { return a + b; }
   static bool overflows(Value, Value) { return false; }
+  static bool saturated(Value) { return false; }
+  static bool unresolved(Value, Value) { return false; }
   static Value half(Value v) { return v * 0.5; }
   static Value one() { return 1.0; }
 };
@@ -107,7 +113,8 @@ class TraversalCore {
     cost_ = 0;
     hit_ = false;
     stackOverflow_ = false;
-    tOverflow_ = false;
+    belowResolution_ = false;
+    tOverflow_ = saturatedAxis(t0, t1);
     frame_ = Frame{root, t0, midpoints(t0, t1), t1, 0};
     // get_ray_valid: registered from the job's t-values, so it is ready by the first EVAL.
     rayValid_ = !(maxComponent(t0).value >= minComponent(t1).value);
@@ -166,10 +173,15 @@ class TraversalCore {
   int normalAxis() const { return normalAxis_; }
   uint32_t cost() const { return cost_; }
   bool stackOverflow() const { return stackOverflow_; }
-  // A midpoint sum exceeded the format's range and wrapped: the job's t-values were too large for
-  // its integer bits (a camera far from the model), and the result is unreliable. (t-values the
-  // conversion saturated are not flagged: mostly harmless, see docs/precision.md.)
+  // The job's t-values were beyond the format's range in a ray that enters the root cube, and the
+  // result is unreliable: a midpoint sum wrapped (a camera far from the model), or the conversion
+  // saturated a t-value, so the midpoints no longer say where the ray is along that axis (a
+  // direction component too small for the range, docs/precision.md "The extremes").
   bool tOverflow() const { return tOverflow_; }
+  // The ray descended into a node whose children are less than a step of the format wide on some
+  // axis (a tree deeper than the fraction bits resolve): whether it meets them is decided by
+  // truncation, and the result is unreliable (docs/precision.md "The extremes").
+  bool belowResolution() const { return belowResolution_; }
   // After a hit: the leaf hit, as its parent descriptor's address and its slot there. It names the
   // voxel uniquely in the image, so two arithmetics can be compared on which voxel they hit.
   uint64_t hitVoxel() const { return uint64_t{frame_.entry} << 3 | static_cast<uint64_t>(frame_.child ^ a_); }
@@ -182,6 +194,11 @@ class TraversalCore {
     Vec3 t0, tm, t1;
     uint8_t child;
   };
+  bool saturatedAxis(const Vec3& t0, const Vec3& t1) const {
+    for (int k = 0; k < 3; ++k)
+      if (arith_.saturated(t0[k]) || arith_.saturated(t1[k])) return true;
+    return false;
+  }
   // The RTL's adders wrap; a sum that does so is noted (tOverflow), as the midpoint is garbage.
   Vec3 midpoints(const Vec3& t0, const Vec3& t1) {
     for (int k = 0; k < 3; ++k) tOverflow_ = tOverflow_ || arith_.overflows(t0[k], t1[k]);
@@ -235,6 +252,8 @@ class TraversalCore {
     const Vec3 t0 = childT0(frame_);
     const Vec3 t1 = childT1(frame_);
     stack_[stackSize_++] = frame_;
+    belowResolution_ = belowResolution_ || Arith::unresolved(t0[0], t1[0]) ||
+                       Arith::unresolved(t0[1], t1[1]) || Arith::unresolved(t0[2], t1[2]);
     frame_ = Frame{childEntry, t0, midpoints(t0, t1), t1, 0};
     state_ = CoreState::Init;
   }
@@ -268,6 +287,7 @@ class TraversalCore {
   int normalAxis_ = 0;
   bool stackOverflow_ = false;
   bool tOverflow_ = false;
+  bool belowResolution_ = false;
 };
 
 // Runs a started core to OUT against an ideal memory (data in the same cycle).

@@ -28,13 +28,14 @@ struct TraversalResult {
   std::array<int64_t, 3> normal{};  // 1.0 on the entry face's axis (mirrored space); 0 on a miss
   uint32_t cost = 0;               // cycles spent in INIT, EVAL, NEXT, PUSH and POP
   bool stackOverflow = false;      // traversal needed more stack frames than configured
-  bool tOverflow = false;          // a t sum wrapped: t-values beyond the format's range
+  bool tOverflow = false;          // t-values beyond the format's range (wrapped or saturated)
+  bool belowResolution = false;    // descended into nodes narrower than the format's step
 
   uint32_t id() const { return idWord & TraversalJob::kMaxId; }
   bool operator==(const TraversalResult& other) const {
     return idWord == other.idWord && hit == other.hit && tHit == other.tHit &&
            normal == other.normal && cost == other.cost && stackOverflow == other.stackOverflow &&
-           tOverflow == other.tOverflow;
+           tOverflow == other.tOverflow && belowResolution == other.belowResolution;
   }
   bool operator!=(const TraversalResult& other) const { return !(*this == other); }
 };

@@ -73,7 +73,7 @@ struct ResultCodec {
 
   static TraversalResult decode(const uint32_t* record, size_t i) {
     if (record[1] > 1) throw recordError(i, "hit word is " + std::to_string(record[1]) + ", not 0 or 1");
-    if (record[7] & ~(kResultFlagStackOverflow | kResultFlagTOverflow))
+    if (record[7] & ~(kResultFlagStackOverflow | kResultFlagTOverflow | kResultFlagBelowResolution))
       throw recordError(i, "unknown flag bits in word 7");
     TraversalResult result;
     result.idWord = record[0];
@@ -85,6 +85,7 @@ struct ResultCodec {
     result.cost = record[6];
     result.stackOverflow = (record[7] & kResultFlagStackOverflow) != 0;
     result.tOverflow = (record[7] & kResultFlagTOverflow) != 0;
+    result.belowResolution = (record[7] & kResultFlagBelowResolution) != 0;
     return result;
   }
 
@@ -95,7 +96,8 @@ struct ResultCodec {
     for (int k = 0; k < 3; ++k) words[3 + k] = toWord32(result.normal[k], "normal");
     words[6] = result.cost;
     words[7] = (result.stackOverflow ? kResultFlagStackOverflow : 0u) |
-               (result.tOverflow ? kResultFlagTOverflow : 0u);
+               (result.tOverflow ? kResultFlagTOverflow : 0u) |
+               (result.belowResolution ? kResultFlagBelowResolution : 0u);
   }
 };
 

@@ -4,8 +4,9 @@
 //   input:  [job_id | a << 28, t0x, t0y, t0z, t1x, t1y, t1z (float32 bits), root address]
 //   output: [job_id | a << 28, hit, t_hit, nx, ny, nz (fixed point), cost, flags]
 // The output's job word is returned as received, as the RTL does. `flags` is 0 on the RTL; rtusim
-// sets bit 0 when the traversal ran out of stack frames, bit 1 when a t sum wrapped (t-values
-// beyond the fixed-point range).
+// sets bit 0 when the traversal ran out of stack frames, bit 1 when t-values were beyond the
+// fixed-point range (a t sum wrapped or the conversion saturated), bit 2 when the ray descended
+// into nodes narrower than a step of the format.
 // The second input kind, for a job manager that moves rays into animated models (ray_transform.h):
 //   rays:   [job_id (bits 31:28 zero), ox, oy, oz, dx, dy, dz (float32 bits, world), model address]
 
@@ -22,6 +23,7 @@ constexpr size_t kRecordWords = 8;
 constexpr size_t kRecordBytes = kRecordWords * 4;
 constexpr uint32_t kResultFlagStackOverflow = 1;
 constexpr uint32_t kResultFlagTOverflow = 2;
+constexpr uint32_t kResultFlagBelowResolution = 4;
 
 // Throws std::runtime_error naming the record and field for impossible contents: bit 31 of the
 // job word set, a NaN t-value, or t0 > t1 on an axis (after mirroring every direction is

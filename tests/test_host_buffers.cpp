@@ -129,18 +129,22 @@ TEST_CASE("A result that does not fit leaves no result buffer behind", "[buffers
   CHECK_FALSE(std::filesystem::exists(path));
 }
 
-TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow", "[buffers]") {
+TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow, bit 2 below resolution", "[buffers]") {
   TraversalResult wrapped;
   wrapped.tOverflow = true;
   TraversalResult both = wrapped;
   both.stackOverflow = true;
-  const std::vector<uint32_t> words = encodeResultRecords({wrapped, both});
+  TraversalResult fine;
+  fine.belowResolution = true;
+  const std::vector<uint32_t> words = encodeResultRecords({wrapped, both, fine});
   CHECK(words[7] == 2u);
   CHECK(words[15] == 3u);
+  CHECK(words[23] == 4u);
   const std::vector<TraversalResult> back = decodeResultRecords(words);
   CHECK(back[0] == wrapped);
   CHECK(back[1] == both);
+  CHECK(back[2] == fine);
   std::vector<uint32_t> unknown = words;
-  unknown[7] = 4u;
+  unknown[7] = 8u;
   CHECK_THROWS_WITH(decodeResultRecords(unknown), Catch::Contains("unknown flag bits"));
 }
