@@ -23,19 +23,21 @@ std::string number(double value) {
 
 void printTable(const std::vector<FormatPrecision>& results, std::ostream& out) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s\n", "format",
+  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n", "format",
                 "false hit", "missed hit", "hit/miss", "voxel", "t mean", "t p99", "t max", "cost",
-                "cost", "t wrap");
+                "cost", "t range", "< step");
   out << line;
-  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s\n", "", "%", "%",
-                "%", "%", "steps", "steps", "steps", "/ray", "change", "%");
+  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n", "", "%", "%",
+                "%", "%", "steps", "steps", "steps", "/ray", "change", "%", "%");
   out << line;
   for (const FormatPrecision& p : results) {
-    std::snprintf(line, sizeof line, "%-16s %10.4f %10.4f %10.4f %10.4f %9.3g %9.3g %11.4g %9.2f %+7.2f%% %9.4f\n",
+    const double rays = static_cast<double>(p.rays ? p.rays : 1);
+    std::snprintf(line, sizeof line, "%-16s %10.4f %10.4f %10.4f %10.4f %9.3g %9.3g %11.4g %9.2f %+7.2f%% %9.4f %9.4f\n",
                   p.format.describe().c_str(), 100 * p.falseHitRate(), 100 * p.missedHitRate(),
                   100 * p.wrongHitMissRate(), 100 * p.differentVoxelRate(), p.tErrorMeanSteps,
                   p.tErrorP99Steps, p.tErrorMaxSteps, p.meanCost, 100 * p.costChange(),
-                  100.0 * static_cast<double>(p.tOverflowRays) / static_cast<double>(p.rays ? p.rays : 1));
+                  100.0 * static_cast<double>(p.tOverflowRays) / rays,
+                  100.0 * static_cast<double>(p.belowResolutionRays) / rays);
     out << line;
   }
 }
@@ -48,7 +50,7 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
                    "false_hit_rate", "missed_hit_rate", "wrong_hit_miss_rate", "different_voxel_rate",
                    "t_error_mean_steps", "t_error_p99_steps", "t_error_max_steps", "mean_cost",
                    "reference_mean_cost", "cost_change", "stack_overflows", "t_overflows",
-                   "wrong_unflagged"});
+                   "wrong_unflagged", "below_resolution"});
   for (const FormatPrecision& p : results)
     file << csvLine({sceneName, std::to_string(frame.camera.width), std::to_string(frame.camera.height),
                      std::to_string(p.format.totalBits), std::to_string(p.format.fractionBits),
@@ -60,7 +62,7 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
                      number(p.tErrorP99Steps), number(p.tErrorMaxSteps), number(p.meanCost),
                      number(p.referenceMeanCost), number(p.costChange()),
                      std::to_string(p.overflowRays), std::to_string(p.tOverflowRays),
-                     std::to_string(p.wrongUnflagged)});
+                     std::to_string(p.wrongUnflagged), std::to_string(p.belowResolutionRays)});
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 

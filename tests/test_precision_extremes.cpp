@@ -372,6 +372,19 @@ TEST_CASE("Three planes tied: the corner is crossed x first, then y, then z", "[
       CHECK(std::abs(o.exact.tHit - t) < 1e-9);
     }
   }
+  // Two planes tied: along (1, 1, 0) at z = -0.5 the ray crosses the x and y centre planes at
+  // 3 sqrt(2), on the edge shared by cells 0, 1, 2 and 3 (z lower): x goes first, so cell 1 is
+  // reported at the edge (conservative) and cell 2 is not.
+  for (int slot : {1, 2}) {
+    INFO("solid cell " << slot);
+    const SvoBuild build = buildSvo(Cells(1, [slot](const glm::dvec3& c) {
+      return (c.x > 0) == (slot & 1) && (c.y > 0) == ((slot & 2) != 0) && c.z < 0;
+    }));
+    const Outcome o = trace(build, Ray{{-3.0, -3.0, -0.5}, {1.0, 1.0, 0.0}});
+    CHECK(o.fixed.hit == (slot == 1));
+    CHECK(o.exact.hit == (slot == 1));
+    if (slot == 1) CHECK(std::abs(o.t() - 3.0 * std::sqrt(2.0)) < 4.0 / 65536);
+  }
 }
 
 TEST_CASE("Translation: the same model and rays near the origin and far away", "[precision][extremes]") {
