@@ -28,8 +28,7 @@ void addGoldenCommand(CLI::App& app) {
     const RunConfig& settings = configuration.values();
     checkOneInputBuffer(settings);
     const GoldenConfig golden = settings.golden();
-    golden.format.validate();
-    checkFitsResultRecords(golden.format);
+    const size_t recordWords = resultRecordWords(golden.format);
     checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     const std::vector<TraversalJob> jobs =
@@ -42,7 +41,7 @@ void addGoldenCommand(CLI::App& app) {
     const std::vector<TraversalResult> results = model.traceAll(jobs);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    writeResultBuffer(options->out, results);
+    writeResultBuffer(options->out, results, recordWords);
     std::cout << ResultSummary::of(results).describe() << "host        " << seconds << " s\n"
               << "wrote " << options->out << "\n";
   });

@@ -32,7 +32,7 @@ void addReplayCommand(CLI::App& app) {
     checkOneInputBuffer(settings);
     const RtuConfig config = options->outputs.traced(settings.rtu);
     validate(config);
-    checkFitsResultRecords(config.jobManager.format);
+    const size_t recordWords = resultRecordWords(config.jobManager.format);
     std::vector<NamedPath> outputs = options->outputs.paths();
     outputs.insert(outputs.begin(), NamedPath{"--out", options->out});
     checkOutputPaths(outputs, inputPaths(settings));
@@ -51,7 +51,7 @@ void addReplayCommand(CLI::App& app) {
     checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
     RunProgressLine progress("replay", "rays");
     const RtuRun run = simulateRtu(image.memory(), records, config, progress.callback());
-    writeResultBuffer(options->out, run.results);
+    writeResultBuffer(options->out, run.results, recordWords);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, configuration, options->outputs, std::cout);
     std::cout << "wrote       " << options->out << "\n";

@@ -1,5 +1,6 @@
 #include "host_buffers.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -26,10 +27,20 @@ uint32_t toWord32(int64_t value, const char* field) {
 
 int64_t signExtend32(uint32_t word) { return static_cast<int32_t>(word); }
 
+// A 64-bit two's complement value as two words, low word first.
+void putWord64(int64_t value, uint32_t* words) {
+  words[0] = static_cast<uint32_t>(static_cast<uint64_t>(value));
+  words[1] = static_cast<uint32_t>(static_cast<uint64_t>(value) >> 32);
+}
+int64_t getWord64(const uint32_t* words) {
+  return static_cast<int64_t>(uint64_t{words[1]} << 32 | words[0]);
+}
+
 // One codec per record kind: decode(words of record i, i) checks and returns the record, encode
 // writes its 8 words. The vector and file functions below share them.
 struct JobCodec {
   using Record = TraversalJob;
+  static constexpr size_t kWords = kRecordWords;
   static constexpr const char* kWhat = "job buffer";
 
   static TraversalJob decode(const uint32_t* record, size_t i) {
@@ -67,26 +78,43 @@ struct JobCodec {
   }
 };
 
+// The fields both result layouts share: checked, then filled in beside t and the normal.
+TraversalResult decodeResult(uint32_t idWord, uint32_t hitWord, int64_t tHit,
+                             const std::array<int64_t, 3>& normal, uint32_t cost, uint32_t flags,
+                             size_t i) {
+  if (hitWord > 1) throw recordError(i, "hit word is " + std::to_string(hitWord) + ", not 0 or 1");
+  if (flags & ~(kResultFlagStackOverflow | kResultFlagTOverflow | kResultFlagBelowResolution))
+    throw recordError(i, "unknown flag bits in the flags word");
+  TraversalResult result;
+  result.idWord = idWord;
+  result.hit = hitWord == 1;
+  result.tHit = tHit;
+  result.normal = normal;
+  if (!result.hit && (normal[0] || normal[1] || normal[2]))
+    throw recordError(i, "a miss with a non-zero normal");
+  result.cost = cost;
+  result.stackOverflow = (flags & kResultFlagStackOverflow) != 0;
+  result.tOverflow = (flags & kResultFlagTOverflow) != 0;
+  result.belowResolution = (flags & kResultFlagBelowResolution) != 0;
+  return result;
+}
+
+uint32_t flagsWord(const TraversalResult& result) {
+  return (result.stackOverflow ? kResultFlagStackOverflow : 0u) |
+         (result.tOverflow ? kResultFlagTOverflow : 0u) |
+         (result.belowResolution ? kResultFlagBelowResolution : 0u);
+}
+
+// Formats of at most 32 bits: t and the normal in one word each.
 struct ResultCodec {
   using Record = TraversalResult;
   static constexpr const char* kWhat = "result buffer";
+  static constexpr size_t kWords = kRecordWords;
 
   static TraversalResult decode(const uint32_t* record, size_t i) {
-    if (record[1] > 1) throw recordError(i, "hit word is " + std::to_string(record[1]) + ", not 0 or 1");
-    if (record[7] & ~(kResultFlagStackOverflow | kResultFlagTOverflow | kResultFlagBelowResolution))
-      throw recordError(i, "unknown flag bits in word 7");
-    TraversalResult result;
-    result.idWord = record[0];
-    result.hit = record[1] == 1;
-    result.tHit = signExtend32(record[2]);
-    for (int k = 0; k < 3; ++k) result.normal[k] = signExtend32(record[3 + k]);
-    if (!result.hit && (result.normal[0] || result.normal[1] || result.normal[2]))
-      throw recordError(i, "a miss with a non-zero normal");
-    result.cost = record[6];
-    result.stackOverflow = (record[7] & kResultFlagStackOverflow) != 0;
-    result.tOverflow = (record[7] & kResultFlagTOverflow) != 0;
-    result.belowResolution = (record[7] & kResultFlagBelowResolution) != 0;
-    return result;
+    return decodeResult(record[0], record[1], signExtend32(record[2]),
+                        {signExtend32(record[3]), signExtend32(record[4]), signExtend32(record[5])},
+                        record[6], record[7], i);
   }
 
   static void encode(const TraversalResult& result, size_t, uint32_t* words) {
@@ -95,14 +123,35 @@ struct ResultCodec {
     words[2] = toWord32(result.tHit, "t_hit");
     for (int k = 0; k < 3; ++k) words[3 + k] = toWord32(result.normal[k], "normal");
     words[6] = result.cost;
-    words[7] = (result.stackOverflow ? kResultFlagStackOverflow : 0u) |
-               (result.tOverflow ? kResultFlagTOverflow : 0u) |
-               (result.belowResolution ? kResultFlagBelowResolution : 0u);
+    words[7] = flagsWord(result);
+  }
+};
+
+// Formats over 32 bits: t and the normal in two words each (docs/user-guide.md).
+struct WideResultCodec {
+  using Record = TraversalResult;
+  static constexpr const char* kWhat = "wide result buffer";
+  static constexpr size_t kWords = kWideResultWords;
+
+  static TraversalResult decode(const uint32_t* record, size_t i) {
+    return decodeResult(record[0], record[1], getWord64(record + 2),
+                        {getWord64(record + 4), getWord64(record + 6), getWord64(record + 8)},
+                        record[10], record[11], i);
+  }
+
+  static void encode(const TraversalResult& result, size_t, uint32_t* words) {
+    words[0] = result.idWord;
+    words[1] = result.hit ? 1u : 0u;
+    putWord64(result.tHit, words + 2);
+    for (int k = 0; k < 3; ++k) putWord64(result.normal[k], words + 4 + 2 * k);
+    words[10] = result.cost;
+    words[11] = flagsWord(result);
   }
 };
 
 struct RayCodec {
   using Record = RayRecord;
+  static constexpr size_t kWords = kRecordWords;
   static constexpr const char* kWhat = "ray buffer";
 
   static RayRecord decode(const uint32_t* word, size_t i) {
@@ -138,20 +187,20 @@ struct RayCodec {
 
 template <class Codec>
 std::vector<typename Codec::Record> decodeAll(const std::vector<uint32_t>& words) {
-  if (words.size() % kRecordWords != 0)
+  if (words.size() % Codec::kWords != 0)
     throw std::runtime_error(std::string(Codec::kWhat) + " holds " + std::to_string(words.size()) +
-                             " words, not a multiple of 8");
+                             " words, not a multiple of " + std::to_string(Codec::kWords));
   std::vector<typename Codec::Record> records;
-  records.reserve(words.size() / kRecordWords);
-  for (size_t i = 0; i < words.size() / kRecordWords; ++i)
-    records.push_back(Codec::decode(&words[i * kRecordWords], i));
+  records.reserve(words.size() / Codec::kWords);
+  for (size_t i = 0; i < words.size() / Codec::kWords; ++i)
+    records.push_back(Codec::decode(&words[i * Codec::kWords], i));
   return records;
 }
 
 template <class Codec>
 std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& records) {
-  std::vector<uint32_t> words(records.size() * kRecordWords);
-  for (size_t i = 0; i < records.size(); ++i) Codec::encode(records[i], i, &words[i * kRecordWords]);
+  std::vector<uint32_t> words(records.size() * Codec::kWords);
+  for (size_t i = 0; i < records.size(); ++i) Codec::encode(records[i], i, &words[i * Codec::kWords]);
   return words;
 }
 
@@ -159,14 +208,14 @@ std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& recor
 template <class Codec>
 std::vector<typename Codec::Record> readAll(const std::string& path) {
   const std::string what = Codec::kWhat;
-  RecordFileReader reader(path, kRecordBytes, what);
+  RecordFileReader reader(path, Codec::kWords * 4, what);
   std::vector<typename Codec::Record> records;
   records.reserve(reader.records());
   size_t count = 0;
   try {
     while (const uint32_t* chunk = reader.next(count))
       for (size_t r = 0; r < count; ++r)
-        records.push_back(Codec::decode(chunk + r * kRecordWords, records.size()));
+        records.push_back(Codec::decode(chunk + r * Codec::kWords, records.size()));
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(what + " '" + path + "': " + error.what());
   }
@@ -179,7 +228,7 @@ void writeAll(const std::string& path, const std::vector<typename Codec::Record>
   WordFileWriter writer(path);
   try {
     for (size_t i = 0; i < records.size(); ++i)
-      Codec::encode(records[i], i, writer.append(kRecordWords));
+      Codec::encode(records[i], i, writer.append(Codec::kWords));
     writer.close();
   } catch (...) {
     std::remove(path.c_str());
@@ -189,11 +238,15 @@ void writeAll(const std::string& path, const std::vector<typename Codec::Record>
 
 }  // namespace
 
-void checkFitsResultRecords(const FixedFormat& format) {
-  if (format.totalBits > 32)
-    throw std::invalid_argument("--total-bits " + std::to_string(format.totalBits) +
-                                ": the host result records (--out) hold formats of at most 32 "
-                                "bits");
+size_t resultRecordWords(const FixedFormat& format) {
+  try {
+    format.validate();
+  } catch (const std::invalid_argument& invalid) {
+    throw std::invalid_argument("format " + std::to_string(format.totalBits) + "." +
+                                std::to_string(format.fractionBits) + ": " + invalid.what() +
+                                "; the host result records hold formats of 8 to 48 bits");
+  }
+  return format.totalBits > 32 ? kWideResultWords : kRecordWords;
 }
 
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
@@ -202,11 +255,15 @@ std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
 std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs) {
   return encodeAll<JobCodec>(jobs);
 }
-std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words) {
-  return decodeAll<ResultCodec>(words);
+std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words,
+                                                size_t recordWords) {
+  return recordWords == kWideResultWords ? decodeAll<WideResultCodec>(words)
+                                         : decodeAll<ResultCodec>(words);
 }
-std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results) {
-  return encodeAll<ResultCodec>(results);
+std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results,
+                                          size_t recordWords) {
+  return recordWords == kWideResultWords ? encodeAll<WideResultCodec>(results)
+                                         : encodeAll<ResultCodec>(results);
 }
 std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words) {
   return decodeAll<RayCodec>(words);
@@ -219,11 +276,16 @@ std::vector<TraversalJob> readJobBuffer(const std::string& path) { return readAl
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
   writeAll<JobCodec>(path, jobs);
 }
-std::vector<TraversalResult> readResultBuffer(const std::string& path) {
-  return readAll<ResultCodec>(path);
+std::vector<TraversalResult> readResultBuffer(const std::string& path, size_t recordWords) {
+  return recordWords == kWideResultWords ? readAll<WideResultCodec>(path)
+                                         : readAll<ResultCodec>(path);
 }
-void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results) {
-  writeAll<ResultCodec>(path, results);
+void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results,
+                       size_t recordWords) {
+  if (recordWords == kWideResultWords)
+    writeAll<WideResultCodec>(path, results);
+  else
+    writeAll<ResultCodec>(path, results);
 }
 std::vector<RayRecord> readRayBuffer(const std::string& path) { return readAll<RayCodec>(path); }
 void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records) {

@@ -3,6 +3,8 @@
 // tools. Every record is 8 little-endian 32-bit words:
 //   input:  [job_id | a << 28, t0x, t0y, t0z, t1x, t1y, t1z (float32 bits), root address]
 //   output: [job_id | a << 28, hit, t_hit, nx, ny, nz (fixed point), cost, flags]
+//   wide output, for formats over 32 bits, 12 words: [job_id | a << 28, hit, t_hit, nx, ny, nz,
+//           cost, flags] with t_hit, nx, ny, nz as 64-bit two's complement, low word first
 // The output's job word is returned as received, as the RTL does. `flags` is 0 on the RTL; rtusim
 // sets bit 0 when the traversal ran out of stack frames, bit 1 when t-values were beyond the
 // fixed-point range (a t sum wrapped or the conversion saturated), bit 2 when the ray descended
@@ -21,6 +23,7 @@ namespace rtu {
 
 constexpr size_t kRecordWords = 8;
 constexpr size_t kRecordBytes = kRecordWords * 4;
+constexpr size_t kWideResultWords = 12;
 constexpr uint32_t kResultFlagStackOverflow = 1;
 constexpr uint32_t kResultFlagTOverflow = 2;
 constexpr uint32_t kResultFlagBelowResolution = 4;
@@ -31,11 +34,14 @@ constexpr uint32_t kResultFlagBelowResolution = 4;
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words);
 std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs);
 
-// Throws std::runtime_error for hit words other than 0/1, unknown flag bits, or a normal that is
-// not zero on a miss.
-std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words);
-// Throws std::invalid_argument when t_hit or the normal do not fit 32 bits (formats over 32 bits).
-std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results);
+// Result records of `recordWords` words: kRecordWords, or kWideResultWords for formats over 32
+// bits (resultRecordWords). Decoding throws std::runtime_error for hit words other than 0/1,
+// unknown flag bits, or a normal that is not zero on a miss.
+std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words,
+                                                size_t recordWords = kRecordWords);
+// Throws std::invalid_argument when t_hit or the normal do not fit 32 bits in 8-word records.
+std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results,
+                                          size_t recordWords = kRecordWords);
 
 // Throws std::runtime_error naming the record for anything RayRecord::validate() rejects.
 std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words);
@@ -44,11 +50,14 @@ std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records);
 
 std::vector<TraversalJob> readJobBuffer(const std::string& path);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
-std::vector<TraversalResult> readResultBuffer(const std::string& path);
-// Before a run: result records carry t and the normal as 32-bit words, so a wider format fails
-// (depending on the data) only when they are written; throws std::invalid_argument.
-void checkFitsResultRecords(const FixedFormat& format);
-void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results);
+std::vector<TraversalResult> readResultBuffer(const std::string& path,
+                                              size_t recordWords = kRecordWords);
+// Before a run: the result record words for `format` (8 up to 32 bits, 12 above), so every t and
+// normal it can produce is representable; throws std::invalid_argument naming the format when it
+// is not a valid one.
+size_t resultRecordWords(const FixedFormat& format);
+void writeResultBuffer(const std::string& path, const std::vector<TraversalResult>& results,
+                       size_t recordWords = kRecordWords);
 std::vector<RayRecord> readRayBuffer(const std::string& path);
 void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records);
 

@@ -73,6 +73,35 @@ done
 "$rtusim" replay --svo moved.svo --rays rays.bin --out replay_rays.bin --scheduler fa >/dev/null
 [[ $(sorted_records replay_rays.bin) == $(sorted_records golden_rays.bin) ]] \
   || fail "replay of ray records differs from golden"
+# Formats over 32 bits end to end (issue 11): 12-word result records, golden and replay agree, and
+# each hit's t is the Q16.16 one to within a few of its steps (t in units of 2^-fraction).
+"$rtusim" golden --svo sphere.svo --jobs jobs.bin --out q16.bin >/dev/null
+for format in 40.24 48.32; do
+  bits=(${format/./ })
+  "$rtusim" golden --svo sphere.svo --jobs jobs.bin --out "g$format.bin" \
+    --total-bits "${bits[0]}" --fraction-bits "${bits[1]}" >/dev/null
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out "r$format.bin" --cores 4 \
+    --total-bits "${bits[0]}" --fraction-bits "${bits[1]}" >/dev/null
+  [[ $(stat -c %s "g$format.bin") -eq $((32 * 24 * 48)) ]] || fail "$format result buffer size"
+  [[ $(od -An -v -tx4 -w48 "r$format.bin" | sort) == $(od -An -v -tx4 -w48 "g$format.bin" | sort) ]] \
+    || fail "replay differs from golden in $format"
+  python3 - "g$format.bin" "${bits[1]}" q16.bin <<'PY' || fail "$format t-values differ from Q16.16"
+import struct, sys
+wide, fraction = open(sys.argv[1], "rb").read(), int(sys.argv[2])
+narrow = open(sys.argv[3], "rb").read()
+hits = 0
+for i in range(len(narrow) // 32):
+    n = struct.unpack_from("<8I", narrow, 32 * i)
+    w = struct.unpack_from("<2I4q2I", wide, 48 * i)
+    assert w[0] == n[0] and w[1] == n[1], i
+    if n[1]:
+        hits += 1
+        t16 = struct.unpack("<i", struct.pack("<I", n[2]))[0] / 2.0**16
+        assert abs(w[2] / 2.0**fraction - t16) < 4 / 2.0**16, (i, w[2], t16)
+        assert sorted(w[3:6]) == [0, 0, 2**fraction], i
+assert hits > 0
+PY
+done
 # render defaults to the SystemC model and reports the frame rate at the clock.
 "$rtusim" render --svo sphere.svo --width 32 --height 24 --clock-mhz 200 >sc_render.txt
 grep -q "at 200.00 MHz" sc_render.txt || fail "render frame rate"

@@ -65,12 +65,36 @@ TEST_CASE("Malformed job buffers are rejected with the record and the reason", "
 }
 
 // --total-bits 48 failed only when a t value happened not to fit while the results were written.
-TEST_CASE("Formats wider than the result records are refused before a run", "[buffers]") {
-  CHECK_NOTHROW(checkFitsResultRecords(FixedFormat{32, 16}));
-  CHECK_NOTHROW(checkFitsResultRecords(FixedFormat{8, 4}));
-  CHECK_THROWS_WITH(checkFitsResultRecords(FixedFormat{48, 46}),
-                    Catch::Contains("--total-bits 48") && Catch::Contains("at most 32 bits"));
-  CHECK_THROWS_AS(checkFitsResultRecords(FixedFormat{33, 16}), std::invalid_argument);
+TEST_CASE("Formats over 32 bits get 12-word result records; invalid ones are refused before a run",
+          "[buffers]") {
+  CHECK(resultRecordWords(FixedFormat{32, 16}) == 8);
+  CHECK(resultRecordWords(FixedFormat{8, 4}) == 8);
+  CHECK(resultRecordWords(FixedFormat{33, 16}) == 12);
+  CHECK(resultRecordWords(FixedFormat{48, 32}) == 12);
+  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{48, 47}),
+                    Catch::Contains("format 48.47") && Catch::Contains("fraction bits"));
+  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{64, 16}), Catch::Contains("format 64.16"));
+}
+
+TEST_CASE("Wide result records hold 48-bit t-values and normals, low word first", "[buffers]") {
+  // Q16.32: t = -1.5 is -1.5 * 2^32 = -0x1'8000'0000, the normal 1.0 is 2^32.
+  TraversalResult hit;
+  hit.idWord = 5;
+  hit.hit = true;
+  hit.tHit = -(int64_t{3} << 31);
+  hit.normal = {0, int64_t{1} << 32, 0};
+  hit.cost = 9;
+  hit.belowResolution = true;
+  const std::vector<uint32_t> words = encodeResultRecords({hit}, kWideResultWords);
+  REQUIRE(words == std::vector<uint32_t>{5, 1, 0x80000000u, 0xFFFFFFFEu, 0, 0, 0, 1, 0, 0, 9, 4});
+  CHECK(decodeResultRecords(words, kWideResultWords)[0] == hit);
+  const std::string path = tempPath("wide_results.bin");
+  writeResultBuffer(path, {hit, hit}, kWideResultWords);
+  CHECK(std::filesystem::file_size(path) == 2 * 48);
+  CHECK(readResultBuffer(path, kWideResultWords)[1] == hit);
+  CHECK_THROWS_WITH(decodeResultRecords(std::vector<uint32_t>(16), kWideResultWords),
+                    Catch::Contains("not a multiple of 12"));
+  std::filesystem::remove(path);
 }
 
 TEST_CASE("Result buffers round-trip and reject impossible records", "[buffers]") {
