@@ -321,7 +321,7 @@ TEST_CASE("A camera inside the volume reports the first voxel from where the lin
   CHECK(in.exact.voxel != out.exact.voxel);
 }
 
-TEST_CASE("Rays in shared faces take the side epsilon tilts them to; the cube's faces alike",
+TEST_CASE("Rays in shared faces and in the root cube's faces take the side epsilon tilts them to",
           "[precision][extremes]") {
   // An exactly zero component becomes +epsilon after mirroring, so a ray in a plane between two
   // voxels runs into the upper one (for t > 0): both models, and geometry of the tilted ray.
