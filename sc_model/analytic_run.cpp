@@ -106,6 +106,7 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
     core.outCycles += run.handoverCycles[j] + 1 - (run.dispatchCycles[j] + 1 + result.cost);
     core.stackOverflows += result.stackOverflow;
     core.tOverflows += result.tOverflow;
+    stats.belowResolution += result.belowResolution;
     stats.totalCost += result.cost;
     stats.maxCost = std::max<uint64_t>(stats.maxCost, result.cost);
     const uint64_t wait = run.dispatchCycles[j] - run.pendingCycles[j];

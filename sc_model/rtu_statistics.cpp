@@ -145,6 +145,7 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
       {"cores", coresJson},
       {"stack_overflows", stackOverflows},
       {"t_overflows", allCores().tOverflows},
+      {"below_resolution", belowResolution},
       {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
       {"scheduler",
        {{"policy", scheduler},
@@ -199,6 +200,8 @@ void RtuStatistics::writeReport(std::ostream& out) const {
   if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
   if (const uint64_t wrapped = allCores().tOverflows)
     out << "t overflows: " << wrapped << " rays (t-values beyond the fixed-point range; flag 2)\n";
+  if (belowResolution > 0)
+    out << "below resolution: " << belowResolution << " rays (nodes narrower than a step; flag 4)\n";
   out << (model == "systemc" ? "simulated in " : "answered by the " + model + " in ") << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
       << " M rays per host second)\n";
 }
@@ -217,6 +220,7 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
     stats.maxCost = std::max<uint64_t>(stats.maxCost, result.result.cost);
     stats.totalBlocked += result.blockedCycles;
     stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, result.blockedCycles);
+    stats.belowResolution += result.result.belowResolution;
   }
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;

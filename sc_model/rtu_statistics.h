@@ -33,6 +33,7 @@ struct RtuStatistics {
   std::vector<CacheStats> l1;
   L2Stats l2;
   uint64_t stackOverflows = 0;
+  uint64_t belowResolution = 0;  // rays flagged for nodes narrower than a step (result flag 4)
   uint64_t totalCost = 0, maxCost = 0;  // traversal states per ray, as the golden model counts
   uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
   double hostInBytesPerCycle = 0.0, hostOutBytesPerCycle = 0.0;  // 0: a record a cycle
