@@ -31,10 +31,14 @@ void addGoldenCommand(CLI::App& app) {
     const size_t recordWords = resultRecordWords(golden.format);
     checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
+    std::vector<SkippedRecord> skipped;
     const std::vector<TraversalJob> jobs =
-        settings.rays.empty() ? readJobBuffer(settings.jobs)
-                              : jobsFromRayRecords(image, readRayBuffer(settings.rays), settings.rays,
-                                                   static_cast<float>(settings.rtu.jobManager.epsilon));
+        settings.rays.empty()
+            ? readJobBufferSkipping(settings.jobs, skipped)
+            : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped), settings.rays,
+                                 static_cast<float>(settings.rtu.jobManager.epsilon));
+    warnSkippedRecords(settings.rays.empty() ? "job buffer" : "ray buffer",
+                       settings.rays.empty() ? settings.jobs : settings.rays, skipped, std::cout);
     checkInputTrees(image, jobs, golden.stackFrames, /*allowOverflow=*/true, settings);
     GoldenModel model(image.memory(), golden);
     const auto start = std::chrono::steady_clock::now();

@@ -39,14 +39,17 @@ void addReplayCommand(CLI::App& app) {
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     std::vector<HostRecord> records;
     std::vector<TraversalJob> jobs;
+    std::vector<SkippedRecord> skipped;
     if (!settings.rays.empty()) {
-      const std::vector<RayRecord> rays = readRayBuffer(settings.rays);
+      const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
       // The job manager's own set-up, run ahead once to check every header and tree up front.
       jobs = jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
       records.assign(rays.begin(), rays.end());
+      warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
     } else {
-      jobs = readJobBuffer(settings.jobs);
+      jobs = readJobBufferSkipping(settings.jobs, skipped);
       records.assign(jobs.begin(), jobs.end());
+      warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
     }
     checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
     RunProgressLine progress("replay", "rays");

@@ -17,6 +17,16 @@ std::vector<TraversalJob> jobsFromRayRecords(const SvoImage& image,
   }
 }
 
+void warnSkippedRecords(const std::string& what, const std::string& path,
+                        const std::vector<SkippedRecord>& skipped, std::ostream& out) {
+  for (size_t i = 0; i < skipped.size() && i < kShownSkipped; ++i)
+    out << "WARNING     " << what << " '" << path << "': " << skipped[i].problem
+        << "; skipped, no result\n";
+  if (skipped.size() > kShownSkipped)
+    out << "WARNING     " << what << " '" << path << "': " << skipped.size() - kShownSkipped
+        << " more records skipped (" << skipped.size() << " in all)\n";
+}
+
 void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs,
                      int stackFrames, bool allowOverflow, const RunConfig& settings) {
   try {

@@ -2,9 +2,11 @@
 // Checks of golden's and replay's inputs whose errors name the file at fault: the ray records'
 // set-up against the image, and the trees the job or ray records start from.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
+#include "host_buffers.h"
 #include "ray_transform.h"
 #include "run_config.h"
 #include "svo_image.h"
@@ -17,6 +19,12 @@ namespace rtu {
 std::vector<TraversalJob> jobsFromRayRecords(const SvoImage& image,
                                              const std::vector<RayRecord>& records,
                                              const std::string& path, float epsilon);
+
+// One warning line per skipped record (at most `kShownSkipped`, then their count), naming the
+// buffer `path` of kind `what` ("job buffer", "ray buffer").
+constexpr size_t kShownSkipped = 5;
+void warnSkippedRecords(const std::string& what, const std::string& path,
+                        const std::vector<SkippedRecord>& skipped, std::ostream& out);
 
 // checkStackDepth (stack_check.h) on the trees the jobs start from; a malformed tree is an
 // error naming the SVO image and the job or ray buffer of `settings` that points into it.

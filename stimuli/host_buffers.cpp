@@ -17,6 +17,16 @@ std::runtime_error recordError(size_t record, const std::string& problem) {
   return std::runtime_error("record " + std::to_string(record) + ": " + problem);
 }
 
+// A record whose values are impossible (NaN, infinite, out of range, t0 > t1): readers that skip
+// records skip these. Other errors (id bits: a file of another kind) stop every reader.
+struct ImpossibleValue : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+ImpossibleValue valueError(size_t record, const std::string& problem) {
+  return ImpossibleValue(recordError(record, problem).what());
+}
+
 uint32_t toWord32(int64_t value, const char* field) {
   if (value < std::numeric_limits<int32_t>::min() || value > std::numeric_limits<int32_t>::max())
     throw std::invalid_argument(std::string(field) +
@@ -56,9 +66,9 @@ struct JobCodec {
       const float t0 = bitsToFloat(job.t0Bits[k]);
       const float t1 = bitsToFloat(job.t1Bits[k]);
       if (std::isnan(t0) || std::isnan(t1))
-        throw recordError(i, std::string("t-value on axis ") + axes[k] + " is NaN");
+        throw valueError(i, std::string("t-value on axis ") + axes[k] + " is NaN");
       if (t0 > t1)
-        throw recordError(i, std::string("t0") + axes[k] + " > t1" + axes[k] +
+        throw valueError(i, std::string("t0") + axes[k] + " > t1" + axes[k] +
                                  ": after mirroring every direction is positive, so t0 <= t1");
     }
     job.root = record[7];
@@ -165,7 +175,8 @@ struct RayCodec {
     try {
       record.validate();
     } catch (const std::runtime_error& error) {
-      throw recordError(i, error.what());
+      if (record.id > TraversalJob::kMaxId) throw recordError(i, error.what());
+      throw valueError(i, error.what());
     }
     return record;
   }
@@ -204,18 +215,35 @@ std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& recor
   return words;
 }
 
+// Decodes record `index` into `records`; with `skipped`, an impossible record is noted there
+// instead of failing.
+template <class Codec>
+void decodeInto(const uint32_t* words, size_t index, std::vector<typename Codec::Record>& records,
+                std::vector<SkippedRecord>* skipped) {
+  if (!skipped) {
+    records.push_back(Codec::decode(words, index));
+    return;
+  }
+  try {
+    records.push_back(Codec::decode(words, index));
+  } catch (const ImpossibleValue& error) {
+    skipped->push_back({index, error.what()});
+  }
+}
+
 // Decoding errors are prefixed with the file.
 template <class Codec>
-std::vector<typename Codec::Record> readAll(const std::string& path) {
+std::vector<typename Codec::Record> readAll(const std::string& path,
+                                            std::vector<SkippedRecord>* skipped = nullptr) {
   const std::string what = Codec::kWhat;
   RecordFileReader reader(path, Codec::kWords * 4, what);
   std::vector<typename Codec::Record> records;
   records.reserve(reader.records());
-  size_t count = 0;
+  size_t count = 0, index = 0;
   try {
     while (const uint32_t* chunk = reader.next(count))
-      for (size_t r = 0; r < count; ++r)
-        records.push_back(Codec::decode(chunk + r * Codec::kWords, records.size()));
+      for (size_t r = 0; r < count; ++r, ++index)
+        decodeInto<Codec>(chunk + r * Codec::kWords, index, records, skipped);
   } catch (const std::runtime_error& error) {
     throw std::runtime_error(what + " '" + path + "': " + error.what());
   }
@@ -273,6 +301,10 @@ std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records) {
 }
 
 std::vector<TraversalJob> readJobBuffer(const std::string& path) { return readAll<JobCodec>(path); }
+std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
+                                                std::vector<SkippedRecord>& skipped) {
+  return readAll<JobCodec>(path, &skipped);
+}
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
   writeAll<JobCodec>(path, jobs);
 }
@@ -288,6 +320,10 @@ void writeResultBuffer(const std::string& path, const std::vector<TraversalResul
     writeAll<ResultCodec>(path, results);
 }
 std::vector<RayRecord> readRayBuffer(const std::string& path) { return readAll<RayCodec>(path); }
+std::vector<RayRecord> readRayBufferSkipping(const std::string& path,
+                                             std::vector<SkippedRecord>& skipped) {
+  return readAll<RayCodec>(path, &skipped);
+}
 void writeRayBuffer(const std::string& path, const std::vector<RayRecord>& records) {
   writeAll<RayCodec>(path, records);
 }

@@ -48,7 +48,21 @@ std::vector<RayRecord> decodeRayRecords(const std::vector<uint32_t>& words);
 // Throws std::invalid_argument naming the record for the same.
 std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records);
 
+// A record left out of a buffer: its number and what is impossible about it.
+struct SkippedRecord {
+  size_t record = 0;
+  std::string problem;  // "record 3: t-value on axis y is NaN"
+};
+
 std::vector<TraversalJob> readJobBuffer(const std::string& path);
+// As readJobBuffer and readRayBuffer, but a record with impossible values (NaN or infinite fields,
+// components beyond 2^64, a zero direction, t0 > t1) is left out and noted in `skipped`, so the
+// rest can still be traced. Id bits (a file of another kind) and a file that is not whole records
+// still throw.
+std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
+                                                std::vector<SkippedRecord>& skipped);
+std::vector<RayRecord> readRayBufferSkipping(const std::string& path,
+                                             std::vector<SkippedRecord>& skipped);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
 std::vector<TraversalResult> readResultBuffer(const std::string& path,
                                               size_t recordWords = kRecordWords);

@@ -64,6 +64,30 @@ TEST_CASE("Malformed job buffers are rejected with the record and the reason", "
   REQUIRE_THROWS_WITH(readJobBuffer(tempPath("does_not_exist")), Catch::Contains("cannot open"));
 }
 
+TEST_CASE("Impossible records are skipped and named, and the rest of the buffer is read", "[buffers]") {
+  std::vector<uint32_t> words = jobWords();  // 12 jobs
+  words[8 * 4 + 2] = 0x7FC00000u;            // NaN t0y in record 4
+  std::swap(words[8 * 9 + 1], words[8 * 9 + 4]);  // t0x <-> t1x in record 9
+  const std::string path = tempPath("jobs_with_nan.bin");
+  writeWordFile(path, words);
+  std::vector<SkippedRecord> skipped;
+  const std::vector<TraversalJob> jobs = readJobBufferSkipping(path, skipped);
+  REQUIRE(skipped.size() == 2);
+  CHECK(skipped[0].record == 4);
+  CHECK_THAT(skipped[0].problem, Catch::Contains("record 4") && Catch::Contains("NaN"));
+  CHECK(skipped[1].record == 9);
+  REQUIRE(jobs.size() == 10);
+  CHECK(jobs[4].id == 5);  // ids are x + y * width: record 5 follows record 3
+  CHECK(jobs[8].id == 10);
+  CHECK_THROWS_WITH(readJobBuffer(path), Catch::Contains("record 4"));
+  words[8 * 2] |= 1u << 31;  // id bits: a file of another kind stops the reader all the same
+  writeWordFile(path, words);
+  CHECK_THROWS_WITH(readJobBufferSkipping(path, skipped), Catch::Contains("record 2: bit 31"));
+  std::ofstream(path, std::ios::binary) << std::string(40, '\0');
+  CHECK_THROWS_WITH(readJobBufferSkipping(path, skipped), Catch::Contains("40 bytes"));
+  std::filesystem::remove(path);
+}
+
 // --total-bits 48 failed only when a t value happened not to fit while the results were written.
 TEST_CASE("Formats over 32 bits get 12-word result records; invalid ones are refused before a run",
           "[buffers]") {
