@@ -52,6 +52,17 @@ void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
   way = {true, line, fillCycle, ++clock_};
 }
 
+bool CacheArray::touch(uint64_t byteAddress) {
+  const uint64_t line = lineOf(byteAddress);
+  const size_t i = find(line);
+  if (i != kAbsent) {
+    if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
+    return true;
+  }
+  ways_[victim(firstWayOf(line))] = {true, line, 0, ++clock_};
+  return false;
+}
+
 bool CacheArray::contains(uint64_t byteAddress) const {
   return find(lineOf(byteAddress)) != kAbsent;
 }

@@ -44,6 +44,9 @@ class CacheArray {
   CacheLookup access(uint64_t byteAddress, uint64_t cycle);
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
   void allocate(uint64_t byteAddress, uint64_t fillCycle);
+  // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
+  // and most recently used, its data there from cycle 0; returns whether it already was.
+  bool touch(uint64_t byteAddress);
   // Whether the line is resident, without counting or touching the replacement state.
   bool contains(uint64_t byteAddress) const;
 

@@ -50,6 +50,8 @@ class L1CacheTiming {
 
   const CacheStats& stats() const { return array_.stats(); }
   const CacheArray& array() const { return array_; }
+  // Starts from these lines (functional warming); `lines` has this cache's configuration.
+  void startFrom(const CacheArray& lines) { array_ = lines; }
 
   static uint64_t byteAddress(uint32_t wordAddress) { return uint64_t{wordAddress} * 4; }
 

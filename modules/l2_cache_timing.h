@@ -46,6 +46,8 @@ class L2CacheTiming {
 
   L2Stats stats() const;
   const CacheArray& array() const { return array_; }
+  // Starts from these lines (functional warming); `lines` has this cache's configuration.
+  void startFrom(const CacheArray& lines) { array_ = lines; }
 
  private:
   uint64_t acceptRequest(uint64_t requestCycle);

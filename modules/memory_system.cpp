@@ -6,7 +6,8 @@
 namespace rtu {
 
 MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock,
-                           SvoMemory backing, MemoryConfig config, int cores, CycleTrace* trace)
+                           SvoMemory backing, MemoryConfig config, int cores, CycleTrace* trace,
+                           const CacheContents* start)
     : sc_core::sc_module(name),
       clock_(clock),
       backing_(backing),
@@ -17,9 +18,11 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
   if (config_.ideal) return;
   validate(config_);
   l2_ = std::make_unique<L2CacheTiming>(config_.l2, config_.dram);
+  if (start && !start->l2.empty()) l2_->startFrom(start->l2.front());
   for (size_t i = 0; i < cores_.size(); ++i) {
     CorePort& port = cores_[i];
     port.l1 = std::make_unique<L1CacheTiming>(config_.l1);
+    if (start && i < start->l1.size()) port.l1->startFrom(start->l1[i]);
     if (trace_) {
       const std::string scope = std::string(this->name()) + ".l1_" + std::to_string(i);
       port.hitSignal = trace_->declare(scope, "hits", 32);

@@ -14,6 +14,7 @@
 
 #include <systemc>
 
+#include "cache_contents.h"
 #include "core_memory_if.h"
 #include "cycle_clock.h"
 #include "cycle_trace.h"
@@ -26,8 +27,10 @@ namespace rtu {
 
 class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
  public:
+  // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, SvoMemory backing,
-               MemoryConfig config, int cores, CycleTrace* trace);
+               MemoryConfig config, int cores, CycleTrace* trace,
+               const CacheContents* start = nullptr);
 
   const SvoMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }

@@ -8,7 +8,7 @@
 namespace rtu {
 namespace {
 
-constexpr unsigned kAllUses = kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseBuffers;
+constexpr unsigned kAllUses = kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseBuffers | kUseSampling;
 
 void listSettings(std::ostream& out) {
   const RunConfig defaults;

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "commands.h"
@@ -98,13 +99,16 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
 
 // The models that answered the rows, for the heading.
 std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
-  bool recurrence = false, simulation = false;
-  for (const nlohmann::ordered_json& row : rows) {
-    if (row["status"] != "ok") continue;
-    (row["statistics"]["simulation"]["model"] == "recurrence" ? recurrence : simulation) = true;
-  }
-  if (recurrence && simulation) return "answered by the recurrence where exact, else simulated";
-  return recurrence ? "answered by the exact recurrence (--simulate: SystemC)" : "simulated (SystemC)";
+  std::set<std::string> models;
+  for (const nlohmann::ordered_json& row : rows)
+    if (row["status"] == "ok") models.insert(row["statistics"]["simulation"]["model"].get<std::string>());
+  std::vector<std::string> parts;
+  if (models.count("recurrence")) parts.push_back("the exact recurrence where it applies (--simulate: SystemC)");
+  if (models.count("systemc")) parts.push_back("SystemC simulation");
+  if (models.count("sampled")) parts.push_back("sampled SystemC simulation (estimates, 95 % intervals in the CSV)");
+  std::string text = "answered by ";
+  for (size_t i = 0; i < parts.size(); ++i) text += (i > 0 ? ", " : "") + parts[i];
+  return parts.empty() ? "no row answered" : text;
 }
 
 // The error of the first failed row: with a malformed scene file every row fails alike, and the
@@ -130,7 +134,7 @@ void addFpsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fps", "frame rate per resolution and core count on the cycle-accurate model: a table in "
              "the form of thesis Tables 8.4 and 8.5");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera,
+  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling,
                                   {"--cores", "--width", "--height"});
   command->add_option("--resolutions", options->resolutions, "WIDTHxHEIGHT list")
       ->delimiter(',')

@@ -205,6 +205,10 @@ std::string ignoredWithoutBuiltTree(const RunConfig& c) {
   return "";
 }
 
+std::string ignoredWithoutSampling(const RunConfig& c) {
+  return c.sample.enabled() ? "" : "sample.fraction is 0 (every ray simulated)";
+}
+
 // The six settings of one cache level; `level` selects its configuration.
 void addCache(std::vector<Setting>& schema, const std::string& level,
               CacheConfig& (*cache)(RunConfig&)) {
@@ -237,7 +241,7 @@ void addCache(std::vector<Setting>& schema, const std::string& level,
 std::vector<Setting> makeSchema() {
   using C = RunConfig;
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
-                     camera = kUseCamera, buffers = kUseBuffers;
+                     camera = kUseCamera, buffers = kUseBuffers, sampling = kUseSampling;
   std::vector<Setting> s;
   s.push_back(integer("cores", "--cores", "", 1, kMaxCores, model, "number of traversal cores",
                       [](C& c) -> int& { return c.rtu.cores; }));
@@ -343,6 +347,23 @@ std::vector<Setting> makeSchema() {
   s.push_back(real("camera.epsilon", "--epsilon", "", 1e-30, 1, camera,
                    "replaces exact zero direction components (thesis driver: 0.0001)",
                    [](C& c) -> double& { return c.epsilon; }));
+  // Sampled simulation (sampled_run.h).
+  s.push_back(realOrZero("sample.fraction", "--sample", "", 1e-6, 1, sampling,
+                         "simulate this fraction of the frame's rays as a stratified sample of "
+                         "blocks and estimate the rest (0: every ray)",
+                         [](C& c) -> double& { return c.sample.fraction; }));
+  s.push_back(integer("sample.seed", "--sample-seed", "", 0, 9007199254740992.0, sampling,
+                      "seed of the sampled blocks' places",
+                      [](C& c) -> uint64_t& { return c.sample.seed; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
+  s.push_back(integer("sample.block", "--sample-block", "rays", 0, 1 << 24, sampling,
+                      "rays counted per sampled block (0: chosen from the fraction)",
+                      [](C& c) -> uint64_t& { return c.sample.blockRays; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
+  s.push_back(integer("sample.warmup", "--sample-warmup", "rays", 0, 1 << 24, sampling,
+                      "rays simulated before each block and not counted (0: a block's worth)",
+                      [](C& c) -> uint64_t& { return c.sample.warmupRays; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
   return s;
 }
 

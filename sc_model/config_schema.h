@@ -21,6 +21,7 @@ enum SettingUse : unsigned {
   kUseScene = 1u << 2,       // procedural scene or scene file
   kUseCamera = 1u << 3,      // camera and frame size
   kUseBuffers = 1u << 4,     // job or ray buffers and the .svo they run on
+  kUseSampling = 1u << 5,    // sampled simulation of fps and sweep rows
 };
 
 struct Setting {

@@ -9,6 +9,7 @@
 #include "analytic_run.h"
 #include "rtu_options.h"
 #include "rtu_simulation.h"
+#include "sampled_run.h"
 #include "stack_check.h"
 #include "sweep_workers.h"
 
@@ -101,6 +102,13 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
   checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
   const bool recurrence = model == RowModel::RecurrenceWhereExact && !whyNotAnalytic(settings.rtu);
+  if (!recurrence && settings.sample.enabled()) {
+    nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+    row.update(runJson(RtuStatistics{}, configuration));
+    row["statistics"] = sampledStatisticsJson(
+        runSampled(scene.image.memory(), jobs, settings.rtu, settings.sample));
+    return row;
+  }
   const RtuRun run = recurrence ? runAnalytic(scene.image.memory(), jobs, settings.rtu)
                                 : simulateRtu(scene.image.memory(), jobs, settings.rtu);
   nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
@@ -177,7 +185,10 @@ const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() 
       {"dram_bytes", Json::json_pointer("/memory/dram/bytes")},
       {"dram_bytes_per_cycle", Json::json_pointer("/memory/dram/bytes_per_cycle")},
       {"host_seconds", Json::json_pointer("/simulation/host_seconds")},
-      {"model", Json::json_pointer("/simulation/model")}};
+      {"model", Json::json_pointer("/simulation/model")},
+      {"total_cycles_ci_low", Json::json_pointer("/sample/total_cycles_ci95/0")},
+      {"total_cycles_ci_high", Json::json_pointer("/sample/total_cycles_ci95/1")},
+      {"simulated_fraction", Json::json_pointer("/sample/fraction_simulated")}};
   return columns;
 }
 

@@ -34,7 +34,8 @@ class SceneCache {
 
 // Which model answers a row: always the SystemC simulation, or the recurrence of
 // golden/rtu_recurrence.h where it is exact for the configuration (the same cycles and statistics,
-// tests/test_rtu_recurrence.cpp) and the SystemC simulation elsewhere.
+// tests/test_rtu_recurrence.cpp) and the SystemC simulation elsewhere. A simulated row with
+// sample.fraction > 0 simulates a sample of the frame (sampled_run.h) and estimates the rest.
 enum class RowModel { Simulation, RecurrenceWhereExact };
 
 // The run JSON with "status": "ok"; throws for an impossible configuration or a stalled run.
@@ -59,7 +60,8 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
                RowModel model = RowModel::Simulation);
 
 // The statistics columns of the CSV outputs: rays,total_cycles,cycles_per_ray,frame_ms,fps,limit
-// first, then hit rates, core time shares, scheduler waits and DRAM traffic.
+// first, then hit rates, core time shares, scheduler waits, DRAM traffic, the model, and for
+// sampled rows the 95 % interval of total_cycles and the fraction of rays simulated.
 const std::vector<std::string>& statisticsColumns();
 // A row's values for those columns (empty strings for a failed row).
 std::vector<std::string> statisticsValues(const nlohmann::ordered_json& row);

@@ -20,23 +20,98 @@ void freshKernel() {
 
 // Simulates until no event is left. With a progress callback it stops every 2^18 cycles to report;
 // with a trace every TraceOptions::flushCycles to write the cycles that are final, which bounds
-// the trace's memory. Stopping and resuming does not change what happens in any cycle.
-void runToCompletion(const HostSink& sink, const CycleClock& clock, CycleTrace* trace,
-                     uint64_t flushCycles, const RunProgress& progress) {
-  if (!progress && !trace) return sc_core::sc_start();
-  constexpr uint64_t kProgressCycles = uint64_t{1} << 18;
-  const uint64_t slice = trace ? flushCycles : kProgressCycles;
-  uint64_t simulated = 0, nextProgress = kProgressCycles;
-  do {
-    sc_core::sc_start(clock.period() * static_cast<double>(slice));
-    simulated += slice;
-    // Modules record no cycle before the current one any more (modules/cycle_trace.h).
-    if (trace) trace->flush(clock.now());
-    if (progress && simulated >= nextProgress) {
-      progress(sink.results().size(), sink.expected());
-      nextProgress = (simulated / kProgressCycles + 1) * kProgressCycles;
+// the trace's memory; with snapshots every BlockRun::everyCycles until the last is taken.
+// Stopping and resuming does not change what happens in any cycle.
+class RunLoop {
+ public:
+  RunLoop(const RtuTop& top, const RtuConfig& config, CycleTrace* trace, const RunProgress& progress,
+          const BlockRun& plan, std::vector<RunSnapshot>& snapshots)
+      : top_(top), config_(config), clock_(CycleClock::atMegahertz(config.clockMhz)), trace_(trace),
+        progress_(progress), plan_(plan), snapshots_(snapshots) {}
+
+  // False when the run stopped at its last snapshot.
+  bool run() {
+    if (!progress_ && !trace_ && plan_.afterResults.empty()) {
+      sc_core::sc_start();
+      return true;
     }
-  } while (sc_core::sc_pending_activity());
+    uint64_t nextProgress = kProgressCycles;
+    do {
+      sc_core::sc_start(clock_.period() * static_cast<double>(slice()));
+      const uint64_t now = clock_.now();
+      // Modules record no cycle before the current one any more (modules/cycle_trace.h).
+      if (trace_) trace_->flush(now);
+      if (progress_ && now >= nextProgress) {
+        progress_(top_.sink().results().size(), top_.sink().expected());
+        nextProgress = (now / kProgressCycles + 1) * kProgressCycles;
+      }
+      if (takeSnapshots(now) && plan_.stopAtLast) return false;
+    } while (sc_core::sc_pending_activity());
+    return true;
+  }
+
+ private:
+  static constexpr uint64_t kProgressCycles = uint64_t{1} << 18;
+
+  uint64_t slice() const {
+    if (snapshots_.size() < plan_.afterResults.size()) return std::max<uint64_t>(1, plan_.everyCycles);
+    return trace_ ? config_.trace->flushCycles : kProgressCycles;
+  }
+
+  // True once the last snapshot is taken.
+  bool takeSnapshots(uint64_t now) {
+    const uint64_t results = top_.sink().results().size();
+    while (snapshots_.size() < plan_.afterResults.size() &&
+           results >= plan_.afterResults[snapshots_.size()])
+      snapshots_.push_back({now, results, collectStatistics(top_, config_, now)});
+    return !plan_.afterResults.empty() && snapshots_.size() == plan_.afterResults.size();
+  }
+
+  const RtuTop& top_;
+  const RtuConfig& config_;
+  CycleClock clock_;
+  CycleTrace* trace_;
+  const RunProgress& progress_;
+  const BlockRun& plan_;
+  std::vector<RunSnapshot>& snapshots_;
+};
+
+RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                const RtuConfig& config, const RunProgress& progress, const BlockRun& plan) {
+  validate(config);
+  freshKernel();
+  std::unique_ptr<CycleTrace> trace;
+  if (config.trace) {
+    TraceOptions options = *config.trace;
+    options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
+    trace = std::make_unique<CycleTrace>(options);
+  }
+  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), plan.startCaches);
+  if (trace) trace->checkScopesMatched();
+
+  RtuRun run;
+  const auto start = std::chrono::steady_clock::now();
+  const bool finished = RunLoop(*top, config, trace.get(), progress, plan, run.snapshots).run();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!finished) return run;
+
+  const HostSink& sink = top->sink();
+  // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
+  if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
+  if (!sink.complete())
+    throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
+                             " of " + std::to_string(records.size()) + " results");
+  run.arrivalCycles = sink.arrivalCycles();
+  run.totalCycles = run.arrivalCycles.empty() ? 0 : run.arrivalCycles.back() + 1;
+  for (const CoreResult& result : sink.results()) {
+    run.results.push_back(result.result);
+    run.jobIndices.push_back(result.sequence);
+    run.blockedCycles.push_back(result.blockedCycles);
+  }
+  run.statistics = collectStatistics(*top, config, run.totalCycles);
+  run.statistics.hostSeconds = seconds;
+  return run;
 }
 
 }  // namespace
@@ -48,40 +123,12 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const RunProgress& progress) {
-  validate(config);
-  freshKernel();
-  std::unique_ptr<CycleTrace> trace;
-  if (config.trace) {
-    TraceOptions options = *config.trace;
-    options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
-    trace = std::make_unique<CycleTrace>(options);
-  }
-  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
-  if (trace) trace->checkScopesMatched();
+  return simulate(memory, records, config, progress, BlockRun{});
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz), trace.get(),
-                  config.trace ? config.trace->flushCycles : 0, progress);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const HostSink& sink = top->sink();
-  // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
-  if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
-  if (!sink.complete())
-    throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
-                             " of " + std::to_string(records.size()) + " results");
-  RtuRun run;
-  run.arrivalCycles = sink.arrivalCycles();
-  run.totalCycles = run.arrivalCycles.empty() ? 0 : run.arrivalCycles.back() + 1;
-  for (const CoreResult& result : sink.results()) {
-    run.results.push_back(result.result);
-    run.jobIndices.push_back(result.sequence);
-    run.blockedCycles.push_back(result.blockedCycles);
-  }
-  run.statistics = collectStatistics(*top, config, run.totalCycles);
-  run.statistics.hostSeconds = seconds;
-  return run;
+RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                   const RtuConfig& config, const BlockRun& block) {
+  return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, block);
 }
 
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run) {

@@ -8,12 +8,31 @@
 #include <vector>
 
 #include "rtu_config.h"
+#include "cache_contents.h"
 #include "rtu_payloads.h"
 #include "rtu_statistics.h"
 #include "svo_memory.h"
 #include "traversal_job.h"
 
 namespace rtu {
+
+// The statistics of a run under way: at `cycle`, when `results` results had arrived.
+struct RunSnapshot {
+  uint64_t cycle = 0;
+  uint64_t results = 0;
+  RtuStatistics statistics;  // as collected at the end, with `cycle` as the total
+};
+
+// How sampled simulation (sampled_run.h) runs a block: from caches warmed functionally, with
+// snapshots of the statistics on the way: one at the first multiple of `everyCycles` by which at
+// least each count of results has arrived (counts ascending). With `stopAtLast` the run ends at
+// the last snapshot and returns no results.
+struct BlockRun {
+  std::vector<uint64_t> afterResults;
+  uint64_t everyCycles = 32;
+  bool stopAtLast = false;
+  const CacheContents* startCaches = nullptr;  // lines resident from cycle 0; null: empty caches
+};
 
 struct RtuRun {
   std::vector<TraversalResult> results;  // in the order the host received them
@@ -23,6 +42,7 @@ struct RtuRun {
   // From the first cycle after reset up to and including the cycle the last result is taken.
   uint64_t totalCycles = 0;
   RtuStatistics statistics;
+  std::vector<RunSnapshot> snapshots;
 };
 
 // Told now and then how many results the host has received of how many.
@@ -34,6 +54,9 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
                    const RtuConfig& config, const RunProgress& progress = {});
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
+// A sampled block's run.
+RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                   const RtuConfig& config, const BlockRun& block);
 
 // Results ordered by job index, as the golden model returns them.
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run);

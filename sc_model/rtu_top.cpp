@@ -15,7 +15,7 @@ void traceChannel(ReadyValid<Payload>& channel, CycleTrace* trace, const std::st
 }  // namespace
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-               std::vector<HostRecord> records, CycleTrace* trace)
+               std::vector<HostRecord> records, CycleTrace* trace, const CacheContents* caches)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {
   validate(config);
   const std::string top = this->name();
@@ -38,7 +38,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   scheduler_ = std::make_unique<Scheduler>("scheduler", clock_, config.scheduler);
   scheduler_->in(*pendingJobs_);
   memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
-                                           trace);
+                                           trace, caches);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_);
 
   for (size_t i = 0; i < coreCount; ++i) {

@@ -26,8 +26,9 @@ namespace rtu {
 class RtuTop : public sc_core::sc_module {
  public:
   // `memory` and the trace must outlive the top; `trace` may be null.
+  // `caches`: lines resident from cycle 0 (sampled simulation), or null.
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-         std::vector<HostRecord> records, CycleTrace* trace);
+         std::vector<HostRecord> records, CycleTrace* trace, const CacheContents* caches = nullptr);
 
   const HostSink& sink() const { return *sink_; }
   const JobManager& jobManager() const { return *jobManager_; }

@@ -7,6 +7,7 @@
 
 #include "camera.h"
 #include "rtu_config.h"
+#include "sampled_run.h"
 #include "scene_loader.h"
 
 namespace rtu {
@@ -18,6 +19,7 @@ struct RunConfig {
   double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
   std::string jobs, rays;                     // host input buffers of `replay` and `golden`
   bool allowStackOverflow = false;
+  SampleSpec sample;  // fps and sweep rows
 
   GoldenConfig golden() const { return rtu.golden(); }
 };
