@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <stdexcept>
@@ -28,9 +29,15 @@ uint64_t autoBlockRays(double budget, uint64_t warmup, uint64_t cooldown) {
                               kMaxBlockRays);
 }
 
+std::string shortText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 [[noreturn]] void tooFew(uint64_t rays, const SampleSpec& spec, uint64_t block, uint64_t warmup) {
   throw std::invalid_argument(
-      "sample.fraction " + std::to_string(spec.fraction) + " of " + std::to_string(rays) +
+      "sample.fraction " + shortText(spec.fraction) + " of " + std::to_string(rays) +
       " rays is too small for two strata of two blocks of " + std::to_string(block) +
       " rays after a warm-up of " + std::to_string(warmup) + ": raise sample.fraction or lower "
       "sample.block / sample.warmup, or simulate every ray");
@@ -88,61 +95,66 @@ CacheStats l1Total(const RtuStatistics& s) {
   return total;
 }
 
-// A quantity of each block: its total over the frame estimated from the sample.
+// A per-ray quantity of the sampled blocks, per stratum; head and tail as their counted total.
 struct Quantity {
-  double fixed = 0;                   // head and tail, counted exactly
+  double fixed = 0;
   std::vector<std::vector<double>> strata;  // per stratum, per block
 };
 
-struct StratifiedSums {
-  double total = 0;
-  double variance = 0;
-  double blockVariance = 0;  // of a block's value about its stratum mean, pooled
-};
+double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0 : sum / static_cast<double>(values.size());
+}
 
-// The auxiliary variable of the regression estimator: the golden model's mean cost per ray, known
-// for every ray of the frame, of each sampled block and of each stratum as a whole.
-struct Auxiliary {
-  std::vector<std::vector<double>> blocks;  // per stratum, per block
-  std::vector<double> strata;
+// What the blocks measured, the golden model's mean cost per ray of each block and of each
+// stratum as a whole (known for every ray), and the rays of each stratum.
+struct Sample {
+  Quantity cycles, l1Hits, l1Accesses, l2Hits, l2Accesses;
+  std::vector<std::vector<double>> blockCost;
+  std::vector<double> stratumCost, rays;
 
-  // Sum over blocks of the squared cost deviations from their stratum means.
-  double costSquares() const {
-    double sxx = 0;
-    for (size_t h = 0; h < strata.size(); ++h)
-      for (double x : blocks[h]) sxx += (x - mean(blocks[h])) * (x - mean(blocks[h]));
-    return sxx;
-  }
-  // How far the sample's costs lie from the strata's, weighed: what the slope multiplies.
-  double costShift(const std::vector<double>& weights) const {
-    double shift = 0;
-    for (size_t h = 0; h < strata.size(); ++h) shift += weights[h] * (strata[h] - mean(blocks[h]));
-    return shift;
-  }
-  // The pooled within-stratum slope of `q` on the cost; 0 when the costs do not vary.
-  double slope(const Quantity& q) const {
+  // The regression estimate of q's frame total (Cochran, Sampling Techniques, 7.9): each block's
+  // value adjusted by b (X_h - x) for its stratum's mean cost X_h and its own x, b the slope of
+  // value on cost pooled within strata; the cost is cheap for every ray, and says how much of a
+  // block's cycles come from its rays being costlier than its stratum's.
+  double total(const Quantity& q) const {
     double sxy = 0, sxx = 0;
-    for (size_t h = 0; h < strata.size(); ++h) {
-      const double mx = mean(blocks[h]), my = mean(q.strata[h]);
-      for (size_t j = 0; j < blocks[h].size(); ++j) {
-        sxy += (blocks[h][j] - mx) * (q.strata[h][j] - my);
-        sxx += (blocks[h][j] - mx) * (blocks[h][j] - mx);
+    for (size_t h = 0; h < rays.size(); ++h) {
+      const double mx = mean(blockCost[h]), my = mean(q.strata[h]);
+      for (size_t j = 0; j < blockCost[h].size(); ++j) {
+        sxy += (blockCost[h][j] - mx) * (q.strata[h][j] - my);
+        sxx += (blockCost[h][j] - mx) * (blockCost[h][j] - mx);
       }
     }
-    return sxx > 0 ? sxy / sxx : 0.0;
+    const double slope = sxx > 0 ? sxy / sxx : 0.0;
+    double total = q.fixed;
+    for (size_t h = 0; h < rays.size(); ++h)
+      total += rays[h] * (mean(q.strata[h]) + slope * (stratumCost[h] - mean(blockCost[h])));
+    return total;
   }
-  // q adjusted to each stratum's mean cost: y + b (X_h - x).
-  Quantity adjusted(const Quantity& q) const {
-    const double b = slope(q);
-    Quantity result = q;
-    for (size_t h = 0; h < strata.size(); ++h)
-      for (size_t j = 0; j < blocks[h].size(); ++j) result.strata[h][j] += b * (strata[h] - blocks[h][j]);
-    return result;
+
+  // The paired jackknife's replicate h (JK2): stratum h's second block replaced by its first.
+  Sample replicate(size_t h) const {
+    Sample copy = *this;
+    for (Quantity* q : {&copy.cycles, &copy.l1Hits, &copy.l1Accesses, &copy.l2Hits, &copy.l2Accesses})
+      q->strata[h][1] = q->strata[h][0];
+    copy.blockCost[h][1] = copy.blockCost[h][0];
+    return copy;
   }
-  static double mean(const std::vector<double>& values) {
-    double sum = 0;
-    for (double v : values) sum += v;
-    return values.empty() ? 0 : sum / static_cast<double>(values.size());
+
+  // An estimate and its 95 % interval: the variance is the sum over strata of the squared
+  // changes of the replicates, which takes in the slope's own error and strata of unequal spread.
+  template <class Estimate>
+  Interval interval(const Estimate& estimate) const {
+    const double value = estimate(*this);
+    double variance = 0;
+    for (size_t h = 0; h < rays.size(); ++h) {
+      const double change = estimate(replicate(h)) - value;
+      variance += change * change;
+    }
+    const double half = studentT975(static_cast<int>(rays.size()) - 1) * std::sqrt(variance);
+    return {value, value - half, value + half};
   }
 };
 
@@ -152,57 +164,14 @@ double meanCost(const std::vector<TraversalResult>& golden, uint64_t first, uint
   return count == 0 ? 0 : sum / static_cast<double>(count);
 }
 
-// Expansion and variance of a per-ray quantity; `weights[h]`: the rays of stratum h. With two
-// blocks a stratum, a stratum's own variance rests on one degree of freedom and often comes out
-// near zero by chance, so the blocks' deviations from their stratum means are pooled over all
-// strata (less one degree for the regression slope), and each stratum weighs in by its rays.
-// No finite-population correction: the blocks are a small part of each stratum.
-StratifiedSums expand(const Quantity& q, const std::vector<double>& weights) {
-  StratifiedSums sums{q.fixed, 0};
-  double squares = 0, blocks = 0, spread = 0;
-  for (size_t h = 0; h < q.strata.size(); ++h) {
-    const std::vector<double>& values = q.strata[h];
-    const double n = static_cast<double>(values.size());
-    double mean = 0;
-    for (double v : values) mean += v / n;
-    for (double v : values) squares += (v - mean) * (v - mean);
-    blocks += n;
-    sums.total += weights[h] * mean;
-    spread += weights[h] * weights[h] / n;
-  }
-  const double degrees = blocks - static_cast<double>(q.strata.size()) - 1;
-  if (degrees > 0) sums.blockVariance = squares / degrees;
-  sums.variance = spread * sums.blockVariance;
-  return sums;
-}
-
-// The regression estimate of a total; its variance adds the slope's own error, which moves the
-// estimate by the slope's error times the sample's cost shift.
-Interval totalInterval(const Quantity& q, const Auxiliary& cost, const std::vector<double>& weights) {
-  StratifiedSums sums = expand(cost.adjusted(q), weights);
-  const double squares = cost.costSquares();
-  if (squares > 0) {
-    const double shift = cost.costShift(weights);
-    sums.variance += shift * shift * sums.blockVariance / squares;
-  }
-  // degrees of freedom: blocks less strata less the slope
-  const double half = studentT975(static_cast<int>(weights.size()) - 1) * std::sqrt(sums.variance);
-  return {sums.total, sums.total - half, sums.total + half};
-}
-
-// hits / accesses over the frame, its variance linearised: the residuals hits - rate * accesses.
-Interval rateInterval(const Quantity& hits, const Quantity& accesses,
-                      const std::vector<double>& weights) {
-  const double x = expand(accesses, weights).total;
-  if (x <= 0) return {};
-  const double rate = expand(hits, weights).total / x;
-  Quantity residual{hits.fixed - rate * accesses.fixed, hits.strata};
-  for (size_t h = 0; h < residual.strata.size(); ++h)
-    for (size_t j = 0; j < residual.strata[h].size(); ++j)
-      residual.strata[h][j] -= rate * accesses.strata[h][j];
-  const double half = studentT975(static_cast<int>(weights.size()) - 1) *
-                      std::sqrt(expand(residual, weights).variance) / x;
-  return {rate, std::max(0.0, rate - half), std::min(1.0, rate + half)};
+Interval rateInterval(const Sample& sample, Quantity Sample::*hits, Quantity Sample::*accesses) {
+  Interval rate = sample.interval([&](const Sample& s) {
+    const double all = s.total(s.*accesses);
+    return all > 0 ? s.total(s.*hits) / all : 0.0;
+  });
+  rate.low = std::max(0.0, rate.low);
+  rate.high = std::min(1.0, rate.high);
+  return rate;
 }
 
 }  // namespace
@@ -224,7 +193,7 @@ uint64_t SamplePlan::simulatedRays() const {
 
 SamplePlan planSample(uint64_t rays, int cores, const SampleSpec& spec) {
   if (!(spec.fraction > 0 && spec.fraction <= 1))
-    throw std::invalid_argument("sample.fraction must be in (0, 1], got " + std::to_string(spec.fraction));
+    throw std::invalid_argument("sample.fraction must be in (0, 1], got " + shortText(spec.fraction));
   const double budget = spec.fraction * static_cast<double>(rays);
   SamplePlan plan;
   plan.rays = rays;
@@ -264,7 +233,7 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
   const SamplePlan& plan = run.plan;
   const uint64_t block = plan.blockRays;
 
-  Quantity cycles, l1Hits, l1Accesses, l2Hits, l2Accesses;
+  Sample sample;
   const auto count = [&](const Block& b, bool fixed, size_t stratum) {
     const CacheStats l1 = l1Total(b.counted);
     // per ray of the window: the strata weigh them by their rays
@@ -272,17 +241,18 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
                              static_cast<double>(l1.accesses) / b.rays,
                              static_cast<double>(cacheHits(b.counted.l2.cache)) / b.rays,
                              static_cast<double>(b.counted.l2.cache.accesses) / b.rays};
-    const double weight = fixed ? static_cast<double>(block) : 1.0;
-    Quantity* quantities[] = {&cycles, &l1Hits, &l1Accesses, &l2Hits, &l2Accesses};
+    Quantity* quantities[] = {&sample.cycles, &sample.l1Hits, &sample.l1Accesses, &sample.l2Hits,
+                              &sample.l2Accesses};
     for (size_t i = 0; i < 5; ++i) {
       if (fixed)
-        quantities[i]->fixed += weight * values[i];
+        quantities[i]->fixed += static_cast<double>(block) * values[i];
       else
         quantities[i]->strata[stratum].push_back(values[i]);
     }
     addStatistics(run.counted, b.counted);
   };
-  for (Quantity* q : {&cycles, &l1Hits, &l1Accesses, &l2Hits, &l2Accesses})
+  for (Quantity* q : {&sample.cycles, &sample.l1Hits, &sample.l1Accesses, &sample.l2Hits,
+                      &sample.l2Accesses})
     q->strata.resize(plan.strata.size());
 
   // Blocks in frame order, so that one warmer walks the frame once.
@@ -292,11 +262,8 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
   };
   constexpr size_t kFixed = SIZE_MAX;
   std::vector<Place> places{{0, kFixed}, {plan.tailFirst, kFixed}};
-  std::vector<double> weights;  // rays per stratum: the values are per ray
-  for (size_t h = 0; h < plan.strata.size(); ++h) {
-    weights.push_back(static_cast<double>(plan.strata[h].rays));
+  for (size_t h = 0; h < plan.strata.size(); ++h)
     for (uint64_t first : plan.strata[h].blocks) places.push_back({first, h});
-  }
   std::sort(places.begin(), places.end(), [](const Place& a, const Place& b) { return a.first < b.first; });
   std::unique_ptr<CacheWarmer> warmer;
   if (!config.memory.ideal) warmer = std::make_unique<CacheWarmer>(memory, config);
@@ -312,19 +279,17 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
     count(measured, place.stratum == kFixed, place.stratum == kFixed ? 0 : place.stratum);
   }
 
-  // Regression on the golden cost (Cochran, Sampling Techniques, 7.9): cheap for every ray, it
-  // says how much of a block's cycles come from its rays being costlier than its stratum's.
   const std::vector<TraversalResult> golden = GoldenModel(memory, config.golden()).traceAll(jobs);
-  Auxiliary cost;
   for (const SamplePlan::Stratum& stratum : plan.strata) {
-    cost.strata.push_back(meanCost(golden, stratum.first, stratum.rays));
-    cost.blocks.emplace_back();
-    for (uint64_t first : stratum.blocks) cost.blocks.back().push_back(meanCost(golden, first, block));
+    sample.rays.push_back(static_cast<double>(stratum.rays));
+    sample.stratumCost.push_back(meanCost(golden, stratum.first, stratum.rays));
+    sample.blockCost.emplace_back();
+    for (uint64_t first : stratum.blocks) sample.blockCost.back().push_back(meanCost(golden, first, block));
   }
-  run.totalCycles = totalInterval(cycles, cost, weights);
+  run.totalCycles = sample.interval([](const Sample& s) { return s.total(s.cycles); });
   if (!config.memory.ideal) {
-    run.l1HitRate = rateInterval(cost.adjusted(l1Hits), cost.adjusted(l1Accesses), weights);
-    run.l2HitRate = rateInterval(cost.adjusted(l2Hits), cost.adjusted(l2Accesses), weights);
+    run.l1HitRate = rateInterval(sample, &Sample::l1Hits, &Sample::l1Accesses);
+    run.l2HitRate = rateInterval(sample, &Sample::l2Hits, &Sample::l2Accesses);
   }
   run.hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

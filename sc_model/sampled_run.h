@@ -5,17 +5,22 @@
 //
 // The frame's rays, in the order the host submits them (scan lines, so a stretch of rays is a
 // band of the image), split into
-//   head     the first block, simulated from reset: the pipeline's fill, counted exactly;
+//   head     the first block, simulated from reset: the pipeline's fill;
 //   strata   S equal stretches of the rest but the last block; two blocks at random places in
-//            each, each after the `warmup` rays before it;
+//            each (seeded), each after the `warmup` rays before it;
 //   tail     the last block after its warm-up: the drain at the end of the frame.
-// A block counts the cycles from the arrival of its warm-up's last result to that of its own last
-// result, and the counters in between (statistics_window.h: the counters of a run of warm-up and
-// block less those of a run of the warm-up alone). With m_h = rays_h / block the block slots of
-// stratum h and c_hj its blocks' cycles:
-//   total  = head + tail + sum_h m_h mean_j(c_hj)
-//   var    = sum_h m_h^2 (1 - 2 / m_h) s_h^2 / 2       (s_h^2: the two blocks' sample variance)
-//   95 %   = total +- t(0.975, S) sqrt(var)
+// Before each block's warm-up, the caches are brought up to date functionally with every ray
+// since the previous block (cache_warmer.h), so a short warm-up suffices. A block counts from the
+// snapshot after its warm-up's results to the snapshot after its own (rtu_simulation.h
+// BlockRun), a few `cooldown` rays keeping the cores busy to its end: cycles per result, and
+// counters per result (statistics_window.h).
+// Per-ray values y of the blocks are adjusted by a regression on the golden model's cost x,
+// known for every ray: y' = y + b (X_h - x), with X_h the stratum's mean cost and b the slope
+// pooled within strata (Cochran, Sampling Techniques, 7.9). With R_h rays in stratum h:
+//   total  = B (y_head + y_tail) + sum_h R_h mean_j(y'_hj)
+//   var    = sum_h R_h^2 s^2 / 2 + (sum_h R_h (X_h - mean_j x_hj))^2 s^2 / Sxx
+//            (s^2: the blocks' deviations from their stratum means, pooled, 2S - S - 1 degrees)
+//   95 %   = total +- t(0.975, S - 1) sqrt(var)
 // and a hit rate is a ratio of two such totals (hits and accesses), its variance linearised.
 // docs/fidelity.md measures the estimates against full runs.
 

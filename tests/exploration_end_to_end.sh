@@ -59,6 +59,26 @@ head -1 fps.csv | grep -q '^width,height,cores,rays,total_cycles,cycles_per_ray,
 cycles=$("$python" -c 'import json; print(json.load(open("r.json"))["statistics"]["total_cycles"])')
 grep -q "^32,18,8,576,$cycles," fps.csv || fail "fps row differs from render ($cycles cycles)"
 
+# Sampled rows (docs/fidelity.md): the estimate inside its interval, the simulated share within
+# the fraction, the same row from fps and sweep; a fraction too small is refused before running.
+"$rtusim" fps --scene menger --depth 5 --memory cached --resolutions 160x120 --cores 4 \
+  --sample 0.5 --csv sampled.csv >sampled.txt
+"$python" - sampled.csv <<'PY' || fail "sampled fps row"
+import csv, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert row["model"] == "sampled", row["model"]
+assert float(row["total_cycles_ci_low"]) <= float(row["total_cycles"]) <= float(row["total_cycles_ci_high"])
+assert 0 < float(row["simulated_fraction"]) <= 0.5
+PY
+grep -q "sampled SystemC simulation" sampled.txt || fail "fps heading does not say sampled"
+"$rtusim" sweep --scene menger --depth 5 --memory cached --width 160 --height 120 --cores 4 \
+  --sample 0.5 --grid cores=4 --out sampled_sweep.csv -j 1 >/dev/null
+sampledCycles=$("$python" -c 'import csv; print(next(csv.DictReader(open("sampled.csv")))["total_cycles"])')
+grep -q ",$sampledCycles," sampled_sweep.csv || fail "sweep's sampled row differs from fps's"
+if "$rtusim" fps --scene menger --depth 5 --memory cached --resolutions 160x120 --cores 4 \
+  --sample 0.01 >small.txt 2>&1; then fail "a too small sample fraction ran"; fi
+grep -q "sample.fraction 0.01" small.txt || fail "too small sample fraction not named"
+
 # A configuration that cannot run gets its error in its row; the sweep goes on.
 "$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
   --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt
