@@ -361,7 +361,7 @@ std::vector<Setting> makeSchema() {
                       [](C& c) -> uint64_t& { return c.sample.blockRays; }));
   s.back().ignoredBecause = ignoredWithoutSampling;
   s.push_back(integer("sample.warmup", "--sample-warmup", "rays", 0, 1 << 24, sampling,
-                      "rays simulated before each block and not counted (0: a block's worth)",
+                      "rays simulated before each block and not counted (0: 512, or 32 a core)",
                       [](C& c) -> uint64_t& { return c.sample.warmupRays; }));
   s.back().ignoredBecause = ignoredWithoutSampling;
   return s;

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   rtu::addPrecisionCommand(app);
   rtu::addConfigCommand(app);
   rtu::addFpsCommand(app);
+  rtu::addFidelityCommand(app);
   rtu::addSweepCommand(app);
   rtu::addPlotCommands(app);
   rtu::addWaveCommand(app);

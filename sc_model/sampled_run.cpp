@@ -17,9 +17,10 @@ namespace rtu {
 namespace {
 
 constexpr uint64_t kMinBlockRays = 1024, kMaxBlockRays = 4096;  // docs/fidelity.md: shorter ones are noisy
-// Simulated before each block: fills the pipeline and the cores; the caches are warmed
-// functionally before it (cache_warmer.h).
-constexpr uint64_t kDefaultWarmupRays = 512;
+// Simulated before each block: fills the pipeline and the cores, and gives each L1 the rays its
+// core really takes; the caches are warmed functionally before it (cache_warmer.h). 512 rays, or
+// 32 a core: with 8 a core, 64 cores' L1s stayed colder than in the full run (docs/fidelity.md).
+uint64_t defaultWarmupRays(int cores) { return std::max<uint64_t>(512, 32 * static_cast<uint64_t>(cores)); }
 constexpr uint64_t kTargetStrata = 40;
 
 uint64_t autoBlockRays(double budget, uint64_t warmup, uint64_t cooldown) {
@@ -197,7 +198,7 @@ SamplePlan planSample(uint64_t rays, int cores, const SampleSpec& spec) {
   const double budget = spec.fraction * static_cast<double>(rays);
   SamplePlan plan;
   plan.rays = rays;
-  plan.warmupRays = spec.warmupRays > 0 ? spec.warmupRays : kDefaultWarmupRays;
+  plan.warmupRays = spec.warmupRays > 0 ? spec.warmupRays : defaultWarmupRays(cores);
   plan.cooldownRays = 2 * static_cast<uint64_t>(cores) + 16;
   plan.blockRays = spec.blockRays > 0 ? spec.blockRays
                                       : autoBlockRays(budget, plan.warmupRays, plan.cooldownRays);

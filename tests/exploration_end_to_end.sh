@@ -79,6 +79,21 @@ if "$rtusim" fps --scene menger --depth 5 --memory cached --resolutions 160x120 
   --sample 0.01 >small.txt 2>&1; then fail "a too small sample fraction ran"; fi
 grep -q "sample.fraction 0.01" small.txt || fail "too small sample fraction not named"
 
+# fidelity: every mode against the SystemC model; the exact modes exact, golden's results equal.
+"$rtusim" fidelity --scene menger --depth 5 --width 160 --height 120 --cores 4 --fractions 0.5 \
+  --csv fidelity.csv >fidelity.txt
+"$python" - fidelity.csv <<'PY' || fail "fidelity rows"
+import csv, sys
+rows = {r["mode"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert list(rows) == ["systemc", "recurrence", "sampled 0.5", "golden"], list(rows)
+for exact in ("systemc", "recurrence"):
+    assert float(rows[exact]["total_cycles_error"]) == 0 and float(rows[exact]["per_ray_error_p99"]) == 0
+    assert rows[exact]["results_equal_golden"] == "yes"
+sampled = rows["sampled 0.5"]
+assert float(sampled["total_cycles_ci_low"]) <= float(sampled["total_cycles"]) <= float(sampled["total_cycles_ci_high"])
+assert rows["golden"]["total_cycles"] == "" and rows["golden"]["results_equal_golden"] == "yes"
+PY
+
 # A configuration that cannot run gets its error in its row; the sweep goes on.
 "$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
   --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt
