@@ -49,13 +49,16 @@ void addReplayCommand(CLI::App& app) {
       records.assign(jobs.begin(), jobs.end());
     }
     checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
+    const RtuConfig planned =
+        plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");
-    const RtuRun run = simulateRtu(image.memory(), records, config, progress.callback());
+    const RtuRun run = simulateRtu(image.memory(), records, planned, progress.callback());
     writeResultBuffer(options->out, run.results);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, configuration, options->outputs, std::cout);
     std::cout << "wrote       " << options->out << "\n";
     if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+    if (config.timeline) std::cout << "wrote       " << config.timeline->path << "\n";
   });
 }
 

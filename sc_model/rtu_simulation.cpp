@@ -39,6 +39,14 @@ void runToCompletion(const HostSink& sink, const CycleClock& clock, CycleTrace* 
   } while (sc_core::sc_pending_activity());
 }
 
+// A trace when the run writes or counts one, a timeline, or has listeners: the file is optional.
+std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config, std::vector<TraceListener*> listeners) {
+  if (!config.trace && listeners.empty()) return nullptr;
+  TraceOptions options = config.trace.value_or(TraceOptions{});
+  options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
+  return std::make_unique<CycleTrace>(options, std::move(listeners));
+}
+
 }  // namespace
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
@@ -47,21 +55,23 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
 }
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config, const RunProgress& progress) {
+                   const RtuConfig& config, const RunProgress& progress,
+                   std::vector<TraceListener*> listeners) {
   validate(config);
   freshKernel();
-  std::unique_ptr<CycleTrace> trace;
-  if (config.trace) {
-    TraceOptions options = *config.trace;
-    options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
-    trace = std::make_unique<CycleTrace>(options);
+  std::unique_ptr<TimelineWriter> timeline;
+  if (config.timeline) {
+    timeline = std::make_unique<TimelineWriter>(
+        *config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value());
+    listeners.push_back(timeline.get());
   }
+  std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));
   auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get());
   if (trace) trace->checkScopesMatched();
 
   const auto start = std::chrono::steady_clock::now();
   runToCompletion(top->sink(), CycleClock::atMegahertz(config.clockMhz), trace.get(),
-                  config.trace ? config.trace->flushCycles : 0, progress);
+                  config.trace ? config.trace->flushCycles : TraceOptions{}.flushCycles, progress);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -81,6 +91,8 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
+  if (trace) run.traceBytes = trace->countedBytes();
+  if (timeline) run.timelineBytes = timeline->bytes();
   return run;
 }
 
