@@ -23,10 +23,12 @@
 namespace rtu {
 
 struct TimelineOptions {
-  std::string path;
-  bool countOnly = false;  // write nothing, only count the bytes (bytes())
+  std::string path;        // empty: none
   uint64_t fromCycle = 0;  // rays that start in the window, counters sampled in it
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
+  bool countOnly = false;  // write nothing, only count the bytes (bytes())
+
+  bool wanted() const { return !path.empty(); }
 };
 
 class TimelineWriter : public TraceListener {

@@ -78,7 +78,7 @@ std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
   std::cout << ResultSummary::of(results).describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
-  if (config.timeline) std::cout << "wrote       " << config.timeline->path << "\n";
+  if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
   return results;
 }
 

@@ -58,7 +58,7 @@ void addReplayCommand(CLI::App& app) {
     reportRun(run, configuration, options->outputs, std::cout);
     std::cout << "wrote       " << options->out << "\n";
     if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
-    if (config.timeline) std::cout << "wrote       " << config.timeline->path << "\n";
+    if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
   });
 }
 

@@ -25,7 +25,7 @@ struct RtuConfig {
   int reorderCapacity = 0;  // 0: no reorder buffer
   double clockMhz = 100.0;
   std::optional<TraceOptions> trace;
-  std::optional<TimelineOptions> timeline;
+  TimelineOptions timeline;  // path empty: no timeline
 
   static MemoryConfig idealMemory() {
     MemoryConfig memory;

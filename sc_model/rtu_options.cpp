@@ -16,7 +16,7 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
     throw std::invalid_argument(needingOutput + " needs --trace or --timeline");
   RtuConfig resolved = config;
   if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes};
-  if (!timelinePath.empty()) resolved.timeline = TimelineOptions{timelinePath, false, vcdFrom, vcdTo};
+  resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
 }
 

@@ -60,9 +60,9 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
   validate(config);
   freshKernel();
   std::unique_ptr<TimelineWriter> timeline;
-  if (config.timeline) {
+  if (config.timeline.wanted()) {
     timeline = std::make_unique<TimelineWriter>(
-        *config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value());
+        config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value());
     listeners.push_back(timeline.get());
   }
   std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));

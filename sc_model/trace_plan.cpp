@@ -67,7 +67,7 @@ std::pair<uint64_t, uint64_t> rayWindow(const SvoMemory& memory,
                                 std::to_string(records.size() - 1) + ")");
   RtuConfig plain = config;
   plain.trace.reset();
-  plain.timeline.reset();
+  plain.timeline = {};
   JobEntry entry(ray);
   const RtuRun run = simulateRtu(memory, records, plain, {}, {&entry});
   for (size_t i = 0; i < run.jobIndices.size(); ++i)
@@ -81,7 +81,7 @@ TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& 
                         const RtuConfig& config, const RunProgress& progress) {
   RtuConfig dry = config;
   if (dry.trace) dry.trace->countOnly = true;
-  if (dry.timeline) dry.timeline->countOnly = true;
+  dry.timeline.countOnly = true;
   const RtuRun run = simulateRtu(memory, records, dry, progress);
   TraceSizes sizes{run.traceBytes, run.timelineBytes, run.traceBytes};
   if (config.trace && isFst(config.trace->path))
@@ -92,12 +92,16 @@ TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& 
 RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
                     RtuConfig config, const TraceLimits& limits, std::ostream& out,
                     const RunProgress& progress) {
-  if (!config.trace && !config.timeline) return config;
+  if (!config.trace && !config.timeline.wanted()) return config;
   if (limits.ray >= 0) {
     const auto [from, to] = rayWindow(memory, records, config, static_cast<uint64_t>(limits.ray));
     out << "window      ray " << limits.ray << ": cycles " << from << " to " << to - 1 << "\n";
-    if (config.trace) config.trace->fromCycle = from, config.trace->toCycle = to;
-    if (config.timeline) config.timeline->fromCycle = from, config.timeline->toCycle = to;
+    if (config.trace) {
+      config.trace->fromCycle = from;
+      config.trace->toCycle = to;
+    }
+    config.timeline.fromCycle = from;
+    config.timeline.toCycle = to;
   }
   const TraceSizes sizes = measureTrace(memory, records, config, progress);
   if (config.trace) {
@@ -108,9 +112,9 @@ RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& reco
     refuseAbove("trace", config.trace->path, sizes.trace, limits.maxBytes,
                 "--trace-scope, --trace-from/--trace-to, --trace-ray, an .fst path");
   }
-  if (config.timeline) {
-    out << "timeline    " << config.timeline->path << ": " << megabytes(sizes.timeline) << "\n";
-    refuseAbove("timeline", config.timeline->path, sizes.timeline, limits.maxBytes,
+  if (config.timeline.wanted()) {
+    out << "timeline    " << config.timeline.path << ": " << megabytes(sizes.timeline) << "\n";
+    refuseAbove("timeline", config.timeline.path, sizes.timeline, limits.maxBytes,
                 "--trace-from/--trace-to or --trace-ray");
   }
   return config;
