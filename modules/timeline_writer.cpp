@@ -81,7 +81,7 @@ void TimelineWriter::changed(uint64_t cycle, const std::vector<TraceChange>& cha
 void TimelineWriter::advanceTo(uint64_t cycle) {
   if (streaming_.empty()) cursor_ = cycle;
   for (; cursor_ < cycle; ++cursor_) {
-    for (size_t i : streaming_) ++channels_[i].transfers;
+    for (size_t i : streaming_) transfer(channels_[i]);
     sampleCounters(cursor_ + 1);
   }
 }
@@ -111,39 +111,39 @@ void TimelineWriter::slice(size_t core, const std::string& name, uint64_t from, 
 
 void TimelineWriter::sampleCounters(uint64_t cycle) {
   if (!inWindow(cycle)) return;
-  const std::vector<int64_t> values = counterValues();
-  for (size_t i = 0; i < counters_.size(); ++i) {
-    if (counters_[i].value == values[i]) continue;
-    counters_[i].value = values[i];
-    event("{\"ph\":\"C\",\"pid\":1,\"name\":\"" + counters_[i].name + "\",\"ts\":" + time(cycle) +
-          ",\"args\":{\"" + counters_[i].unit + "\":" + std::to_string(values[i]) + "}}");
+  if (waitChannel_ != kNone) {
+    const Channel& in = channels_[waitChannel_];
+    counters_[kWaitCounter].held = in.valid && !in.ready;
+  }
+  for (Counter& counter : counters_) {
+    if (counter.written == counter.held) continue;
+    counter.written = counter.held;
+    event("{\"ph\":\"C\",\"pid\":1,\"name\":\"" + counter.name + "\",\"ts\":" + time(cycle) +
+          ",\"args\":{\"" + counter.unit + "\":" + std::to_string(counter.held) + "}}");
   }
 }
 
-// In the order of counters_ (writeHeader).
-std::vector<int64_t> TimelineWriter::counterValues() const {
-  bool waiting = false;  // the pending job finds no core ready
-  for (const Channel& c : channels_)
-    if (c.key == "scheduler.in") waiting = c.valid && !c.ready;
-  std::vector<int64_t> values{transfers("job_manager.in", "") - transfers("scheduler.in", ""),
-                              waiting,
-                              transfers("core_", ".out") - transfers("result_manager.out", "")};
-  if (counters_.size() > values.size())
-    values.push_back(transfers("result_manager.out", "") - transfers("reorder_buffer.out", ""));
-  return values;
+void TimelineWriter::transfer(const Channel& channel) {
+  if (channel.into != kNone) ++counters_[channel.into].held;
+  if (channel.outOf != kNone) --counters_[channel.outOf].held;
 }
 
-int64_t TimelineWriter::transfers(const std::string& prefix, const std::string& suffix) const {
-  int64_t total = 0;
-  for (const Channel& c : channels_)
-    if (startsWith(c.key, prefix) && endsWith(c.key, suffix))
-      total += static_cast<int64_t>(c.transfers);
-  return total;
-}
-
-bool TimelineWriter::hasChannel(const std::string& key) const {
-  return std::any_of(channels_.begin(), channels_.end(),
-                     [&key](const Channel& c) { return c.key == key; });
+// The counters: what each channel's transfers add to or take from them.
+void TimelineWriter::assignCounters() {
+  counters_ = {{"job manager", "jobs"}, {"scheduler wait", "pending"}, {"result manager", "results"}};
+  for (size_t i = 0; i < channels_.size(); ++i) {
+    Channel& c = channels_[i];
+    if (c.key == "job_manager.in") c.into = kJobCounter;
+    if (c.key == "scheduler.in") c.outOf = kJobCounter, waitChannel_ = i;
+    if (startsWith(c.key, "core_") && endsWith(c.key, ".out")) c.into = kResultCounter;
+    if (c.key == "result_manager.out") c.outOf = kResultCounter;
+    if (c.key == "reorder_buffer.out") {
+      counters_.push_back({"reorder buffer", "results"});
+      c.outOf = kReorderCounter;
+    }
+  }
+  for (Channel& c : channels_)
+    if (c.key == "result_manager.out" && counters_.size() > kReorderCounter) c.into = kReorderCounter;
 }
 
 // Track names, zero-padded to sort in order (core_03), and the counters this run has.
@@ -163,8 +163,7 @@ void TimelineWriter::writeHeader() {
     event("{\"ph\":\"M\",\"pid\":1,\"tid\":" + tid +
           ",\"name\":\"thread_sort_index\",\"args\":{\"sort_index\":" + tid + "}}");
   }
-  counters_ = {{"job manager", "jobs"}, {"scheduler wait", "pending"}, {"result manager", "results"}};
-  if (hasChannel("reorder_buffer.out")) counters_.push_back({"reorder buffer", "results"});
+  assignCounters();
 }
 
 void TimelineWriter::event(const std::string& json) {

@@ -50,10 +50,12 @@ class TimelineWriter : public TraceListener {
     Role role = Role::None;
     size_t index = 0;  // core or channel
   };
+  static constexpr size_t kNone = static_cast<size_t>(-1);
+  enum : size_t { kJobCounter, kWaitCounter, kResultCounter, kReorderCounter };
   struct Channel {
     std::string key;  // the scope below the top, e.g. scheduler.in
     bool valid = false, ready = false;
-    uint64_t transfers = 0;  // in the cycles before the timeline's cursor
+    size_t into = kNone, outOf = kNone;  // the counters a transfer adds to, takes from
   };
   struct Core {
     uint64_t state = 0;
@@ -61,7 +63,8 @@ class TimelineWriter : public TraceListener {
   };
   struct Counter {
     std::string name, unit;
-    int64_t value = -1;  // last written; -1: none yet
+    int64_t held = 0;      // jobs or results held, as of the timeline's cursor
+    int64_t written = -1;  // last written; -1: none yet
   };
 
   size_t channel(const std::string& key);
@@ -69,10 +72,8 @@ class TimelineWriter : public TraceListener {
   void coreState(size_t core, uint64_t cycle, uint64_t state);
   void slice(size_t core, const std::string& name, uint64_t from, uint64_t to);
   void sampleCounters(uint64_t cycle);
-  std::vector<int64_t> counterValues() const;
-  // Transfers so far on the channels whose key starts with `prefix` and ends with `suffix`.
-  int64_t transfers(const std::string& prefix, const std::string& suffix) const;
-  bool hasChannel(const std::string& key) const;
+  void transfer(const Channel& channel);
+  void assignCounters();
   void writeHeader();
   void event(const std::string& json);
   bool inWindow(uint64_t cycle) const;
@@ -87,6 +88,7 @@ class TimelineWriter : public TraceListener {
   std::vector<size_t> streaming_;  // channels with valid and ready high: a transfer every cycle
   std::vector<Core> cores_;
   std::vector<Counter> counters_;
+  size_t waitChannel_ = kNone;  // scheduler.in
   uint64_t cursor_ = 0;  // channel transfers are counted up to this cycle
   uint64_t nextRay_ = 0;
   bool started_ = false, firstEvent_ = true;

@@ -17,7 +17,7 @@
 namespace rtu {
 
 // The VCD bytes one FST byte stands for, as measured on real traces.
-constexpr double kVcdBytesPerFstByte = 8.0;
+constexpr double kVcdBytesPerFstByte = 9.0;
 
 struct TraceLimits {
   int64_t ray = -1;  // --trace-ray: the window of this job; -1: none
