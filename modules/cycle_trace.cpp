@@ -1,6 +1,7 @@
 #include "cycle_trace.h"
 
 #include "gtkw_save_file.h"
+#include "instance_names.h"
 
 #include <algorithm>
 #include <limits>
@@ -43,10 +44,11 @@ bool CycleTrace::scopeKept(const std::string& scope) {
   if (options_.scopes.empty()) return true;
   scopeMatched_.resize(options_.scopes.size());
   bool kept = false;
+  const std::string plain = unpaddedScope(scope);
   for (size_t i = 0; i < options_.scopes.size(); ++i) {
-    const std::string& prefix = options_.scopes[i];
-    if (scope.compare(0, prefix.size(), prefix) == 0 &&
-        (scope.size() == prefix.size() || scope[prefix.size()] == '.'))
+    const std::string prefix = unpaddedScope(options_.scopes[i]);
+    if (plain.compare(0, prefix.size(), prefix) == 0 &&
+        (plain.size() == prefix.size() || plain[prefix.size()] == '.'))
       kept = scopeMatched_[i] = true;
   }
   return kept;
@@ -55,8 +57,10 @@ bool CycleTrace::scopeKept(const std::string& scope) {
 void CycleTrace::checkScopesMatched() const {
   for (size_t i = 0; i < options_.scopes.size(); ++i) {
     if (i < scopeMatched_.size() && scopeMatched_[i]) continue;
+    InstanceWidths widths;
+    for (const std::string& scope : declaredScopes_) widths.add(scope);
     std::string existing;
-    for (const std::string& scope : declaredScopes_) existing += "\n  " + scope;
+    for (const std::string& scope : declaredScopes_) existing += "\n  " + widths.padded(scope);
     throw std::invalid_argument("trace scope '" + options_.scopes[i] +
                                 "' matches no module; the scopes are:" + existing);
   }
@@ -128,6 +132,9 @@ void CycleTrace::finish(uint64_t markerCycle) {
 void CycleTrace::writeDeclarations() {
   declared_ = true;
   if (!writer_) return;
+  InstanceWidths widths;
+  for (const std::string& scope : declaredScopes_) widths.add(scope);
+  for (Signal& signal : signals_) signal.scope = widths.padded(signal.scope);
   // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);

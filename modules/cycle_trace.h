@@ -6,7 +6,8 @@
 // So every cycle before the current simulated one is final: the simulation calls flush() with
 // that cycle now and then, which writes those cycles in time order and frees them; only the
 // records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle
-// window and the module scopes asked for go to the file; listeners (modules/trace_listener.h) see
+// window and the module scopes asked for go to the file (instances numbered core_03 when there
+// are ten or more: modules/instance_names.h); listeners (modules/trace_listener.h) see
 // every signal and every cycle.
 
 #include <cstdint>

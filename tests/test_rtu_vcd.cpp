@@ -511,15 +511,19 @@ TEST_CASE("VCD scope filter keeps only the scopes asked for", "[rtu]") {
     CHECK(only.levels(name) == full.levels(name));
   }
 
-  // A prefix is a scope, not a string prefix: rtu.core_1 does not keep rtu.core_10.
+  // A prefix is a scope, not a string prefix: rtu.core_1 does not keep rtu.core_10. With twelve
+  // cores the instances are zero-padded (core_01), and the filter matches either spelling.
   RtuConfig twelve;
   twelve.cores = 12;
   const Traced many = traced(sphere(), twelve, dir, "twelve.vcd", options);
-  CHECK(many.vcd.has("rtu.core_1.state"));
+  CHECK(many.vcd.has("rtu.core_01.state"));
   for (const std::string& name : many.vcd.names()) {
     INFO(name);
-    CHECK(name.rfind("rtu.core_1.", 0) == 0);
+    CHECK(name.rfind("rtu.core_01.", 0) == 0);
   }
+  TraceOptions padded;
+  padded.scopes = {"rtu.core_01"};
+  CHECK(traced(sphere(), twelve, dir, "padded.vcd", padded).vcd.names() == many.vcd.names());
 
   // Several scopes, one of them the memory.
   RtuConfig cached = config;
