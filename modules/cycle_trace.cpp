@@ -2,6 +2,7 @@
 
 #include "gtkw_save_file.h"
 #include "instance_names.h"
+#include "trace_signal_classes.h"
 
 #include <algorithm>
 #include <limits>
@@ -34,6 +35,7 @@ CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listene
                                 std::to_string(options_.toCycle));
   if (options_.flushCycles == 0)
     throw std::invalid_argument("trace flush interval must be at least one cycle");
+  checkTraceSignalClasses(options_.signalClasses);
   if (options_.countOnly)
     writer_ = openVcdCounter(counter_);
   else if (!options_.path.empty())
@@ -52,6 +54,12 @@ bool CycleTrace::scopeKept(const std::string& scope) {
       kept = scopeMatched_[i] = true;
   }
   return kept;
+}
+
+bool CycleTrace::classKept(const std::string& name) const {
+  const std::vector<std::string>& classes = options_.signalClasses;
+  return classes.empty() ||
+         std::find(classes.begin(), classes.end(), traceSignalClass(name)) != classes.end();
 }
 
 void CycleTrace::checkScopesMatched() const {
@@ -73,7 +81,7 @@ int CycleTrace::declare(const std::string& scope, const std::string& name, int w
     throw std::logic_error("trace signal " + scope + "." + name +
                            " declared after the first flush");
   declaredScopes_.insert(scope);
-  const bool kept = scopeKept(scope) && writer_;
+  const bool kept = scopeKept(scope) && classKept(name) && writer_;
   if (!kept && listeners_.empty()) return kNoSignal;
   TraceVariable variable{name, width, std::move(valueNames)};
   for (TraceListener* listener : listeners_) listener->declared(fileIndex_.size(), scope, variable);

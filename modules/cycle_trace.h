@@ -28,6 +28,7 @@ struct TraceOptions {
   uint64_t fromCycle = 0;
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
+  std::vector<std::string> signalClasses;  // modules/trace_signal_classes.h; empty keeps all
   uint64_t periodPs = 10000;                                // trace time of one cycle
   uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
   bool countOnly = false;       // write nothing: count the bytes of the VCD the file would be
@@ -79,6 +80,7 @@ class CycleTrace {
   };
   using Settled = std::vector<TraceChange>;  // a cycle's last record of each signal
   bool scopeKept(const std::string& scope);
+  bool classKept(const std::string& name) const;
   void writeDeclarations();
   static Settled settle(std::vector<Change>::const_iterator begin,
                         std::vector<Change>::const_iterator end);

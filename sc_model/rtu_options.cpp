@@ -15,7 +15,7 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
   if (!needingOutput.empty() && vcdPath.empty() && timelinePath.empty())
     throw std::invalid_argument(needingOutput + " needs --trace or --timeline");
   RtuConfig resolved = config;
-  if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes};
+  if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
   resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
 }
@@ -53,6 +53,10 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
   command.add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
                          "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
           ->needs(vcd);
+  command.add_option("--trace-signals", outputs.signalClasses,
+                     "trace only these signal classes: handshakes, states, stack, caches (default: all)")
+      ->delimiter(',')
+      ->needs(vcd);
   CLI::Option* maxMb = command.add_option(
       "--trace-max-mb", outputs.traceMaxMb,
       "refuse a trace or timeline larger than this (measured by a dry run first), default 300")

@@ -559,6 +559,29 @@ TEST_CASE("VCD scope that matches nothing is an error listing the scopes", "[rtu
   }
 }
 
+TEST_CASE("Trace signal classes keep only their signals, with the values of a full trace",
+          "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 2;
+  config.memory = MemoryConfig{};
+  const Traced full = traced(sphere(), config, dir, "full.vcd");
+  TraceOptions options;
+  options.signalClasses = {"states", "caches"};
+  const Traced some = traced(sphere(), config, dir, "some.vcd", options);
+  CHECK(some.vcd.has("rtu.core_0.state"));
+  CHECK(some.vcd.has("rtu.memory.l2.misses"));
+  for (const std::string& name : some.vcd.names()) {
+    INFO(name);
+    const std::string leaf = name.substr(name.rfind('.') + 1);
+    CHECK((leaf == "state" || leaf == "hits" || leaf == "misses"));
+    CHECK(some.levels(name) == full.levels(name));
+  }
+  options.signalClasses = {"handshake"};
+  CHECK_THROWS_WITH(traced(sphere(), config, dir, "typo.vcd", options),
+                    Catch::Contains("'handshake' does not exist; the classes are handshakes"));
+}
+
 TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "[rtu]") {
   TempDir dir;
   RtuConfig config;
