@@ -1,6 +1,8 @@
 #include "cycle_trace.h"
 
 #include "gtkw_save_file.h"
+#include "instance_names.h"
+#include "trace_signal_classes.h"
 
 #include <algorithm>
 #include <limits>
@@ -25,34 +27,48 @@ std::vector<std::string> splitScope(const std::string& scope) {
 
 }  // namespace
 
-CycleTrace::CycleTrace(TraceOptions options) : options_(std::move(options)) {
+CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listeners)
+    : options_(std::move(options)), listeners_(std::move(listeners)) {
   if (options_.fromCycle >= options_.toCycle)
     throw std::invalid_argument("trace window is empty: from cycle " +
                                 std::to_string(options_.fromCycle) + " is not before " +
                                 std::to_string(options_.toCycle));
   if (options_.flushCycles == 0)
     throw std::invalid_argument("trace flush interval must be at least one cycle");
-  writer_ = openTraceWriter(options_.path);
+  checkTraceSignalClasses(options_.signalClasses);
+  if (options_.countOnly)
+    writer_ = openVcdCounter(counter_);
+  else if (!options_.path.empty())
+    writer_ = openTraceWriter(options_.path);
 }
 
 bool CycleTrace::scopeKept(const std::string& scope) {
   if (options_.scopes.empty()) return true;
   scopeMatched_.resize(options_.scopes.size());
   bool kept = false;
+  const std::string plain = unpaddedScope(scope);
   for (size_t i = 0; i < options_.scopes.size(); ++i) {
-    const std::string& prefix = options_.scopes[i];
-    if (scope.compare(0, prefix.size(), prefix) == 0 &&
-        (scope.size() == prefix.size() || scope[prefix.size()] == '.'))
+    const std::string prefix = unpaddedScope(options_.scopes[i]);
+    if (plain.compare(0, prefix.size(), prefix) == 0 &&
+        (plain.size() == prefix.size() || plain[prefix.size()] == '.'))
       kept = scopeMatched_[i] = true;
   }
   return kept;
 }
 
+bool CycleTrace::classKept(const std::string& name) const {
+  const std::vector<std::string>& classes = options_.signalClasses;
+  return classes.empty() ||
+         std::find(classes.begin(), classes.end(), traceSignalClass(name)) != classes.end();
+}
+
 void CycleTrace::checkScopesMatched() const {
   for (size_t i = 0; i < options_.scopes.size(); ++i) {
     if (i < scopeMatched_.size() && scopeMatched_[i]) continue;
+    InstanceWidths widths;
+    for (const std::string& scope : declaredScopes_) widths.add(scope);
     std::string existing;
-    for (const std::string& scope : declaredScopes_) existing += "\n  " + scope;
+    for (const std::string& scope : declaredScopes_) existing += "\n  " + widths.padded(scope);
     throw std::invalid_argument("trace scope '" + options_.scopes[i] +
                                 "' matches no module; the scopes are:" + existing);
   }
@@ -65,9 +81,13 @@ int CycleTrace::declare(const std::string& scope, const std::string& name, int w
     throw std::logic_error("trace signal " + scope + "." + name +
                            " declared after the first flush");
   declaredScopes_.insert(scope);
-  if (!scopeKept(scope)) return kNoSignal;
-  signals_.push_back(Signal{scope, {name, width, std::move(valueNames)}});
-  return static_cast<int>(signals_.size() - 1);
+  const bool kept = scopeKept(scope) && classKept(name) && writer_;
+  if (!kept && listeners_.empty()) return kNoSignal;
+  TraceVariable variable{name, width, std::move(valueNames)};
+  for (TraceListener* listener : listeners_) listener->declared(fileIndex_.size(), scope, variable);
+  fileIndex_.push_back(kept ? static_cast<int>(signals_.size()) : kNoSignal);
+  if (kept) signals_.push_back(Signal{scope, std::move(variable)});
+  return static_cast<int>(fileIndex_.size() - 1);
 }
 
 void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
@@ -75,17 +95,10 @@ void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
     throw std::logic_error("trace record for cycle " + std::to_string(cycle) +
                            " arrived after the cycles before " + std::to_string(written_) +
                            " were written");
-  if (signal == kNoSignal || cycle >= options_.toCycle) return;
-  if (cycle >= options_.fromCycle) {
-    changes_.push_back(Change{cycle, signal, value});
-    return;
-  }
-  Signal& s = signals_[static_cast<size_t>(signal)];
-  if (!s.hasInitial || cycle >= s.initialCycle) {
-    s.hasInitial = true;
-    s.initialCycle = cycle;
-    s.initialValue = value;
-  }
+  if (signal == kNoSignal) return;
+  const bool forFile =
+      fileIndex_[static_cast<size_t>(signal)] != kNoSignal && cycle < options_.toCycle;
+  if (forFile || !listeners_.empty()) changes_.push_back(Change{cycle, signal, value});
 }
 
 void CycleTrace::flush(uint64_t cycle) {
@@ -97,28 +110,27 @@ void CycleTrace::flush(uint64_t cycle) {
                    [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
   const auto byCycle = [](const Change& change, uint64_t c) { return change.cycle < c; };
   const auto end = std::lower_bound(changes_.begin(), changes_.end(), cycle, byCycle);
-  auto begin = changes_.cbegin();
-  if (!dumped_ && cycle > options_.fromCycle) {
-    // The window's first cycle goes into the initial dump, so no time stamp appears twice.
-    initialValues();
-    for (; begin != end && begin->cycle == options_.fromCycle; ++begin) {
-      known_[static_cast<size_t>(begin->signal)] = true;
-      current_[static_cast<size_t>(begin->signal)] = begin->value;
-    }
-    writeInitialValues();
-  }
-  while (begin != end) {
+  for (auto begin = changes_.cbegin(); begin != end;) {
     auto next = begin;
     while (next != end && next->cycle == begin->cycle) ++next;
-    writeCycle(begin->cycle, begin, next);
+    const Settled settled = settle(begin, next);
+    notifyListeners(begin->cycle, settled);
+    if (writer_) fileCycle(begin->cycle, settled);
     begin = next;
   }
   changes_.erase(changes_.begin(), end);
+  if (writer_ && !dumped_ && cycle > options_.fromCycle) {
+    initialValues();
+    writeInitialValues();
+  }
 }
 
 void CycleTrace::finish(uint64_t markerCycle) {
   flush(std::numeric_limits<uint64_t>::max());
+  for (TraceListener* listener : listeners_) listener->finished();
+  if (!writer_) return;
   writer_->close();
+  if (options_.countOnly) return;
   std::vector<SaveFileSignal> shown;
   for (const Signal& s : signals_)
     shown.push_back({s.scope, s.variable.name, s.variable.width, !s.variable.valueNames.empty()});
@@ -127,6 +139,10 @@ void CycleTrace::finish(uint64_t markerCycle) {
 
 void CycleTrace::writeDeclarations() {
   declared_ = true;
+  if (!writer_) return;
+  InstanceWidths widths;
+  for (const std::string& scope : declaredScopes_) widths.add(scope);
+  for (Signal& signal : signals_) signal.scope = widths.padded(signal.scope);
   // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
@@ -147,6 +163,60 @@ void CycleTrace::writeDeclarations() {
   writer_->endDeclarations();
 }
 
+CycleTrace::Settled CycleTrace::settle(std::vector<Change>::const_iterator begin,
+                                      std::vector<Change>::const_iterator end) {
+  std::map<int, uint64_t> last;
+  for (auto change = begin; change != end; ++change) last[change->signal] = change->value;
+  Settled settled;
+  for (const auto& [signal, value] : last) settled.push_back({static_cast<size_t>(signal), value});
+  return settled;
+}
+
+void CycleTrace::notifyListeners(uint64_t cycle, const Settled& settled) {
+  if (listeners_.empty()) return;
+  heard_.resize(fileIndex_.size());
+  heardValue_.resize(fileIndex_.size());
+  Settled changed;
+  for (const TraceChange& change : settled) {
+    if (heard_[change.signal] && heardValue_[change.signal] == change.value) continue;
+    heard_[change.signal] = true;
+    heardValue_[change.signal] = change.value;
+    changed.push_back(change);
+  }
+  if (changed.empty()) return;
+  for (TraceListener* listener : listeners_) listener->changed(cycle, changed);
+}
+
+// Before the window a cycle only sets the values the window starts from; the window's first
+// cycle goes into the initial dump, so no time stamp appears twice.
+void CycleTrace::fileCycle(uint64_t cycle, const Settled& settled) {
+  if (cycle >= options_.toCycle) return;
+  if (cycle < options_.fromCycle) {
+    for (const TraceChange& change : settled) {
+      const int index = fileIndex_[change.signal];
+      if (index == kNoSignal) continue;
+      signals_[static_cast<size_t>(index)].hasInitial = true;
+      signals_[static_cast<size_t>(index)].initialValue = change.value;
+    }
+    return;
+  }
+  if (!dumped_) {
+    initialValues();
+    if (cycle == options_.fromCycle) {
+      for (const TraceChange& change : settled) {
+        const int index = fileIndex_[change.signal];
+        if (index == kNoSignal) continue;
+        known_[static_cast<size_t>(index)] = true;
+        current_[static_cast<size_t>(index)] = change.value;
+      }
+      writeInitialValues();
+      return;
+    }
+    writeInitialValues();
+  }
+  writeCycle(cycle, settled);
+}
+
 // The values before the window, final once the simulation has passed its first cycle.
 void CycleTrace::initialValues() {
   known_.resize(signals_.size());
@@ -164,20 +234,19 @@ void CycleTrace::writeInitialValues() {
   writer_->endInitial();
 }
 
-void CycleTrace::writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
-                            std::vector<Change>::const_iterator end) {
-  // The last record of a signal in this cycle is its value; emit it if it changed.
-  std::map<int, uint64_t> settled;
-  for (auto change = begin; change != end; ++change) settled[change->signal] = change->value;
+// A signal is written when its value changed.
+void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
   bool stamped = false;
-  for (const auto& [signal, value] : settled) {
+  for (const TraceChange& change : settled) {
+    const int signal = fileIndex_[change.signal];
+    if (signal == kNoSignal) continue;
     const auto index = static_cast<size_t>(signal);
-    if (known_[index] && current_[index] == value) continue;
+    if (known_[index] && current_[index] == change.value) continue;
     if (!stamped) writer_->time(cycle * options_.periodPs);
     stamped = true;
     known_[index] = true;
-    current_[index] = value;
-    writer_->value(index, true, value);
+    current_[index] = change.value;
+    writer_->value(index, true, change.value);
   }
 }
 

@@ -6,7 +6,9 @@
 // So every cycle before the current simulated one is final: the simulation calls flush() with
 // that cycle now and then, which writes those cycles in time order and frees them; only the
 // records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle
-// window and the module scopes asked for are kept.
+// window and the module scopes asked for go to the file (instances numbered core_03 when there
+// are ten or more: modules/instance_names.h); listeners (modules/trace_listener.h) see
+// every signal and every cycle.
 
 #include <cstdint>
 #include <limits>
@@ -15,25 +17,30 @@
 #include <string>
 #include <vector>
 
+#include "counting_stream.h"
+#include "trace_listener.h"
 #include "trace_writer.h"
 
 namespace rtu {
 
 struct TraceOptions {
-  std::string path;
+  std::string path;  // empty: no file, only the listeners
   uint64_t fromCycle = 0;
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
+  std::vector<std::string> signalClasses;  // modules/trace_signal_classes.h; empty keeps all
   uint64_t periodPs = 10000;                                // trace time of one cycle
   uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
+  bool countOnly = false;       // write nothing: count the bytes of the VCD the file would be
 };
 
 class CycleTrace {
  public:
   static constexpr int kNoSignal = -1;
 
-  // Opens the file; throws std::runtime_error when it cannot be written.
-  explicit CycleTrace(TraceOptions options);
+  // Opens the file; throws std::runtime_error when it cannot be written. The listeners must
+  // outlive the trace.
+  explicit CycleTrace(TraceOptions options, std::vector<TraceListener*> listeners = {});
 
   // A signal of `width` bits (1 to 64) in the dot-separated module path `scope`; kNoSignal when
   // the scope filter leaves it out. `valueNames` name the values 0, 1, ... (FST shows them). All
@@ -56,6 +63,8 @@ class CycleTrace {
 
   // Records held in memory, waiting for their cycle to become final.
   size_t pendingRecords() const { return changes_.size(); }
+  // With TraceOptions::countOnly: the bytes the VCD file would have, so far.
+  uint64_t countedBytes() const { return writer_ ? writer_->bytes() : 0; }
 
  private:
   struct Signal {
@@ -69,23 +78,33 @@ class CycleTrace {
     int signal;
     uint64_t value;
   };
+  using Settled = std::vector<TraceChange>;  // a cycle's last record of each signal
   bool scopeKept(const std::string& scope);
+  bool classKept(const std::string& name) const;
   void writeDeclarations();
+  static Settled settle(std::vector<Change>::const_iterator begin,
+                        std::vector<Change>::const_iterator end);
+  void notifyListeners(uint64_t cycle, const Settled& settled);
+  void fileCycle(uint64_t cycle, const Settled& settled);
   void initialValues();
   void writeInitialValues();
-  void writeCycle(uint64_t cycle, std::vector<Change>::const_iterator begin,
-                  std::vector<Change>::const_iterator end);
+  void writeCycle(uint64_t cycle, const Settled& settled);
 
   TraceOptions options_;
+  std::vector<TraceListener*> listeners_;
+  CountingStream counter_;
   std::unique_ptr<TraceWriter> writer_;
-  std::vector<Signal> signals_;
+  std::vector<int> fileIndex_;  // per signal id: its index in signals_, or kNoSignal
+  std::vector<Signal> signals_;  // the signals the file keeps
   std::set<std::string> declaredScopes_;  // kept or not
   std::vector<bool> scopeMatched_;        // per scope of the filter
   std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
   uint64_t written_ = 0;         // every cycle before it is written
   bool declared_ = false, dumped_ = false;
-  std::vector<bool> known_;
+  std::vector<bool> known_;  // per signal of the file
   std::vector<uint64_t> current_;
+  std::vector<bool> heard_;  // per signal id: the listeners' last values
+  std::vector<uint64_t> heardValue_;
 };
 
 }  // namespace rtu

@@ -30,13 +30,19 @@ class TraceWriter {
   virtual void value(size_t index, bool known, uint64_t value) = 0;
   // Throws std::runtime_error naming the file when it could not be written.
   virtual void close() = 0;
+  // The bytes written so far by a counting writer (openVcdCounter); 0 for a file.
+  virtual uint64_t bytes() const { return 0; }
 };
+
+class CountingStream;
 
 // FST (compressed, with enum tables for named values) for a path ending in ".fst", else VCD.
 // Throws std::runtime_error when the file cannot be created.
 std::unique_ptr<TraceWriter> openTraceWriter(const std::string& path);
 std::unique_ptr<TraceWriter> openVcdWriter(const std::string& path);
 std::unique_ptr<TraceWriter> openFstWriter(const std::string& path);
+// Writes the VCD into `counter` (which must outlive it), which only counts its bytes.
+std::unique_ptr<TraceWriter> openVcdCounter(CountingStream& counter);
 
 // `value`'s low `width` bits, most significant first.
 std::string bitString(uint64_t value, int width);

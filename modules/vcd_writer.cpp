@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "counting_stream.h"
 #include "trace_writer.h"
 
 namespace rtu {
@@ -21,39 +22,46 @@ std::string identifierCode(size_t index) {
 
 class VcdWriter : public TraceWriter {
  public:
-  explicit VcdWriter(const std::string& path) : path_(path), out_(path) {
-    if (!out_) throw std::runtime_error("cannot write trace file " + path);
-    out_ << "$timescale 1ps $end\n";
+  // `counter` non-null: writes into it instead of the file at `path`, to count the bytes.
+  VcdWriter(const std::string& path, CountingStream* counter) : path_(path), counter_(counter) {
+    if (!counter_) file_.open(path);
+    if (!out()) throw std::runtime_error("cannot write trace file " + path);
+    out() << "$timescale 1ps $end\n";
   }
+  uint64_t bytes() const override { return counter_ ? counter_->count() : 0; }
   void enterScope(const std::string& name) override {
-    out_ << "$scope module " << name << " $end\n";
+    out() << "$scope module " << name << " $end\n";
   }
-  void leaveScope() override { out_ << "$upscope $end\n"; }
+  void leaveScope() override { out() << "$upscope $end\n"; }
   void variable(size_t index, const TraceVariable& variable) override {
     if (variables_.size() <= index) variables_.resize(index + 1);
     variables_[index] = {variable.width, identifierCode(index)};
-    out_ << "$var wire " << variable.width << ' ' << variables_[index].code << ' ' << variable.name
+    out() << "$var wire " << variable.width << ' ' << variables_[index].code << ' ' << variable.name
          << " $end\n";
   }
-  void endDeclarations() override { out_ << "$enddefinitions $end\n"; }
-  void beginInitial(uint64_t timePs) override { out_ << '#' << timePs << "\n$dumpvars\n"; }
-  void endInitial() override { out_ << "$end\n"; }
-  void time(uint64_t timePs) override { out_ << '#' << timePs << '\n'; }
+  void endDeclarations() override { out() << "$enddefinitions $end\n"; }
+  void beginInitial(uint64_t timePs) override { out() << '#' << timePs << "\n$dumpvars\n"; }
+  void endInitial() override { out() << "$end\n"; }
+  void time(uint64_t timePs) override { out() << '#' << timePs << '\n'; }
   void value(size_t index, bool known, uint64_t value) override {
     const auto& [width, code] = variables_[index];
     if (width == 1)
-      out_ << (known ? (value ? '1' : '0') : 'x') << code << '\n';
+      out() << (known ? (value ? '1' : '0') : 'x') << code << '\n';
     else
-      out_ << 'b' << (known ? bitString(value, width) : std::string("x")) << ' ' << code << '\n';
+      out() << 'b' << (known ? bitString(value, width) : std::string("x")) << ' ' << code << '\n';
   }
   void close() override {
-    out_.close();
-    if (!out_) throw std::runtime_error("error writing trace file " + path_);
+    if (counter_) return;
+    file_.close();
+    if (!file_) throw std::runtime_error("error writing trace file " + path_);
   }
 
  private:
+  std::ostream& out() { return counter_ ? static_cast<std::ostream&>(*counter_) : file_; }
+
   std::string path_;
-  std::ofstream out_;
+  CountingStream* counter_;
+  std::ofstream file_;
   struct Variable {
     int width;
     std::string code;
@@ -64,7 +72,11 @@ class VcdWriter : public TraceWriter {
 }  // namespace
 
 std::unique_ptr<TraceWriter> openVcdWriter(const std::string& path) {
-  return std::make_unique<VcdWriter>(path);
+  return std::make_unique<VcdWriter>(path, nullptr);
+}
+
+std::unique_ptr<TraceWriter> openVcdCounter(CountingStream& counter) {
+  return std::make_unique<VcdWriter>("(counted)", &counter);
 }
 
 }  // namespace rtu

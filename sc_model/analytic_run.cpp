@@ -126,6 +126,7 @@ std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
   if (!config.memory.ideal) return "the memory is cached";
   if (config.reorderCapacity > 0) return "results pass a reorder buffer";
   if (config.trace) return "a trace is recorded";
+  if (config.timeline.wanted()) return "a timeline is recorded";
   if (config.hostInput.activeProbability < 1.0 || config.hostOutput.activeProbability < 1.0)
     return "a host link is randomly inactive";
   return std::nullopt;

@@ -42,7 +42,7 @@ struct RenderOptions {
 // timed model are errors there rather than silently dropped.
 void restrictToGoldenModel(const RenderOptions& options, ConfigRequest& request) {
   if (options.outputs.any())
-    throw std::invalid_argument("--stats and --vcd need --model systemc: the golden model is "
+    throw std::invalid_argument("--stats, --trace and --timeline need --model systemc: the golden model is "
                                 "untimed");
   request.uses &= ~kUseModel;
   request.command = "render --model golden";
@@ -69,12 +69,16 @@ std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
                                               const RenderOptions& options) {
   const RtuConfig config = options.outputs.traced(configuration.values().rtu);
   checkStackDepth(scene.image, jobs, config.stackFrames, configuration.values().allowStackOverflow);
+  const std::vector<HostRecord> records(jobs.begin(), jobs.end());
+  const RtuConfig planned =
+      plannedTrace(scene.image.memory(), records, config, options.outputs, std::cout);
   RunProgressLine progress("render", "rays");
-  const RtuRun run = simulateRtu(scene.image.memory(), jobs, config, progress.callback());
+  const RtuRun run = simulateRtu(scene.image.memory(), records, planned, progress.callback());
   std::vector<TraversalResult> results = resultsInJobOrder(run);
   std::cout << ResultSummary::of(results).describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+  if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
   return results;
 }
 

@@ -52,13 +52,16 @@ void addReplayCommand(CLI::App& app) {
       warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
     }
     checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
+    const RtuConfig planned =
+        plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");
-    const RtuRun run = simulateRtu(image.memory(), records, config, progress.callback());
+    const RtuRun run = simulateRtu(image.memory(), records, planned, progress.callback());
     writeResultBuffer(options->out, run.results, recordWords);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, configuration, options->outputs, std::cout);
     std::cout << "wrote       " << options->out << "\n";
     if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+    if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
   });
 }
 

@@ -11,6 +11,7 @@
 #include "job_manager.h"
 #include "memory_config.h"
 #include "scheduler.h"
+#include "timeline_writer.h"
 
 namespace rtu {
 
@@ -24,6 +25,7 @@ struct RtuConfig {
   int reorderCapacity = 0;  // 0: no reorder buffer
   double clockMhz = 100.0;
   std::optional<TraceOptions> trace;
+  TimelineOptions timeline;  // path empty: no timeline
 
   static MemoryConfig idealMemory() {
     MemoryConfig memory;

@@ -5,14 +5,26 @@
 #include <stdexcept>
 
 #include "cli_options.h"
+#include "sweep_workers.h"
 #include "timing_limits.h"
+#include "trace_plan.h"
 
 namespace rtu {
 
 RtuConfig RunOutputs::traced(const RtuConfig& config) const {
+  if (!needingOutput.empty() && vcdPath.empty() && timelinePath.empty())
+    throw std::invalid_argument(needingOutput + " needs --trace or --timeline");
   RtuConfig resolved = config;
-  if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes};
+  if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
+  resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
+}
+
+RtuConfig plannedTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                       const RtuConfig& config, const RunOutputs& outputs, std::ostream& out) {
+  RunProgressLine progress("dry run", "rays");
+  return planTrace(memory, records, config, {outputs.traceRay, outputs.traceMaxMb * 1000000}, out,
+                   progress.callback());
 }
 
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
@@ -20,18 +32,39 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
                      "write the statistics with the effective configuration as JSON");
   CLI::Option* vcd = command.add_option("--trace,--vcd", outputs.vcdPath,
                                         "write a trace for GTKWave: FST for a .fst path, else VCD");
+  command.add_option(
+      "--timeline", outputs.timelinePath,
+      "write a per-core timeline of the rays as Chrome trace-event JSON (Perfetto)");
   const CLI::Range cycles(uint64_t{0}, kMaxCycles, "cycle in 0 .. 1e13");
-  command.add_option("--vcd-from", outputs.vcdFrom, "first traced cycle")
-      ->needs(vcd)
-      ->check(kNotNegative)
-      ->check(cycles);
-  command.add_option("--vcd-to", outputs.vcdTo, "cycle the trace stops before")
-      ->needs(vcd)
-      ->check(kNotNegative)
-      ->check(cycles);
+  CLI::Option* from =
+      command.add_option("--trace-from,--vcd-from", outputs.vcdFrom, "first traced cycle")
+          ->check(kNotNegative)
+          ->check(cycles);
+  CLI::Option* to =
+      command.add_option("--trace-to,--vcd-to", outputs.vcdTo, "cycle the trace stops before")
+          ->check(kNotNegative)
+          ->check(cycles);
+  CLI::Option* ray = command.add_option(
+      "--trace-ray", outputs.traceRay,
+      "trace and timeline from this ray's entry into the RTU to its result reaching the host")
+      ->check(CLI::Range(int64_t{0}, int64_t{1} << 40))
+      ->excludes(from)
+      ->excludes(to);
   command.add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
-                     "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
+                         "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
+          ->needs(vcd);
+  command.add_option("--trace-signals", outputs.signalClasses,
+                     "trace only these signal classes: handshakes, states, stack, caches (default: all)")
+      ->delimiter(',')
       ->needs(vcd);
+  CLI::Option* maxMb = command.add_option(
+      "--trace-max-mb", outputs.traceMaxMb,
+      "refuse a trace or timeline larger than this (measured by a dry run first), default 300")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  for (CLI::Option* option : {from, to, ray, maxMb})
+    option->each([&outputs, option](const std::string&) {
+      outputs.needingOutput = option->get_name();
+    });
 }
 
 nlohmann::ordered_json runJson(const RtuStatistics& statistics, const Configuration& configuration) {

@@ -24,14 +24,26 @@ struct RunOutputs {
   uint64_t vcdFrom = 0;
   uint64_t vcdTo = std::numeric_limits<uint64_t>::max();
   std::vector<std::string> vcdScopes;
+  std::vector<std::string> signalClasses;
+  std::string timelinePath;
+  int64_t traceRay = -1;       // -1: no --trace-ray
+  uint64_t traceMaxMb = 300;
+  std::string needingOutput;  // an option given that needs --trace or --timeline
 
-  // The model configuration with the trace asked for.
+  // The model configuration with the trace and the timeline asked for.
   RtuConfig traced(const RtuConfig& config) const;
-  std::vector<NamedPath> paths() const { return {{"--stats", statsPath}, {"--vcd", vcdPath}}; }
-  bool any() const { return !statsPath.empty() || !vcdPath.empty(); }
+  std::vector<NamedPath> paths() const {
+    return {{"--stats", statsPath}, {"--vcd", vcdPath}, {"--timeline", timelinePath}};
+  }
+  bool any() const { return !statsPath.empty() || !vcdPath.empty() || !timelinePath.empty(); }
 };
 
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs);
+
+// `config` with the trace's window (--trace-ray), after measuring the trace and the timeline
+// (sc_model/trace_plan.h): prints their sizes, refuses one above --trace-max-mb.
+RtuConfig plannedTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                       const RtuConfig& config, const RunOutputs& outputs, std::ostream& out);
 
 // {"rtusim": {"version"}, "config": {every key}, "statistics": {...}}: a result file that says
 // how to reproduce it.

@@ -55,7 +55,8 @@ class RunLoop {
 
   uint64_t slice() const {
     if (snapshots_.size() < plan_.afterResults.size()) return std::max<uint64_t>(1, plan_.everyCycles);
-    return trace_ ? config_.trace->flushCycles : kProgressCycles;
+    if (!trace_) return kProgressCycles;
+    return config_.trace ? config_.trace->flushCycles : TraceOptions{}.flushCycles;
   }
 
   // True once the last snapshot is taken.
@@ -76,16 +77,26 @@ class RunLoop {
   std::vector<RunSnapshot>& snapshots_;
 };
 
+// A trace when the run writes or counts one, a timeline, or has listeners: the file is optional.
+std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config, std::vector<TraceListener*> listeners) {
+  if (!config.trace && listeners.empty()) return nullptr;
+  TraceOptions options = config.trace.value_or(TraceOptions{});
+  options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
+  return std::make_unique<CycleTrace>(options, std::move(listeners));
+}
+
 RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                const RtuConfig& config, const RunProgress& progress, const BlockRun& plan) {
+                const RtuConfig& config, const RunProgress& progress,
+                std::vector<TraceListener*> listeners, const BlockRun& plan) {
   validate(config);
   freshKernel();
-  std::unique_ptr<CycleTrace> trace;
-  if (config.trace) {
-    TraceOptions options = *config.trace;
-    options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
-    trace = std::make_unique<CycleTrace>(options);
+  std::unique_ptr<TimelineWriter> timeline;
+  if (config.timeline.wanted()) {
+    timeline = std::make_unique<TimelineWriter>(
+        config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value());
+    listeners.push_back(timeline.get());
   }
+  std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));
   auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), plan.startCaches);
   if (trace) trace->checkScopesMatched();
 
@@ -111,6 +122,8 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
+  if (trace) run.traceBytes = trace->countedBytes();
+  if (timeline) run.timelineBytes = timeline->bytes();
   return run;
 }
 
@@ -122,13 +135,14 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
 }
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config, const RunProgress& progress) {
-  return simulate(memory, records, config, progress, BlockRun{});
+                   const RtuConfig& config, const RunProgress& progress,
+                   std::vector<TraceListener*> listeners) {
+  return simulate(memory, records, config, progress, std::move(listeners), BlockRun{});
 }
 
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const BlockRun& block) {
-  return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, block);
+  return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, {}, block);
 }
 
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run) {

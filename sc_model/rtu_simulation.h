@@ -12,6 +12,7 @@
 #include "rtu_payloads.h"
 #include "rtu_statistics.h"
 #include "svo_memory.h"
+#include "trace_listener.h"
 #include "traversal_job.h"
 
 namespace rtu {
@@ -43,15 +44,19 @@ struct RtuRun {
   uint64_t totalCycles = 0;
   RtuStatistics statistics;
   std::vector<RunSnapshot> snapshots;
+  // Bytes of the trace's VCD and of the timeline, of a run that only counts them (countOnly).
+  uint64_t traceBytes = 0, timelineBytes = 0;
 };
 
 // Told now and then how many results the host has received of how many.
 using RunProgress = std::function<void(size_t results, size_t total)>;
 
 // Throws std::invalid_argument for impossible configurations and std::runtime_error when the
-// simulation ends without every result (which would be a model defect).
+// simulation ends without every result (which would be a model defect). `listeners` see the
+// trace's records (modules/trace_listener.h) and must outlive the call.
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
-                   const RtuConfig& config, const RunProgress& progress = {});
+                   const RtuConfig& config, const RunProgress& progress = {},
+                   std::vector<TraceListener*> listeners = {});
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
 // A sampled block's run.

@@ -23,10 +23,10 @@ expect_error "memory.l1.latency: 2e+06 is out of range 0 .. 1e+06" \
   --memory cached --dram-bytes-per-cycle 0.001 --clock-mhz 1 >/dev/null || fail "limits refused"
 
 # Negative values for unsigned options are refused, not wrapped.
-expect_error "vcd-from: must not be negative, got -5" \
+expect_error "trace-from: must not be negative, got -5" \
   "$rtusim" render --scene sphere --depth 4 --vcd t.vcd --vcd-from -5
 expect_error "root: must not be negative, got -1" "$rtusim" jobs --root -1 --out x.bin
-expect_error "vcd-to: Value 20000000000000 not in range" \
+expect_error "trace-to: Value 20000000000000 not in range" \
   "$rtusim" render --scene sphere --depth 4 --vcd t.vcd --vcd-to 20000000000000
 expect_error "scene.root: -1 is out of range" "$rtusim" build --set scene.root=-1 --out x.svo
 
@@ -50,7 +50,7 @@ mkdir adir
 expect_error "--image 'adir' is a directory" "$rtusim" render --scene sphere --depth 4 --image adir
 
 # The golden model refuses what only the timed model uses.
-expect_error "--stats and --vcd need --model systemc" \
+expect_error "--stats, --trace and --timeline need --model systemc" \
   "$rtusim" render --model golden --scene sphere --depth 4 --stats s.json
 expect_error "cores (command line) has no effect: rtusim render --model golden does not use it" \
   "$rtusim" render --model golden --scene sphere --depth 4 --cores 4

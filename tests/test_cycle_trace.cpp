@@ -10,10 +10,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include <unistd.h>
 
 #include "cycle_trace.h"
+#include "gtkw_save_file.h"
+#include "instance_names.h"
 
 namespace rtu {
 namespace {
@@ -100,6 +104,88 @@ TEST_CASE("Trace window: records before it set the initial values when it starts
   const std::string text = contents(options.path);
   fs::remove(options.path);
   CHECK(text.substr(text.find("#4")) == "#4\n$dumpvars\n0!\n$end\n#5\n1!\n");
+}
+
+// What a listener is told.
+struct Heard : TraceListener {
+  std::vector<std::string> scopes;
+  std::vector<std::tuple<uint64_t, size_t, uint64_t>> changes;
+  bool finishedCalled = false;
+  void declared(size_t signal, const std::string& scope, const TraceVariable&) override {
+    CHECK(signal == scopes.size());
+    scopes.push_back(scope);
+  }
+  void changed(uint64_t cycle, const std::vector<TraceChange>& values) override {
+    for (const TraceChange& change : values) changes.emplace_back(cycle, change.signal, change.value);
+  }
+  void finished() override { finishedCalled = true; }
+};
+
+TEST_CASE("Trace listeners hear every signal and cycle, whatever the file keeps", "[trace]") {
+  TraceOptions options;
+  options.path = tracePath("listened.vcd");
+  options.scopes = {"top.in"};
+  options.fromCycle = 4;
+  Heard heard;
+  CycleTrace trace(options, {&heard});
+  const int state = trace.declare("top.core_0", "state", 3);  // outside the file's scope
+  const int valid = trace.declare("top.in", "valid", 1);
+  REQUIRE(state != CycleTrace::kNoSignal);
+  trace.record(state, 0, 0);
+  trace.record(valid, 0, 0);
+  trace.record(state, 5, 2);  // ahead, out of order
+  trace.record(state, 1, 1);
+  trace.flush(3);
+  trace.record(state, 3, 1);  // no change: not heard
+  trace.record(valid, 3, 1);
+  trace.record(state, 5, 3);  // the last record of the cycle wins
+  trace.finish(0);
+  fs::remove(options.path);
+  fs::remove(saveFilePath(options.path));
+  CHECK(heard.scopes == std::vector<std::string>{"top.core_0", "top.in"});
+  const std::vector<std::tuple<uint64_t, size_t, uint64_t>> expected{
+      {0, 0, 0}, {0, 1, 0}, {1, 0, 1}, {3, 1, 1}, {5, 0, 3}};
+  CHECK(heard.changes == expected);
+  CHECK(heard.finishedCalled);
+}
+
+TEST_CASE("A counting trace counts the bytes of the VCD it would write", "[trace]") {
+  const auto run = [](TraceOptions options) {
+    CycleTrace trace(options);
+    const int state = trace.declare("top.core_0", "state", 3, {"A", "B", "C"});
+    const int valid = trace.declare("top.in", "valid", 1);
+    for (uint64_t cycle = 0; cycle < 300; ++cycle) {
+      trace.record(state, cycle, cycle / 7 % 3);
+      trace.record(valid, cycle, cycle / 3 % 2);
+    }
+    trace.finish(0);
+    return trace.countedBytes();
+  };
+  TraceOptions written;
+  written.path = tracePath("counted.vcd");
+  run(written);
+  TraceOptions counted = written;
+  counted.countOnly = true;
+  CHECK(run(counted) == fs::file_size(written.path));
+  fs::remove(written.path);
+  fs::remove(saveFilePath(written.path));
+}
+
+TEST_CASE("Instance numbers are padded to the widest of their kind", "[trace]") {
+  CHECK(unpaddedScope("rtu.core_03.in") == "rtu.core_3.in");
+  CHECK(unpaddedScope("rtu.core_00") == "rtu.core_0");
+  InstanceWidths four, twelve;
+  for (int i = 0; i < 4; ++i) four.add("rtu.core_" + std::to_string(i));
+  for (int i = 0; i < 12; ++i) {
+    twelve.add("rtu.core_" + std::to_string(i) + ".in");
+    twelve.add("rtu.memory.l1_" + std::to_string(i));
+  }
+  CHECK(four.padded("rtu.core_3.in") == "rtu.core_3.in");
+  CHECK(twelve.padded("rtu.core_3.in") == "rtu.core_03.in");
+  CHECK(twelve.padded("rtu.core_11") == "rtu.core_11");
+  CHECK(twelve.padded("rtu.memory.l1_0") == "rtu.memory.l1_00");
+  CHECK(twelve.padded("rtu.memory.l2") == "rtu.memory.l2");
+  CHECK(twelve.padded("rtu.job_manager.in") == "rtu.job_manager.in");
 }
 
 }  // namespace

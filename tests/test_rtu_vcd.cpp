@@ -511,15 +511,19 @@ TEST_CASE("VCD scope filter keeps only the scopes asked for", "[rtu]") {
     CHECK(only.levels(name) == full.levels(name));
   }
 
-  // A prefix is a scope, not a string prefix: rtu.core_1 does not keep rtu.core_10.
+  // A prefix is a scope, not a string prefix: rtu.core_1 does not keep rtu.core_10. With twelve
+  // cores the instances are zero-padded (core_01), and the filter matches either spelling.
   RtuConfig twelve;
   twelve.cores = 12;
   const Traced many = traced(sphere(), twelve, dir, "twelve.vcd", options);
-  CHECK(many.vcd.has("rtu.core_1.state"));
+  CHECK(many.vcd.has("rtu.core_01.state"));
   for (const std::string& name : many.vcd.names()) {
     INFO(name);
-    CHECK(name.rfind("rtu.core_1.", 0) == 0);
+    CHECK(name.rfind("rtu.core_01.", 0) == 0);
   }
+  TraceOptions padded;
+  padded.scopes = {"rtu.core_01"};
+  CHECK(traced(sphere(), twelve, dir, "padded.vcd", padded).vcd.names() == many.vcd.names());
 
   // Several scopes, one of them the memory.
   RtuConfig cached = config;
@@ -553,6 +557,29 @@ TEST_CASE("VCD scope that matches nothing is an error listing the scopes", "[rtu
       CHECK(message.find("rtu.scheduler.in") != std::string::npos);
     }
   }
+}
+
+TEST_CASE("Trace signal classes keep only their signals, with the values of a full trace",
+          "[rtu]") {
+  TempDir dir;
+  RtuConfig config;
+  config.cores = 2;
+  config.memory = MemoryConfig{};
+  const Traced full = traced(sphere(), config, dir, "full.vcd");
+  TraceOptions options;
+  options.signalClasses = {"states", "caches"};
+  const Traced some = traced(sphere(), config, dir, "some.vcd", options);
+  CHECK(some.vcd.has("rtu.core_0.state"));
+  CHECK(some.vcd.has("rtu.memory.l2.misses"));
+  for (const std::string& name : some.vcd.names()) {
+    INFO(name);
+    const std::string leaf = name.substr(name.rfind('.') + 1);
+    CHECK((leaf == "state" || leaf == "hits" || leaf == "misses"));
+    CHECK(some.levels(name) == full.levels(name));
+  }
+  options.signalClasses = {"handshake"};
+  CHECK_THROWS_WITH(traced(sphere(), config, dir, "typo.vcd", options),
+                    Catch::Contains("'handshake' does not exist; the classes are handshakes"));
 }
 
 TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "[rtu]") {

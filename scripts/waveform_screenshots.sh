@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Screenshots of GTKWave showing rtusim traces, for docs/waveforms.md: runs GTKWave under Xvfb
+# on a small FST with the save file rtusim writes next to it, and grabs the screen with
+# ImageMagick's import. Packages: gtkwave, xvfb, imagemagick (scripts/setup.sh installs them).
+# Usage: scripts/waveform_screenshots.sh [path/to/rtusim] [output directory, default docs/images]
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+rtusim=${1:-$here/../build/rtusim}
+out=$(realpath -m "${2:-$here/../docs/images}")
+for tool in gtkwave Xvfb import; do
+  command -v $tool >/dev/null || { echo "$tool not found: run scripts/setup.sh" >&2; exit 1; }
+done
+mkdir -p "$out"
+work=$(mktemp -d)
+display=:$((90 + RANDOM % 100))
+cleanup() { [[ -n ${xvfb:-} ]] && kill "$xvfb" 2>/dev/null; rm -rf "$work"; }
+trap cleanup EXIT
+cd "$work"
+
+"$rtusim" build --scene sphere --depth 5 --out sphere.svo >/dev/null
+"$rtusim" jobs --width 16 --height 12 --out jobs.bin >/dev/null
+Xvfb "$display" -screen 0 1600x900x24 -nolisten tcp &
+xvfb=$!
+sleep 1
+
+# shot NAME ZOOM REPLAY-OPTIONS...: a trace of the first cycles, opened with its save file
+# (window size and zoom added), grabbed once GTKWave has drawn it.
+shot() {
+  local name=$1 zoom=$2; shift 2
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin "$@" --trace "$name.fst" >/dev/null
+  { echo "[size] 1600 900"; sed "s/^\*-20.000000 /*$zoom /" "$name.gtkw"; } >"$name.view.gtkw"
+  DISPLAY=$display gtkwave "$name.fst" "$name.view.gtkw" >/dev/null 2>&1 &
+  local viewer=$!
+  sleep 4
+  DISPLAY=$display import -window root "$out/$name.png"
+  kill "$viewer"
+  wait "$viewer" 2>/dev/null || true
+  echo "wrote $out/$name.png"
+}
+
+# The pipeline at the start of a frame: host in, scheduler, two of four cores, result manager.
+shot waveform_pipeline -18.5 --cores 4 --trace-to 200 \
+  --trace-scope rtu.job_manager rtu.scheduler rtu.core_0 rtu.core_1 rtu.result_manager
+# Cached memory: cores BLOCKED on their reads, the L1 counters.
+shot waveform_cached -19.5 --cores 2 --memory cached --trace-to 400 \
+  --trace-scope rtu.core_0 rtu.core_1 rtu.memory
