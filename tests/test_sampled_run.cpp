@@ -139,7 +139,7 @@ TEST_CASE("Sampled estimate: the 95 % interval covers the full run for 18 of 20 
   config.memory.ideal = false;
   const double full = static_cast<double>(simulateRtu(image.memory(), jobs, config).totalCycles);
   SampleSpec spec;
-  spec.fraction = 0.5;  // 35 strata of 1024 rays here; 10 % of a 1080p frame gives 65 (bench)
+  spec.fraction = 0.5;  // 35 strata of 1024 rays here; 10 % of a 1080p frame gives 40 (bench)
   int covered = 0;
   double worst = 0;
   for (uint64_t seed = 1; seed <= 20; ++seed) {
