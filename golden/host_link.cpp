@@ -14,7 +14,7 @@ HostLinkPacer::HostLinkPacer(HostLinkConfig config) : config_(config), generator
 // Slot boundaries are computed from the last restart, not accumulated, so rounding cannot drift
 // them across a cycle boundary over millions of records.
 uint64_t HostLinkPacer::slotStart(uint64_t records) const {
-  const double slot = static_cast<double>(kHostRecordBytes) / config_.bytesPerCycle;
+  const double slot = static_cast<double>(config_.recordBytes) / config_.bytesPerCycle;
   return restartCycle_ + static_cast<uint64_t>(std::ceil(static_cast<double>(records) * slot - 1e-6));
 }
 

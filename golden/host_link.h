@@ -11,11 +11,18 @@
 namespace rtu {
 
 constexpr uint64_t kHostRecordBytes = 32;  // 8 words, input and output alike
+// Result records of formats over 32 bits: 12 words, t and the normal 64 bits each
+// (docs/inputs-jobs.md).
+constexpr uint64_t kWideResultRecordBytes = 48;
+inline uint64_t resultRecordBytes(int totalBits) {
+  return totalBits > 32 ? kWideResultRecordBytes : kHostRecordBytes;
+}
 
 struct HostLinkConfig {
   double bytesPerCycle = 0.0;       // 0: unlimited
   double activeProbability = 1.0;   // chance the link can move a record in a given cycle
   uint64_t seed = 1;
+  uint64_t recordBytes = kHostRecordBytes;  // what one record takes on the link
 };
 
 class HostLinkPacer {

@@ -97,6 +97,7 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
   stats.coreTimes.resize(static_cast<size_t>(config.cores));
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
+  stats.hostOutRecordBytes = config.outputLink().recordBytes;
   const std::vector<bool> idleWhenPending = coreIdleWhenPending(run, config.cores);
   for (size_t j = 0; j < results.size(); ++j) {
     const TraversalResult& result = results[j];
@@ -146,7 +147,7 @@ RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records, 
   for (const Record& record : records) traced.trace(record);
   const RecurrenceRun timing =
       runRecurrence(traced.timing, RecurrenceConfig{config.cores, config.scheduler,
-                                                    config.hostInput, config.hostOutput});
+                                                    config.hostInput, config.outputLink()});
   RtuRun run;
   run.totalCycles = timing.totalCycles;
   run.results.reserve(records.size());

@@ -67,10 +67,10 @@ void writeCsv(const std::vector<ModeFidelity>& modes, const std::string& path) {
     return value ? text(value, "%.10g") : std::string();
   };
   for (const ModeFidelity& m : modes) {
-    const auto low = m.totalCyclesInterval ? std::optional<double>(m.totalCyclesInterval->low) : std::nullopt;
-    const auto high = m.totalCyclesInterval ? std::optional<double>(m.totalCyclesInterval->high) : std::nullopt;
+    const std::string low = m.totalCyclesInterval ? number(m.totalCyclesInterval->low) : "";
+    const std::string high = m.totalCyclesInterval ? number(m.totalCyclesInterval->high) : "";
     file << csvLine({m.mode, number(m.hostSeconds), number(m.raysPerHostSecond), number(m.speedUp),
-                     number(m.totalCycles), number(m.totalCyclesError), number(low), number(high),
+                     number(m.totalCycles), number(m.totalCyclesError), low, high,
                      number(m.perRayErrorMean), number(m.perRayErrorP99), number(m.l1HitRate),
                      number(m.l1Error), number(m.l2HitRate), number(m.l2Error),
                      m.resultsEqualGolden ? yesNo(m.resultsEqualGolden) : ""});

@@ -35,6 +35,12 @@ struct RtuConfig {
   GoldenConfig golden() const {
     return GoldenConfig{jobManager.format, jobManager.conversion, stackFrames};
   }
+  // The output link as results cross it: records of the format's width (48 bytes over 32 bits).
+  HostLinkConfig outputLink() const {
+    HostLinkConfig link = hostOutput;
+    link.recordBytes = resultRecordBytes(jobManager.format.totalBits);
+    return link;
+  }
 };
 
 // Throws std::invalid_argument with a message naming the setting for impossible configurations.

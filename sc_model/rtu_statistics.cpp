@@ -87,9 +87,10 @@ double RtuStatistics::frameMilliseconds() const {
 namespace {
 
 // Share of the run a host link spends moving records; an unlimited link moves one a cycle.
-double linkUtilisation(uint64_t records, double bytesPerCycle, uint64_t cycles) {
+double linkUtilisation(uint64_t records, uint64_t recordBytes, double bytesPerCycle,
+                       uint64_t cycles) {
   const double cyclesPerRecord =
-      bytesPerCycle > 0 ? static_cast<double>(kHostRecordBytes) / bytesPerCycle : 1.0;
+      bytesPerCycle > 0 ? static_cast<double>(recordBytes) / bytesPerCycle : 1.0;
   return cycles == 0 ? 0.0 : std::min(1.0, records * cyclesPerRecord / cycles);
 }
 
@@ -99,10 +100,12 @@ std::vector<std::pair<std::string, double>> RtuStatistics::utilisation() const {
   const CoreTimeShares shares = coreTimeShares();
   // The job manager and scheduler issue at most one job a cycle.
   const double issue = totalCycles == 0 ? 0.0 : ratio(rays, totalCycles);
+  const double hostIn = linkUtilisation(rays, kHostRecordBytes, hostInBytesPerCycle, totalCycles);
+  const double hostOut = linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
   return {{"cores", shares.busy},
           {"memory", shares.blocked},
-          {"host_in", hostInBytesPerCycle > 0 ? linkUtilisation(rays, hostInBytesPerCycle, totalCycles) : 0.0},
-          {"host_out", hostOutBytesPerCycle > 0 ? linkUtilisation(rays, hostOutBytesPerCycle, totalCycles) : 0.0},
+          {"host_in", hostInBytesPerCycle > 0 ? hostIn : 0.0},
+          {"host_out", hostOutBytesPerCycle > 0 ? hostOut : 0.0},
           {"job_manager", issue}};
 }
 
@@ -224,6 +227,7 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   }
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
+  stats.hostOutRecordBytes = config.outputLink().recordBytes;
   stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
   const SchedulerStatistics& scheduler = top.scheduler().statistics();
   stats.waitHistogram = scheduler.waitHistogram;

@@ -68,7 +68,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
     reorderBuffer_->out(*orderedResults_);
     toHost = orderedResults_.get();
   }
-  sink_ = std::make_unique<HostSink>("host_sink", clock_, jobCount, config.hostOutput);
+  sink_ = std::make_unique<HostSink>("host_sink", clock_, jobCount, config.outputLink());
   sink_->in(*toHost);
 }
 

@@ -274,7 +274,7 @@ size_t resultRecordWords(const FixedFormat& format) {
                                 std::to_string(format.fractionBits) + ": " + invalid.what() +
                                 "; the host result records hold formats of 8 to 48 bits");
   }
-  return format.totalBits > 32 ? kWideResultWords : kRecordWords;
+  return resultRecordBytes(format.totalBits) / 4;
 }
 
 std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "fixed_point.h"
+#include "host_link.h"
 #include "ray_transform.h"
 #include "traversal_job.h"
 
@@ -23,7 +24,7 @@ namespace rtu {
 
 constexpr size_t kRecordWords = 8;
 constexpr size_t kRecordBytes = kRecordWords * 4;
-constexpr size_t kWideResultWords = 12;
+constexpr size_t kWideResultWords = kWideResultRecordBytes / 4;
 constexpr uint32_t kResultFlagStackOverflow = 1;
 constexpr uint32_t kResultFlagTOverflow = 2;
 constexpr uint32_t kResultFlagBelowResolution = 4;

@@ -147,4 +147,23 @@ TEST_CASE("The recurrence refuses what it cannot model", "[recurrence]") {
                       Catch::Contains("randomly inactive"));
 }
 
+TEST_CASE("Result records over 32 bits take 48 bytes on a paced output link", "[recurrence]") {
+  // 16 cores finish results faster than an 8-byte-a-cycle link drains them, so consecutive
+  // results reach the host one record's slot apart: 32 / 8 = 4 cycles at 32 bits, 48 / 8 = 6 at 40.
+  const Frame frame = smallFrame("sphere");
+  for (const auto& [format, gap] : {std::pair{FixedFormat{32, 16}, 4ull}, std::pair{FixedFormat{40, 24}, 6ull}}) {
+    RtuConfig config;
+    config.cores = 16;
+    config.hostOutput.bytesPerCycle = 8;
+    config.jobManager.format = format;
+    const RtuRun simulated = simulateRtu(frame.image.memory(), frame.tValueRecords, config);
+    uint64_t smallest = ~0ull;
+    for (size_t i = 1; i < simulated.arrivalCycles.size(); ++i)
+      smallest = std::min(smallest, simulated.arrivalCycles[i] - simulated.arrivalCycles[i - 1]);
+    CHECK(smallest == gap);
+    CHECK(runAnalytic(frame.image.memory(), frame.tValueRecords, config).arrivalCycles ==
+          simulated.arrivalCycles);
+  }
+}
+
 }  // namespace rtu
