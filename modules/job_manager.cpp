@@ -8,7 +8,7 @@ namespace rtu {
 
 JobManager::JobManager(sc_core::sc_module_name name, const CycleClock& clock,
                        JobManagerConfig config, SvoMemory memory)
-    : sc_core::sc_module(name), clock_(clock), config_(config), memory_(memory), wake_(clock) {
+    : sc_core::sc_module(name), clock_(clock), config_(config), setup_(memory, config), wake_(clock) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
                                 "rays), got " + std::to_string(config_.stages) + " and " +
@@ -59,23 +59,11 @@ void JobManager::takeTransfers(uint64_t now) {
 }
 
 void JobManager::accept(const HostJob& host, uint64_t edge) {
-  uint64_t latency = static_cast<uint64_t>(config_.stages);
-  TraversalJob job;
-  if (const auto* ray = std::get_if<RayRecord>(&host.record)) {
-    auto header = headers_.find(ray->modelAddress);
-    if (header == headers_.end()) {
-      header = headers_.emplace(ray->modelAddress, readModelHeader(memory_, ray->modelAddress)).first;
-      fetchUntil_ = edge + 1 + static_cast<uint64_t>(config_.headerFetchCycles);
-      latency += static_cast<uint64_t>(config_.headerFetchCycles);
-    }
-    job = rayRecordToJob(*ray, header->second, config_.epsilon);
-    latency += static_cast<uint64_t>(config_.rayStages);
-  } else {
-    job = std::get<TraversalJob>(host.record);
-  }
-  uint64_t outputCycle = edge + latency;
+  const JobSetup::SetUp set = setup_.setUp(host.record);
+  if (set.headerFetch > 0) fetchUntil_ = edge + 1 + set.headerFetch;
+  uint64_t outputCycle = edge + set.latency;
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
-  pipeline_.push_back(InFlight{convert(host.sequence, job), outputCycle});
+  pipeline_.push_back(InFlight{convert(host.sequence, set.job), outputCycle});
 }
 
 CoreJob JobManager::convert(uint64_t sequence, const TraversalJob& host) const {

@@ -21,20 +21,11 @@
 #include "cycle_clock.h"
 #include "module_process.h"
 #include "golden_model.h"
-#include "model_header.h"
+#include "job_setup.h"
 #include "ready_valid.h"
 #include "rtu_payloads.h"
 
 namespace rtu {
-
-struct JobManagerConfig {
-  FixedFormat format;
-  FloatConversion conversion = FloatConversion::Rtl;
-  int stages = 6;  // the RTL's P_STAGES
-  int rayStages = 6;
-  int headerFetchCycles = 16;  // one word per cycle
-  float epsilon = static_cast<float>(kDefaultDirectionEpsilon);
-};
 
 struct JobManagerStatistics {
   uint64_t stallCycles = 0;  // cycles the output was valid and not taken
@@ -65,8 +56,7 @@ class JobManager : public sc_core::sc_module {
 
   const CycleClock& clock_;
   JobManagerConfig config_;
-  SvoMemory memory_;
-  std::map<uint32_t, ModelHeader> headers_;  // by model address
+  JobSetup setup_;  // what it computes (golden/job_setup.h); this module adds when
   uint64_t fetchUntil_ = 0;                  // no record is accepted before this cycle
   std::deque<InFlight> pipeline_;
   bool offering_ = false;

@@ -6,13 +6,12 @@
 #include <cstdint>
 #include <variant>
 
+#include "job_setup.h"
 #include "ray_transform.h"
 #include "traversal_job.h"
 
 namespace rtu {
 
-// A host input record: the thesis driver's t-value record, or a world-space ray against a model.
-using HostRecord = std::variant<TraversalJob, RayRecord>;
 
 struct HostJob {
   uint64_t sequence = 0;

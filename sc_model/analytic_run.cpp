@@ -8,49 +8,31 @@
 #include <utility>
 
 #include "golden_model.h"
-#include "model_header.h"
+#include "job_setup.h"
 #include "rtu_recurrence.h"
 
 namespace rtu {
 namespace {
 
-// Each record's result and its timing inputs, with the job manager's latencies (job_manager.h):
-// a ray record adds the ray stages, and the first ray of a model its header fetch.
+// Each record's result and its timing inputs: the job manager's set-up and latencies
+// (golden/job_setup.h), the golden model's result and cost.
 class RecordTracer {
  public:
   RecordTracer(const SvoMemory& memory, const RtuConfig& config)
-      : memory_(memory), manager_(config.jobManager), golden_(memory, config.golden()) {}
+      : setup_(memory, config.jobManager), golden_(memory, config.golden()) {}
 
-  void trace(const TraversalJob& job) { add(job, RecurrenceJob{0, stages(), 0}); }
-  void trace(const RayRecord& ray) {
-    RecurrenceJob timing{0, stages() + static_cast<uint64_t>(manager_.rayStages), 0};
-    auto header = headers_.find(ray.modelAddress);
-    if (header == headers_.end()) {
-      header = headers_.emplace(ray.modelAddress, readModelHeader(memory_, ray.modelAddress)).first;
-      timing.headerFetch = static_cast<uint64_t>(manager_.headerFetchCycles);
-      timing.pipelineCycles += timing.headerFetch;
-    }
-    add(rayRecordToJob(ray, header->second, manager_.epsilon), timing);
-  }
   void trace(const HostRecord& record) {
-    std::visit([this](const auto& r) { trace(r); }, record);
+    const JobSetup::SetUp set = setup_.setUp(record);
+    results.push_back(golden_.trace(set.job));
+    timing.push_back(RecurrenceJob{results.back().cost, set.latency, set.headerFetch});
   }
 
   std::vector<TraversalResult> results;
   std::vector<RecurrenceJob> timing;
 
  private:
-  uint64_t stages() const { return static_cast<uint64_t>(manager_.stages); }
-  void add(const TraversalJob& job, RecurrenceJob jobTiming) {
-    results.push_back(golden_.trace(job));
-    jobTiming.cost = results.back().cost;
-    timing.push_back(jobTiming);
-  }
-
-  const SvoMemory& memory_;
-  const JobManagerConfig& manager_;
+  JobSetup setup_;
   GoldenModel golden_;
-  std::map<uint32_t, ModelHeader> headers_;
 };
 
 // Per job: whether some core was idle in the cycle it became pending (eq. 6.7's case). A core is
