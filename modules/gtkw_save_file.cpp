@@ -45,6 +45,21 @@ std::string displayName(const SaveFileSignal& signal) {
   return signal.width == 1 ? name : name + "[" + std::to_string(signal.width - 1) + ":0]";
 }
 
+// What the signal is called inside its module's group: the scope below the module and the name,
+// apart by spaces ("in valid" for rtu.core_03.in.valid). GTKWave shows a name up to its last
+// dot only (hier_max_level), so twenty rows of "valid" and "ready" without an alias.
+std::string alias(const SaveFileSignal& signal) {
+  std::string path = signal.scope + "." + signal.name;
+  for (int dots = 0; dots < 2 && !path.empty();) {  // drop "rtu." and the module
+    const size_t dot = path.find('.');
+    if (dot == std::string::npos) break;
+    path.erase(0, dot + 1);
+    ++dots;
+  }
+  std::replace(path.begin(), path.end(), '.', ' ');
+  return path;
+}
+
 }  // namespace
 
 std::string saveFilePath(const std::string& tracePath) {
@@ -69,7 +84,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
     out << kGroupBegin << "\n-" << module << '\n';
     for (const SaveFileSignal* signal : members)
       out << (signal->width == 1 ? kBinary : signal->named ? kDefault : kDecimal) << '\n'
-          << displayName(*signal) << '\n';
+          << "+{" << alias(*signal) << "} " << displayName(*signal) << '\n';
     out << kGroupEnd << "\n-" << module << '\n';
   }
   if (!out) throw std::runtime_error("error writing GTKWave save file " + path);

@@ -35,9 +35,12 @@ grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.gtkw || fail "t.gtkw does not open $PWD
 groups=$(grep '^-' t.gtkw | uniq | tr -d '-' | tr '\n' ' ')
 [[ $groups == "job_manager scheduler core_0 core_1 core_2 memory result_manager " ]] ||
   fail "groups out of pipeline order: $groups"
-grep -v '^[-@*[]' t.gtkw | sed 's/\[[0-9]*:0\]$//' | sort >shown.txt
+grep -v '^[-@*[]' t.gtkw | sed 's/^+{[^}]*} //; s/\[[0-9]*:0\]$//' | sort >shown.txt
 awk '{ print $2 }' fst.txt | sort -u >traced.txt
 cmp -s shown.txt traced.txt || fail "t.gtkw does not show exactly the traced signals"
+# Names within a group: the path below the module, apart by spaces (GTKWave cuts at dots).
+grep -qx '+{in valid} rtu.core_1.in.valid' t.gtkw && grep -qx '+{state} rtu.core_1.state\[2:0\]' t.gtkw ||
+  fail "t.gtkw lacks the aliases within groups"
 # Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
 first_result=$(python3 - fst.txt <<'PY'
 import sys
