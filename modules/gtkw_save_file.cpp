@@ -10,11 +10,13 @@
 namespace rtu {
 namespace {
 
-// GTKWave's display flags (gtkwave analyzer.h): right-justified binary, decimal or hexadecimal
-// (its default) values, and the comment lines that open and close a group.
+// GTKWave's display flags (gtkwave analyzer.h): right-justified binary or decimal values, the
+// names of the trace's enum table (TR_ENUM, bit 32, as GTKWave itself saves an FST enum signal;
+// a VCD has no enum table and shows the binary code), and the comment lines that open and close
+// a group.
 constexpr const char* kBinary = "@28";
 constexpr const char* kDecimal = "@24";
-constexpr const char* kDefault = "@22";
+constexpr const char* kEnum = "@100000028";
 constexpr const char* kGroupBegin = "@800200";
 constexpr const char* kGroupEnd = "@1000200";
 
@@ -74,7 +76,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
   out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
   out << "*-20.000000 " << markerPs;
   for (int i = 0; i < 26; ++i) out << " -1";  // no named markers
-  out << "\n[sst_expanded] 1\n";
+  out << "\n[sst_expanded] 1\n[signals_width] 240\n";  // room for "stack_depth =BLOCKED"
 
   std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;
   for (const SaveFileSignal& signal : signals)
@@ -83,7 +85,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
     const std::string& module = std::get<2>(key);
     out << kGroupBegin << "\n-" << module << '\n';
     for (const SaveFileSignal* signal : members)
-      out << (signal->width == 1 ? kBinary : signal->named ? kDefault : kDecimal) << '\n'
+      out << (signal->width == 1 ? kBinary : signal->named ? kEnum : kDecimal) << '\n'
           << "+{" << alias(*signal) << "} " << displayName(*signal) << '\n';
     out << kGroupEnd << "\n-" << module << '\n';
   }

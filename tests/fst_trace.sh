@@ -41,6 +41,9 @@ cmp -s shown.txt traced.txt || fail "t.gtkw does not show exactly the traced sig
 # Names within a group: the path below the module, apart by spaces (GTKWave cuts at dots).
 grep -qx '+{in valid} rtu.core_1.in.valid' t.gtkw && grep -qx '+{state} rtu.core_1.state\[2:0\]' t.gtkw ||
   fail "t.gtkw lacks the aliases within groups"
+# Core states shown by the names of the FST's enum table: GTKWave's own flags for it.
+[[ $(grep -B1 -x '+{state} rtu.core_1.state\[2:0\]' t.gtkw | head -1) == @100000028 ]] ||
+  fail "t.gtkw does not show the core state by its enum names"
 # Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
 first_result=$(python3 - fst.txt <<'PY'
 import sys
