@@ -133,7 +133,7 @@ void CycleTrace::finish(uint64_t markerCycle) {
   if (options_.countOnly) return;
   std::vector<SaveFileSignal> shown;
   for (const Signal& s : signals_)
-    shown.push_back({s.scope, s.variable.name, s.variable.width, !s.variable.valueNames.empty()});
+    shown.push_back({s.scope, s.variable.name, s.variable.width, s.variable.valueNames});
   writeSaveFile(options_.path, shown, markerCycle * options_.periodPs);
 }
 

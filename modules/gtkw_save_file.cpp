@@ -7,16 +7,19 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "trace_writer.h"
+
 namespace rtu {
 namespace {
 
 // GTKWave's display flags (gtkwave analyzer.h): right-justified binary or decimal values, the
-// names of the trace's enum table (TR_ENUM, bit 32, as GTKWave itself saves an FST enum signal;
-// a VCD has no enum table and shows the binary code), and the comment lines that open and close
-// a group.
+// names of the trace's enum table (TR_ENUM, bit 32) or of a translate filter file
+// (TR_FTRANSLATED, bit 13) over binary, as GTKWave itself saves them, and the comment lines that
+// open and close a group.
 constexpr const char* kBinary = "@28";
 constexpr const char* kDecimal = "@24";
 constexpr const char* kEnum = "@100000028";
+constexpr const char* kTranslated = "@2028";
 constexpr const char* kGroupBegin = "@800200";
 constexpr const char* kGroupEnd = "@1000200";
 
@@ -62,6 +65,22 @@ std::string alias(const SaveFileSignal& signal) {
   return path;
 }
 
+bool isFst(const std::string& tracePath) {
+  return std::filesystem::path(tracePath).extension() == ".fst";
+}
+
+// A GTKWave translate filter for a VCD signal's named values ("010 EVAL"), next to the trace:
+// t.vcd's core states go to t.state.txt. Returns its absolute path.
+std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSignal& signal) {
+  std::filesystem::path path(tracePath);
+  path.replace_extension("." + signal.name + ".txt");
+  std::ofstream out(path);
+  for (size_t value = 0; value < signal.valueNames.size(); ++value)
+    out << bitString(value, signal.width) << ' ' << signal.valueNames[value] << '\n';
+  if (!out) throw std::runtime_error("cannot write GTKWave translate filter " + path.string());
+  return std::filesystem::absolute(path).string();
+}
+
 }  // namespace
 
 std::string saveFilePath(const std::string& tracePath) {
@@ -79,14 +98,24 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
   out << "\n[sst_expanded] 1\n[signals_width] 240\n";  // room for "stack_depth =BLOCKED"
 
   std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;
-  for (const SaveFileSignal& signal : signals)
+  std::map<std::string, std::string> translateFilters;  // by signal name, for a VCD
+  for (const SaveFileSignal& signal : signals) {
     byModule[pipelineKey(moduleOf(signal.scope))].push_back(&signal);
+    if (!signal.valueNames.empty() && !isFst(tracePath) && !translateFilters.count(signal.name))
+      translateFilters[signal.name] = writeTranslateFilter(tracePath, signal);
+  }
   for (const auto& [key, members] : byModule) {
     const std::string& module = std::get<2>(key);
     out << kGroupBegin << "\n-" << module << '\n';
-    for (const SaveFileSignal* signal : members)
-      out << (signal->width == 1 ? kBinary : signal->named ? kEnum : kDecimal) << '\n'
-          << "+{" << alias(*signal) << "} " << displayName(*signal) << '\n';
+    for (const SaveFileSignal* signal : members) {
+      if (signal->valueNames.empty())
+        out << (signal->width == 1 ? kBinary : kDecimal) << '\n';
+      else if (isFst(tracePath))
+        out << kEnum << '\n';
+      else
+        out << kTranslated << "\n^1 " << translateFilters[signal->name] << '\n';
+      out << "+{" << alias(*signal) << "} " << displayName(*signal) << '\n';
+    }
     out << kGroupEnd << "\n-" << module << '\n';
   }
   if (!out) throw std::runtime_error("error writing GTKWave save file " + path);

@@ -1,7 +1,9 @@
 #pragma once
 // A GTKWave save file (.gtkw) for a trace: the trace to open, its signals grouped per module in
 // pipeline order (job manager = host in, scheduler, cores, memory, result manager, reorder buffer
-// = host out), full hierarchical names, and a marker.
+// = host out), full hierarchical names with an alias within the group, and a marker. Signals with
+// named values show the names: an FST carries them as enum tables; for a VCD a translate filter
+// file is written next to the trace (t.state.txt for the core states of t.vcd).
 
 #include <cstdint>
 #include <string>
@@ -12,7 +14,7 @@ namespace rtu {
 struct SaveFileSignal {
   std::string scope, name;  // scope: dot-separated module path, e.g. rtu.core_3.in
   int width;
-  bool named;  // values with names (an FST enum table): GTKWave's default format shows them
+  std::vector<std::string> valueNames;  // names of the values 0, 1, ...; empty for numbers
 };
 
 // The save file's path: the trace's, with ".gtkw" for its extension.

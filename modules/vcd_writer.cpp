@@ -1,5 +1,5 @@
 // Value change dump (IEEE 1364), the text format every waveform viewer reads. Named values are
-// shown as numbers; scripts/gtkwave_core_states.txt translates the core state's codes.
+// written as numbers; the save file names them through a translate filter (gtkw_save_file.h).
 
 #include <fstream>
 #include <stdexcept>

@@ -44,6 +44,11 @@ grep -qx '+{in valid} rtu.core_1.in.valid' t.gtkw && grep -qx '+{state} rtu.core
 # Core states shown by the names of the FST's enum table: GTKWave's own flags for it.
 [[ $(grep -B1 -x '+{state} rtu.core_1.state\[2:0\]' t.gtkw | head -1) == @100000028 ]] ||
   fail "t.gtkw does not show the core state by its enum names"
+# A VCD has no enum table: its save file names the states through a translate filter beside it.
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace v.vcd >/dev/null
+[[ $(printf '%s\n' 000 001 010 011 100 101 110 111 | paste -d' ' - <(printf '%s\n' IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED)) == "$(cat v.state.txt)" ]] ||
+  fail "v.state.txt does not name the eight state codes"
+grep -A2 -x '@2028' v.gtkw | grep -qx "\^1 $PWD/v.state.txt" || fail "v.gtkw does not use v.state.txt"
 # Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
 first_result=$(python3 - fst.txt <<'PY'
 import sys
