@@ -72,6 +72,13 @@ void CycleTrace::checkScopesMatched() const {
     throw std::invalid_argument("trace scope '" + options_.scopes[i] +
                                 "' matches no module; the scopes are:" + existing);
   }
+  if (writer_ && signals_.empty()) {
+    std::string scopes, classes;
+    for (const std::string& scope : options_.scopes) scopes += " " + scope;
+    for (const std::string& signalClass : options_.signalClasses) classes += " " + signalClass;
+    throw std::invalid_argument("the trace would hold no signal: the scopes" + scopes +
+                                " have none of the signal classes" + classes);
+  }
 }
 
 int CycleTrace::declare(const std::string& scope, const std::string& name, int width,

@@ -52,7 +52,8 @@ class CycleTrace {
   void record(int signal, uint64_t cycle, uint64_t value);
 
   // Throws std::invalid_argument, listing the scopes declared, when a scope of the filter matched
-  // none of them (a typo, or core_7 of 4 cores). Called once every signal is declared.
+  // none of them (a typo, or core_7 of 4 cores), or when the scopes and signal classes together
+  // keep no signal for the file. Called once every signal is declared.
   void checkScopesMatched() const;
 
   // Writes every cycle before `cycle`: no record for them can arrive any more.

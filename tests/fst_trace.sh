@@ -84,4 +84,8 @@ expect_error "'rtu.core_7' matches no module" \
   "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 4 --trace t.fst \
   --trace-scope rtu.core_7
 grep -q "rtu.core_3.in" err.txt || fail "the scope error does not list rtu.core_3.in"
+# Scopes and signal classes that together keep nothing: the job manager has no states.
+expect_error "the trace would hold no signal: the scopes rtu.job_manager have none of the signal classes states" \
+  "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 4 --trace t.fst \
+  --trace-scope rtu.job_manager --trace-signals states
 echo "FST traces equal the VCD traces; core states named"
