@@ -15,21 +15,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double hitRate(const CacheStats& stats) {
-  return stats.accesses == 0 ? 0.0
-                             : static_cast<double>(stats.hits + stats.merged) / static_cast<double>(stats.accesses);
-}
-
-CacheStats l1Total(const RtuStatistics& statistics) {
-  CacheStats total;
-  for (const CacheStats& core : statistics.l1) {
-    total.accesses += core.accesses;
-    total.hits += core.hits;
-    total.merged += core.merged;
-  }
-  return total;
-}
-
 // Each ray's cycles in job order: its traversal states and its cycles blocked on memory.
 std::vector<double> rayCycles(const RtuRun& run) {
   std::vector<double> cycles(run.results.size());
@@ -125,14 +110,14 @@ class Study {
     ModeFidelity m = base(mode, seconds);
     m.totalCycles = cycles;
     m.totalCyclesError = cycles / static_cast<double>(reference_.totalCycles) - 1;
-    if (!config_.memory.ideal) setHitRates(m, hitRate(l1Total(statistics)), hitRate(statistics.l2.cache));
+    if (!config_.memory.ideal) setHitRates(m, hitRate(statistics.allL1()), hitRate(statistics.l2.cache));
     return m;
   }
 
   void setHitRates(ModeFidelity& m, double l1, double l2) const {
     m.l1HitRate = l1;
     m.l2HitRate = l2;
-    m.l1Error = 100 * (l1 - hitRate(l1Total(reference_)));
+    m.l1Error = 100 * (l1 - hitRate(reference_.allL1()));
     m.l2Error = 100 * (l2 - hitRate(reference_.l2.cache));
   }
 

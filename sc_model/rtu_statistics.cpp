@@ -16,19 +16,7 @@ double ratio(uint64_t part, uint64_t whole) {
 nlohmann::ordered_json cacheJson(const CacheStats& stats) {
   return {{"accesses", stats.accesses}, {"hits", stats.hits},       {"merged", stats.merged},
           {"misses", stats.misses},     {"evictions", stats.evictions},
-          {"hit_rate", ratio(stats.hits + stats.merged, stats.accesses)}};
-}
-
-CacheStats sum(const std::vector<CacheStats>& all) {
-  CacheStats total;
-  for (const CacheStats& s : all) {
-    total.accesses += s.accesses;
-    total.hits += s.hits;
-    total.merged += s.merged;
-    total.misses += s.misses;
-    total.evictions += s.evictions;
-  }
-  return total;
+          {"hit_rate", hitRate(stats)}};
 }
 
 }  // namespace
@@ -47,6 +35,20 @@ double RtuStatistics::simulatedRaysPerHostSecond() const {
 uint64_t RtuStatistics::idleCycles(const CoreStatistics& core) const {
   return totalCycles - std::min(totalCycles, core.busyCycles + core.blockedCycles + core.outCycles);
 }
+double hitRate(const CacheStats& stats) { return ratio(stats.hits + stats.merged, stats.accesses); }
+
+CacheStats RtuStatistics::allL1() const {
+  CacheStats total;
+  for (const CacheStats& s : l1) {
+    total.accesses += s.accesses;
+    total.hits += s.hits;
+    total.merged += s.merged;
+    total.misses += s.misses;
+    total.evictions += s.evictions;
+  }
+  return total;
+}
+
 CoreStatistics RtuStatistics::allCores() const {
   CoreStatistics total;
   for (const CoreStatistics& c : coreTimes) {
@@ -163,7 +165,7 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
                       {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
   if (reorderMaxOccupancy > 0) result["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
   if (!idealMemory) {
-    result["memory"]["l1"] = cacheJson(sum(l1));
+    result["memory"]["l1"] = cacheJson(allL1());
     result["memory"]["l2"] = cacheJson(l2.cache);
     result["memory"]["l2"]["port_queue_cycles"] = l2.portQueueCycles;
     result["memory"]["l2"]["mshr_queue_cycles"] = l2.mshrQueueCycles;
@@ -193,10 +195,9 @@ void RtuStatistics::writeReport(std::ostream& out) const {
       << maxWaitWithReadyCore << " with a core ready (eq. 6.7 bound: "
       << (waitBound() < 0 ? std::string("W_J") : std::to_string(waitBound())) << ")\n";
   if (!idealMemory) {
-    const CacheStats l1Total = sum(l1);
-    out << "L1 hit rate " << 100 * ratio(l1Total.hits + l1Total.merged, l1Total.accesses)
-        << " % of " << l1Total.accesses << " reads; L2 hit rate "
-        << 100 * ratio(l2.cache.hits + l2.cache.merged, l2.cache.accesses) << " % of "
+    const CacheStats l1Total = allL1();
+    out << "L1 hit rate " << 100 * hitRate(l1Total) << " % of " << l1Total.accesses
+        << " reads; L2 hit rate " << 100 * hitRate(l2.cache) << " % of "
         << l2.cache.accesses << "; DRAM " << l2.dram.bytes << " bytes ("
         << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
   }

@@ -60,12 +60,16 @@ struct RtuStatistics {
   uint64_t idleCycles(const CoreStatistics& core) const;
   std::vector<uint64_t> waitHistogramArray() const;  // index: wait in cycles
   CoreStatistics allCores() const;  // the cores' times summed
+  CacheStats allL1() const;         // the L1s' counts summed
   // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
   int64_t waitBound() const;
 
   nlohmann::ordered_json toJson() const;
   void writeReport(std::ostream& out) const;
 };
+
+// Share of a cache's reads answered by a resident line (hits and merged); 0 without reads.
+double hitRate(const CacheStats& stats);
 
 RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles);
 

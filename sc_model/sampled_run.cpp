@@ -86,16 +86,6 @@ Block simulateBlock(const SvoMemory& memory, const std::vector<TraversalJob>& jo
 
 uint64_t cacheHits(const CacheStats& s) { return s.hits + s.merged; }
 
-CacheStats l1Total(const RtuStatistics& s) {
-  CacheStats total;
-  for (const CacheStats& core : s.l1) {
-    total.accesses += core.accesses;
-    total.hits += core.hits;
-    total.merged += core.merged;
-  }
-  return total;
-}
-
 // A per-ray quantity of the sampled blocks, per stratum; head and tail as their counted total.
 struct Quantity {
   double fixed = 0;
@@ -236,7 +226,7 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
 
   Sample sample;
   const auto count = [&](const Block& b, bool fixed, size_t stratum) {
-    const CacheStats l1 = l1Total(b.counted);
+    const CacheStats l1 = b.counted.allL1();
     // per ray of the window: the strata weigh them by their rays
     const double values[] = {b.cycles / b.rays, static_cast<double>(cacheHits(l1)) / b.rays,
                              static_cast<double>(l1.accesses) / b.rays,

@@ -12,6 +12,27 @@
 #include "svo_builder.h"
 
 namespace rtu {
+namespace {
+
+struct CachedFrame {
+  SvoImage image;
+  std::vector<TraversalJob> jobs;
+  RtuConfig config;
+};
+
+// A menger frame of `width` x `height` rays on `cores` cores with the default caches.
+CachedFrame cachedFrame(int depth, int width, int height, int cores) {
+  CachedFrame frame{buildSvo(*makeProceduralScene("menger", depth)).image, {}, {}};
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  frame.jobs = makeFrameJobs(camera, frame.image.root);
+  frame.config.cores = cores;
+  frame.config.memory.ideal = false;
+  return frame;
+}
+
+}  // namespace
 
 TEST_CASE("Sample plan: strata tile the middle, two distinct blocks in each", "[sampling]") {
   SampleSpec spec;
@@ -94,14 +115,10 @@ TEST_CASE("Statistics after a prefix: counters subtracted, window's rays and cyc
 }
 
 TEST_CASE("Snapshots do not change the run and fall on their cycles", "[sampling]") {
-  const SvoImage image = buildSvo(*makeProceduralScene("menger", 5)).image;
-  Camera camera;
-  camera.width = 40;
-  camera.height = 30;
-  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, image.root);
-  RtuConfig config;
-  config.cores = 4;
-  config.memory.ideal = false;
+  const CachedFrame frame = cachedFrame(5, 40, 30, 4);
+  const SvoImage& image = frame.image;
+  const std::vector<TraversalJob>& jobs = frame.jobs;
+  const RtuConfig& config = frame.config;
   const RtuRun plain = simulateRtu(image.memory(), jobs, config);
   BlockRun plan;
   plan.afterResults = {100, 700};
@@ -129,14 +146,10 @@ TEST_CASE("Snapshots do not change the run and fall on their cycles", "[sampling
 
 TEST_CASE("Sampled estimate: the 95 % interval covers the full run for 18 of 20 seeds",
           "[sampling][slow]") {
-  const SvoImage image = buildSvo(*makeProceduralScene("menger", 6)).image;
-  Camera camera;
-  camera.width = 640;
-  camera.height = 360;
-  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, image.root);
-  RtuConfig config;
-  config.cores = 8;
-  config.memory.ideal = false;
+  const CachedFrame frame = cachedFrame(6, 640, 360, 8);
+  const SvoImage& image = frame.image;
+  const std::vector<TraversalJob>& jobs = frame.jobs;
+  const RtuConfig& config = frame.config;
   const double full = static_cast<double>(simulateRtu(image.memory(), jobs, config).totalCycles);
   SampleSpec spec;
   spec.fraction = 0.5;  // 35 strata of 1024 rays here; 10 % of a 1080p frame gives 40 (bench)
