@@ -19,5 +19,6 @@ void addFpsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
 void addPlotCommands(CLI::App& app);  // plot and report
 void addWaveCommand(CLI::App& app);
+void addAnimateCommand(CLI::App& app);
 
 }  // namespace rtu

@@ -275,6 +275,10 @@ RenderedFrame RenderedFrame::fromResults(const Camera& camera, const FixedFormat
   return frame;
 }
 
+void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {
+  writeImage(path, width, height, 3, rgb, false);
+}
+
 void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
   writeRgb(frame, path, shadeLambert);
 }

@@ -27,6 +27,9 @@ struct RenderedFrame {
 // for checking outputs before a run.
 void checkImageFormat(const std::string& option, const std::string& path);
 
+// Any RGB picture: `rgb` holds width x height pixels of three floats in [0, 1], rows from the top.
+void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
+
 // Lambert-shaded hits over a dark background; the face normal is turned toward the viewer.
 void writeShadedImage(const RenderedFrame& frame, const std::string& path);
 // t_hit per pixel: float t with misses 0 for EXR/TIFF/HDR files, otherwise grey levels from

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   rtu::addGoldenCommand(app);
   rtu::addReplayCommand(app);
   rtu::addRenderCommand(app);
+  rtu::addAnimateCommand(app);
   rtu::addAccuracyCommand(app);
   rtu::addPrecisionCommand(app);
   rtu::addConfigCommand(app);

@@ -4,6 +4,7 @@
 Usage:
   rtusim_plot.py plot --out-dir DIR INPUT...
   rtusim_plot.py report --out FILE.html INPUT...
+  rtusim_plot.py frames --out FILE.png FRAMES.csv
 
 INPUT is a sweep result as JSON lines (*.jsonl, one object per configuration row with
 "status", "error", "config" and "statistics") or an `fps` CSV (header starting
@@ -916,6 +917,45 @@ def command_report(args):
     return 0
 
 
+def command_frames(args):
+    """Frame rate over an animation (`rtusim animate --csv`), with the share of rays the hit
+    buffer saved and the jobs per traced ray beneath."""
+    try:
+        with open(args.csv, newline="", encoding="utf-8") as handle:
+            rows = list(csv.DictReader(handle))
+        frames = [int(row["frame"]) for row in rows]
+        fps = [float(row["fps"]) for row in rows]
+        saved = [100.0 * float(row["rays_saved"]) / max(1.0, float(row["pixels"])) for row in rows]
+        jobs = [float(row["jobs_per_ray"]) for row in rows]
+    except (OSError, KeyError, ValueError) as error:
+        raise InputError("%s: not an animate CSV (%s)" % (args.csv, error))
+    if not rows:
+        raise InputError("%s: no frames" % args.csv)
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 4.6),
+                                      gridspec_kw={"height_ratios": [2, 1]})
+    top.plot(frames, fps, marker="o", markersize=3)
+    top.set_ylabel("frames/s at the clock")
+    top.set_title("frame rate over the animation")
+    top.set_ylim(bottom=0)
+    bottom.plot(frames, saved, color="tab:green", label="rays saved by the hit buffer (%)")
+    bottom.set_ylabel("saved %")
+    bottom.set_ylim(0, 100)
+    twin = bottom.twinx()
+    twin.plot(frames, jobs, color="tab:orange", label="jobs per traced ray")
+    twin.set_ylabel("jobs/ray")
+    twin.set_ylim(bottom=0)
+    bottom.set_xlabel("frame")
+    lines = bottom.get_lines() + twin.get_lines()
+    bottom.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+    fig.tight_layout()
+    directory = os.path.dirname(os.path.abspath(args.out))
+    os.makedirs(directory, exist_ok=True)
+    fig.savefig(args.out)
+    plt.close(fig)
+    print(args.out)
+    return 0
+
+
 class Parser(argparse.ArgumentParser):
     def error(self, message):
         self.print_usage(sys.stderr)
@@ -933,9 +973,13 @@ def main(argv=None):
     report = commands.add_parser("report", help="write a self-contained HTML report")
     report.add_argument("--out", required=True, help="HTML file to write")
     report.add_argument("inputs", nargs="+", metavar="INPUT", help="*.jsonl or fps *.csv")
+    frames = commands.add_parser("frames", help="frame rate over an animation (rtusim animate --csv)")
+    frames.add_argument("--out", required=True, help="image to write (PNG, SVG)")
+    frames.add_argument("csv", metavar="FRAMES.csv", help="per-frame CSV of rtusim animate")
     args = parser.parse_args(argv)
     try:
-        return command_plot(args) if args.command == "plot" else command_report(args)
+        handlers = {"plot": command_plot, "report": command_report, "frames": command_frames}
+        return handlers[args.command](args)
     except InputError as error:
         sys.stderr.write("%s: error: %s\n" % (PROG, error))
         return 2

@@ -3,7 +3,8 @@
 # Release into build/. Sourced, so the callers keep `set -euo pipefail`.
 packages=(cmake g++ make libsystemc-dev libglm-dev libopenimageio-dev catch2 libcli11-dev
           nlohmann-json3-dev libassimp-dev pkg-config libtomlplusplus-dev python3-matplotlib
-          slurm-wlm munge verilator zlib1g-dev gtkwave xvfb imagemagick)
+          slurm-wlm munge verilator zlib1g-dev gtkwave xvfb imagemagick
+          webp assimp-testmodels)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,77 @@
+#pragma once
+// Frames of an animated scene on the untimed models: each frame's camera and instance headers
+// from the scene description, every pixel's ray through the scene manager (golden/scene_manager.h)
+// in parallel threads, the hit buffer (golden/hit_buffer.h) carried from frame to frame, and
+// the frame's statistics. Cycles are the golden costs of the issued jobs run through the RTU
+// recurrence (golden/rtu_recurrence.h: ideal memory, the job manager's latencies, the chosen
+// cores and cyclic first-available scheduling) in the order the scene manager issues them; the
+// scene manager's own sphere tests and the hit buffer's checks are not timed.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "hit_buffer.h"
+#include "scene_file.h"
+#include "scene_memory.h"
+
+namespace rtu {
+
+struct AnimationOptions {
+  GoldenConfig golden;
+  SceneManagerOptions manager;
+  bool hitBuffer = true;
+  int threads = 1;
+  int cores = 16;
+  double clockMhz = 100.0;
+};
+
+struct FrameStatistics {
+  int frame = 0;
+  double time = 0.0;  // seconds into the animation
+  uint64_t pixels = 0;
+  uint64_t raysTraced = 0;  // pixels the scene manager traced
+  uint64_t raysSaved = 0;   // pixels the hit buffer answered
+  uint64_t hits = 0;
+  uint64_t jobs = 0;
+  uint64_t culled = 0;             // instance tests that missed the bounding sphere
+  uint64_t earlyTerminations = 0;  // rays ended with instances left untraced
+  uint64_t skipped = 0;            // instances left untraced by those rays
+  uint64_t traversalCycles = 0;    // sum of the traced jobs' golden costs
+  uint64_t cycles = 0;             // the frame's total on the RTU (recurrence)
+  double hostSeconds = 0.0;
+
+  double jobsPerRay() const { return raysTraced ? static_cast<double>(jobs) / raysTraced : 0.0; }
+  double frameMs(double clockMhz) const { return cycles / (clockMhz * 1e3); }
+  double framesPerSecond(double clockMhz) const { return cycles ? clockMhz * 1e6 / cycles : 0.0; }
+};
+
+struct SceneFrame {
+  Camera camera;
+  std::vector<ModelPlacement> placements;  // per instance
+  std::vector<SceneHit> pixels;            // x + y * width
+  FrameStatistics statistics;
+};
+
+class AnimationRenderer {
+ public:
+  AnimationRenderer(const SceneDescription& scene, const std::vector<SceneModel>& models,
+                    AnimationOptions options);
+
+  // Frames must come in order for the hit buffer to help; any order gives the same images.
+  SceneFrame render(int frame);
+
+ private:
+  struct Work;
+  void traceRows(Work& work, int firstRow, int rowStep);
+  uint64_t frameCycles(const std::vector<std::vector<IssuedJob>>& issuedPerRow) const;
+
+  const SceneDescription& scene_;
+  AnimationOptions options_;
+  SceneMemory memory_;
+  HitBuffer hitBuffer_;
+  std::optional<Camera> lastCamera_;
+  std::vector<ModelHeaderWords> lastHeaders_;
+};
+
+}  // namespace rtu

@@ -1,0 +1,214 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "animated_image.h"
+#include "animation_run.h"
+#include "commands.h"
+#include "config_options.h"
+#include "exploration_run.h"
+#include "frame_images.h"
+#include "model_cache.h"
+#include "output_paths.h"
+#include "plot_script.h"
+#include "scene_shading.h"
+#include "sweep_workers.h"
+
+namespace rtu {
+namespace {
+
+struct AnimateOptions {
+  std::string sceneFile;
+  SceneOverrides overrides;
+  std::string outDir = "animation";
+  std::string csv;
+  std::string model = "golden";
+  std::string cacheDir;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int cores = 16;
+  double clockMhz = 100.0;
+  bool noHitBuffer = false;
+  bool traceAll = false;
+
+  std::string csvPath() const { return csv.empty() ? outDir + "/frames.csv" : csv; }
+  std::string framePath(int frame) const {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%04d.png", frame);
+    return outDir + name;
+  }
+};
+
+// The timed models need the SystemC scene manager, which one ray fanned out into several jobs
+// needs in the job manager, scheduler and result manager (issue 14): not there yet.
+void requireGoldenModel(const std::string& model) {
+  if (model == "golden") return;
+  throw std::invalid_argument("--model " + model +
+                              ": the SystemC scene manager is not yet built; animate runs on "
+                              "--model golden only (cycles from the golden costs and the RTU "
+                              "recurrence)");
+}
+
+std::vector<SceneModel> loadModels(const SceneDescription& scene, const std::string& cacheDir) {
+  std::vector<SceneModel> models;
+  for (const ModelDescription& description : scene.models) {
+    const auto start = std::chrono::steady_clock::now();
+    models.push_back(loadSceneModel(description, cacheDir));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const SceneModel& model = models.back();
+    std::printf("model       %s: %s, %s in %.2f s\n", model.name.c_str(),
+                model.scene.summary.c_str(), model.fromCache ? "from the cache" : "built",
+                seconds);
+  }
+  return models;
+}
+
+std::vector<std::string> csvHeader() {
+  return {"frame", "time_s", "pixels", "rays_traced", "rays_saved", "hits", "jobs",
+          "jobs_per_ray", "culled", "early_terminations", "skipped", "traversal_cycles",
+          "cycles", "frame_ms", "fps", "host_s"};
+}
+
+std::vector<std::string> csvRow(const FrameStatistics& s, double clockMhz) {
+  const auto real = [](double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return std::string(text);
+  };
+  return {std::to_string(s.frame), real(s.time), std::to_string(s.pixels),
+          std::to_string(s.raysTraced), std::to_string(s.raysSaved), std::to_string(s.hits),
+          std::to_string(s.jobs), real(s.jobsPerRay()), std::to_string(s.culled),
+          std::to_string(s.earlyTerminations), std::to_string(s.skipped),
+          std::to_string(s.traversalCycles), std::to_string(s.cycles), real(s.frameMs(clockMhz)),
+          real(s.framesPerSecond(clockMhz)), real(s.hostSeconds)};
+}
+
+void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz) {
+  uint64_t pixels = 0, traced = 0, saved = 0, jobs = 0, cycles = 0, culled = 0, early = 0;
+  double host = 0.0;
+  for (const FrameStatistics& s : frames) {
+    pixels += s.pixels, traced += s.raysTraced, saved += s.raysSaved, jobs += s.jobs;
+    cycles += s.cycles, culled += s.culled, early += s.earlyTerminations, host += s.hostSeconds;
+  }
+  const double meanCycles = static_cast<double>(cycles) / frames.size();
+  std::printf("frames      %zu, %.2f ms mean frame time at %.0f MHz (%.1f frames/s)\n",
+              frames.size(), meanCycles / (clockMhz * 1e3), clockMhz,
+              meanCycles > 0 ? clockMhz * 1e6 / meanCycles : 0.0);
+  std::printf("rays        %llu traced, %llu saved by the hit buffer (%.1f %%)\n",
+              static_cast<unsigned long long>(traced), static_cast<unsigned long long>(saved),
+              pixels ? 100.0 * saved / pixels : 0.0);
+  std::printf("jobs        %.3f per traced ray; %.3f instances culled per traced ray; %.1f %% of "
+              "traced rays ended early\n",
+              traced ? static_cast<double>(jobs) / traced : 0.0,
+              traced ? static_cast<double>(culled) / traced : 0.0,
+              traced ? 100.0 * early / traced : 0.0);
+  std::printf("host        %.2f s, %.2f s per frame (golden model)\n", host, host / frames.size());
+}
+
+void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
+                 const std::vector<std::string>& framePaths) {
+  const std::string plot = options.outDir + "/frame_rate.png";
+  try {
+    runPlotScript("frames", {"--out", plot, options.csvPath()});
+  } catch (const std::exception& error) {
+    std::cerr << "rtusim animate: warning: no plot: " << error.what() << "\n";
+  }
+  const AnimatedImage animation =
+      assembleAnimatedImage(framePaths, scene.frameRate, options.outDir + "/animation");
+  if (animation.path.empty())
+    std::cout << "animation   not assembled: install webp (img2webp) or ffmpeg\n";
+  else
+    std::cout << "wrote       " << animation.path << " (" << animation.tool << ")\n";
+}
+
+void animate(const AnimateOptions& options, const GoldenConfig& golden) {
+  requireGoldenModel(options.model);
+  const SceneDescription scene = readSceneFile(options.sceneFile, options.overrides);
+  std::filesystem::create_directories(options.outDir);
+  checkOutputPaths({{"--csv", options.csvPath()}, {"--out-dir", options.framePath(0)}},
+                   {{"--scene-file", options.sceneFile}});
+  checkImageFormat("--out-dir", options.framePath(0));
+  std::printf("scene       %s: %zu models, %zu instances, %d frames of %dx%d at %.3g frames/s\n",
+              scene.path.c_str(), scene.models.size(), scene.instances.size(), scene.frames,
+              scene.width, scene.height, scene.frameRate);
+  const std::vector<SceneModel> models = loadModels(
+      scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
+
+  AnimationOptions run{golden, {!options.traceAll, !options.traceAll}, !options.noHitBuffer,
+                       options.threads, options.cores, options.clockMhz};
+  AnimationRenderer renderer(scene, models, run);
+  std::ofstream csv(options.csvPath());
+  csv << csvLine(csvHeader());
+  std::vector<FrameStatistics> statistics;
+  std::vector<std::string> framePaths;
+  Progress progress("animate", static_cast<size_t>(scene.frames), "frames");
+  for (int frame = 0; frame < scene.frames; ++frame) {
+    const SceneFrame rendered = renderer.render(frame);
+    framePaths.push_back(options.framePath(frame));
+    writeRgbImage(framePaths.back(), scene.width, scene.height, shadeSceneFrame(rendered, scene));
+    statistics.push_back(rendered.statistics);
+    csv << csvLine(csvRow(rendered.statistics, options.clockMhz)) << std::flush;
+    progress.update(static_cast<size_t>(frame + 1), 0);
+  }
+  progress.finish();
+  if (!csv) throw std::runtime_error("cannot write " + options.csvPath());
+  printSummary(statistics, options.clockMhz);
+  std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
+            << framePaths.back().substr(options.outDir.size() + 1) << ", "
+            << options.csvPath() << "\n";
+  writeExtras(options, scene, framePaths);
+}
+
+}  // namespace
+
+void addAnimateCommand(CLI::App& app) {
+  auto options = std::make_shared<AnimateOptions>();
+  CLI::App* command = app.add_subcommand(
+      "animate", "render an animated scene file (docs/scenes.md) frame by frame: images, an "
+                 "animated image, per-frame statistics and a plot of the frame rate");
+  auto request = addConfigOptions(*command, kUseArithmetic);
+  command->add_option("--scene-file", options->sceneFile, "scene description (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--frames", options->overrides.frames, "frames to render (default: the file's)")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--width", options->overrides.width, "image width (default: the file's)")
+      ->check(CLI::Range(1, 1 << 14));
+  command->add_option("--height", options->overrides.height, "image height (default: the file's)")
+      ->check(CLI::Range(1, 1 << 14));
+  command->add_option("--out-dir", options->outDir, "directory for frames, CSV, plot, animation")
+      ->capture_default_str();
+  command->add_option("--csv", options->csv, "per-frame statistics (default: OUT-DIR/frames.csv)");
+  command->add_option("--model", options->model,
+                      "golden (untimed; cycles from its costs); ca and lt need the SystemC scene "
+                      "manager, not yet built")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"golden", "ca", "lt"}));
+  command->add_option("--cache-dir", options->cacheDir,
+                      "where built models are kept (default: ~/.cache/rtusim/models)");
+  command->add_option("--threads", options->threads, "threads tracing each frame's rays")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  command->add_option("--cores", options->cores, "traversal cores for the frame's cycles")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--clock-mhz", options->clockMhz, "clock for frame rates")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 10000.0));
+  command->add_flag("--no-hit-buffer", options->noHitBuffer, "trace every pixel of every frame");
+  command->add_flag("--trace-all", options->traceAll,
+                    "no culling and no early termination: every instance for every ray");
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    const GoldenConfig golden = configuration.values().golden();
+    golden.format.validate();
+    animate(*options, golden);
+  });
+}
+
+}  // namespace rtu
