@@ -113,6 +113,7 @@ void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz) {
 void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
                  const std::vector<std::string>& framePaths) {
   const std::string plot = options.outDir + "/frame_rate.png";
+  std::fflush(stdout);  // the plotting script prints the plot's path after this run's lines
   try {
     runPlotScript("frames", {"--out", plot, options.csvPath()});
   } catch (const std::exception& error) {
