@@ -72,7 +72,10 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   while (!fetches_.empty() && fetches_.front().to <= cycle) fetches_.pop_front();
   const JobSetup::SetUp set = setup_.setUp(host.record);
   if (set.headerFetch > 0) fetches_.push_back({cycle + 1, cycle + 1 + set.headerFetch});
+  // Stalls decided before this acceptance but after its cycle held this job too.
   uint64_t outputCycle = cycle + set.latency;
+  for (const Window& stall : stalls_)
+    if (stall.from > cycle) outputCycle += stall.to - stall.from;
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
   pipeline_.push_back(InFlight{convert(host.sequence, set.job), outputCycle});
   traceReadyAt(cycle + 1);

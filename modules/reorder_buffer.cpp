@@ -42,7 +42,8 @@ void ReorderBuffer::decide() {
 
 // in_ready = the offered result lies within the window of the next one due in that cycle.
 ReorderBuffer::Ready ReorderBuffer::accepts(uint64_t cycle, const CoreResult& result) {
-  if (out_->offering() && cycle > out_->offerCycle()) return Ready::Unknown;  // due moves on
+  // The due result is on its way to the host: the window moves once that is settled.
+  if (out_->takenUnseen() || (out_->offering() && cycle > out_->offerCycle())) return Ready::Unknown;
   const bool ready = result.sequence < dueIn(cycle) + capacity_;
   in_->traceReady(cycle, ready);
   in_->traceReady(cycle + 1, false);

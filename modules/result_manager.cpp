@@ -37,7 +37,22 @@ void ResultManager::decide() {
   heard.swap(heard_);
   for (int core : heard)
     if (core >= 0) handOver(core);
-  if (!out_->alwaysReady()) drainInCycleOrder();
+  if (out_->alwaysReady()) return;
+  drainInCycleOrder();
+  publishDrainBounds();
+}
+
+// A core whose result waits for its full buffer learns the earliest cycle of that buffer's drain
+// still possible (its next select from the first undecided cycle), so the scheduler need not
+// wait for the drain itself to know the core stays busy until then.
+void ResultManager::publishDrainBounds() {
+  for (size_t core = 0; core < buffers_.size(); ++core) {
+    TransferChannel<CoreResult>& channel = *cores_[core];
+    if (!buffers_[core].full || !channel.offering()) continue;
+    const uint64_t from = std::max(scan_, buffers_[core].fullFrom);
+    const uint64_t select = from + (core + coreCount_ - from % coreCount_) % coreCount_;
+    if (channel.readyBound() < select + 1) channel.notReadyBefore(select + 1);
+  }
 }
 
 // A core offers a result and its buffer is empty: the handover is decided.

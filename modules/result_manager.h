@@ -58,6 +58,7 @@ class ResultManager : public sc_core::sc_module, public Agent {
   void handOver(int core);
   void drainAtSelect(int core);
   void drainInCycleOrder();
+  void publishDrainBounds();
   uint64_t nextFullSelect(int& core) const;
   // The earliest cycle a buffer now empty can fill.
   uint64_t fillHorizon() const;

@@ -44,7 +44,11 @@ void SvoTraversalCore::decide() {
     start(cycle, job);
     run();
   });
-  if (phase_ == Phase::Out && out_->collectTaken()) handOver();
+  if (phase_ != Phase::Out) return;
+  if (out_->collectTaken())
+    handOver();
+  else if (out_->readyBound() > outCycle_ && in_->readyBound() < out_->readyBound() + 1)
+    in_->notReadyBefore(out_->readyBound() + 1);  // the result manager takes it then at the earliest
 }
 
 // The cycle of the request came (ask the shared level), or its answer did (go on).

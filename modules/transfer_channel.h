@@ -71,6 +71,7 @@ class TransferChannel {
     takenUnseen_ = false;
     return news;
   }
+  bool takenUnseen() const { return takenUnseen_; }
   uint64_t lastTransfer() const { return lastTransfer_; }
 
   // Whether the consumer takes `payload` in `cycle`.
@@ -95,7 +96,7 @@ class TransferChannel {
       fail("delivered where the consumer is not ready", cycle);
     record(validSignal_, cycle, 1);
     complete(cycle);
-    record(readySignal_, cycle + 1, 0);
+    if (!always_) record(readySignal_, cycle + 1, 0);
     delivered_.push_back({cycle, payload});
     consumer_->heard(consumerPort_);
   }
