@@ -27,6 +27,7 @@ class HostSink : public Agent {
   const std::vector<uint64_t>& arrivalCycles() const { return arrivalCycles_; }
   bool complete() const { return results_.size() == expected_; }
   uint64_t expected() const { return expected_; }
+  uint64_t lastArrival() const { return lastArrival_; }
   // How many results arrived before `cycle` (asked in increasing cycles).
   uint64_t arrivedBefore(uint64_t cycle);
   void arrange();

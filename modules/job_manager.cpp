@@ -6,8 +6,9 @@
 
 namespace rtu {
 
-JobManager::JobManager(DecisionPump& pump, JobManagerConfig config, SvoMemory memory)
-    : Agent(pump), config_(config), setup_(memory, config) {
+JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
+                       SvoMemory memory)
+    : Agent(pump), clock_(clock), config_(config), setup_(memory, config) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
                                 "rays), got " + std::to_string(config_.stages) + " and " +
@@ -67,6 +68,7 @@ uint64_t JobManager::acceptanceCycle(uint64_t offered) const {
 }
 
 void JobManager::accept(const HostJob& host, uint64_t cycle) {
+  accepted_ = true;
   lastAccepted_ = cycle;
   while (!stalls_.empty() && stalls_.front().to <= cycle) stalls_.pop_front();
   while (!fetches_.empty() && fetches_.front().to <= cycle) fetches_.pop_front();
@@ -114,7 +116,11 @@ void JobManager::traceReadyAt(uint64_t cycle) {
 // again (the last record of a cycle counts), with the stall's own edges.
 void JobManager::retraceReady() {
   if (!in_->traced()) return;
-  const auto final = [this](uint64_t cycle) { return cycle <= lastAccepted_; };
+  // No window starts behind simulated time or at the last acceptance and before (a stall there
+  // was known when the record was accepted; a header fetch starts after it).
+  const auto final = [this](uint64_t cycle) {
+    return cycle < clock_.now() || (accepted_ && cycle <= lastAccepted_);
+  };
   readyPoints_.erase(std::remove_if(readyPoints_.begin(), readyPoints_.end(), final),
                      readyPoints_.end());
   for (const Window& stall : stalls_) {

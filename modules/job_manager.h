@@ -20,6 +20,7 @@
 #include <deque>
 #include <vector>
 
+#include "cycle_clock.h"
 #include "decision_pump.h"
 #include "golden_model.h"
 #include "job_setup.h"
@@ -34,7 +35,7 @@ struct JobManagerStatistics {
 
 class JobManager : public Agent {
  public:
-  JobManager(DecisionPump& pump, JobManagerConfig config, SvoMemory memory);
+  JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config, SvoMemory memory);
 
   void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
   void decide() override;
@@ -60,6 +61,7 @@ class JobManager : public Agent {
   void traceReadyAt(uint64_t cycle);
   void retraceReady();
 
+  const CycleClock& clock_;
   JobManagerConfig config_;
   JobSetup setup_;  // what it computes (golden/job_setup.h); this module adds when
   TransferChannel<HostJob>* in_ = nullptr;
@@ -68,6 +70,7 @@ class JobManager : public Agent {
   bool frontOffered_ = false;
   std::deque<Window> stalls_;   // decided stalls a later acceptance may fall into
   std::deque<Window> fetches_;  // header fetches
+  bool accepted_ = false;
   uint64_t lastAccepted_ = 0;
   std::vector<uint64_t> readyPoints_;  // traced cycles whose level a later window may change
   JobManagerStatistics statistics_;

@@ -46,7 +46,8 @@ class RunLoop {
         nextProgress = (now / kProgressCycles + 1) * kProgressCycles;
       }
       if (takeSnapshots(now) && plan_.stopAtLast) return false;
-    } while (sc_core::sc_pending_activity());
+      // The modules decide ahead of simulated time: go on until it has passed the last result.
+    } while (sc_core::sc_pending_activity() || clock_.now() <= top_.sink().lastArrival());
     return true;
   }
 

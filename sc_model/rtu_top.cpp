@@ -31,7 +31,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
 
   source_ = std::make_unique<HostSource>("host_source", clock_, pump_, std::move(records),
                                          config.hostInput, kLookAheadCycles);
-  jobManager_ = std::make_unique<JobManager>(pump_, config.jobManager, memory);
+  jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler);
   memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
                                            trace, caches);
