@@ -37,7 +37,7 @@ void HostSink::decide() {
 void HostSink::receive(uint64_t cycle, const CoreResult& result) {
   results_.push_back(result);
   arrivalCycles_.push_back(cycle);
-  notYetArrived_.push(cycle);
+  notYetArrived_.push_back(cycle);
   lastArrival_ = std::max(lastArrival_, cycle);
   if (complete()) {
     in_->traceReady(lastArrival_ + 1, false);
@@ -74,11 +74,12 @@ uint64_t HostSink::firstReadyFrom(uint64_t cycle) {
   return cycle;
 }
 
+// Results are decided at most a look-ahead beyond simulated time, so few stay uncounted.
 uint64_t HostSink::arrivedBefore(uint64_t cycle) {
-  while (!notYetArrived_.empty() && notYetArrived_.top() < cycle) {
-    notYetArrived_.pop();
-    ++arrived_;
-  }
+  const auto later = std::partition(notYetArrived_.begin(), notYetArrived_.end(),
+                                    [cycle](uint64_t arrival) { return arrival >= cycle; });
+  arrived_ += static_cast<uint64_t>(notYetArrived_.end() - later);
+  notYetArrived_.erase(later, notYetArrived_.end());
   return arrived_;
 }
 

@@ -5,7 +5,6 @@
 // sorts them by arrival at the end.
 
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 #include "decision_pump.h"
@@ -47,7 +46,7 @@ class HostSink : public Agent {
   std::vector<CoreResult> results_;
   std::vector<uint64_t> arrivalCycles_;
   uint64_t lastArrival_ = 0;
-  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<>> notYetArrived_;
+  std::vector<uint64_t> notYetArrived_;  // cycles of results not yet counted by arrivedBefore
   uint64_t arrived_ = 0;
 };
 

@@ -32,7 +32,7 @@ void HostSource::decide() {
   if (out_->offering() || next_ == records_.size()) return;
   const uint64_t cycle = offerCycle();
   if (cycle > clock_.now() + lookAhead_) {
-    wake_.at(cycle - lookAhead_);
+    wake_.at(cycle - lookAhead_ / 2);  // then it offers records for about half the look-ahead
     return;
   }
   out_->offer(HostJob{next_, records_[next_]}, cycle);

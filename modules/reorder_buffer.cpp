@@ -6,8 +6,8 @@
 
 namespace rtu {
 
-ReorderBuffer::ReorderBuffer(DecisionPump& pump, int capacity)
-    : Agent(pump), capacity_(static_cast<uint64_t>(capacity)) {
+ReorderBuffer::ReorderBuffer(DecisionPump& pump, const CycleClock& clock, int capacity)
+    : Agent(pump), clock_(clock), capacity_(static_cast<uint64_t>(capacity)) {
   if (capacity < 1)
     throw std::invalid_argument("reorder buffer capacity must be at least 1, got " +
                                 std::to_string(capacity));
@@ -22,10 +22,11 @@ void ReorderBuffer::bind(TransferChannel<CoreResult>& in, TransferChannel<CoreRe
 void ReorderBuffer::decide() {
   in_->collectDelivered([this](uint64_t cycle, const CoreResult& result) {
     held_[result.sequence] = Held{result, cycle + 1};
+    occupancy_.enter(cycle + 1);
   });
   if (out_->collectTaken()) {
     const uint64_t sent = out_->lastTransfer();
-    occupancy_.occupy(held_.at(nextDue_).from, sent + 2);
+    occupancy_.leave(sent + 2);
     held_.erase(nextDue_++);
     lastSent_ = sent;
     dueChanges_.push_back({sent + 1, nextDue_});
@@ -37,7 +38,7 @@ void ReorderBuffer::decide() {
                                                    : std::max(due->second.from, lastSent_ + 1);
     out_->offer(due->second.result, from);
   }
-  if (occupancy_.unsettled() >= 4096) occupancy_.settle(lastSent_);
+  occupancy_.settle(clock_.now());
 }
 
 // in_ready = the offered result lies within the window of the next one due in that cycle.

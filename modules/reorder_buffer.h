@@ -10,6 +10,7 @@
 #include <map>
 #include <utility>
 
+#include "cycle_clock.h"
 #include "decision_pump.h"
 #include "occupancy_peak.h"
 #include "rtu_payloads.h"
@@ -23,16 +24,12 @@ struct ReorderBufferStatistics {
 
 class ReorderBuffer : public Agent {
  public:
-  ReorderBuffer(DecisionPump& pump, int capacity);
+  ReorderBuffer(DecisionPump& pump, const CycleClock& clock, int capacity);
 
   void bind(TransferChannel<CoreResult>& in, TransferChannel<CoreResult>& out);
   void decide() override;
 
-  ReorderBufferStatistics statistics() const {
-    OccupancyPeak all = occupancy_;
-    all.settle(kNeverCycle);
-    return {all.peak()};
-  }
+  ReorderBufferStatistics statistics() const { return {occupancy_.peak()}; }
 
  private:
   using Ready = TransferChannel<CoreResult>::Ready;
@@ -44,6 +41,7 @@ class ReorderBuffer : public Agent {
   Ready accepts(uint64_t cycle, const CoreResult& result);
   uint64_t dueIn(uint64_t cycle);
 
+  const CycleClock& clock_;
   uint64_t capacity_;
   TransferChannel<CoreResult>* in_ = nullptr;
   TransferChannel<CoreResult>* out_ = nullptr;

@@ -10,11 +10,7 @@ ResultManager::ResultManager(sc_core::sc_module_name name, const CycleClock& clo
     : sc_core::sc_module(name), Agent(pump), clock_(clock), wake_(clock) {}
 
 void ResultManager::end_of_elaboration() {
-  sc_core::sc_spawn_options options;
-  options.spawn_method();
-  options.dont_initialize();
-  options.set_sensitivity(&wake_.event());
-  sc_core::sc_spawn([this] { pump().runWith(*this); }, "drain", &options);
+  spawnReaction("drain", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
 void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
@@ -33,10 +29,10 @@ void ResultManager::heard(int port) {
 }
 
 void ResultManager::decide() {
-  std::vector<int> heard;
-  heard.swap(heard_);
-  for (int core : heard)
+  deciding_.swap(heard_);  // both keep their capacity: no allocation per decision
+  for (int core : deciding_)
     if (core >= 0) handOver(core);
+  deciding_.clear();
   if (out_->alwaysReady()) return;
   drainInCycleOrder();
   publishDrainBounds();
@@ -65,6 +61,7 @@ void ResultManager::handOver(int core) {
   channel.take(cycle);
   buffer.full = true;
   buffer.fullFrom = cycle + 1;
+  occupancy_.enter(cycle + 1);
   full_.assign(core, true);
   if (out_->alwaysReady()) drainAtSelect(core);
 }
@@ -147,13 +144,13 @@ void ResultManager::drain(int core, uint64_t cycle) {
     out_->deliver(buffer.result, cycle);
   }
   if (traced) rememberDrain(cycle);
-  occupancy_.occupy(buffer.fullFrom, cycle + 2);
+  occupancy_.leave(cycle + 2);  // the RTL's count sees the buffer until the cycle after
   buffer.full = false;
   buffer.freeFrom = cycle + 1;
   full_.assign(core, false);
   channel.traceReady(cycle + 1, true);
   handOver(core);
-  if (occupancy_.unsettled() >= 4096) occupancy_.settle(firstUnsettled());
+  occupancy_.settle(clock_.now());
 }
 
 void ResultManager::rememberDrain(uint64_t cycle) {
@@ -164,12 +161,5 @@ void ResultManager::rememberDrain(uint64_t cycle) {
     it = *it + 1 < now ? drainCycles_.erase(it) : std::next(it);
 }
 
-// Every buffer full now or later fills in this cycle or after.
-uint64_t ResultManager::firstUnsettled() const {
-  uint64_t first = clock_.now();
-  for (const Buffer& buffer : buffers_)
-    if (buffer.full) first = std::min(first, buffer.fullFrom);
-  return first;
-}
 
 }  // namespace rtu

@@ -40,11 +40,7 @@ class ResultManager : public sc_core::sc_module, public Agent {
   void decide() override;
   void heard(int port) override;
 
-  ResultManagerStatistics statistics() const {
-    OccupancyPeak all = occupancy_;
-    all.settle(kNeverCycle);
-    return {all.peak()};
-  }
+  ResultManagerStatistics statistics() const { return {occupancy_.peak()}; }
 
  private:
   struct Buffer {
@@ -63,7 +59,6 @@ class ResultManager : public sc_core::sc_module, public Agent {
   // The earliest cycle a buffer now empty can fill.
   uint64_t fillHorizon() const;
   void rememberDrain(uint64_t cycle);
-  uint64_t firstUnsettled() const;
   void drain(int core, uint64_t cycle);
 
   const CycleClock& clock_;
@@ -72,7 +67,8 @@ class ResultManager : public sc_core::sc_module, public Agent {
   TransferChannel<CoreResult>* out_ = nullptr;
   uint64_t coreCount_ = 0;
   std::vector<Buffer> buffers_;
-  std::vector<int> heard_;  // cores whose channel changed since the last decision
+  std::vector<int> heard_;     // cores whose channel changed since the last decision
+  std::vector<int> deciding_;  // those being decided now
   CoreSet full_;
   uint64_t scan_ = 0;       // cycle order: every cycle before it is decided
   std::unordered_set<uint64_t> drainCycles_;  // traced drains, for the valid level

@@ -31,12 +31,8 @@ void SvoTraversalCore::end_of_elaboration() {
   words_ = &memory->backingStore();
   combinational_ = memory->combinational();
   if (combinational_) return;  // no shared reads: the pump does everything
-  sc_core::sc_spawn_options options;
-  options.spawn_method();
-  options.dont_initialize();
-  options.set_sensitivity(&wake_.event());
-  options.set_sensitivity(&memory->sharedReplied(index_));
-  sc_core::sc_spawn([this] { sharedRead(); }, "shared_read", &options);
+  spawnReaction("shared_read", [this] { sharedRead(); },
+                {&wake_.event(), &memory->sharedReplied(index_)});
 }
 
 void SvoTraversalCore::decide() {

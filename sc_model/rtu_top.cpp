@@ -60,7 +60,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   sink_ = std::make_unique<HostSink>(pump_, jobCount, config.outputLink());
   if (config.reorderCapacity > 0) {
     orderedResults_ = channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
-    reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, config.reorderCapacity);
+    reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, clock_, config.reorderCapacity);
     managedResults_->connect(*resultManager_, -1, *reorderBuffer_, 0);
     orderedResults_->connect(*reorderBuffer_, 1, *sink_, 0);
     toHost = orderedResults_.get();
