@@ -1,37 +1,103 @@
 #include "host_sink.h"
 
+#include <algorithm>
+#include <numeric>
+
 namespace rtu {
 
-HostSink::HostSink(sc_core::sc_module_name name, const CycleClock& clock, uint64_t expected,
-                   HostLinkConfig link)
-    : sc_core::sc_module(name), clock_(clock), expected_(expected), pacer_(link), wake_(clock) {
+HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link)
+    : Agent(pump), expected_(expected), link_(link), pacer_(link) {
   validate(link, "host output");
   results_.reserve(expected);
   arrivalCycles_.reserve(expected);
 }
 
-void HostSink::end_of_elaboration() {
-  spawnMethod("evaluate", [this] { evaluate(); }, {&in->edge(), &wake_.event()});
+void HostSink::bind(TransferChannel<CoreResult>& in) {
+  in_ = &in;
+  if (link_.bytesPerCycle == 0.0 && !pacer_.random()) {
+    in_->readyAlways();
+    in_->traceReady(0, true);
+  } else if (pacer_.random()) {
+    in_->readyWhen([this](uint64_t cycle, const CoreResult&) { return readyIn(cycle); });
+  } else {
+    in_->readyFrom(0);
+  }
 }
 
-void HostSink::evaluate() {
-  const uint64_t now = clock_.now();
-  if (handledCycle_ != now && now > 0 && in->transferredIn(now - 1)) {
-    results_.push_back(in->transferred());
-    arrivalCycles_.push_back(now - 1);
-    allowedFrom_ = pacer_.nextAllowed(now - 1);
+void HostSink::decide() {
+  in_->collectDelivered([this](uint64_t cycle, const CoreResult& result) { receive(cycle, result); });
+  if (in_->offering()) {  // from a reorder buffer
+    const uint64_t cycle = firstReadyFrom(in_->offerCycle());
+    const CoreResult result = in_->payload();
+    in_->take(cycle);
+    receive(cycle, result);
   }
-  handledCycle_ = now;
+}
+
+void HostSink::receive(uint64_t cycle, const CoreResult& result) {
+  results_.push_back(result);
+  arrivalCycles_.push_back(cycle);
+  notYetArrived_.push_back(cycle);
+  lastArrival_ = std::max(lastArrival_, cycle);
   if (complete()) {
-    in->setReady(false);
+    in_->traceReady(lastArrival_ + 1, false);
     return;
   }
-  const bool ready = now >= allowedFrom_ && (!pacer_.random() || pacer_.drawActive());
-  in->setReady(ready);
+  if (in_->alwaysReady()) return;
+  allowedFrom_ = pacer_.nextAllowed(cycle);
+  activeFrom_.clear();
+  drawnUntil_ = allowedFrom_;
   if (pacer_.random())
-    wake_.at(now + 1);  // a new draw every cycle
-  else if (!ready)
-    wake_.at(allowedFrom_);
+    in_->readinessChanged();
+  else
+    in_->readyFrom(allowedFrom_);
+}
+
+// A randomly throttled link: one draw per cycle from the link's next slot on.
+TransferChannel<CoreResult>::Ready HostSink::readyIn(uint64_t cycle) {
+  using Ready = TransferChannel<CoreResult>::Ready;
+  if (complete() || cycle < allowedFrom_) return Ready::No;
+  while (drawnUntil_ <= cycle) {
+    const bool active = pacer_.drawActive();
+    activeFrom_.push_back(active);
+    in_->traceReady(drawnUntil_, active);
+    ++drawnUntil_;
+  }
+  return activeFrom_[cycle - allowedFrom_] ? Ready::Yes : Ready::No;
+}
+
+uint64_t HostSink::firstReadyFrom(uint64_t cycle) {
+  if (in_->alwaysReady()) return cycle;
+  if (!pacer_.random()) return std::max(cycle, allowedFrom_);
+  cycle = std::max(cycle, allowedFrom_);
+  while (readyIn(cycle) != TransferChannel<CoreResult>::Ready::Yes) ++cycle;
+  return cycle;
+}
+
+// Results are decided at most a look-ahead beyond simulated time, so few stay uncounted.
+uint64_t HostSink::arrivedBefore(uint64_t cycle) {
+  const auto later = std::partition(notYetArrived_.begin(), notYetArrived_.end(),
+                                    [cycle](uint64_t arrival) { return arrival >= cycle; });
+  arrived_ += static_cast<uint64_t>(notYetArrived_.end() - later);
+  notYetArrived_.erase(later, notYetArrived_.end());
+  return arrived_;
+}
+
+void HostSink::arrange() {
+  std::vector<size_t> order(results_.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [this](size_t a, size_t b) { return arrivalCycles_[a] < arrivalCycles_[b]; });
+  std::vector<CoreResult> results;
+  std::vector<uint64_t> arrivals;
+  results.reserve(order.size());
+  arrivals.reserve(order.size());
+  for (size_t i : order) {
+    results.push_back(results_[i]);
+    arrivals.push_back(arrivalCycles_[i]);
+  }
+  results_.swap(results);
+  arrivalCycles_.swap(arrivals);
 }
 
 }  // namespace rtu

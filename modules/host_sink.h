@@ -1,44 +1,53 @@
 #pragma once
 // The host's output stream: takes results whenever the link allows (every cycle unless paced or
-// randomly throttled) and keeps them in arrival order with their cycles.
+// randomly throttled) and keeps them with their arrival cycles. Without pacing it is ready in
+// every cycle, so results may be delivered to it in any order of cycles (result_manager.h); it
+// sorts them by arrival at the end.
 
 #include <cstdint>
 #include <vector>
 
-#include <systemc>
-
-#include "cycle_clock.h"
+#include "decision_pump.h"
 #include "host_link.h"
-#include "module_process.h"
-#include "ready_valid.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
-class HostSink : public sc_core::sc_module {
+class HostSink : public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<CoreResult>> in;
+  HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link);
 
-  HostSink(sc_core::sc_module_name name, const CycleClock& clock, uint64_t expected,
-           HostLinkConfig link);
+  void bind(TransferChannel<CoreResult>& in);
+  void decide() override;
 
+  // In arrival order once the run is complete (arrange()).
   const std::vector<CoreResult>& results() const { return results_; }
   const std::vector<uint64_t>& arrivalCycles() const { return arrivalCycles_; }
   bool complete() const { return results_.size() == expected_; }
   uint64_t expected() const { return expected_; }
+  uint64_t lastArrival() const { return lastArrival_; }
+  // How many results arrived before `cycle` (asked in increasing cycles).
+  uint64_t arrivedBefore(uint64_t cycle);
+  void arrange();
 
  private:
-  void end_of_elaboration() override;
-  void evaluate();
+  void receive(uint64_t cycle, const CoreResult& result);
+  TransferChannel<CoreResult>::Ready readyIn(uint64_t cycle);
+  uint64_t firstReadyFrom(uint64_t cycle);
 
-  const CycleClock& clock_;
+  TransferChannel<CoreResult>* in_ = nullptr;
   uint64_t expected_;
+  HostLinkConfig link_;
   HostLinkPacer pacer_;
   uint64_t allowedFrom_ = 0;
-  uint64_t handledCycle_ = ~0ull;
-  CycleWake wake_;
+  uint64_t drawnUntil_ = 0;           // a random link: cycles drawn so far ...
+  std::vector<bool> activeFrom_;      // ... and their outcomes from allowedFrom_
   std::vector<CoreResult> results_;
   std::vector<uint64_t> arrivalCycles_;
+  uint64_t lastArrival_ = 0;
+  std::vector<uint64_t> notYetArrived_;  // cycles of results not yet counted by arrivedBefore
+  uint64_t arrived_ = 0;
 };
 
 }  // namespace rtu

@@ -4,34 +4,49 @@
 
 namespace rtu {
 
-HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock,
-                       std::vector<HostRecord> records, HostLinkConfig link)
+HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
+                       std::vector<HostRecord> records, HostLinkConfig link, uint64_t lookAhead)
     : sc_core::sc_module(name),
+      Agent(pump),
       clock_(clock),
       records_(std::move(records)),
       pacer_(link),
+      lookAhead_(lookAhead),
       wake_(clock) {
   validate(link, "host input");
 }
 
+void HostSource::bind(TransferChannel<HostJob>& out) { out_ = &out; }
+
 void HostSource::end_of_elaboration() {
-  spawnMethod("evaluate", [this] { evaluate(); }, {&out->edge(), &wake_.event()});
+  // Runs at the start of simulation and whenever simulated time catches up with the next offer.
+  spawnMethod("offer", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
-void HostSource::evaluate() {
-  const uint64_t now = clock_.now();
-  if (offering_ && now > 0 && out->transferredIn(now - 1)) {
+void HostSource::decide() {
+  if (out_->collectTaken()) {
     ++next_;
-    allowedFrom_ = pacer_.nextAllowed(now - 1);
-    offering_ = false;
-    out->withdraw();
+    allowedFrom_ = pacer_.nextAllowed(out_->lastTransfer());
+    drawnOffer_ = kNeverCycle;
   }
-  if (next_ == records_.size()) return;  // nothing left: no more activations
-  if (!offering_ && now >= allowedFrom_ && (!pacer_.random() || pacer_.drawActive())) {
-    out->offer(HostJob{next_, records_[next_]});
-    offering_ = true;
+  if (out_->offering() || next_ == records_.size()) return;
+  const uint64_t cycle = offerCycle();
+  if (cycle > clock_.now() + lookAhead_) {
+    wake_.at(cycle - lookAhead_ / 2);  // then it offers records for about half the look-ahead
+    return;
   }
-  if (!offering_) wake_.at(std::max(now + 1, allowedFrom_));
+  out_->offer(HostJob{next_, records_[next_]}, cycle);
+}
+
+// The link's next slot; a randomly inactive link offers in the first active cycle from there
+// (one draw per cycle).
+uint64_t HostSource::offerCycle() {
+  if (!pacer_.random()) return allowedFrom_;
+  if (drawnOffer_ == kNeverCycle) {
+    drawnOffer_ = allowedFrom_;
+    while (!pacer_.drawActive()) ++drawnOffer_;
+  }
+  return drawnOffer_;
 }
 
 }  // namespace rtu

@@ -1,6 +1,9 @@
 #pragma once
-// The host's input stream: offers the job records in order from the first cycle after reset, each
-// as soon as the link allows, and holds it until the job manager takes it.
+// The host's input stream: offers the job records in order, record 0 from cycle 0 and each next
+// one as soon as the link allows after the job manager took the previous, and holds it until
+// taken. It is also what keeps the run near simulated time: it offers a record only once
+// simulated time is within `lookAhead` cycles of the offer (decision_pump.h), so the modules
+// after it never decide more than about that far ahead.
 
 #include <cstdint>
 #include <vector>
@@ -8,30 +11,34 @@
 #include <systemc>
 
 #include "cycle_clock.h"
+#include "decision_pump.h"
 #include "host_link.h"
 #include "module_process.h"
-#include "ready_valid.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
-class HostSource : public sc_core::sc_module {
+class HostSource : public sc_core::sc_module, public Agent {
  public:
-  sc_core::sc_port<ReadyValidOut<HostJob>> out;
+  HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
+             std::vector<HostRecord> records, HostLinkConfig link, uint64_t lookAhead);
 
-  HostSource(sc_core::sc_module_name name, const CycleClock& clock,
-             std::vector<HostRecord> records, HostLinkConfig link);
+  void bind(TransferChannel<HostJob>& out);
+  void decide() override;
 
  private:
   void end_of_elaboration() override;
-  void evaluate();
+  uint64_t offerCycle();
 
   const CycleClock& clock_;
+  TransferChannel<HostJob>* out_ = nullptr;
   std::vector<HostRecord> records_;
   HostLinkPacer pacer_;
-  uint64_t next_ = 0;        // index of the job offered or to be offered
-  uint64_t allowedFrom_ = 0;
-  bool offering_ = false;
+  uint64_t lookAhead_;
+  uint64_t next_ = 0;         // index of the record offered or to be offered
+  uint64_t allowedFrom_ = 0;  // the link's next slot
+  uint64_t drawnOffer_ = kNeverCycle;  // a random link's offer cycle, once drawn
   CycleWake wake_;
 };
 

@@ -6,9 +6,9 @@
 
 namespace rtu {
 
-JobManager::JobManager(sc_core::sc_module_name name, const CycleClock& clock,
-                       JobManagerConfig config, SvoMemory memory)
-    : sc_core::sc_module(name), clock_(clock), config_(config), setup_(memory, config), wake_(clock) {
+JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
+                       SvoMemory memory)
+    : Agent(pump), clock_(clock), config_(config), setup_(memory, config) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
                                 "rays), got " + std::to_string(config_.stages) + " and " +
@@ -18,52 +18,72 @@ JobManager::JobManager(sc_core::sc_module_name name, const CycleClock& clock,
   config_.format.validate();
 }
 
-void JobManager::end_of_elaboration() {
-  spawnMethod("evaluate", [this] { evaluate(); },
-              {&in->edge(), &out->edge(), &out->readyChanged(), &wake_.event()});
+void JobManager::bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out) {
+  in_ = &in;
+  out_ = &out;
+  traceReadyAt(0);
 }
 
-bool JobManager::outputValid(uint64_t now) const {
-  return !pipeline_.empty() && pipeline_.front().outputCycle <= now;
-}
-
-void JobManager::evaluate() {
-  const uint64_t now = clock_.now();
-  takeTransfers(now);
-  const bool valid = outputValid(now);
-  if (valid && !offering_) {
-    pipeline_.front().job.pendingSince = now;
-    out->offer(pipeline_.front().job);
-    offering_ = true;
+void JobManager::decide() {
+  if (out_->collectTaken()) takeDispatch();
+  if (!pipeline_.empty() && !frontOffered_) {
+    InFlight& front = pipeline_.front();
+    front.job.pendingSince = front.outputCycle;
+    out_->offer(front.job, front.outputCycle);
+    frontOffered_ = true;
+    retraceReady();
   }
-  in->setReady((!valid || out->ready()) && now >= fetchUntil_);  // pipeline_enable
-  uint64_t wake = now >= fetchUntil_ ? ~0ull : fetchUntil_;
-  if (!valid && !pipeline_.empty()) wake = std::min(wake, pipeline_.front().outputCycle);
-  if (wake != ~0ull) wake_.at(wake);
+  if (in_->offering()) acceptOffered();
 }
 
-// The edge that ended the previous cycle, handled once however often the cycle wakes us.
-void JobManager::takeTransfers(uint64_t now) {
-  if (handledCycle_ == now || now == 0) return;
-  handledCycle_ = now;
-  const uint64_t edge = now - 1;
-  if (out->transferredIn(edge)) {
-    const uint64_t stall = edge - pipeline_.front().outputCycle;
-    statistics_.stallCycles += stall;
-    pipeline_.pop_front();
-    for (InFlight& job : pipeline_) job.outputCycle += stall;
-    out->withdraw();  // replaced by the next offer if a job reaches the output now
-    offering_ = false;
-  }
-  if (in->transferredIn(edge)) accept(in->transferred(), edge);
+// The scheduler took the job at the output in D: its stall [A, D) holds every job behind it.
+void JobManager::takeDispatch() {
+  const uint64_t dispatch = out_->lastTransfer();
+  const uint64_t stall = dispatch - pipeline_.front().outputCycle;
+  statistics_.stallCycles += stall;
+  if (stall > 0) stalls_.push_back({pipeline_.front().outputCycle, dispatch});
+  pipeline_.pop_front();
+  for (InFlight& job : pipeline_) job.outputCycle += stall;
+  frontOffered_ = false;
+  retraceReady();
 }
 
-void JobManager::accept(const HostJob& host, uint64_t edge) {
+void JobManager::acceptOffered() {
+  const uint64_t cycle = acceptanceCycle(in_->offerCycle());
+  if (cycle == kNeverCycle) return;  // the job at the output is due first: wait for its dispatch
+  const HostJob host = in_->payload();
+  in_->take(cycle);
+  accept(host, cycle);
+}
+
+// The first cycle from `offered` in which the pipeline moves, or kNeverCycle while that depends
+// on the dispatch of the job at the output.
+uint64_t JobManager::acceptanceCycle(uint64_t offered) const {
+  uint64_t cycle = offered;
+  for (const Window& fetch : fetches_) cycle = std::max(cycle, fetch.to);
+  for (const Window& stall : stalls_)
+    if (stall.from <= cycle && cycle < stall.to) cycle = stall.to;
+  if (frontOffered_ && pipeline_.front().outputCycle <= cycle) return kNeverCycle;
+  return cycle;
+}
+
+void JobManager::accept(const HostJob& host, uint64_t cycle) {
+  accepted_ = true;
+  lastAccepted_ = cycle;
+  while (!stalls_.empty() && stalls_.front().to <= cycle) stalls_.pop_front();
+  while (!fetches_.empty() && fetches_.front().to <= cycle) fetches_.pop_front();
   const JobSetup::SetUp set = setup_.setUp(host.record);
-  if (set.headerFetch > 0) fetchUntil_ = edge + 1 + set.headerFetch;
-  uint64_t outputCycle = edge + set.latency;
+  if (set.headerFetch > 0) fetches_.push_back({cycle + 1, cycle + 1 + set.headerFetch});
+  // Stalls decided before this acceptance but after its cycle held this job too.
+  uint64_t outputCycle = cycle + set.latency;
+  for (const Window& stall : stalls_)
+    if (stall.from > cycle) outputCycle += stall.to - stall.from;
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
   pipeline_.push_back(InFlight{convert(host.sequence, set.job), outputCycle});
+  traceReadyAt(cycle + 1);
+  if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);
+  // The new job may be the one at the output now.
+  if (pipeline_.size() == 1) decide();
 }
 
 CoreJob JobManager::convert(uint64_t sequence, const TraversalJob& host) const {
@@ -75,6 +95,43 @@ CoreJob JobManager::convert(uint64_t sequence, const TraversalJob& host) const {
   job.t1 = convertToFixed(host.t1Bits, config_.format, config_.conversion);
   job.root = host.root;
   return job;
+}
+
+// in_ready = pipeline_enable and no header fetch under way.
+bool JobManager::readyIn(uint64_t cycle) const {
+  for (const Window& fetch : fetches_)
+    if (fetch.from <= cycle && cycle < fetch.to) return false;
+  for (const Window& stall : stalls_)
+    if (stall.from <= cycle && cycle < stall.to) return false;
+  return !(frontOffered_ && pipeline_.front().outputCycle <= cycle);
+}
+
+void JobManager::traceReadyAt(uint64_t cycle) {
+  if (!in_->traced()) return;
+  readyPoints_.push_back(cycle);
+  in_->traceReady(cycle, readyIn(cycle));
+}
+
+// A stall began or ended: every traced level from the oldest undecided cycle on is recorded
+// again (the last record of a cycle counts), with the stall's own edges.
+void JobManager::retraceReady() {
+  if (!in_->traced()) return;
+  // No window starts behind simulated time or at the last acceptance and before (a stall there
+  // was known when the record was accepted; a header fetch starts after it).
+  const auto final = [this](uint64_t cycle) {
+    return cycle < clock_.now() || (accepted_ && cycle <= lastAccepted_);
+  };
+  readyPoints_.erase(std::remove_if(readyPoints_.begin(), readyPoints_.end(), final),
+                     readyPoints_.end());
+  for (const Window& stall : stalls_) {
+    readyPoints_.push_back(stall.from);
+    readyPoints_.push_back(stall.to);
+  }
+  if (frontOffered_) readyPoints_.push_back(pipeline_.front().outputCycle);
+  std::sort(readyPoints_.begin(), readyPoints_.end());
+  readyPoints_.erase(std::unique(readyPoints_.begin(), readyPoints_.end()), readyPoints_.end());
+  for (uint64_t cycle : readyPoints_)
+    if (!final(cycle)) in_->traceReady(cycle, readyIn(cycle));
 }
 
 }  // namespace rtu

@@ -5,25 +5,27 @@
 // leaves them as placeholders, so their latency is configuration). Jobs leave in order: a
 // t-value record behind a ray record waits for it. The first ray against a model fetches the
 // model's header from memory (`headerFetchCycles`, during which no record is accepted) and keeps
-// it for the rest of the run, as the thesis' animation stage would once per frame. Like the RTL it advances only when its output is taken
-// or empty (pipeline_enable = out_ready || !out_valid), and it accepts an input exactly when it
-// advances, so a job waiting for a core stalls the whole pipeline and the host.
+// it for the rest of the run, as the thesis' animation stage would once per frame. Like the RTL
+// it advances only when its output is taken or empty (pipeline_enable = out_ready || !out_valid),
+// and it accepts an input exactly when it advances, so a job waiting for a core stalls the whole
+// pipeline and the host.
 //
 // The pipeline is kept as the jobs in flight with the cycle each reaches the output if nothing
-// stalls; a stall of k cycles at the output delays all of them by k. The module therefore runs
-// only in cycles where a job enters, leaves or reaches the output.
+// stalls; the job at the output from A until the scheduler takes it in D stalls all of them by
+// D - A. A record offered from h is taken in the first cycle from max(h, end of a header fetch)
+// outside every stall [A, D), so while the job at the output is not yet taken, a record offered
+// from A on waits for D.
 
+#include <cstdint>
 #include <deque>
-#include <map>
-
-#include <systemc>
+#include <vector>
 
 #include "cycle_clock.h"
-#include "module_process.h"
+#include "decision_pump.h"
 #include "golden_model.h"
 #include "job_setup.h"
-#include "ready_valid.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
@@ -31,13 +33,12 @@ struct JobManagerStatistics {
   uint64_t stallCycles = 0;  // cycles the output was valid and not taken
 };
 
-class JobManager : public sc_core::sc_module {
+class JobManager : public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<HostJob>> in;
-  sc_core::sc_port<ReadyValidOut<CoreJob>> out;
+  JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config, SvoMemory memory);
 
-  JobManager(sc_core::sc_module_name name, const CycleClock& clock, JobManagerConfig config,
-             SvoMemory memory);
+  void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
+  void decide() override;
 
   const JobManagerStatistics& statistics() const { return statistics_; }
 
@@ -46,22 +47,32 @@ class JobManager : public sc_core::sc_module {
     CoreJob job;
     uint64_t outputCycle;
   };
+  struct Window {  // cycles [from, to) in which no record is accepted
+    uint64_t from, to;
+  };
 
-  void end_of_elaboration() override;
-  void evaluate();
-  void takeTransfers(uint64_t now);
-  bool outputValid(uint64_t now) const;
-  void accept(const HostJob& host, uint64_t edge);
+  void takeDispatch();
+  void acceptOffered();
+  uint64_t acceptanceCycle(uint64_t offered) const;
+  void accept(const HostJob& host, uint64_t cycle);
   CoreJob convert(uint64_t sequence, const TraversalJob& job) const;
+  // The trace of in_ready, recomputed at the cycles where it may change.
+  bool readyIn(uint64_t cycle) const;
+  void traceReadyAt(uint64_t cycle);
+  void retraceReady();
 
   const CycleClock& clock_;
   JobManagerConfig config_;
   JobSetup setup_;  // what it computes (golden/job_setup.h); this module adds when
-  uint64_t fetchUntil_ = 0;                  // no record is accepted before this cycle
+  TransferChannel<HostJob>* in_ = nullptr;
+  TransferChannel<CoreJob>* out_ = nullptr;
   std::deque<InFlight> pipeline_;
-  bool offering_ = false;
-  uint64_t handledCycle_ = ~0ull;
-  CycleWake wake_;
+  bool frontOffered_ = false;
+  std::deque<Window> stalls_;   // decided stalls a later acceptance may fall into
+  std::deque<Window> fetches_;  // header fetches
+  bool accepted_ = false;
+  uint64_t lastAccepted_ = 0;
+  std::vector<uint64_t> readyPoints_;  // traced cycles whose level a later window may change
   JobManagerStatistics statistics_;
 };
 

@@ -1,9 +1,9 @@
 #pragma once
-// How rtusim's modules run: one method process each, statically sensitive to the events of its
-// channels and to a wake-up the module sets for a cycle of its choosing. Dynamic sensitivity
-// (next_trigger with an event list) re-registers the process with every event on every
-// activation, which dominated the profile of the 16-core model; static sensitivity costs nothing
-// per activation.
+// The SystemC processes of the few modules that must wait for simulated time (a core's shared
+// memory request, the host source's look-ahead, drains in cycle order; decision_pump.h): method
+// processes statically sensitive to a wake-up the module sets for a cycle of its choosing.
+// Dynamic sensitivity (next_trigger with an event list) re-registers the process with every
+// event on every activation; static sensitivity costs nothing per activation.
 
 #include <cstdint>
 #include <initializer_list>
@@ -27,6 +27,17 @@ void spawnMethod(const char* name, Method&& method,
   options.spawn_method();
   for (const sc_core::sc_event* event : events) options.set_sensitivity(event);
   for (const sc_core::sc_event* event : more) options.set_sensitivity(event);
+  sc_core::sc_spawn(std::forward<Method>(method), name, &options);
+}
+
+// The same, not run at the start of simulation: it reacts only to `events`.
+template <class Method>
+void spawnReaction(const char* name, Method&& method,
+                   std::initializer_list<const sc_core::sc_event*> events) {
+  sc_core::sc_spawn_options options;
+  options.spawn_method();
+  options.dont_initialize();
+  for (const sc_core::sc_event* event : events) options.set_sensitivity(event);
   sc_core::sc_spawn(std::forward<Method>(method), name, &options);
 }
 

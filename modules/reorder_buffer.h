@@ -2,17 +2,19 @@
 // A reorder buffer between the result manager and the host (thesis future work): results leave in
 // the order the host submitted the jobs. It holds at most `capacity` results and accepts only
 // results within `capacity` of the next one due, so the one due always fits and the buffer cannot
-// deadlock; others wait in their result manager buffers (and their cores in OUT).
+// deadlock; others wait in their result manager buffers (and their cores in OUT). Its ready is
+// combinational on the offered result, so the result manager asks it cycle by cycle.
 
 #include <cstdint>
+#include <deque>
 #include <map>
-
-#include <systemc>
+#include <utility>
 
 #include "cycle_clock.h"
-#include "module_process.h"
-#include "ready_valid.h"
+#include "decision_pump.h"
+#include "occupancy_peak.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
@@ -20,27 +22,34 @@ struct ReorderBufferStatistics {
   uint64_t maxOccupancy = 0;
 };
 
-class ReorderBuffer : public sc_core::sc_module {
+class ReorderBuffer : public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<CoreResult>> in;
-  sc_core::sc_port<ReadyValidOut<CoreResult>> out;
+  ReorderBuffer(DecisionPump& pump, const CycleClock& clock, int capacity);
 
-  ReorderBuffer(sc_core::sc_module_name name, const CycleClock& clock, int capacity);
+  void bind(TransferChannel<CoreResult>& in, TransferChannel<CoreResult>& out);
+  void decide() override;
 
-  const ReorderBufferStatistics& statistics() const { return statistics_; }
+  ReorderBufferStatistics statistics() const { return {occupancy_.peak()}; }
 
  private:
-  void end_of_elaboration() override;
-  void evaluate();
-  void takeTransfers(uint64_t now);
+  using Ready = TransferChannel<CoreResult>::Ready;
+  struct Held {
+    CoreResult result;
+    uint64_t from;  // the cycle after it arrived
+  };
+
+  Ready accepts(uint64_t cycle, const CoreResult& result);
+  uint64_t dueIn(uint64_t cycle);
 
   const CycleClock& clock_;
   uint64_t capacity_;
-  std::map<uint64_t, CoreResult> held_;  // by sequence
+  TransferChannel<CoreResult>* in_ = nullptr;
+  TransferChannel<CoreResult>* out_ = nullptr;
+  std::map<uint64_t, Held> held_;  // by sequence
   uint64_t nextDue_ = 0;
-  bool offering_ = false;
-  uint64_t handledCycle_ = ~0ull;
-  ReorderBufferStatistics statistics_;
+  uint64_t lastSent_ = kNeverCycle;
+  std::deque<std::pair<uint64_t, uint64_t>> dueChanges_;  // (from cycle, next due)
+  OccupancyPeak occupancy_;
 };
 
 }  // namespace rtu

@@ -1,80 +1,165 @@
 #include "result_manager.h"
 
 #include <algorithm>
+#include <iterator>
 
 namespace rtu {
 
-ResultManager::ResultManager(sc_core::sc_module_name name, const CycleClock& clock)
-    : sc_core::sc_module(name), clock_(clock), wake_(clock) {}
+ResultManager::ResultManager(sc_core::sc_module_name name, const CycleClock& clock,
+                             DecisionPump& pump)
+    : sc_core::sc_module(name), Agent(pump), clock_(clock), wake_(clock) {}
 
 void ResultManager::end_of_elaboration() {
-  coreCount_ = cores.size();
-  buffer_.resize(static_cast<size_t>(coreCount_));
-  full_ = CoreSet(coreCount_);
-  for (int i = 0; i < coreCount_; ++i) {
-    core_.push_back(cores[i]);
-    handoverEdges_.push_back(&core_.back()->edge());
-    core_.back()->watchTransfer([this, i] { handingOver_.push_back({i, clock_.now()}); });
+  spawnReaction("drain", [this] { pump().runWith(*this); }, {&wake_.event()});
+}
+
+void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
+                         TransferChannel<CoreResult>& out) {
+  cores_ = std::move(cores);
+  out_ = &out;
+  coreCount_ = cores_.size();
+  buffers_.resize(cores_.size());
+  full_ = CoreSet(static_cast<int>(cores_.size()));
+  for (TransferChannel<CoreResult>* core : cores_) core->traceReady(0, true);
+}
+
+void ResultManager::heard(int port) {
+  heard_.push_back(port);
+  Agent::heard(port);
+}
+
+void ResultManager::decide() {
+  deciding_.swap(heard_);  // both keep their capacity: no allocation per decision
+  for (int core : deciding_)
+    if (core >= 0) handOver(core);
+  deciding_.clear();
+  if (out_->alwaysReady()) return;
+  drainInCycleOrder();
+  publishDrainBounds();
+}
+
+// A core whose result waits for its full buffer learns the earliest cycle of that buffer's drain
+// still possible (its next select from the first undecided cycle), so the scheduler need not
+// wait for the drain itself to know the core stays busy until then.
+void ResultManager::publishDrainBounds() {
+  for (size_t core = 0; core < buffers_.size(); ++core) {
+    TransferChannel<CoreResult>& channel = *cores_[core];
+    if (!buffers_[core].full || !channel.offering()) continue;
+    const uint64_t from = std::max(scan_, buffers_[core].fullFrom);
+    const uint64_t select = from + (core + coreCount_ - from % coreCount_) % coreCount_;
+    if (channel.readyBound() < select + 1) channel.notReadyBefore(select + 1);
   }
-  spawnMethod("evaluate", [this] { evaluate(); }, {&out->edge(), &wake_.event()}, handoverEdges_);
 }
 
-void ResultManager::evaluate() {
-  const uint64_t now = clock_.now();
-  if (now == 0)
-    for (int i = 0; i < coreCount_; ++i) core_[static_cast<size_t>(i)]->setReady(true);
-  takeTransfers(now);
-  select(now);
-  const uint64_t wake = offered_ != kNone && coreCount_ > 1 ? now + 1 : nextFullSelect(now);
-  if (wake > now) wake_.at(wake);
+// A core offers a result and its buffer is empty: the handover is decided.
+void ResultManager::handOver(int core) {
+  TransferChannel<CoreResult>& channel = *cores_[static_cast<size_t>(core)];
+  Buffer& buffer = buffers_[static_cast<size_t>(core)];
+  if (buffer.full || !channel.offering()) return;
+  const uint64_t cycle = std::max(channel.offerCycle(), buffer.freeFrom);
+  buffer.result = channel.payload();
+  channel.take(cycle);
+  buffer.full = true;
+  buffer.fullFrom = cycle + 1;
+  occupancy_.enter(cycle + 1);
+  full_.assign(core, true);
+  if (out_->alwaysReady()) drainAtSelect(core);
 }
 
-void ResultManager::takeTransfers(uint64_t now) {
-  if (handledCycle_ == now || now == 0) return;
-  handledCycle_ = now;
-  const uint64_t edge = now - 1;
-  // A handover in the previous cycle; one whose levels formed in this cycle waits for the next.
-  size_t kept = 0;
-  for (const Handover& handover : handingOver_) {
-    const int i = handover.core;
-    ReadyValidIn<CoreResult>& core = *core_[static_cast<size_t>(i)];
-    if (handover.cycle == now) {
-      handingOver_[kept++] = handover;
-    } else if (core.transferredIn(edge) && !full_.contains(i)) {
-      buffer_[static_cast<size_t>(i)] = core.transferred();
-      full_.assign(i, true);
-      core.setReady(false);
-      ++buffered_;
+// The host takes every cycle: the first select from the buffer's first full cycle.
+void ResultManager::drainAtSelect(int core) {
+  const uint64_t from = buffers_[static_cast<size_t>(core)].fullFrom;
+  drain(core, from + (static_cast<uint64_t>(core) + coreCount_ - from % coreCount_) % coreCount_);
+}
+
+// From the first undecided cycle on: the cycles whose select shows a full buffer, until one of
+// them lies where an empty buffer could still fill.
+void ResultManager::drainInCycleOrder() {
+  while (!full_.empty()) {
+    int core = -1;
+    const uint64_t cycle = nextFullSelect(core);
+    const uint64_t horizon = fillHorizon();
+    if (cycle >= horizon) {
+      // An idle core may still get a job whose result drains earlier; decisions never fall
+      // behind simulated time, so by simulated time cycle - 2 it could no longer.
+      wake_.at(std::max(clock_.now() + 1, cycle - 2));
+      return;
+    }
+    Buffer& buffer = buffers_[static_cast<size_t>(core)];
+    switch (out_->readyIn(cycle, buffer.result)) {
+      case TransferChannel<CoreResult>::Ready::Unknown:
+        return;
+      case TransferChannel<CoreResult>::Ready::No:
+        out_->traceValid(cycle, true);
+        out_->traceValid(cycle + 1, false);
+        scan_ = cycle + 1;
+        break;
+      case TransferChannel<CoreResult>::Ready::Yes:
+        drain(core, cycle);
+        scan_ = cycle + 1;
+        pump().schedule(*this);  // after the host has seen it: its readiness may change
+        return;
     }
   }
-  handingOver_.resize(kept);
-  statistics_.maxBuffered = std::max(statistics_.maxBuffered, buffered_);
-  if (offered_ != kNone && out->transferredIn(edge)) {
-    full_.assign(offered_, false);
-    core_[static_cast<size_t>(offered_)]->setReady(true);
-    --buffered_;
-    out->withdraw();
-    offered_ = kNone;
-  }
 }
 
-void ResultManager::select(uint64_t now) {
-  const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
-  if (full_.contains(selected)) {
-    if (offered_ == selected) return;
-    out->offer(buffer_[static_cast<size_t>(selected)]);
-    offered_ = selected;
-  } else if (offered_ != kNone) {
-    out->withdraw();
-    offered_ = kNone;
+// The first cycle from scan_ whose select shows a buffer full by then, and that buffer.
+uint64_t ResultManager::nextFullSelect(int& core) const {
+  uint64_t best = kNeverCycle;
+  for (size_t i = 0; i < buffers_.size(); ++i) {
+    if (!buffers_[i].full) continue;
+    const uint64_t from = std::max(scan_, buffers_[i].fullFrom);
+    const uint64_t select = from + (i + coreCount_ - from % coreCount_) % coreCount_;
+    if (select < best) {
+      best = select;
+      core = static_cast<int>(i);
+    }
   }
+  return best;
 }
 
-uint64_t ResultManager::nextFullSelect(uint64_t now) const {
-  const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
-  const int next = full_.firstFrom((selected + 1) % coreCount_);
-  if (next == CoreSet::kNone) return 0;
-  return now + static_cast<uint64_t>((next - selected + coreCount_ - 1) % coreCount_ + 1);
+// The first cycle an empty buffer could be full: after a handover, which follows an offer.
+uint64_t ResultManager::fillHorizon() const {
+  const uint64_t idleOffer = clock_.now() + 2;  // a job dispatched from now on offers then at the earliest
+  uint64_t horizon = kNeverCycle;
+  for (size_t core = 0; core < buffers_.size(); ++core) {
+    if (buffers_[core].full) continue;
+    const TransferChannel<CoreResult>& channel = *cores_[core];
+    const uint64_t offer = channel.offering() ? channel.offerCycle()
+                                              : std::max(channel.offerBound(), idleOffer);
+    horizon = std::min(horizon, std::max(offer, buffers_[core].freeFrom) + 1);
+  }
+  return horizon;
 }
+
+void ResultManager::drain(int core, uint64_t cycle) {
+  Buffer& buffer = buffers_[static_cast<size_t>(core)];
+  TransferChannel<CoreResult>& channel = *cores_[static_cast<size_t>(core)];
+  const bool traced = channel.traced();
+  if (traced && drainCycles_.count(cycle + 1)) {
+    // The next cycle drains another buffer, decided before this one: its valid level stands.
+    out_->deliver(buffer.result, cycle);
+    out_->traceValid(cycle + 1, true);
+  } else {
+    out_->deliver(buffer.result, cycle);
+  }
+  if (traced) rememberDrain(cycle);
+  occupancy_.leave(cycle + 2);  // the RTL's count sees the buffer until the cycle after
+  buffer.full = false;
+  buffer.freeFrom = cycle + 1;
+  full_.assign(core, false);
+  channel.traceReady(cycle + 1, true);
+  handOver(core);
+  occupancy_.settle(clock_.now());
+}
+
+void ResultManager::rememberDrain(uint64_t cycle) {
+  drainCycles_.insert(cycle);
+  if (drainCycles_.size() < 4096) return;
+  const uint64_t now = clock_.now();
+  for (auto it = drainCycles_.begin(); it != drainCycles_.end();)
+    it = *it + 1 < now ? drainCycles_.erase(it) : std::next(it);
+}
+
 
 }  // namespace rtu

@@ -1,12 +1,19 @@
 #pragma once
 // The result manager (thesis 6.2.4, appendix C.5): one result buffer per core, drained to the host
-// by a select counter that advances every cycle from reset. A core may hand over a result when its
-// buffer is empty (core_ready = ~result_valid); the host sees the selected buffer
-// (out_valid = result_valid[select]), so an untaken result is withdrawn when the select moves on,
-// exactly as in the RTL. The module runs only in cycles where a buffer fills or empties or the
-// select reaches a full buffer.
+// by a select counter that advances every cycle from reset. A core hands over a result when its
+// buffer is empty (core_ready = ~result_valid): in K = max(the cycle OUT begins, the cycle after
+// the buffer drained), and the buffer is full from K + 1. The host sees the selected buffer
+// (out_valid = result_valid[select]): a result drains in the first cycle from K + 1 whose select
+// shows its buffer and in which the host takes it; an untaken result is withdrawn when the select
+// moves on, exactly as in the RTL.
+//
+// A host that takes a result in every cycle makes the drains independent of each other (each
+// cycle's select shows one buffer), so each is decided at its handover. Otherwise (a paced or
+// throttled link, a reorder buffer) the drains are decided in cycle order, each once no core can
+// hand over a result that would drain earlier.
 
 #include <cstdint>
+#include <unordered_set>
 #include <vector>
 
 #include <systemc>
@@ -14,8 +21,10 @@
 #include "core_set.h"
 #include "cycle_clock.h"
 #include "module_process.h"
-#include "ready_valid.h"
+#include "occupancy_peak.h"
+#include "decision_pump.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
@@ -23,42 +32,49 @@ struct ResultManagerStatistics {
   uint64_t maxBuffered = 0;  // most buffers full at once
 };
 
-class ResultManager : public sc_core::sc_module {
+class ResultManager : public sc_core::sc_module, public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<CoreResult>, 0> cores;
-  sc_core::sc_port<ReadyValidOut<CoreResult>> out;
+  ResultManager(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump);
 
-  ResultManager(sc_core::sc_module_name name, const CycleClock& clock);
+  void bind(std::vector<TransferChannel<CoreResult>*> cores, TransferChannel<CoreResult>& out);
+  void decide() override;
+  void heard(int port) override;
 
-  const ResultManagerStatistics& statistics() const { return statistics_; }
+  ResultManagerStatistics statistics() const { return {occupancy_.peak()}; }
 
  private:
-  static constexpr int kNone = -1;
+  struct Buffer {
+    bool full = false;
+    CoreResult result;
+    uint64_t fullFrom = 0;
+    uint64_t freeFrom = 0;  // the cycle after its last drain
+  };
 
   void end_of_elaboration() override;
-  void evaluate();
-  void takeTransfers(uint64_t now);
-  void select(uint64_t now);
-  // The first cycle after `now` whose select finds a full buffer, or 0 when all are empty.
-  uint64_t nextFullSelect(uint64_t now) const;
+  void handOver(int core);
+  void drainAtSelect(int core);
+  void drainInCycleOrder();
+  void publishDrainBounds();
+  uint64_t nextFullSelect(int& core) const;
+  // The earliest cycle a buffer now empty can fill.
+  uint64_t fillHorizon() const;
+  void rememberDrain(uint64_t cycle);
+  void drain(int core, uint64_t cycle);
 
   const CycleClock& clock_;
-  int coreCount_ = 0;
-  // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
-  std::vector<ReadyValidIn<CoreResult>*> core_;
-  std::vector<const sc_core::sc_event*> handoverEdges_;
-  struct Handover {
-    int core;
-    uint64_t cycle;  // whose levels made the transfer
-  };
-  std::vector<Handover> handingOver_;  // since the last look
-  std::vector<CoreResult> buffer_;
-  CoreSet full_;
-  uint64_t buffered_ = 0;
-  int offered_ = kNone;
-  uint64_t handledCycle_ = ~0ull;
   CycleWake wake_;
-  ResultManagerStatistics statistics_;
+  std::vector<TransferChannel<CoreResult>*> cores_;
+  TransferChannel<CoreResult>* out_ = nullptr;
+  uint64_t coreCount_ = 0;
+  std::vector<Buffer> buffers_;
+  std::vector<int> heard_;     // cores whose channel changed since the last decision
+  std::vector<int> deciding_;  // those being decided now
+  CoreSet full_;
+  uint64_t scan_ = 0;       // cycle order: every cycle before it is decided
+  std::unordered_set<uint64_t> drainCycles_;  // traced drains, for the valid level
+  // The buffers full in a cycle, counted as the RTL's registers see them: a buffer from its
+  // handover's next cycle to the cycle after its drain.
+  OccupancyPeak occupancy_;
 };
 
 }  // namespace rtu

@@ -1,88 +1,106 @@
 #include "scheduler.h"
 
-#include <stdexcept>
+#include <algorithm>
 
 namespace rtu {
 
-Scheduler::Scheduler(sc_core::sc_module_name name, const CycleClock& clock, SchedulerPolicy policy)
-    : sc_core::sc_module(name), clock_(clock), policy_(policy), wake_(clock) {}
+Scheduler::Scheduler(DecisionPump& pump, SchedulerPolicy policy) : Agent(pump), policy_(policy) {}
 
-void Scheduler::end_of_elaboration() {
-  coreCount_ = cores.size();
-  readyCores_ = CoreSet(coreCount_);
-  std::vector<const sc_core::sc_event*> coreReadiness;
-  for (int i = 0; i < coreCount_; ++i) {
-    core_.push_back(cores[i]);
-    coreReadiness.push_back(&core_.back()->readyChanged());
-    core_.back()->watchReady([this, i](bool ready) { readyCores_.assign(i, ready); });
+void Scheduler::bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores) {
+  in_ = &in;
+  cores_ = std::move(cores);
+}
+
+void Scheduler::decide() {
+  if (!in_->offering()) return;
+  const uint64_t pending = in_->offerCycle();
+  uint64_t cycle = std::max(pending, searchedFrom_);
+  const int core = choose(pending, cycle);
+  if (core == kWait) {
+    searchedFrom_ = cycle;  // the cycles before are settled: no dispatch there
+    return;
   }
-  spawnMethod("evaluate", [this] { evaluate(); },
-              {&in->edge(), &in->offerChanged(), &wake_.event()}, coreReadiness);
-}
-
-void Scheduler::evaluate() {
-  const uint64_t now = clock_.now();
-  takeTransfer(now);
-  // Until the job manager writes again in this cycle, its levels still show the job just taken.
-  const bool pending = in->valid() && in->payload().sequence != dispatchedSequence_;
-  uint64_t wakeCycle = 0;
-  const int core = pending ? choose(now, wakeCycle) : kNone;
-  if (pending) notePending(now);
-  dispatch(core);
-  if (core == kNone && wakeCycle > now) wake_.at(wakeCycle);
-}
-
-void Scheduler::takeTransfer(uint64_t now) {
-  if (handledCycle_ == now) return;
-  handledCycle_ = now;
-  if (now == 0 || !in->transferredIn(now - 1)) return;
-  const CoreJob& job = in->transferred();
-  const uint64_t wait = now - 1 - job.pendingSince;
+  const Idle readyAtPending = someCoreIdleIn(pending);
+  if (readyAtPending == Idle::Unknown) {
+    searchedFrom_ = cycle;
+    return;
+  }
+  const uint64_t wait = cycle - pending;
   ++statistics_.jobs;
   ++statistics_.waitHistogram[wait];
   statistics_.maxWait = std::max(statistics_.maxWait, wait);
-  if (readyAtPending_)
+  if (readyAtPending == Idle::Yes)
     statistics_.maxWaitWithReadyCore = std::max(statistics_.maxWaitWithReadyCore, wait);
-  if (policy_ == SchedulerPolicy::RoundRobin) nextInLine_ = (target_ + 1) % coreCount_;
-  dispatchedSequence_ = job.sequence;
-  dispatch(kNone);
+  dispatch(core, cycle);
 }
 
-// Pending since this cycle: record whether some core was ready, the condition of eq. 6.7. Core
-// levels can still settle in later deltas of the cycle, so the note is revised within it.
-void Scheduler::notePending(uint64_t now) {
-  const CoreJob& job = in->payload();
-  if (job.sequence == notedSequence_ && job.pendingSince != now) return;
-  notedSequence_ = job.sequence;
-  readyAtPending_ = !readyCores_.empty();
+Scheduler::Idle Scheduler::idleIn(int core, uint64_t cycle) const {
+  const TransferChannel<CoreJob>& channel = *cores_[static_cast<size_t>(core)];
+  if (channel.readyCycle() <= cycle) return Idle::Yes;
+  if (channel.readyBound() > cycle) return Idle::No;
+  return Idle::Unknown;
 }
 
-int Scheduler::choose(uint64_t now, uint64_t& wakeCycle) const {
+int Scheduler::choose(uint64_t pending, uint64_t& cycle) {
+  (void)pending;
   switch (policy_) {
-    case SchedulerPolicy::CyclicFirstAvailable: {
-      const int selected = static_cast<int>(now % static_cast<uint64_t>(coreCount_));
-      const int first = readyCores_.firstFrom(selected);
-      if (first == selected || first == CoreSet::kNone) return first;
-      wakeCycle = now + static_cast<uint64_t>((first - selected + coreCount_) % coreCount_);
-      return kNone;
-    }
-    case SchedulerPolicy::RoundRobin:
-      return readyCores_.contains(nextInLine_) ? nextInLine_ : kNone;
-    case SchedulerPolicy::FirstAvailable:
-      return readyCores_.firstFrom(0);
+    case SchedulerPolicy::CyclicFirstAvailable: return cyclicFirstAvailable(cycle);
+    case SchedulerPolicy::FirstAvailable: return firstAvailable(cycle);
+    case SchedulerPolicy::RoundRobin: return roundRobin(cycle);
   }
-  return kNone;
+  return kWait;
 }
 
-void Scheduler::dispatch(int core) {
-  const bool sameOffer = core == target_ && (core == kNone || offeredSequence_ == in->payload().sequence);
-  if (sameOffer) return;
-  if (target_ != kNone) core_[static_cast<size_t>(target_)]->withdraw();
-  target_ = core;
-  in->setReady(core != kNone);
-  if (core == kNone) return;
-  offeredSequence_ = in->payload().sequence;
-  core_[static_cast<size_t>(core)]->offer(in->payload());
+// Core t mod N in cycle t, if it is idle then.
+int Scheduler::cyclicFirstAvailable(uint64_t& cycle) const {
+  const uint64_t n = cores_.size();
+  for (;; ++cycle) {
+    const int core = static_cast<int>(cycle % n);
+    switch (idleIn(core, cycle)) {
+      case Idle::Yes: return core;
+      case Idle::Unknown: return kWait;
+      case Idle::No: break;
+    }
+  }
+}
+
+// The lowest idle core, in the first cycle with one.
+int Scheduler::firstAvailable(uint64_t& cycle) const {
+  for (;; ++cycle) {
+    bool unknown = false;
+    for (size_t core = 0; core < cores_.size(); ++core) {
+      const Idle idle = idleIn(static_cast<int>(core), cycle);
+      if (idle == Idle::Unknown) unknown = true;
+      if (idle == Idle::Yes) return unknown ? kWait : static_cast<int>(core);
+    }
+    if (unknown) return kWait;
+  }
+}
+
+// The next core in turn, once it is idle.
+int Scheduler::roundRobin(uint64_t& cycle) const {
+  const TransferChannel<CoreJob>& channel = *cores_[static_cast<size_t>(nextInLine_)];
+  if (channel.readyCycle() == kNeverCycle) return kWait;
+  cycle = std::max(cycle, channel.readyCycle());
+  return nextInLine_;
+}
+
+Scheduler::Idle Scheduler::someCoreIdleIn(uint64_t cycle) const {
+  bool unknown = false;
+  for (size_t core = 0; core < cores_.size(); ++core) {
+    const Idle idle = idleIn(static_cast<int>(core), cycle);
+    if (idle == Idle::Yes) return Idle::Yes;
+    if (idle == Idle::Unknown) unknown = true;
+  }
+  return unknown ? Idle::Unknown : Idle::No;
+}
+
+void Scheduler::dispatch(int core, uint64_t cycle) {
+  const CoreJob job = in_->payload();
+  in_->take(cycle);
+  cores_[static_cast<size_t>(core)]->deliver(job, cycle);
+  searchedFrom_ = cycle + 1;
+  if (policy_ == SchedulerPolicy::RoundRobin) nextInLine_ = (core + 1) % static_cast<int>(cores_.size());
 }
 
 }  // namespace rtu

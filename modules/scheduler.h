@@ -1,23 +1,19 @@
 #pragma once
 // The scheduler (thesis 6.2.2, appendix C.3): hands the job at the job manager's output to a
-// ready core, by one of the policies of scheduling_policy.h.
-// The RTL's scheduler is combinational: the job manager's handshake and the core's are the same
-// cycle. Here it is a process that runs only when the job, a core's readiness or the selected core
-// changes; for cyclic first-available it computes the cycle the counter reaches a ready core.
+// ready core, by one of the policies of scheduling_policy.h. The RTL's scheduler is
+// combinational: the job manager's handshake and the core's are the same cycle, the dispatch
+// cycle D. For a job pending from A it finds D by the policy from what the cores have declared:
+// a core ready from some cycle, or not ready before some cycle (still traversing). Where a core
+// has declared neither for a cycle the policy needs, it waits for that core to declare more.
 
 #include <cstdint>
 #include <map>
-#include <string>
 #include <vector>
 
-#include <systemc>
-
-#include "core_set.h"
-#include "cycle_clock.h"
-#include "module_process.h"
-#include "ready_valid.h"
+#include "decision_pump.h"
 #include "rtu_payloads.h"
 #include "scheduling_policy.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
@@ -29,41 +25,35 @@ struct SchedulerStatistics {
   uint64_t maxWaitWithReadyCore = 0;
 };
 
-class Scheduler : public sc_core::sc_module {
+class Scheduler : public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<CoreJob>> in;
-  sc_core::sc_port<ReadyValidOut<CoreJob>, 0> cores;
+  Scheduler(DecisionPump& pump, SchedulerPolicy policy);
 
-  Scheduler(sc_core::sc_module_name name, const CycleClock& clock, SchedulerPolicy policy);
+  void bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores);
+  void decide() override;
 
   const SchedulerStatistics& statistics() const { return statistics_; }
 
  private:
   static constexpr int kNone = -1;
+  static constexpr int kWait = -2;
+  enum class Idle { Yes, No, Unknown };
 
-  void end_of_elaboration() override;
-  void evaluate();
-  void takeTransfer(uint64_t now);
-  void notePending(uint64_t now);
-  // The core the job goes to in cycle `now`, or kNone; `wakeCycle` is set when only a later cycle
-  // of the cyclic counter can find a ready core.
-  int choose(uint64_t now, uint64_t& wakeCycle) const;
-  void dispatch(int core);
+  Idle idleIn(int core, uint64_t cycle) const;
+  // The dispatch of the job pending from `pending` (its cycle in `cycle`), kWait or the core.
+  int choose(uint64_t pending, uint64_t& cycle);
+  int cyclicFirstAvailable(uint64_t& cycle) const;
+  int firstAvailable(uint64_t& cycle) const;
+  int roundRobin(uint64_t& cycle) const;
+  // Whether some core was ready when the job became pending (eq. 6.7), or Unknown.
+  Idle someCoreIdleIn(uint64_t cycle) const;
+  void dispatch(int core, uint64_t cycle);
 
-  const CycleClock& clock_;
   SchedulerPolicy policy_;
-  int coreCount_ = 0;
-  // The cores' channels, taken from the port once: indexing an sc_port checks bounds every time.
-  std::vector<ReadyValidOut<CoreJob>*> core_;
-  CoreSet readyCores_;
-  int target_ = kNone;           // core currently offered the job
-  uint64_t offeredSequence_ = 0;
-  int nextInLine_ = 0;           // round-robin
-  uint64_t handledCycle_ = ~0ull;
-  uint64_t dispatchedSequence_ = ~0ull;
-  uint64_t notedSequence_ = ~0ull;
-  bool readyAtPending_ = false;
-  CycleWake wake_;
+  TransferChannel<CoreJob>* in_ = nullptr;
+  std::vector<TransferChannel<CoreJob>*> cores_;
+  uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
+  int nextInLine_ = 0;         // round-robin
   SchedulerStatistics statistics_;
 };
 

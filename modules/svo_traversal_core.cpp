@@ -5,9 +5,10 @@
 namespace rtu {
 
 SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock,
-                                   int index, FixedFormat format, int stackFrames,
-                                   CycleTrace* trace)
+                                   DecisionPump& pump, int index, FixedFormat format,
+                                   int stackFrames, CycleTrace* trace)
     : sc_core::sc_module(name),
+      Agent(pump),
       clock_(clock),
       index_(index),
       core_(FixedArith{format}, stackFrames),
@@ -19,48 +20,50 @@ SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleCloc
   }
 }
 
+void SvoTraversalCore::bind(TransferChannel<CoreJob>& in, TransferChannel<CoreResult>& out) {
+  in_ = &in;
+  out_ = &out;
+  traceState(0, static_cast<uint64_t>(CoreState::Idle));
+  in_->readyFrom(0);
+}
+
 void SvoTraversalCore::end_of_elaboration() {
   words_ = &memory->backingStore();
   combinational_ = memory->combinational();
-  spawnMethod("evaluate", [this] { evaluate(); },
-              {&in->edge(), &out->edge(), &memory->sharedReplied(index_), &wake_.event()});
+  if (combinational_) return;  // no shared reads: the pump does everything
+  spawnReaction("shared_read", [this] { sharedRead(); },
+                {&wake_.event(), &memory->sharedReplied(index_)});
 }
 
-void SvoTraversalCore::evaluate() {
-  const uint64_t now = clock_.now();
-  switch (phase_) {
-    case Phase::Idle:
-      if (now > 0 && in->transferredIn(now - 1)) {
-        start(now);
-        run();
-        return;
-      }
-      in->setReady(true);
-      traceState(now, static_cast<uint64_t>(CoreState::Idle));
-      return;
-    case Phase::AwaitingShared:
-      if (!sharedRequested_) {
-        memory->requestShared(index_, sharedAddress_);
-        sharedRequested_ = true;
-        return;
-      }
-      resumeAfterSharedRead();
-      run();
-      return;
-    case Phase::ResultDue:
-      offerResult();
-      return;
-    case Phase::Out:
-      handOver(now);
-      return;
+void SvoTraversalCore::decide() {
+  in_->collectDelivered([this](uint64_t cycle, const CoreJob& job) {
+    start(cycle, job);
+    run();
+  });
+  if (phase_ != Phase::Out) return;
+  if (out_->collectTaken())
+    handOver();
+  else if (out_->readyBound() > outCycle_ && in_->readyBound() < out_->readyBound() + 1)
+    in_->notReadyBefore(out_->readyBound() + 1);  // the result manager takes it then at the earliest
+}
+
+// The cycle of the request came (ask the shared level), or its answer did (go on).
+void SvoTraversalCore::sharedRead() {
+  if (!sharedRequested_) {
+    memory->requestShared(index_, sharedAddress_);
+    sharedRequested_ = true;
+    return;
   }
+  waitForWord(memory->sharedReplyCycle(index_));
+  stepState();
+  run();
+  pump().run();
 }
 
-void SvoTraversalCore::start(uint64_t now) {
-  job_ = in->transferred();
-  in->setReady(false);
+void SvoTraversalCore::start(uint64_t dispatch, const CoreJob& job) {
+  job_ = job;
   core_.start(job_.t0, job_.t1, job_.a, job_.root);
-  localCycle_ = now;
+  localCycle_ = dispatch + 1;
   blocked_ = 0;
   ++statistics_.jobs;
 }
@@ -81,21 +84,16 @@ void SvoTraversalCore::run() {
         sharedRequested_ = false;
         phase_ = Phase::AwaitingShared;
         wake_.at(reply.cycle);
+        // The word comes in reply.cycle at the earliest; OUT follows the state after it.
+        out_->noOfferBefore(reply.cycle + 1);
+        in_->notReadyBefore(reply.cycle + 2);
         return;
       }
       consumeWordIn(reply.cycle);
     }
     stepState();
   }
-  outCycle_ = localCycle_;
-  traceState(outCycle_, static_cast<uint64_t>(CoreState::Out));
-  phase_ = Phase::ResultDue;
-  wake_.at(outCycle_);
-}
-
-void SvoTraversalCore::resumeAfterSharedRead() {
-  waitForWord(memory->sharedReplyCycle(index_));
-  stepState();
+  offerResult();
 }
 
 // The current state's cycle: the word it reads, if any, is there by now.
@@ -118,23 +116,26 @@ void SvoTraversalCore::waitForWord(uint64_t dataCycle) {
 }
 
 void SvoTraversalCore::offerResult() {
+  outCycle_ = localCycle_;
+  traceState(outCycle_, static_cast<uint64_t>(CoreState::Out));
   CoreResult result{job_.sequence, makeResult(job_.idWord, core_), static_cast<uint32_t>(blocked_)};
   statistics_.busyCycles += core_.cost();
   statistics_.blockedCycles += blocked_;
   if (core_.stackOverflow()) ++statistics_.stackOverflows;
   if (core_.tOverflow()) ++statistics_.tOverflows;
-  out->offer(result);
   phase_ = Phase::Out;
+  in_->notReadyBefore(outCycle_ + 1);
+  out_->offer(result, outCycle_);
 }
 
-void SvoTraversalCore::handOver(uint64_t now) {
-  if (!out->transferredIn(now - 1)) return;
-  statistics_.outCycles += now - outCycle_;
+// The result manager took the result in K: IDLE and ready again from K + 1.
+void SvoTraversalCore::handOver() {
+  const uint64_t idle = out_->lastTransfer() + 1;
+  statistics_.outCycles += idle - outCycle_;
   core_.finish();
-  out->withdraw();
-  in->setReady(true);
-  traceState(now, static_cast<uint64_t>(CoreState::Idle));
+  traceState(idle, static_cast<uint64_t>(CoreState::Idle));
   phase_ = Phase::Idle;
+  in_->readyFrom(idle);
 }
 
 void SvoTraversalCore::traceState(uint64_t cycle, uint64_t code) {

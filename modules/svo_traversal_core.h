@@ -4,14 +4,17 @@
 // shared with the golden model; this module only decides when each state happens.
 //
 // Nothing outside the core can observe it between taking a job and offering the result, except
-// its reads of a shared memory level. So the core runs ahead: on the job handshake it steps the
-// state machine through as many cycles as it can in one activation (all of them with ideal
-// memory), sleeps until the cycle its result is due or a shared read must be made, and records
-// each state in its own cycle for the VCD trace.
+// its reads of a shared memory level. So when a job is delivered for cycle D the core steps the
+// state machine from INIT in D + 1 through as many cycles as it can at once (all of them with
+// ideal memory) and offers the result from the cycle OUT begins; it records each state in its own
+// cycle for the trace. A read that must go to the shared level waits for simulated time to reach
+// the cycle of the request (a SystemC process), since the shared level serves requests in cycle
+// order; meanwhile the core declares that it offers no result and is not ready before then.
 //
 // A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
 // BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
 // in the result counts every cycle from INIT to the last before OUT, blocked ones included.
+// The core is ready for a job from cycle 0 and from the cycle after its result was taken.
 
 #include <cstdint>
 #include <string>
@@ -22,9 +25,10 @@
 #include "core_memory_if.h"
 #include "cycle_clock.h"
 #include "cycle_trace.h"
+#include "decision_pump.h"
 #include "module_process.h"
-#include "ready_valid.h"
 #include "rtu_payloads.h"
+#include "transfer_channel.h"
 #include "traversal_core.h"
 
 namespace rtu {
@@ -44,37 +48,39 @@ struct CoreStatistics {
   uint64_t tOverflows = 0;
 };
 
-class SvoTraversalCore : public sc_core::sc_module {
+class SvoTraversalCore : public sc_core::sc_module, public Agent {
  public:
-  sc_core::sc_port<ReadyValidIn<CoreJob>> in;
-  sc_core::sc_port<ReadyValidOut<CoreResult>> out;
   sc_core::sc_port<CoreMemoryIf> memory;
 
-  SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock, int index,
-                   FixedFormat format, int stackFrames, CycleTrace* trace);
+  SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
+                   int index, FixedFormat format, int stackFrames, CycleTrace* trace);
+
+  void bind(TransferChannel<CoreJob>& in, TransferChannel<CoreResult>& out);
+  void decide() override;
 
   const CoreStatistics& statistics() const { return statistics_; }
 
  private:
   // Idle: ready for a job. AwaitingShared: a read waits for the shared memory level.
-  // ResultDue: traversal computed, OUT starts at outCycle_. Out: result offered.
-  enum class Phase { Idle, AwaitingShared, ResultDue, Out };
+  // Out: result offered.
+  enum class Phase { Idle, AwaitingShared, Out };
 
   void end_of_elaboration() override;
-  void evaluate();
-  void start(uint64_t now);
+  void sharedRead();
+  void start(uint64_t dispatch, const CoreJob& job);
   void run();
-  void resumeAfterSharedRead();
   void stepState();
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
   void offerResult();
-  void handOver(uint64_t now);
+  void handOver();
   void traceState(uint64_t cycle, uint64_t code);
 
   const CycleClock& clock_;
   int index_;
   TraversalCore<FixedArith> core_;
+  TransferChannel<CoreJob>* in_ = nullptr;
+  TransferChannel<CoreResult>* out_ = nullptr;
   Phase phase_ = Phase::Idle;
   CoreJob job_;
   uint64_t localCycle_ = 0;  // the cycle the core's current state executes in

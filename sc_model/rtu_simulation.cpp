@@ -24,7 +24,7 @@ void freshKernel() {
 // Stopping and resuming does not change what happens in any cycle.
 class RunLoop {
  public:
-  RunLoop(const RtuTop& top, const RtuConfig& config, CycleTrace* trace, const RunProgress& progress,
+  RunLoop(RtuTop& top, const RtuConfig& config, CycleTrace* trace, const RunProgress& progress,
           const BlockRun& plan, std::vector<RunSnapshot>& snapshots)
       : top_(top), config_(config), clock_(CycleClock::atMegahertz(config.clockMhz)), trace_(trace),
         progress_(progress), plan_(plan), snapshots_(snapshots) {}
@@ -42,11 +42,12 @@ class RunLoop {
       // Modules record no cycle before the current one any more (modules/cycle_trace.h).
       if (trace_) trace_->flush(now);
       if (progress_ && now >= nextProgress) {
-        progress_(top_.sink().results().size(), top_.sink().expected());
+        progress_(top_.sink().arrivedBefore(now), top_.sink().expected());
         nextProgress = (now / kProgressCycles + 1) * kProgressCycles;
       }
       if (takeSnapshots(now) && plan_.stopAtLast) return false;
-    } while (sc_core::sc_pending_activity());
+      // The modules decide ahead of simulated time: go on until it has passed the last result.
+    } while (sc_core::sc_pending_activity() || clock_.now() <= top_.sink().lastArrival());
     return true;
   }
 
@@ -61,14 +62,15 @@ class RunLoop {
 
   // True once the last snapshot is taken.
   bool takeSnapshots(uint64_t now) {
-    const uint64_t results = top_.sink().results().size();
+    // Results arrive in their cycle, which the modules may have decided ahead of simulated time.
+    const uint64_t results = top_.sink().arrivedBefore(now > 0 ? now - 1 : 0);
     while (snapshots_.size() < plan_.afterResults.size() &&
            results >= plan_.afterResults[snapshots_.size()])
       snapshots_.push_back({now, results, collectStatistics(top_, config_, now)});
     return !plan_.afterResults.empty() && snapshots_.size() == plan_.afterResults.size();
   }
 
-  const RtuTop& top_;
+  RtuTop& top_;
   const RtuConfig& config_;
   CycleClock clock_;
   CycleTrace* trace_;
@@ -107,7 +109,8 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!finished) return run;
 
-  const HostSink& sink = top->sink();
+  HostSink& sink = top->sink();
+  sink.arrange();
   // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
   if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
   if (!sink.complete())

@@ -8,8 +8,11 @@ namespace {
 std::string indexed(const char* base, size_t index) { return base + std::to_string(index); }
 
 template <class Payload>
-void traceChannel(ReadyValid<Payload>& channel, CycleTrace* trace, const std::string& scope) {
-  if (trace) channel.trace(*trace, scope);
+std::unique_ptr<TransferChannel<Payload>> channel(const std::string& name, const CycleClock& clock,
+                                                  CycleTrace* trace, const std::string& scope) {
+  auto made = std::make_unique<TransferChannel<Payload>>(name, clock);
+  if (trace) made->trace(*trace, scope);
+  return made;
 }
 
 }  // namespace
@@ -22,54 +25,56 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   const size_t coreCount = static_cast<size_t>(config.cores);
   const uint64_t jobCount = records.size();
 
-  hostJobs_ = std::make_unique<Channel<HostJob>>("host_jobs", clock_);
-  pendingJobs_ = std::make_unique<Channel<CoreJob>>("pending_jobs", clock_);
-  managedResults_ =
-      std::make_unique<Channel<CoreResult>>("managed_results", clock_, OfferRule::MayWithdraw);
-  traceChannel(*hostJobs_, trace, top + ".job_manager.in");
-  traceChannel(*pendingJobs_, trace, top + ".scheduler.in");
-  traceChannel(*managedResults_, trace, top + ".result_manager.out");
+  hostJobs_ = channel<HostJob>("host_jobs", clock_, trace, top + ".job_manager.in");
+  pendingJobs_ = channel<CoreJob>("pending_jobs", clock_, trace, top + ".scheduler.in");
+  managedResults_ = channel<CoreResult>("managed_results", clock_, trace, top + ".result_manager.out");
 
-  source_ = std::make_unique<HostSource>("host_source", clock_, std::move(records), config.hostInput);
-  source_->out(*hostJobs_);
-  jobManager_ = std::make_unique<JobManager>("job_manager", clock_, config.jobManager, memory);
-  jobManager_->in(*hostJobs_);
-  jobManager_->out(*pendingJobs_);
-  scheduler_ = std::make_unique<Scheduler>("scheduler", clock_, config.scheduler);
-  scheduler_->in(*pendingJobs_);
+  source_ = std::make_unique<HostSource>("host_source", clock_, pump_, std::move(records),
+                                         config.hostInput, kLookAheadCycles);
+  jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
+  scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler);
   memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
                                            trace, caches);
-  resultManager_ = std::make_unique<ResultManager>("result_manager", clock_);
+  resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
+  hostJobs_->connect(*source_, 0, *jobManager_, 0);
+  pendingJobs_->connect(*jobManager_, 0, *scheduler_, 0);
 
+  std::vector<Channel<CoreJob>*> jobsToCores;
+  std::vector<Channel<CoreResult>*> resultsFromCores;
   for (size_t i = 0; i < coreCount; ++i) {
-    coreJobs_.push_back(std::make_unique<Channel<CoreJob>>(indexed("core_jobs_", i).c_str(), clock_));
-    coreResults_.push_back(
-        std::make_unique<Channel<CoreResult>>(indexed("core_results_", i).c_str(), clock_));
     const std::string coreName = indexed("core_", i);
-    traceChannel(*coreJobs_[i], trace, top + "." + coreName + ".in");
-    traceChannel(*coreResults_[i], trace, top + "." + coreName + ".out");
-    cores_.push_back(std::make_unique<SvoTraversalCore>(coreName.c_str(), clock_, static_cast<int>(i),
-                                                        config.jobManager.format,
+    coreJobs_.push_back(channel<CoreJob>(indexed("core_jobs_", i), clock_, trace, top + "." + coreName + ".in"));
+    coreResults_.push_back(
+        channel<CoreResult>(indexed("core_results_", i), clock_, trace, top + "." + coreName + ".out"));
+    cores_.push_back(std::make_unique<SvoTraversalCore>(coreName.c_str(), clock_, pump_,
+                                                        static_cast<int>(i), config.jobManager.format,
                                                         config.stackFrames, trace));
-    cores_[i]->in(*coreJobs_[i]);
-    cores_[i]->out(*coreResults_[i]);
     cores_[i]->memory(*memory_);
-    scheduler_->cores(*coreJobs_[i]);
-    resultManager_->cores(*coreResults_[i]);
+    coreJobs_[i]->connect(*scheduler_, static_cast<int>(i), *cores_[i], 0);
+    coreResults_[i]->connect(*cores_[i], 1, *resultManager_, static_cast<int>(i));
+    jobsToCores.push_back(coreJobs_[i].get());
+    resultsFromCores.push_back(coreResults_[i].get());
   }
-  resultManager_->out(*managedResults_);
 
   Channel<CoreResult>* toHost = managedResults_.get();
+  sink_ = std::make_unique<HostSink>(pump_, jobCount, config.outputLink());
   if (config.reorderCapacity > 0) {
-    orderedResults_ = std::make_unique<Channel<CoreResult>>("ordered_results", clock_);
-    traceChannel(*orderedResults_, trace, top + ".reorder_buffer.out");
-    reorderBuffer_ = std::make_unique<ReorderBuffer>("reorder_buffer", clock_, config.reorderCapacity);
-    reorderBuffer_->in(*managedResults_);
-    reorderBuffer_->out(*orderedResults_);
+    orderedResults_ = channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
+    reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, clock_, config.reorderCapacity);
+    managedResults_->connect(*resultManager_, -1, *reorderBuffer_, 0);
+    orderedResults_->connect(*reorderBuffer_, 1, *sink_, 0);
     toHost = orderedResults_.get();
+  } else {
+    managedResults_->connect(*resultManager_, -1, *sink_, 0);
   }
-  sink_ = std::make_unique<HostSink>("host_sink", clock_, jobCount, config.outputLink());
-  sink_->in(*toHost);
+
+  source_->bind(*hostJobs_);
+  jobManager_->bind(*hostJobs_, *pendingJobs_);
+  scheduler_->bind(*pendingJobs_, jobsToCores);
+  for (size_t i = 0; i < coreCount; ++i) cores_[i]->bind(*coreJobs_[i], *coreResults_[i]);
+  resultManager_->bind(resultsFromCores, *managedResults_);
+  if (reorderBuffer_) reorderBuffer_->bind(*managedResults_, *orderedResults_);
+  sink_->bind(*toHost);
 }
 
 }  // namespace rtu

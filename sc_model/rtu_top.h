@@ -1,7 +1,8 @@
 #pragma once
 // The RTU of thesis figure 6.1 (appendix C.1) with its host: source -> job manager -> scheduler ->
 // N traversal cores (reading the memory system) -> result manager [-> reorder buffer] -> sink,
-// every arrow a ready-valid channel.
+// every arrow a transfer channel (modules/transfer_channel.h), every module deciding through one
+// decision pump (modules/decision_pump.h).
 
 #include <memory>
 #include <vector>
@@ -10,16 +11,17 @@
 
 #include "cycle_clock.h"
 #include "cycle_trace.h"
+#include "decision_pump.h"
 #include "host_sink.h"
 #include "host_source.h"
 #include "job_manager.h"
 #include "memory_system.h"
-#include "ready_valid.h"
 #include "reorder_buffer.h"
 #include "result_manager.h"
 #include "rtu_config.h"
 #include "scheduler.h"
 #include "svo_traversal_core.h"
+#include "transfer_channel.h"
 
 namespace rtu {
 
@@ -30,6 +32,10 @@ class RtuTop : public sc_core::sc_module {
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
          std::vector<HostRecord> records, CycleTrace* trace, const CacheContents* caches = nullptr);
 
+  // How far ahead of simulated time the host source offers records.
+  static constexpr uint64_t kLookAheadCycles = 4096;
+
+  HostSink& sink() { return *sink_; }
   const HostSink& sink() const { return *sink_; }
   const JobManager& jobManager() const { return *jobManager_; }
   const Scheduler& scheduler() const { return *scheduler_; }
@@ -40,9 +46,10 @@ class RtuTop : public sc_core::sc_module {
 
  private:
   template <class Payload>
-  using Channel = ReadyValid<Payload>;
+  using Channel = TransferChannel<Payload>;
 
   CycleClock clock_;
+  DecisionPump pump_;
   std::unique_ptr<Channel<HostJob>> hostJobs_;
   std::unique_ptr<Channel<CoreJob>> pendingJobs_;
   std::vector<std::unique_ptr<Channel<CoreJob>>> coreJobs_;
