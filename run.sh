@@ -5,3 +5,5 @@ cd "$(dirname "$0")"
 source scripts/setup.sh
 mkdir -p out
 ./build/rtusim render --image out/default.png --cost-image out/default_cost.png "$@"
+# The animated default scene (docs/scenes.md): frames, animation.webp and a frame-rate plot.
+./build/rtusim animate --scene-file scenes/default.toml --out-dir out/animation
