@@ -15,7 +15,7 @@ void Scheduler::decide() {
   if (!in_->offering()) return;
   const uint64_t pending = in_->offerCycle();
   uint64_t cycle = std::max(pending, searchedFrom_);
-  const int core = choose(pending, cycle);
+  const int core = choose(cycle);
   if (core == kWait) {
     searchedFrom_ = cycle;  // the cycles before are settled: no dispatch there
     return;
@@ -41,8 +41,7 @@ Scheduler::Idle Scheduler::idleIn(int core, uint64_t cycle) const {
   return Idle::Unknown;
 }
 
-int Scheduler::choose(uint64_t pending, uint64_t& cycle) {
-  (void)pending;
+int Scheduler::choose(uint64_t& cycle) {
   switch (policy_) {
     case SchedulerPolicy::CyclicFirstAvailable: return cyclicFirstAvailable(cycle);
     case SchedulerPolicy::FirstAvailable: return firstAvailable(cycle);

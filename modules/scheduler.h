@@ -35,13 +35,13 @@ class Scheduler : public Agent {
   const SchedulerStatistics& statistics() const { return statistics_; }
 
  private:
-  static constexpr int kNone = -1;
-  static constexpr int kWait = -2;
+  static constexpr int kWait = -1;  // the policy needs a core to declare more first
   enum class Idle { Yes, No, Unknown };
 
   Idle idleIn(int core, uint64_t cycle) const;
-  // The dispatch of the job pending from `pending` (its cycle in `cycle`), kWait or the core.
-  int choose(uint64_t pending, uint64_t& cycle);
+  // The core the pending job goes to, searching from `cycle` on (left at the dispatch cycle, or
+  // at the first cycle the policy cannot decide yet), or kWait.
+  int choose(uint64_t& cycle);
   int cyclicFirstAvailable(uint64_t& cycle) const;
   int firstAvailable(uint64_t& cycle) const;
   int roundRobin(uint64_t& cycle) const;
