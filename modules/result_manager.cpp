@@ -19,7 +19,6 @@ void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
   out_ = &out;
   coreCount_ = cores_.size();
   buffers_.resize(cores_.size());
-  full_ = CoreSet(static_cast<int>(cores_.size()));
   for (TransferChannel<CoreResult>* core : cores_) core->traceReady(0, true);
 }
 
@@ -62,7 +61,7 @@ void ResultManager::handOver(int core) {
   buffer.full = true;
   buffer.fullFrom = cycle + 1;
   occupancy_.enter(cycle + 1);
-  full_.assign(core, true);
+  ++fullBuffers_;
   if (out_->alwaysReady()) drainAtSelect(core);
 }
 
@@ -75,7 +74,7 @@ void ResultManager::drainAtSelect(int core) {
 // From the first undecided cycle on: the cycles whose select shows a full buffer, until one of
 // them lies where an empty buffer could still fill.
 void ResultManager::drainInCycleOrder() {
-  while (!full_.empty()) {
+  while (fullBuffers_ > 0) {
     int core = -1;
     const uint64_t cycle = nextFullSelect(core);
     const uint64_t horizon = fillHorizon();
@@ -147,7 +146,7 @@ void ResultManager::drain(int core, uint64_t cycle) {
   occupancy_.leave(cycle + 2);  // the RTL's count sees the buffer until the cycle after
   buffer.full = false;
   buffer.freeFrom = cycle + 1;
-  full_.assign(core, false);
+  --fullBuffers_;
   channel.traceReady(cycle + 1, true);
   handOver(core);
   occupancy_.settle(clock_.now());

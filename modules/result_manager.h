@@ -18,7 +18,6 @@
 
 #include <systemc>
 
-#include "core_set.h"
 #include "cycle_clock.h"
 #include "module_process.h"
 #include "occupancy_peak.h"
@@ -69,7 +68,7 @@ class ResultManager : public sc_core::sc_module, public Agent {
   std::vector<Buffer> buffers_;
   std::vector<int> heard_;     // cores whose channel changed since the last decision
   std::vector<int> deciding_;  // those being decided now
-  CoreSet full_;
+  int fullBuffers_ = 0;
   uint64_t scan_ = 0;       // cycle order: every cycle before it is decided
   std::unordered_set<uint64_t> drainCycles_;  // traced drains, for the valid level
   // The buffers full in a cycle, counted as the RTL's registers see them: a buffer from its
