@@ -51,7 +51,7 @@ void JobManager::takeDispatch() {
 void JobManager::acceptOffered() {
   const uint64_t cycle = acceptanceCycle(in_->offerCycle());
   if (cycle == kNeverCycle) return;  // the job at the output is due first: wait for its dispatch
-  const HostJob host = in_->payload();
+  const HostJob& host = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   accept(host, cycle);
 }

@@ -2,11 +2,13 @@
 // The most entries a buffer held at once, from entries and exits decided ahead of simulated time
 // and not in cycle order. Changes are summed per cycle in a calendar from the first unsettled
 // cycle on (changes are decided a look-ahead or a traversal ahead, so it stays short); settling
-// applies them in cycle order, exits before entries within a cycle.
+// applies them in cycle order, exits before entries within a cycle. The calendar is a ring
+// indexed by cycle (a power of two long, grown when a change lies further ahead), as it is
+// touched twice per ray.
 
 #include <algorithm>
 #include <cstdint>
-#include <deque>
+#include <vector>
 
 namespace rtu {
 
@@ -16,14 +18,16 @@ class OccupancyPeak {
   void leave(uint64_t cycle) { at(cycle).exits += 1; }
   // Applies every change before `before`.
   void settle(uint64_t before) {
-    while (!calendar_.empty() && base_ < before) {
-      current_ -= calendar_.front().exits;
-      current_ += calendar_.front().entries;
+    while (length_ > 0 && base_ < before) {
+      Changes& first = slot(base_);
+      current_ -= first.exits;
+      current_ += first.entries;
       peak_ = std::max(peak_, current_);
-      calendar_.pop_front();
+      first = Changes{};
+      --length_;
       ++base_;
     }
-    if (calendar_.empty()) base_ = std::max(base_, before);
+    if (length_ == 0) base_ = std::max(base_, before);
   }
   // The peak with every change applied.
   uint64_t peak() const {
@@ -38,11 +42,23 @@ class OccupancyPeak {
   };
   Changes& at(uint64_t cycle) {
     if (cycle < base_) cycle = base_;  // (not expected: changes come at or after settled cycles)
-    if (cycle - base_ >= calendar_.size()) calendar_.resize(cycle - base_ + 1);
-    return calendar_[cycle - base_];
+    const uint64_t offset = cycle - base_;
+    if (offset >= calendar_.size()) grow(offset + 1);
+    length_ = std::max(length_, offset + 1);
+    return slot(cycle);
+  }
+  Changes& slot(uint64_t cycle) { return calendar_[cycle & (calendar_.size() - 1)]; }
+  void grow(uint64_t needed) {
+    size_t size = std::max<size_t>(calendar_.size(), 64);
+    while (size < needed) size *= 2;
+    std::vector<Changes> larger(size);
+    for (uint64_t cycle = base_; cycle < base_ + length_; ++cycle)
+      larger[cycle & (size - 1)] = slot(cycle);
+    calendar_.swap(larger);
   }
 
-  std::deque<Changes> calendar_;  // from base_ on
+  std::vector<Changes> calendar_;  // ring: cycle c at c mod size, cycles [base_, base_ + length_)
+  uint64_t length_ = 0;
   uint64_t base_ = 0;
   uint64_t current_ = 0, peak_ = 0;
 };

@@ -20,18 +20,35 @@ void Scheduler::decide() {
     searchedFrom_ = cycle;  // the cycles before are settled: no dispatch there
     return;
   }
-  const Idle readyAtPending = someCoreIdleIn(pending);
-  if (readyAtPending == Idle::Unknown) {
-    searchedFrom_ = cycle;
-    return;
-  }
   const uint64_t wait = cycle - pending;
+  // Whether a core was ready at `pending` matters only to a wait that would raise the eq. 6.7
+  // maximum; asking every core for every job would make the cost follow the core count.
+  if (wait > statistics_.maxWaitWithReadyCore) {
+    const Idle readyAtPending = someCoreIdleIn(pending);
+    if (readyAtPending == Idle::Unknown) {
+      searchedFrom_ = cycle;
+      return;
+    }
+    if (readyAtPending == Idle::Yes) statistics_.maxWaitWithReadyCore = wait;
+  }
   ++statistics_.jobs;
-  ++statistics_.waitHistogram[wait];
+  countWait(wait);
   statistics_.maxWait = std::max(statistics_.maxWait, wait);
-  if (readyAtPending == Idle::Yes)
-    statistics_.maxWaitWithReadyCore = std::max(statistics_.maxWaitWithReadyCore, wait);
   dispatch(core, cycle);
+}
+
+void Scheduler::countWait(uint64_t wait) {
+  if (wait < shortWaits_.size())
+    ++shortWaits_[wait];
+  else
+    ++statistics_.waitHistogram[wait];
+}
+
+SchedulerStatistics Scheduler::statistics() const {
+  SchedulerStatistics all = statistics_;
+  for (uint64_t wait = 0; wait < shortWaits_.size(); ++wait)
+    if (shortWaits_[wait] > 0) all.waitHistogram[wait] += shortWaits_[wait];
+  return all;
 }
 
 Scheduler::Idle Scheduler::idleIn(int core, uint64_t cycle) const {
@@ -95,7 +112,7 @@ Scheduler::Idle Scheduler::someCoreIdleIn(uint64_t cycle) const {
 }
 
 void Scheduler::dispatch(int core, uint64_t cycle) {
-  const CoreJob job = in_->payload();
+  const CoreJob& job = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
   searchedFrom_ = cycle + 1;

@@ -6,6 +6,7 @@
 // a core ready from some cycle, or not ready before some cycle (still traversing). Where a core
 // has declared neither for a cycle the policy needs, it waits for that core to declare more.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -32,7 +33,7 @@ class Scheduler : public Agent {
   void bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores);
   void decide() override;
 
-  const SchedulerStatistics& statistics() const { return statistics_; }
+  SchedulerStatistics statistics() const;
 
  private:
   static constexpr int kWait = -1;  // the policy needs a core to declare more first
@@ -48,13 +49,15 @@ class Scheduler : public Agent {
   // Whether some core was ready when the job became pending (eq. 6.7), or Unknown.
   Idle someCoreIdleIn(uint64_t cycle) const;
   void dispatch(int core, uint64_t cycle);
+  void countWait(uint64_t wait);
 
   SchedulerPolicy policy_;
   TransferChannel<CoreJob>* in_ = nullptr;
   std::vector<TransferChannel<CoreJob>*> cores_;
   uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
   int nextInLine_ = 0;         // round-robin
-  SchedulerStatistics statistics_;
+  SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
+  std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job
 };
 
 }  // namespace rtu

@@ -230,7 +230,7 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
   stats.hostOutRecordBytes = config.outputLink().recordBytes;
   stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
-  const SchedulerStatistics& scheduler = top.scheduler().statistics();
+  const SchedulerStatistics scheduler = top.scheduler().statistics();
   stats.waitHistogram = scheduler.waitHistogram;
   stats.maxWait = scheduler.maxWait;
   stats.maxWaitWithReadyCore = scheduler.maxWaitWithReadyCore;
