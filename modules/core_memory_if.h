@@ -1,8 +1,10 @@
 #pragma once
 // How a traversal core reads SVO words. A core's private level (ideal ROM or its L1) answers at
 // once with the cycle the word is there, so the core can run ahead through cycles nobody else
-// sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores, so
-// the core waits until the request cycle and asks then.
+// sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
+// core registers its request for its cycle and stops; the memory serves the requests of a cycle
+// when simulated time reaches it (all of them are known by then: a core registers a request only
+// while running cycles before it) and tells each core the cycle its word is there.
 
 #include <cstdint>
 
@@ -17,6 +19,13 @@ struct MemoryReply {
   uint64_t cycle;
 };
 
+class SharedReadListener {
+ public:
+  virtual ~SharedReadListener() = default;
+  // The word of the core's shared request is there in `dataCycle`.
+  virtual void sharedReplied(uint64_t dataCycle) = 0;
+};
+
 class CoreMemoryIf : public virtual sc_core::sc_interface {
  public:
   // The words themselves (timing is the other calls' business).
@@ -26,11 +35,10 @@ class CoreMemoryIf : public virtual sc_core::sc_interface {
   virtual bool combinational() const = 0;
   // A read the core issues in `cycle` (its own, possibly ahead of simulated time).
   virtual MemoryReply lookup(int core, uint32_t address, uint64_t cycle) = 0;
-  // The shared request lookup() asked for, made in the current cycle; `sharedReplied(core)` is
-  // notified once `sharedReplyCycle(core)`, the cycle the word is there, is known.
-  virtual void requestShared(int core, uint32_t address) = 0;
-  virtual uint64_t sharedReplyCycle(int core) const = 0;
-  virtual const sc_core::sc_event& sharedReplied(int core) const = 0;
+  // The shared request lookup() asked for, in `cycle` (ahead of simulated time); `reader` hears
+  // the cycle the word is there once simulated time reaches `cycle`.
+  virtual void requestShared(int core, uint32_t address, uint64_t cycle,
+                             SharedReadListener& reader) = 0;
 };
 
 }  // namespace rtu

@@ -1,6 +1,7 @@
 #include "memory_system.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 namespace rtu {
@@ -13,8 +14,8 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       backing_(backing),
       config_(config),
       cores_(static_cast<size_t>(cores)),
+      wake_(clock),
       trace_(trace) {
-  for (CorePort& port : cores_) port.replied = std::make_unique<sc_core::sc_event>();
   if (config_.ideal) return;
   validate(config_);
   l2_ = std::make_unique<L2CacheTiming>(config_.l2, config_.dram);
@@ -34,10 +35,10 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
     l2HitSignal_ = trace_->declare(scope, "hits", 32);
     l2MissSignal_ = trace_->declare(scope, "misses", 32);
   }
-  SC_HAS_PROCESS(MemorySystem);
-  SC_METHOD(serveShared);
-  sensitive << requested_;
-  dont_initialize();
+}
+
+void MemorySystem::end_of_elaboration() {
+  if (!config_.ideal) spawnReaction("serve_shared", [this] { serveShared(); }, {&wake_.event()});
 }
 
 MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
@@ -51,26 +52,37 @@ MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
   return {result.hit, result.cycle};
 }
 
-void MemorySystem::requestShared(int core, uint32_t address) {
-  cores_[static_cast<size_t>(core)].pendingAddress = address;
-  queue_.push_back(core);
-  requested_.notify(sc_core::SC_ZERO_TIME);
+void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
+                                 SharedReadListener& reader) {
+  if (cycle <= clock_.now())
+    throw std::logic_error("shared memory request of core " + std::to_string(core) +
+                           " for cycle " + std::to_string(cycle) + ", not after simulated time");
+  CorePort& port = cores_[static_cast<size_t>(core)];
+  port.pendingAddress = address;
+  port.reader = &reader;
+  calendar_.push({cycle, core});
+  if (calendar_.top().cycle == cycle) wake_.at(cycle);
 }
 
 void MemorySystem::serveShared() {
   const uint64_t now = clock_.now();
+  served_.clear();
+  while (!calendar_.empty() && calendar_.top().cycle == now) {
+    served_.push_back(calendar_.top().core);
+    calendar_.pop();
+  }
   const int n = static_cast<int>(cores_.size());
   const auto priority = [&](int core) { return (core - nextPriority_ + n) % n; };
-  std::sort(queue_.begin(), queue_.end(), [&](int a, int b) { return priority(a) < priority(b); });
-  for (int core : queue_) {
+  std::sort(served_.begin(), served_.end(), [&](int a, int b) { return priority(a) < priority(b); });
+  for (int core : served_) {
     CorePort& port = cores_[static_cast<size_t>(core)];
     const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
-    port.replyCycle = port.l1->fill(port.pendingAddress, l2_->read(line, now));
-    port.replied->notify(sc_core::SC_ZERO_TIME);
+    // The core goes on at once and may register its next request (for a later cycle).
+    port.reader->sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, now)));
   }
-  nextPriority_ = (queue_.back() + 1) % n;
-  queue_.clear();
-  if (trace_) {
+  if (!served_.empty()) nextPriority_ = (served_.back() + 1) % n;
+  if (!calendar_.empty()) wake_.at(calendar_.top().cycle);
+  if (trace_ && !served_.empty()) {
     const L2Stats stats = l2_->stats();
     trace_->record(l2HitSignal_, now, stats.cache.hits + stats.cache.merged);
     trace_->record(l2MissSignal_, now, stats.cache.misses);

@@ -6,10 +6,14 @@
 //
 // L1 lookups happen in the core's own (run-ahead) cycle, since only that core touches its L1.
 // Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
-// round-robin over the cores, starting after the core served last.
+// round-robin over the cores, starting after the core served last. Pending requests wait in a
+// calendar by cycle; one wake-up at its earliest cycle serves all requests of that cycle and
+// tells their cores by a call (no kernel event per miss).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <queue>
 #include <vector>
 
 #include <systemc>
@@ -21,6 +25,7 @@
 #include "l1_cache_timing.h"
 #include "l2_cache_timing.h"
 #include "memory_config.h"
+#include "module_process.h"
 #include "svo_memory.h"
 
 namespace rtu {
@@ -35,11 +40,8 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
   const SvoMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }
   MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
-  void requestShared(int core, uint32_t address) override;
-  uint64_t sharedReplyCycle(int core) const override { return cores_[static_cast<size_t>(core)].replyCycle; }
-  const sc_core::sc_event& sharedReplied(int core) const override {
-    return *cores_[static_cast<size_t>(core)].replied;
-  }
+  void requestShared(int core, uint32_t address, uint64_t cycle,
+                     SharedReadListener& reader) override;
 
   CacheStats l1Statistics(int core) const { return cores_[static_cast<size_t>(core)].l1->stats(); }
   L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }
@@ -47,12 +49,18 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
  private:
   struct CorePort {
     std::unique_ptr<L1CacheTiming> l1;
-    std::unique_ptr<sc_core::sc_event> replied;
     uint32_t pendingAddress = 0;
-    uint64_t replyCycle = 0;
+    SharedReadListener* reader = nullptr;
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
+  struct Request {
+    uint64_t cycle;
+    int core;
+    bool operator>(const Request& other) const { return cycle > other.cycle; }
+  };
 
+  void end_of_elaboration() override;
+  // Serves the requests of the current cycle, then waits for the next cycle with one.
   void serveShared();
 
   const CycleClock& clock_;
@@ -60,9 +68,10 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
   MemoryConfig config_;
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;
-  std::vector<int> queue_;
+  std::priority_queue<Request, std::vector<Request>, std::greater<Request>> calendar_;
+  std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
-  sc_core::sc_event requested_;
+  CycleWake wake_;
   CycleTrace* trace_;
   int l2HitSignal_ = CycleTrace::kNoSignal, l2MissSignal_ = CycleTrace::kNoSignal;
 };

@@ -4,15 +4,13 @@
 
 namespace rtu {
 
-SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock,
+SvoTraversalCore::SvoTraversalCore(sc_core::sc_module_name name,
                                    DecisionPump& pump, int index, FixedFormat format,
                                    int stackFrames, CycleTrace* trace)
     : sc_core::sc_module(name),
       Agent(pump),
-      clock_(clock),
       index_(index),
       core_(FixedArith{format}, stackFrames),
-      wake_(clock),
       trace_(trace) {
   if (trace_) {
     stateSignal_ = trace_->declare(this->name(), "state", 3, kCoreStateNames);
@@ -30,9 +28,6 @@ void SvoTraversalCore::bind(TransferChannel<CoreJob>& in, TransferChannel<CoreRe
 void SvoTraversalCore::end_of_elaboration() {
   words_ = &memory->backingStore();
   combinational_ = memory->combinational();
-  if (combinational_) return;  // no shared reads: the pump does everything
-  spawnReaction("shared_read", [this] { sharedRead(); },
-                {&wake_.event(), &memory->sharedReplied(index_)});
 }
 
 void SvoTraversalCore::decide() {
@@ -47,14 +42,9 @@ void SvoTraversalCore::decide() {
     in_->notReadyBefore(out_->readyBound() + 1);  // the result manager takes it then at the earliest
 }
 
-// The cycle of the request came (ask the shared level), or its answer did (go on).
-void SvoTraversalCore::sharedRead() {
-  if (!sharedRequested_) {
-    memory->requestShared(index_, sharedAddress_);
-    sharedRequested_ = true;
-    return;
-  }
-  waitForWord(memory->sharedReplyCycle(index_));
+// The shared level served the request: the word is there in `dataCycle`.
+void SvoTraversalCore::sharedReplied(uint64_t dataCycle) {
+  waitForWord(dataCycle);
   stepState();
   run();
   pump().run();
@@ -80,10 +70,8 @@ void SvoTraversalCore::run() {
         // simulated time and the core resumes only in reply.cycle. (Should the word come in
         // this very cycle, the next state's record in the same cycle replaces it.)
         traceState(localCycle_ + 1, kBlockedStateCode);
-        sharedAddress_ = address;
-        sharedRequested_ = false;
         phase_ = Phase::AwaitingShared;
-        wake_.at(reply.cycle);
+        memory->requestShared(index_, address, reply.cycle, *this);
         // The word comes in reply.cycle at the earliest; OUT follows the state after it.
         out_->noOfferBefore(reply.cycle + 1);
         in_->notReadyBefore(reply.cycle + 2);

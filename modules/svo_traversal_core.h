@@ -7,9 +7,10 @@
 // its reads of a shared memory level. So when a job is delivered for cycle D the core steps the
 // state machine from INIT in D + 1 through as many cycles as it can at once (all of them with
 // ideal memory) and offers the result from the cycle OUT begins; it records each state in its own
-// cycle for the trace. A read that must go to the shared level waits for simulated time to reach
-// the cycle of the request (a SystemC process), since the shared level serves requests in cycle
-// order; meanwhile the core declares that it offers no result and is not ready before then.
+// cycle for the trace. A read that must go to the shared level is registered with the memory for
+// its cycle and the core stops, since the shared level serves requests in cycle order when
+// simulated time reaches them (core_memory_if.h); meanwhile the core declares that it offers no
+// result and is not ready before then. The memory's reply lets it go on.
 //
 // A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
 // BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
@@ -23,10 +24,8 @@
 #include <systemc>
 
 #include "core_memory_if.h"
-#include "cycle_clock.h"
 #include "cycle_trace.h"
 #include "decision_pump.h"
-#include "module_process.h"
 #include "rtu_payloads.h"
 #include "transfer_channel.h"
 #include "traversal_core.h"
@@ -48,11 +47,11 @@ struct CoreStatistics {
   uint64_t tOverflows = 0;
 };
 
-class SvoTraversalCore : public sc_core::sc_module, public Agent {
+class SvoTraversalCore : public sc_core::sc_module, public Agent, private SharedReadListener {
  public:
   sc_core::sc_port<CoreMemoryIf> memory;
 
-  SvoTraversalCore(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
+  SvoTraversalCore(sc_core::sc_module_name name, DecisionPump& pump,
                    int index, FixedFormat format, int stackFrames, CycleTrace* trace);
 
   void bind(TransferChannel<CoreJob>& in, TransferChannel<CoreResult>& out);
@@ -66,7 +65,7 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent {
   enum class Phase { Idle, AwaitingShared, Out };
 
   void end_of_elaboration() override;
-  void sharedRead();
+  void sharedReplied(uint64_t dataCycle) override;
   void start(uint64_t dispatch, const CoreJob& job);
   void run();
   void stepState();
@@ -76,7 +75,6 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent {
   void handOver();
   void traceState(uint64_t cycle, uint64_t code);
 
-  const CycleClock& clock_;
   int index_;
   TraversalCore<FixedArith> core_;
   TransferChannel<CoreJob>* in_ = nullptr;
@@ -86,9 +84,6 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent {
   uint64_t localCycle_ = 0;  // the cycle the core's current state executes in
   uint64_t outCycle_ = 0;
   uint64_t blocked_ = 0;     // blocked cycles of the current job
-  uint32_t sharedAddress_ = 0;
-  bool sharedRequested_ = false;
-  CycleWake wake_;
   const SvoMemory* words_ = nullptr;
   bool combinational_ = false;
   CycleTrace* trace_;

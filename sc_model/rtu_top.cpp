@@ -46,7 +46,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
     coreJobs_.push_back(channel<CoreJob>(indexed("core_jobs_", i), clock_, trace, top + "." + coreName + ".in"));
     coreResults_.push_back(
         channel<CoreResult>(indexed("core_results_", i), clock_, trace, top + "." + coreName + ".out"));
-    cores_.push_back(std::make_unique<SvoTraversalCore>(coreName.c_str(), clock_, pump_,
+    cores_.push_back(std::make_unique<SvoTraversalCore>(coreName.c_str(), pump_,
                                                         static_cast<int>(i), config.jobManager.format,
                                                         config.stackFrames, trace));
     cores_[i]->memory(*memory_);
