@@ -1,15 +1,13 @@
 #include "host_sink.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace rtu {
 
 HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link)
     : Agent(pump), expected_(expected), link_(link), pacer_(link) {
   validate(link, "host output");
-  results_.reserve(expected);
-  arrivalCycles_.reserve(expected);
+  arrivals_.reserve(expected);
 }
 
 void HostSink::bind(TransferChannel<CoreResult>& in) {
@@ -35,8 +33,7 @@ void HostSink::decide() {
 }
 
 void HostSink::receive(uint64_t cycle, const CoreResult& result) {
-  results_.push_back(result);
-  arrivalCycles_.push_back(cycle);
+  arrivals_.push_back({cycle, result});
   notYetArrived_.push_back(cycle);
   lastArrival_ = std::max(lastArrival_, cycle);
   if (complete()) {
@@ -84,20 +81,8 @@ uint64_t HostSink::arrivedBefore(uint64_t cycle) {
 }
 
 void HostSink::arrange() {
-  std::vector<size_t> order(results_.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [this](size_t a, size_t b) { return arrivalCycles_[a] < arrivalCycles_[b]; });
-  std::vector<CoreResult> results;
-  std::vector<uint64_t> arrivals;
-  results.reserve(order.size());
-  arrivals.reserve(order.size());
-  for (size_t i : order) {
-    results.push_back(results_[i]);
-    arrivals.push_back(arrivalCycles_[i]);
-  }
-  results_.swap(results);
-  arrivalCycles_.swap(arrivals);
+  std::sort(arrivals_.begin(), arrivals_.end(),
+            [](const Arrival& a, const Arrival& b) { return a.cycle < b.cycle; });
 }
 
 }  // namespace rtu

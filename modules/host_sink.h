@@ -2,7 +2,7 @@
 // The host's output stream: takes results whenever the link allows (every cycle unless paced or
 // randomly throttled) and keeps them with their arrival cycles. Without pacing it is ready in
 // every cycle, so results may be delivered to it in any order of cycles (result_manager.h); it
-// sorts them by arrival at the end.
+// sorts them by arrival at the end, in place (one result arrives per cycle at most).
 
 #include <cstdint>
 #include <vector>
@@ -16,15 +16,19 @@ namespace rtu {
 
 class HostSink : public Agent {
  public:
+  struct Arrival {
+    uint64_t cycle;
+    CoreResult result;
+  };
+
   HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link);
 
   void bind(TransferChannel<CoreResult>& in);
   void decide() override;
 
   // In arrival order once the run is complete (arrange()).
-  const std::vector<CoreResult>& results() const { return results_; }
-  const std::vector<uint64_t>& arrivalCycles() const { return arrivalCycles_; }
-  bool complete() const { return results_.size() == expected_; }
+  const std::vector<Arrival>& arrivals() const { return arrivals_; }
+  bool complete() const { return arrivals_.size() == expected_; }
   uint64_t expected() const { return expected_; }
   uint64_t lastArrival() const { return lastArrival_; }
   // How many results arrived before `cycle` (asked in increasing cycles).
@@ -43,8 +47,7 @@ class HostSink : public Agent {
   uint64_t allowedFrom_ = 0;
   uint64_t drawnUntil_ = 0;           // a random link: cycles drawn so far ...
   std::vector<bool> activeFrom_;      // ... and their outcomes from allowedFrom_
-  std::vector<CoreResult> results_;
-  std::vector<uint64_t> arrivalCycles_;
+  std::vector<Arrival> arrivals_;
   uint64_t lastArrival_ = 0;
   std::vector<uint64_t> notYetArrived_;  // cycles of results not yet counted by arrivedBefore
   uint64_t arrived_ = 0;

@@ -5,11 +5,12 @@
 namespace rtu {
 
 HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-                       std::vector<HostRecord> records, HostLinkConfig link, uint64_t lookAhead)
+                       const std::vector<HostRecord>& records, HostLinkConfig link,
+                       uint64_t lookAhead)
     : sc_core::sc_module(name),
       Agent(pump),
       clock_(clock),
-      records_(std::move(records)),
+      records_(records),
       pacer_(link),
       lookAhead_(lookAhead),
       wake_(clock) {

@@ -22,7 +22,7 @@ namespace rtu {
 class HostSource : public sc_core::sc_module, public Agent {
  public:
   HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-             std::vector<HostRecord> records, HostLinkConfig link, uint64_t lookAhead);
+             const std::vector<HostRecord>& records, HostLinkConfig link, uint64_t lookAhead);
 
   void bind(TransferChannel<HostJob>& out);
   void decide() override;
@@ -33,7 +33,7 @@ class HostSource : public sc_core::sc_module, public Agent {
 
   const CycleClock& clock_;
   TransferChannel<HostJob>* out_ = nullptr;
-  std::vector<HostRecord> records_;
+  const std::vector<HostRecord>& records_;  // the caller's: they outlive the run
   HostLinkPacer pacer_;
   uint64_t lookAhead_;
   uint64_t next_ = 0;         // index of the record offered or to be offered

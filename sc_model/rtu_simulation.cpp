@@ -112,13 +112,18 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   HostSink& sink = top->sink();
   sink.arrange();
   // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
-  if (trace) trace->finish(sink.arrivalCycles().empty() ? 0 : sink.arrivalCycles().front());
+  const std::vector<HostSink::Arrival>& arrivals = sink.arrivals();
+  if (trace) trace->finish(arrivals.empty() ? 0 : arrivals.front().cycle);
   if (!sink.complete())
-    throw std::runtime_error("simulation stalled after " + std::to_string(sink.results().size()) +
+    throw std::runtime_error("simulation stalled after " + std::to_string(arrivals.size()) +
                              " of " + std::to_string(records.size()) + " results");
-  run.arrivalCycles = sink.arrivalCycles();
-  run.totalCycles = run.arrivalCycles.empty() ? 0 : run.arrivalCycles.back() + 1;
-  for (const CoreResult& result : sink.results()) {
+  run.totalCycles = arrivals.empty() ? 0 : arrivals.back().cycle + 1;
+  run.arrivalCycles.reserve(arrivals.size());
+  run.results.reserve(arrivals.size());
+  run.jobIndices.reserve(arrivals.size());
+  run.blockedCycles.reserve(arrivals.size());
+  for (const auto& [cycle, result] : arrivals) {
+    run.arrivalCycles.push_back(cycle);
     run.results.push_back(result.result);
     run.jobIndices.push_back(result.sequence);
     run.blockedCycles.push_back(result.blockedCycles);

@@ -212,14 +212,14 @@ void RtuStatistics::writeReport(std::ostream& out) const {
 
 RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles) {
   RtuStatistics stats;
-  stats.rays = top.sink().results().size();
+  stats.rays = top.sink().arrivals().size();
   stats.totalCycles = totalCycles;
   stats.clockMhz = config.clockMhz;
   stats.cores = config.cores;
   stats.scheduler = toString(config.scheduler);
   for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
   stats.stackOverflows = stats.allCores().stackOverflows;
-  for (const CoreResult& result : top.sink().results()) {
+  for (const auto& [cycle, result] : top.sink().arrivals()) {
     stats.totalCost += result.result.cost;
     stats.maxCost = std::max<uint64_t>(stats.maxCost, result.result.cost);
     stats.totalBlocked += result.blockedCycles;

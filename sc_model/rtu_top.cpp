@@ -18,7 +18,8 @@ std::unique_ptr<TransferChannel<Payload>> channel(const std::string& name, const
 }  // namespace
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-               std::vector<HostRecord> records, CycleTrace* trace, const CacheContents* caches)
+               const std::vector<HostRecord>& records, CycleTrace* trace,
+               const CacheContents* caches)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {
   validate(config);
   const std::string top = this->name();
@@ -29,7 +30,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   pendingJobs_ = channel<CoreJob>("pending_jobs", clock_, trace, top + ".scheduler.in");
   managedResults_ = channel<CoreResult>("managed_results", clock_, trace, top + ".result_manager.out");
 
-  source_ = std::make_unique<HostSource>("host_source", clock_, pump_, std::move(records),
+  source_ = std::make_unique<HostSource>("host_source", clock_, pump_, records,
                                          config.hostInput, kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler);

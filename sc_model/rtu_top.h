@@ -27,10 +27,11 @@ namespace rtu {
 
 class RtuTop : public sc_core::sc_module {
  public:
-  // `memory` and the trace must outlive the top; `trace` may be null.
+  // `memory`, `records` and the trace must outlive the top; `trace` may be null.
   // `caches`: lines resident from cycle 0 (sampled simulation), or null.
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-         std::vector<HostRecord> records, CycleTrace* trace, const CacheContents* caches = nullptr);
+         const std::vector<HostRecord>& records, CycleTrace* trace,
+         const CacheContents* caches = nullptr);
 
   // How far ahead of simulated time the host source offers records.
   static constexpr uint64_t kLookAheadCycles = 4096;
