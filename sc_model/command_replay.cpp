@@ -52,6 +52,7 @@ void addReplayCommand(CLI::App& app) {
       warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
     }
     checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
+    std::vector<TraversalJob>().swap(jobs);  // only the checks read them: the run reads records
     const RtuConfig planned =
         plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");
