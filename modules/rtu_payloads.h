@@ -35,4 +35,9 @@ struct CoreResult {
   uint32_t blockedCycles = 0;   // cycles the core spent BLOCKED on memory for this ray
 };
 
+// The ray a payload belongs to, as the traces show it on every channel (class "ids").
+inline uint64_t rayId(const HostJob& job) { return job.sequence; }
+inline uint64_t rayId(const CoreJob& job) { return job.sequence; }
+inline uint64_t rayId(const CoreResult& result) { return result.sequence; }
+
 }  // namespace rtu

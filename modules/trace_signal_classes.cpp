@@ -7,13 +7,13 @@
 namespace rtu {
 
 const std::vector<std::string>& traceSignalClasses() {
-  static const std::vector<std::string> classes{"handshakes", "states", "stack", "caches"};
+  static const std::vector<std::string> classes{"handshakes", "ids", "states", "stack", "caches"};
   return classes;
 }
 
 std::string traceSignalClass(const std::string& name) {
   static const std::map<std::string, std::string> byName{
-      {"valid", "handshakes"}, {"ready", "handshakes"}, {"state", "states"},
+      {"valid", "handshakes"}, {"ready", "handshakes"}, {"ray", "ids"},  {"state", "states"},
       {"stack_depth", "stack"}, {"hits", "caches"},     {"misses", "caches"}};
   const auto found = byName.find(name);
   return found == byName.end() ? "" : found->second;

@@ -1,6 +1,7 @@
 #pragma once
 // The classes of traced signals a trace can be narrowed to (--trace-signals), by signal name:
-// handshakes (valid, ready), states (core state), stack (stack_depth), caches (hits, misses).
+// handshakes (valid, ready), ids (ray: the ray each channel's payload belongs to), states (core
+// state), stack (stack_depth), caches (hits, misses).
 
 #include <string>
 #include <vector>

@@ -13,8 +13,9 @@
 //
 // With a trace, the channel records the levels its transfers imply: valid from the offer to the
 // transfer, ready from the declaration to the transfer (one cycle for a consumer that decides),
-// A module whose levels do more than that
-// (the job manager's combinational in_ready, the result manager's select) records the rest.
+// and the id of the payload's ray (rayId) from its offer (or delivery) until the next payload's.
+// A module whose levels do more than that (the job manager's combinational in_ready, the result
+// manager's select) records the rest.
 
 #include <cstdint>
 #include <functional>
@@ -62,6 +63,7 @@ class TransferChannel {
     offerCycle_ = cycle;
     offering_ = true;
     record(validSignal_, cycle, 1);
+    record(raySignal_, cycle, rayId(payload));
     consumer_->heard(consumerPort_);
   }
   bool offering() const { return offering_; }
@@ -95,6 +97,7 @@ class TransferChannel {
     if (readyIn(cycle, payload) != Ready::Yes)
       fail("delivered where the consumer is not ready", cycle);
     record(validSignal_, cycle, 1);
+    record(raySignal_, cycle, rayId(payload));
     complete(cycle);
     if (!always_) record(readySignal_, cycle + 1, 0);
     delivered_.push_back({cycle, payload});
@@ -153,6 +156,7 @@ class TransferChannel {
     trace_ = &trace;
     validSignal_ = trace.declare(scope, "valid", 1);
     readySignal_ = trace.declare(scope, "ready", 1);
+    raySignal_ = trace.declare(scope, "ray", 32);  // unknown until the first payload
     trace.record(validSignal_, 0, 0);
     trace.record(readySignal_, 0, 0);
   }
@@ -194,6 +198,7 @@ class TransferChannel {
   std::vector<std::pair<uint64_t, Payload>> delivered_;  // not yet collected by the consumer
   CycleTrace* trace_ = nullptr;
   int validSignal_ = CycleTrace::kNoSignal, readySignal_ = CycleTrace::kNoSignal;
+  int raySignal_ = CycleTrace::kNoSignal;
 };
 
 }  // namespace rtu

@@ -14,7 +14,8 @@ class JobEntry : public TraceListener {
   explicit JobEntry(uint64_t job) : job_(job) {}
   void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override {
     if (scope.size() < 15 || scope.compare(scope.size() - 15, 15, ".job_manager.in") != 0) return;
-    (variable.name == "valid" ? valid_ : ready_) = static_cast<int64_t>(signal);
+    if (variable.name == "valid") valid_ = static_cast<int64_t>(signal);
+    if (variable.name == "ready") ready_ = static_cast<int64_t>(signal);
   }
   void changed(uint64_t cycle, const std::vector<TraceChange>& changes) override {
     if (validLevel_ && readyLevel_) {  // a transfer in every cycle since the last change

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # FST traces (--trace t.fst, modules/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
-# same values in the same cycles as the VCD of the same run, for ideal and cached memory, and an
-# enum table that names the core states. --vcd stays an alias of --trace. A --trace-scope that
+# same values in the same cycles as the VCD of the same run, for ideal and cached memory, an
+# enum table that names the core states, and ray ids that follow every ray through the run. --vcd stays an alias of --trace. A --trace-scope that
 # matches nothing is an error. Each trace comes with a GTKWave save file.
 # Usage: fst_trace.sh path/to/rtusim
 set -euo pipefail
@@ -27,6 +27,11 @@ for options in "--cores 4" "--cores 3 --memory cached"; do
   (( $(wc -l <vcd.txt) > 1000 )) || fail "$options: the VCD holds only $(wc -l <vcd.txt) changes"
   cmp -s vcd.txt fst.txt || { diff vcd.txt fst.txt | head -5; fail "$options: FST and VCD differ"; }
 done
+
+# Ray ids (signal class ids), read back from the FST with fst2vcd: every ray followed from the
+# host's input through one core to the host's output, in the output buffer's order.
+python3 "$here/trace_ids_check.py" fst.txt out.bin || fail "the ray ids do not follow the run"
+grep -qx '+{in ray} rtu.core_1.in.ray\[31:0\]' t.gtkw || fail "t.gtkw does not show the cores' ray ids"
 
 # The save file next to the last trace: this trace, every signal of it, grouped per module in
 # pipeline order, a marker at the first result.

@@ -43,8 +43,9 @@ for entry in "${configurations[@]}"; do
     unset 'options[-1]'
     input=(--svo model.svo --rays rays.bin)
   fi
+  # The recorded traces predate the ray ids (signal class ids): every other class.
   "$rtusim" replay "${input[@]}" "${options[@]}" --out "$name.bin" \
-    --vcd "$name.vcd" >/dev/null
+    --vcd "$name.vcd" --trace-signals handshakes,states,stack,caches >/dev/null
   "$python" "$here/vcd_normalise.py" "$name.vcd" 10000 >"$name.txt"
   if [[ $record == --record ]]; then
     gzip -9n <"$name.txt" >"$data/$name.txt.gz"
