@@ -35,6 +35,9 @@ CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listene
                                 std::to_string(options_.toCycle));
   if (options_.flushCycles == 0)
     throw std::invalid_argument("trace flush interval must be at least one cycle");
+  if (options_.clock && options_.periodPs < 2)
+    throw std::invalid_argument("a traced clock needs a clock period of at least 2 ps (at most "
+                                "500,000 MHz)");
   checkTraceSignalClasses(options_.signalClasses);
   if (options_.countOnly)
     writer_ = openVcdCounter(counter_);
@@ -150,6 +153,7 @@ void CycleTrace::writeDeclarations() {
   InstanceWidths widths;
   for (const std::string& scope : declaredScopes_) widths.add(scope);
   for (Signal& signal : signals_) signal.scope = widths.padded(signal.scope);
+  if (options_.clock) declareClock();
   // Nested by scope path (std::map keeps scopes together and sorted).
   std::map<std::string, std::vector<size_t>> byScope;
   for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
@@ -168,6 +172,27 @@ void CycleTrace::writeDeclarations() {
   }
   for (size_t i = open.size(); i > 0; --i) writer_->leaveScope();
   writer_->endDeclarations();
+}
+
+// The clock lives in the top scope of the traced modules (rtu.clk), whatever the scope filter.
+void CycleTrace::declareClock() {
+  const std::string& first = signals_.empty() ? std::string("rtu") : signals_.front().scope;
+  clockIndex_ = signals_.size();
+  signals_.push_back(Signal{first.substr(0, first.find('.')), TraceVariable{"clk", 1, {}}});
+}
+
+void CycleTrace::clockUpTo(uint64_t end) {
+  for (; clockNext_ < end; ++clockNext_) {
+    writer_->time(clockNext_ * options_.periodPs);
+    writer_->value(clockIndex_, true, 1);
+    fallingEdge(clockNext_);
+  }
+}
+
+void CycleTrace::fallingEdge(uint64_t cycle) {
+  writer_->time(cycle * options_.periodPs + options_.periodPs / 2);
+  writer_->value(clockIndex_, true, 0);
+  current_[clockIndex_] = 0;
 }
 
 CycleTrace::Settled CycleTrace::settle(std::vector<Change>::const_iterator begin,
@@ -236,14 +261,27 @@ void CycleTrace::initialValues() {
 
 void CycleTrace::writeInitialValues() {
   dumped_ = true;
+  if (options_.clock) {
+    known_[clockIndex_] = true;
+    current_[clockIndex_] = 1;
+  }
   writer_->beginInitial(options_.fromCycle * options_.periodPs);
   for (size_t i = 0; i < signals_.size(); ++i) writer_->value(i, known_[i], current_[i]);
   writer_->endInitial();
+  if (!options_.clock) return;
+  fallingEdge(options_.fromCycle);
+  clockNext_ = options_.fromCycle + 1;
 }
 
-// A signal is written when its value changed.
+// A signal is written when its value changed; with a clock, every cycle up to this one is.
 void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
   bool stamped = false;
+  if (options_.clock) {
+    clockUpTo(cycle);
+    writer_->time(cycle * options_.periodPs);
+    writer_->value(clockIndex_, true, 1);
+    stamped = true;
+  }
   for (const TraceChange& change : settled) {
     const int signal = fileIndex_[change.signal];
     if (signal == kNoSignal) continue;
@@ -255,6 +293,9 @@ void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
     current_[index] = change.value;
     writer_->value(index, true, change.value);
   }
+  if (!options_.clock) return;
+  fallingEdge(cycle);
+  clockNext_ = cycle + 1;
 }
 
 }  // namespace rtu

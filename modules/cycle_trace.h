@@ -32,6 +32,9 @@ struct TraceOptions {
   uint64_t periodPs = 10000;                                // trace time of one cycle
   uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
   bool countOnly = false;       // write nothing: count the bytes of the VCD the file would be
+  // A clock `clk` in the top scope, high in the first half of every cycle from the window's first
+  // cycle to its last change (two changes per cycle: a trace of every cycle).
+  bool clock = false;
 };
 
 class CycleTrace {
@@ -90,6 +93,10 @@ class CycleTrace {
   void initialValues();
   void writeInitialValues();
   void writeCycle(uint64_t cycle, const Settled& settled);
+  void declareClock();
+  // The clock's edges of the cycles from clockNext_ up to `end`.
+  void clockUpTo(uint64_t end);
+  void fallingEdge(uint64_t cycle);
 
   TraceOptions options_;
   std::vector<TraceListener*> listeners_;
@@ -104,6 +111,8 @@ class CycleTrace {
   bool declared_ = false, dumped_ = false;
   std::vector<bool> known_;  // per signal of the file
   std::vector<uint64_t> current_;
+  size_t clockIndex_ = 0;    // the clock's index among the file's signals, with options_.clock
+  uint64_t clockNext_ = 0;   // the first cycle whose clock edges are not written
   std::vector<bool> heard_;  // per signal id: the listeners' last values
   std::vector<uint64_t> heardValue_;
 };

@@ -99,7 +99,12 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
 
   std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;
   std::map<std::string, std::string> translateFilters;  // by signal name, for a VCD
+  // Signals of the top scope itself (the clock) come first, outside the groups.
+  for (const SaveFileSignal& signal : signals)
+    if (signal.scope.find('.') == std::string::npos)
+      out << kBinary << "\n+{" << signal.name << "} " << displayName(signal) << '\n';
   for (const SaveFileSignal& signal : signals) {
+    if (signal.scope.find('.') == std::string::npos) continue;
     byModule[pipelineKey(moduleOf(signal.scope))].push_back(&signal);
     if (!signal.valueNames.empty() && !isFst(tracePath) && !translateFilters.count(signal.name))
       translateFilters[signal.name] = writeTranslateFilter(tracePath, signal);

@@ -15,7 +15,10 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
   if (!needingOutput.empty() && vcdPath.empty() && timelinePath.empty())
     throw std::invalid_argument(needingOutput + " needs --trace or --timeline");
   RtuConfig resolved = config;
-  if (!vcdPath.empty()) resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
+  if (!vcdPath.empty()) {
+    resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
+    resolved.trace->clock = traceClock;
+  }
   resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
 }
@@ -54,8 +57,13 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
                          "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
           ->needs(vcd);
   command.add_option("--trace-signals", outputs.signalClasses,
-                     "trace only these signal classes: handshakes, states, stack, caches (default: all)")
+                     "trace only these signal classes: handshakes, ids, states, stack, caches "
+                     "(default: all)")
       ->delimiter(',')
+      ->needs(vcd);
+  command.add_flag("--trace-clock", outputs.traceClock,
+                   "trace a clock (rtu.clk, high in the first half of every cycle): two changes "
+                   "per cycle")
       ->needs(vcd);
   CLI::Option* maxMb = command.add_option(
       "--trace-max-mb", outputs.traceMaxMb,

@@ -25,6 +25,7 @@ struct RunOutputs {
   uint64_t vcdTo = std::numeric_limits<uint64_t>::max();
   std::vector<std::string> vcdScopes;
   std::vector<std::string> signalClasses;
+  bool traceClock = false;
   std::string timelinePath;
   int64_t traceRay = -1;       // -1: no --trace-ray
   uint64_t traceMaxMb = 300;

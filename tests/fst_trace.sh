@@ -33,6 +33,33 @@ done
 python3 "$here/trace_ids_check.py" fst.txt out.bin || fail "the ray ids do not follow the run"
 grep -qx '+{in ray} rtu.core_1.in.ray\[31:0\]' t.gtkw || fail "t.gtkw does not show the cores' ray ids"
 
+# --trace-clock: rtu.clk high in the first half of every cycle of the window up to its last
+# change, read back from the FST; first in the save file; counted by the dry run.
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 3 --trace clk.fst \
+  --trace-clock --trace-from 100 --trace-to 140 >/dev/null
+fst2vcd clk.fst >clk.vcd
+python3 - clk.vcd <<'PY' || fail "rtu.clk is not a clock of period 10000 ps over the window"
+import sys
+code, time, edges = None, 0, []
+for line in open(sys.argv[1]):
+    words = line.split()
+    if words[:1] == ["$var"] and words[4] == "clk":
+        code = words[3]
+    elif line.startswith("#"):
+        time = int(line[1:])
+    elif code and line.strip() in ("0" + code, "1" + code):
+        edges.append((time, int(line[0])))
+expected = [(cycle * 10000 + half * 5000, 1 - half) for cycle in range(100, 140) for half in (0, 1)]
+assert edges == expected[:len(edges)] and len(edges) >= 70, edges[:6]
+PY
+grep -A1 -x '\[signals_width\] 240' clk.gtkw | tail -1 | grep -qx '@28' &&
+  sed -n 6p clk.gtkw | grep -qx '+{clk} rtu.clk' || fail "clk.gtkw does not show the clock first"
+! grep -q 'clk' t.gtkw || fail "a trace without --trace-clock has a clock"
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace c.vcd \
+  --trace-clock >report.txt
+[[ $(sed -n 's/^trace size  c.vcd: .*(\([0-9]*\) bytes)$/\1/p' report.txt) == $(stat -c %s c.vcd) ]] ||
+  fail "the dry run did not count the clock: $(grep 'trace size' report.txt), written $(stat -c %s c.vcd)"
+
 # The save file next to the last trace: this trace, every signal of it, grouped per module in
 # pipeline order, a marker at the first result.
 [[ -f t.gtkw ]] || fail "no save file t.gtkw"
