@@ -5,7 +5,7 @@
 # Usage: scripts/waveform_screenshots.sh [path/to/rtusim] [output directory, default docs/images]
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-rtusim=${1:-$here/../build/rtusim}
+rtusim=$(realpath "${1:-$here/../build/rtusim}")
 out=$(realpath -m "${2:-$here/../docs/images}")
 for tool in gtkwave Xvfb import; do
   command -v $tool >/dev/null || { echo "$tool not found: run scripts/setup.sh" >&2; exit 1; }
@@ -39,7 +39,7 @@ shot() {
 }
 
 # The pipeline at the start of a frame: host in, scheduler, two of four cores, result manager.
-shot waveform_pipeline -18.5 --cores 4 --trace-to 200 \
+shot waveform_pipeline -18.5 --cores 4 --trace-to 200 --trace-clock \
   --trace-scope rtu.job_manager rtu.scheduler rtu.core_0 rtu.core_1 rtu.result_manager
 # Cached memory: cores BLOCKED on their reads, the L1 counters.
 shot waveform_cached -19.5 --cores 2 --memory cached --trace-to 400 \
