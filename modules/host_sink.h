@@ -2,7 +2,7 @@
 // The host's output stream: takes results whenever the link allows (every cycle unless paced or
 // randomly throttled) and keeps them with their arrival cycles. Without pacing it is ready in
 // every cycle, so results may be delivered to it in any order of cycles (result_manager.h); it
-// sorts them by arrival at the end, in place (one result arrives per cycle at most).
+// sorts them by arrival at the end, in place.
 
 #include <cstdint>
 #include <vector>
