@@ -7,8 +7,9 @@
 // agents on it until none is left. No kernel event is involved, so a frame with ideal memory
 // costs a few function calls per ray.
 //
-// Simulated time still matters in two places: a traversal core waits for the cycle of its
-// request to the shared L2 (requests reach the L2 in cycle order), and the host source offers a
+// Simulated time still matters in two places: the memory serves the traversal cores' requests to
+// the shared L2 when simulated time reaches their cycle (requests reach the L2 in cycle order;
+// memory_system.h), and the host source offers a
 // record only once simulated time is within a look-ahead of its cycle, which keeps the run's
 // memory, the trace's reorder window and progress reports bounded. Both wake the pump through
 // SystemC processes. The rule that makes this exact: every cycle's decisions are made by

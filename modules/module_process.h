@@ -1,6 +1,6 @@
 #pragma once
-// The SystemC processes of the few modules that must wait for simulated time (a core's shared
-// memory request, the host source's look-ahead, drains in cycle order; decision_pump.h): method
+// The SystemC processes of the few modules that must wait for simulated time (the memory's shared
+// requests, the host source's look-ahead, drains in cycle order; decision_pump.h): method
 // processes statically sensitive to a wake-up the module sets for a cycle of its choosing.
 // Dynamic sensitivity (next_trigger with an event list) re-registers the process with every
 // event on every activation; static sensitivity costs nothing per activation.
