@@ -9,9 +9,9 @@
 //
 // Simulated time still matters in two places: the memory serves the traversal cores' requests to
 // the shared L2 when simulated time reaches their cycle (requests reach the L2 in cycle order;
-// memory_system.h), and the host source offers a
-// record only once simulated time is within a look-ahead of its cycle, which keeps the run's
-// memory, the trace's reorder window and progress reports bounded. Both wake the pump through
+// memory_system.h), and the host source offers a record only once simulated time is within a
+// look-ahead of its cycle, which keeps the run's memory, the trace's reorder window and progress
+// reports bounded. Both wake the pump through
 // SystemC processes. The rule that makes this exact: every cycle's decisions are made by
 // simulated time that cycle at the latest, so a shared-memory request never arrives behind
 // simulated time, and no trace record either.
