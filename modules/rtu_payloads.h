@@ -43,6 +43,7 @@ struct CoreResult {
   PayloadIds ids;
   TraversalResult result;       // its cost counts traversal states only, as the golden model's
   uint32_t blockedCycles = 0;   // cycles the core spent BLOCKED on memory for this ray
+  int instance = -1;            // a scene manager's merged result: the instance hit (-1: none)
   uint64_t id() const { return ids.job; }
 };
 

@@ -101,6 +101,7 @@ void SceneManagerModule::merge(const CoreResult& result, uint64_t cycle) {
   if (nearerSceneHit(result.result, instance, ray.merged.result, ray.nearest)) {
     ray.merged.result = result.result;
     ray.nearest = static_cast<int>(instance);
+    ray.merged.instance = ray.nearest;
   }
   ray.merged.result.cost = cost;
   const bool allIssued = ray.next == ray.candidates.size();

@@ -124,6 +124,7 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
     run.results.push_back(result.result);
     run.jobIndices.push_back(result.ids.ray);
     run.blockedCycles.push_back(result.blockedCycles);
+    run.instances.push_back(result.instance);
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;

@@ -39,6 +39,7 @@ struct RtuRun {
   std::vector<TraversalResult> results;  // in the order the host received them
   std::vector<uint64_t> jobIndices;      // the host record (ray) each result answers
   std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
+  std::vector<int> instances;            // a scene: the instance each result hit (-1: none)
   std::vector<uint32_t> blockedCycles;   // each result's cycles BLOCKED on memory (beside its cost)
   // From the first cycle after reset up to and including the cycle the last result is taken.
   uint64_t totalCycles = 0;
