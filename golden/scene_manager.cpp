@@ -39,6 +39,34 @@ SphereSpan raySphereSpan(const RayRecord& ray, const BoundingSphere& sphere) {
   return span;
 }
 
+std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
+                                            const std::vector<SceneInstance>& instances,
+                                            SceneManagerOptions options, uint32_t& culled) {
+  std::vector<SceneCandidate> candidates;
+  for (uint32_t i = 0; i < instances.size(); ++i) {
+    const SphereSpan span = raySphereSpan(ray, instances[i].sphere);
+    if (span.crosses || !options.cull)
+      candidates.push_back({span.crosses ? span.near : -INFINITY, i});
+    else
+      ++culled;
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const SceneCandidate& x, const SceneCandidate& y) {
+              return x.near != y.near ? x.near < y.near : x.instance < y.instance;
+            });
+  return candidates;
+}
+
+bool hitEndsRayBefore(double tHit, double near) { return tHit < near - roundingAllowance(near); }
+
+bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
+                    const TraversalResult& best, int bestInstance) {
+  if (!result.hit || result.tHit < 0) return false;
+  if (bestInstance < 0) return true;
+  return result.tHit != best.tHit ? result.tHit < best.tHit
+                                  : instance < static_cast<uint32_t>(bestInstance);
+}
+
 SceneManager::SceneManager(SvoMemory memory, const GoldenConfig& golden,
                            std::vector<SceneInstance> instances, SceneManagerOptions options,
                            float epsilon)
@@ -49,40 +77,16 @@ SceneManager::SceneManager(SvoMemory memory, const GoldenConfig& golden,
     headers_.push_back(readModelHeader(memory, instance.headerAddress));
 }
 
-std::vector<SceneManager::Candidate> SceneManager::candidatesInOrder(const RayRecord& ray,
-                                                                     SceneHit& hit) const {
-  std::vector<Candidate> candidates;
-  for (uint32_t i = 0; i < instances_.size(); ++i) {
-    const SphereSpan span = raySphereSpan(ray, instances_[i].sphere);
-    if (span.crosses || !options_.cull)
-      candidates.push_back({span.crosses ? span.near : -INFINITY, i});
-    else
-      ++hit.culled;
-  }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    return x.near != y.near ? x.near < y.near : x.instance < y.instance;
-  });
-  return candidates;
-}
-
-bool SceneManager::nearer(const TraversalResult& result, uint32_t instance,
-                          const SceneHit& best) const {
-  if (!result.hit || result.tHit < 0) return false;
-  if (best.instance < 0) return true;
-  return result.tHit != best.result.tHit ? result.tHit < best.result.tHit
-                                         : instance < static_cast<uint32_t>(best.instance);
-}
-
 SceneHit SceneManager::trace(const RayRecord& ray, std::vector<IssuedJob>* issued) {
   SceneHit best;
   best.result = missFor(ray.id);
   uint32_t cost = 0;
-  const std::vector<Candidate> candidates = candidatesInOrder(ray, best);
+  const std::vector<SceneCandidate> candidates =
+      sceneCandidates(ray, instances_, options_, best.culled);
   for (size_t next = 0; next < candidates.size(); ++next) {
-    const Candidate& candidate = candidates[next];
+    const SceneCandidate& candidate = candidates[next];
     if (options_.earlyTermination && best.instance >= 0 &&
-        model_.config().format.toDouble(best.result.tHit) <
-            candidate.near - roundingAllowance(candidate.near)) {
+        hitEndsRayBefore(model_.config().format.toDouble(best.result.tHit), candidate.near)) {
       best.skipped = static_cast<uint32_t>(candidates.size() - next);
       break;
     }
@@ -91,7 +95,7 @@ SceneHit SceneManager::trace(const RayRecord& ray, std::vector<IssuedJob>* issue
     ++best.jobs;
     cost += result.cost;
     if (issued) issued->push_back({candidate.instance, result.cost});
-    if (nearer(result, candidate.instance, best)) {
+    if (nearerSceneHit(result, candidate.instance, best.result, best.instance)) {
       best.result = result;
       best.instance = static_cast<int>(candidate.instance);
     }

@@ -48,6 +48,23 @@ struct SceneManagerOptions {
   bool earlyTermination = true;  // false: every instance not culled is traced
 };
 
+// What the manager decides per ray, shared by this untimed manager and the cycle-accurate one
+// (modules/scene_manager.h).
+struct SceneCandidate {
+  double near;  // the sphere's entry distance (-infinity when not culling and the ray misses it)
+  uint32_t instance;
+};
+// The instances `ray` is traced against, in issue order; adds those culled to `culled`.
+std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
+                                            const std::vector<SceneInstance>& instances,
+                                            SceneManagerOptions options, uint32_t& culled);
+// Whether a hit at `tHit` (world units) ends the ray before a candidate whose sphere begins at
+// `near`.
+bool hitEndsRayBefore(double tHit, double near);
+// Whether `result` of `instance` is nearer than `best` of `bestInstance` (-1: no hit so far).
+bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
+                    const TraversalResult& best, int bestInstance);
+
 // One job the manager issued, for a timing model of the frame.
 struct IssuedJob {
   uint32_t instance = 0;
@@ -80,13 +97,6 @@ class SceneManager {
   static constexpr float kDefaultDirectionEpsilonF = static_cast<float>(kDefaultDirectionEpsilon);
 
  private:
-  struct Candidate {
-    double near;
-    uint32_t instance;
-  };
-  std::vector<Candidate> candidatesInOrder(const RayRecord& ray, SceneHit& hit) const;
-  bool nearer(const TraversalResult& result, uint32_t instance, const SceneHit& best) const;
-
   GoldenModel model_;
   std::vector<SceneInstance> instances_;
   std::vector<ModelHeader> headers_;

@@ -83,7 +83,7 @@ uint64_t HostSink::arrivedBefore(uint64_t cycle) {
 void HostSink::arrange() {
   // The job breaks ties, should there be any, so the order never depends on the sort.
   std::sort(arrivals_.begin(), arrivals_.end(), [](const Arrival& a, const Arrival& b) {
-    return a.cycle != b.cycle ? a.cycle < b.cycle : a.result.sequence < b.result.sequence;
+    return a.cycle != b.cycle ? a.cycle < b.cycle : a.result.ids.job < b.result.ids.job;
   });
 }
 

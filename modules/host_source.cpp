@@ -36,7 +36,7 @@ void HostSource::decide() {
     wake_.at(cycle - lookAhead_ / 2);  // then it offers records for about half the look-ahead
     return;
   }
-  out_->offer(HostJob{next_, records_[next_]}, cycle);
+  out_->offer(HostJob{PayloadIds::plain(next_), records_[next_]}, cycle);
 }
 
 // The link's next slot; a randomly inactive link offers in the first active cycle from there

@@ -55,7 +55,7 @@ class JobManager : public Agent {
   void acceptOffered();
   uint64_t acceptanceCycle(uint64_t offered) const;
   void accept(const HostJob& host, uint64_t cycle);
-  CoreJob convert(uint64_t sequence, const TraversalJob& job) const;
+  CoreJob convert(PayloadIds ids, const TraversalJob& job) const;
   // The trace of in_ready, recomputed at the cycles where it may change.
   bool readyIn(uint64_t cycle) const;
   void traceReadyAt(uint64_t cycle);

@@ -21,7 +21,7 @@ void ReorderBuffer::bind(TransferChannel<CoreResult>& in, TransferChannel<CoreRe
 
 void ReorderBuffer::decide() {
   in_->collectDelivered([this](uint64_t cycle, const CoreResult& result) {
-    held_[result.sequence] = Held{result, cycle + 1};
+    held_[result.id()] = Held{result, cycle + 1};
     occupancy_.enter(cycle + 1);
   });
   if (out_->collectTaken()) {
@@ -45,7 +45,7 @@ void ReorderBuffer::decide() {
 ReorderBuffer::Ready ReorderBuffer::accepts(uint64_t cycle, const CoreResult& result) {
   // The due result is on its way to the host: the window moves once that is settled.
   if (out_->takenUnseen() || (out_->offering() && cycle > out_->offerCycle())) return Ready::Unknown;
-  const bool ready = result.sequence < dueIn(cycle) + capacity_;
+  const bool ready = result.id() < dueIn(cycle) + capacity_;
   in_->traceReady(cycle, ready);
   in_->traceReady(cycle + 1, false);
   return ready ? Ready::Yes : Ready::No;

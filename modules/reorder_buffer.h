@@ -45,7 +45,7 @@ class ReorderBuffer : public Agent {
   uint64_t capacity_;
   TransferChannel<CoreResult>* in_ = nullptr;
   TransferChannel<CoreResult>* out_ = nullptr;
-  std::map<uint64_t, Held> held_;  // by sequence
+  std::map<uint64_t, Held> held_;  // by job id
   uint64_t nextDue_ = 0;
   uint64_t lastSent_ = kNeverCycle;
   std::deque<std::pair<uint64_t, uint64_t>> dueChanges_;  // (from cycle, next due)

@@ -106,7 +106,7 @@ void SvoTraversalCore::waitForWord(uint64_t dataCycle) {
 void SvoTraversalCore::offerResult() {
   outCycle_ = localCycle_;
   traceState(outCycle_, static_cast<uint64_t>(CoreState::Out));
-  CoreResult result{job_.sequence, makeResult(job_.idWord, core_), static_cast<uint32_t>(blocked_)};
+  CoreResult result{job_.ids, makeResult(job_.idWord, core_), static_cast<uint32_t>(blocked_)};
   statistics_.busyCycles += core_.cost();
   statistics_.blockedCycles += blocked_;
   if (core_.stackOverflow()) ++statistics_.stackOverflows;

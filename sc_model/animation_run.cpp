@@ -5,6 +5,7 @@
 
 #include "job_setup.h"
 #include "rtu_recurrence.h"
+#include "rtu_simulation.h"
 
 namespace rtu {
 
@@ -51,6 +52,7 @@ struct AnimationRenderer::Work {
   std::vector<SceneHit> pixels;
   std::vector<std::vector<IssuedJob>> issuedPerRow;
   std::vector<FrameStatistics> perThread;
+  std::vector<uint8_t> traced;  // per pixel: traced, not answered by the hit buffer
 };
 
 AnimationRenderer::AnimationRenderer(const SceneDescription& scene,
@@ -76,6 +78,7 @@ void AnimationRenderer::traceRows(Work& work, int firstRow, int rowStep) {
         ++statistics.raysSaved;
       } else {
         work.pixels[id] = manager.trace(ray, &work.issuedPerRow[static_cast<size_t>(y)]);
+        work.traced[id] = 1;
         count(statistics, work.pixels[id]);
       }
       statistics.hits += work.pixels[id].instance >= 0;
@@ -107,6 +110,23 @@ uint64_t AnimationRenderer::frameCycles(
   return runRecurrence(jobs, config).totalCycles;
 }
 
+uint64_t AnimationRenderer::simulateFrame(Work& work, const std::vector<uint32_t>& traced) const {
+  std::vector<RayRecord> rays;
+  for (uint32_t id : traced)
+    rays.push_back(makeRayRecord(id, work.camera.primaryRay(static_cast<int>(id % work.camera.width),
+                                                            static_cast<int>(id / work.camera.width)),
+                                 0));
+  RtuConfig config = *options_.rtu;
+  config.sceneManager.options = options_.manager;
+  const RtuRun run = simulateScene(memory_.memory(), rays, work.instances, config);
+  for (size_t i = 0; i < run.results.size(); ++i) {
+    SceneHit& pixel = work.pixels[traced[run.jobIndices[i]]];
+    pixel.result = run.results[i];
+    pixel.instance = run.instances[i];
+  }
+  return run.totalCycles;
+}
+
 SceneFrame AnimationRenderer::render(int frame) {
   const auto start = std::chrono::steady_clock::now();
   const double time = scene_.timeOf(frame);
@@ -120,6 +140,7 @@ SceneFrame AnimationRenderer::render(int frame) {
   work.instances = memory_.place(result.placements);
   work.pixels.resize(result.camera.pixelCount());
   work.issuedPerRow.resize(static_cast<size_t>(result.camera.height));
+  work.traced.resize(result.camera.pixelCount());
   const int threads = std::min(options_.threads, result.camera.height);
   work.perThread.resize(static_cast<size_t>(threads));
 
@@ -135,6 +156,14 @@ SceneFrame AnimationRenderer::render(int frame) {
 
   FrameStatistics& statistics = result.statistics;
   for (const FrameStatistics& part : work.perThread) add(statistics, part);
+  if (options_.rtu) {
+    std::vector<uint32_t> traced;
+    for (uint32_t pixel = 0; pixel < work.traced.size(); ++pixel)
+      if (work.traced[pixel]) traced.push_back(pixel);
+    statistics.cycles = traced.empty() ? 0 : simulateFrame(work, traced);
+  } else {
+    statistics.cycles = frameCycles(work.issuedPerRow);
+  }
   for (size_t pixel = 0; pixel < work.pixels.size(); ++pixel)
     hitBuffer_.store(pixel, work.pixels[pixel]);
   lastCamera_ = result.camera;
@@ -144,7 +173,6 @@ SceneFrame AnimationRenderer::render(int frame) {
   statistics.frame = frame;
   statistics.time = time;
   statistics.pixels = work.pixels.size();
-  statistics.cycles = frameCycles(work.issuedPerRow);
   result.pixels = std::move(work.pixels);
   statistics.hostSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

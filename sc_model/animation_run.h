@@ -6,12 +6,17 @@
 // recurrence (golden/rtu_recurrence.h: ideal memory, the job manager's latencies, the chosen
 // cores and cyclic first-available scheduling) in the order the scene manager issues them; the
 // scene manager's own sphere tests and the hit buffer's checks are not timed.
+//
+// On the cycle-accurate model (AnimationOptions::rtu) the rays the hit buffer does not answer
+// are also simulated through the SystemC scene manager (sc_model/rtu_simulation.h
+// simulateScene): its nearest hits make the picture and its simulated cycles the frame's.
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "hit_buffer.h"
+#include "rtu_config.h"
 #include "scene_file.h"
 #include "scene_memory.h"
 
@@ -24,6 +29,7 @@ struct AnimationOptions {
   int threads = 1;
   int cores = 16;
   double clockMhz = 100.0;
+  const RtuConfig* rtu = nullptr;  // set: the cycle-accurate model times and answers the frame
 };
 
 struct FrameStatistics {
@@ -38,7 +44,7 @@ struct FrameStatistics {
   uint64_t earlyTerminations = 0;  // rays ended with instances left untraced
   uint64_t skipped = 0;            // instances left untraced by those rays
   uint64_t traversalCycles = 0;    // sum of the traced jobs' golden costs
-  uint64_t cycles = 0;             // the frame's total on the RTU (recurrence)
+  uint64_t cycles = 0;             // the frame's total on the RTU (recurrence or simulated)
   double hostSeconds = 0.0;
 
   double jobsPerRay() const { return raysTraced ? static_cast<double>(jobs) / raysTraced : 0.0; }
@@ -65,6 +71,8 @@ class AnimationRenderer {
   struct Work;
   void traceRows(Work& work, int firstRow, int rowStep);
   uint64_t frameCycles(const std::vector<std::vector<IssuedJob>>& issuedPerRow) const;
+  // Simulates the rays `traced` on the cycle-accurate model; their pixels become its answers.
+  uint64_t simulateFrame(Work& work, const std::vector<uint32_t>& traced) const;
 
   const SceneDescription& scene_;
   AnimationOptions options_;

@@ -276,6 +276,15 @@ std::vector<Setting> makeSchema() {
   s.push_back(integer("reorder", "--reorder", "results", 0, 1 << 24, model,
                       "reorder buffer capacity: results in submission order (0: none)",
                       [](C& c) -> int& { return c.rtu.reorderCapacity; }));
+  s.push_back(integer("scene_manager.rays_in_flight", "--scene-rays-in-flight", "rays", 1, 1 << 16,
+                      model, "rays the scene manager holds at once (animate --model ca)",
+                      [](C& c) -> int& { return c.rtu.sceneManager.raysInFlight; }));
+  s.push_back(integer("scene_manager.jobs_outstanding", "--scene-jobs-outstanding", "jobs", 1,
+                      1 << 16, model, "jobs issued to the RTU and not yet returned, at most",
+                      [](C& c) -> int& { return c.rtu.sceneManager.jobsOutstanding; }));
+  s.push_back(integer("scene_manager.latency", "--scene-latency", "cycles", 0, kMaxLatencyCycles,
+                      model, "cycles from taking a ray to its first job (sphere tests, sort)",
+                      [](C& c) -> int& { return c.rtu.sceneManager.latency; }));
   s.push_back(integer("job_manager.stages", "--jm-stages", "cycles", 1, 64, model,
                       "job manager pipeline stages for t-value records (RTL: 6)",
                       [](C& c) -> int& { return c.rtu.jobManager.stages; }));

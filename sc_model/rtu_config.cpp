@@ -45,6 +45,7 @@ void validate(const RtuConfig& config) {
   if (!(config.clockMhz >= kMinClockMhz && config.clockMhz <= kMaxClockMhz))  // NaN fails too
     throw std::invalid_argument("clock must be 1 MHz to 1 THz (1 .. 1e6 MHz), got " +
                                 std::to_string(config.clockMhz) + " MHz");
+  config.sceneManager.validate();
   if (config.reorderCapacity < 0)
     throw std::invalid_argument("reorder buffer capacity must not be negative");
   config.jobManager.format.validate();

@@ -10,6 +10,7 @@
 #include "host_link.h"
 #include "job_manager.h"
 #include "memory_config.h"
+#include "scene_manager_module.h"
 #include "scheduler.h"
 #include "timeline_writer.h"
 
@@ -23,6 +24,7 @@ struct RtuConfig {
   int stackFrames = kRtlStackFrames;
   HostLinkConfig hostInput, hostOutput;
   int reorderCapacity = 0;  // 0: no reorder buffer
+  SceneManagerConfig sceneManager;  // used when the run traces a scene
   double clockMhz = 100.0;
   std::optional<TraceOptions> trace;
   TimelineOptions timeline;  // path empty: no timeline

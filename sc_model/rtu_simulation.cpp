@@ -89,7 +89,8 @@ std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config, std::vector<Trace
 
 RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
                 const RtuConfig& config, const RunProgress& progress,
-                std::vector<TraceListener*> listeners, const BlockRun& plan) {
+                std::vector<TraceListener*> listeners, const BlockRun& plan,
+                const std::vector<SceneInstance>* scene = nullptr) {
   validate(config);
   freshKernel();
   std::unique_ptr<TimelineWriter> timeline;
@@ -99,7 +100,8 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
     listeners.push_back(timeline.get());
   }
   std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));
-  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), plan.startCaches);
+  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), plan.startCaches,
+                                      scene);
   if (trace) trace->checkScopesMatched();
 
   RtuRun run;
@@ -125,8 +127,9 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   for (const auto& [cycle, result] : arrivals) {
     run.arrivalCycles.push_back(cycle);
     run.results.push_back(result.result);
-    run.jobIndices.push_back(result.sequence);
+    run.jobIndices.push_back(result.ids.ray);
     run.blockedCycles.push_back(result.blockedCycles);
+    run.instances.push_back(result.instance);
   }
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
@@ -151,6 +154,13 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& recor
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const BlockRun& block) {
   return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, {}, block);
+}
+
+RtuRun simulateScene(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+                     const std::vector<SceneInstance>& scene, const RtuConfig& config,
+                     const RunProgress& progress) {
+  return simulate(memory, std::vector<HostRecord>(rays.begin(), rays.end()), config, progress, {},
+                  BlockRun{}, &scene);
 }
 
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run) {

@@ -37,8 +37,9 @@ struct BlockRun {
 
 struct RtuRun {
   std::vector<TraversalResult> results;  // in the order the host received them
-  std::vector<uint64_t> jobIndices;      // the job each result answers
+  std::vector<uint64_t> jobIndices;      // the host record (ray) each result answers
   std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
+  std::vector<int> instances;            // a scene: the instance each result hit (-1: none)
   std::vector<uint32_t> blockedCycles;   // each result's cycles BLOCKED on memory (beside its cost)
   // From the first cycle after reset up to and including the cycle the last result is taken.
   uint64_t totalCycles = 0;
@@ -62,6 +63,12 @@ RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& job
 // A sampled block's run.
 RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const BlockRun& block);
+
+// A scene: each of `rays` (world space) is traced against `scene`'s instances by the scene
+// manager (modules/scene_manager_module.h); one merged result per ray.
+RtuRun simulateScene(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+                     const std::vector<SceneInstance>& scene, const RtuConfig& config,
+                     const RunProgress& progress = {});
 
 // Results ordered by job index, as the golden model returns them.
 std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run);

@@ -88,6 +88,18 @@ double RtuStatistics::frameMilliseconds() const {
 
 namespace {
 
+nlohmann::ordered_json sceneJson(const SceneManagerStatistics& scene) {
+  nlohmann::ordered_json perRay = nlohmann::ordered_json::object();
+  for (const auto& [jobs, rays] : scene.jobsPerRay) perRay[std::to_string(jobs)] = rays;
+  return {{"rays", scene.rays},
+          {"jobs", scene.jobs},
+          {"jobs_per_ray", scene.rays == 0 ? 0.0 : static_cast<double>(scene.jobs) / scene.rays},
+          {"jobs_per_ray_histogram", perRay},
+          {"instances_culled", scene.culled},
+          {"early_terminations", scene.earlyTerminations},
+          {"instances_skipped", scene.skipped}};
+}
+
 // Share of the run a host link spends moving records; an unlimited link moves one a cycle.
 double linkUtilisation(uint64_t records, uint64_t recordBytes, double bytesPerCycle,
                        uint64_t cycles) {
@@ -164,6 +176,7 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
                       {"host_seconds", hostSeconds},
                       {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
   if (reorderMaxOccupancy > 0) result["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
+  if (scene) result["scene_manager"] = sceneJson(*scene);
   if (!idealMemory) {
     result["memory"]["l1"] = cacheJson(allL1());
     result["memory"]["l2"] = cacheJson(l2.cache);
@@ -201,6 +214,10 @@ void RtuStatistics::writeReport(std::ostream& out) const {
         << l2.cache.accesses << "; DRAM " << l2.dram.bytes << " bytes ("
         << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
   }
+  if (scene)
+    out << "scene manager: " << ratio(scene->jobs, scene->rays) << " jobs per ray, "
+        << scene->culled << " instances culled, " << scene->earlyTerminations
+        << " early terminations (" << scene->skipped << " instances skipped)\n";
   if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
   if (const uint64_t wrapped = allCores().tOverflows)
     out << "t overflows: " << wrapped << " rays (t-values beyond the fixed-point range; flag 2)\n";
@@ -236,6 +253,7 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.maxWaitWithReadyCore = scheduler.maxWaitWithReadyCore;
   stats.resultBuffersMaxFull = top.resultManager().statistics().maxBuffered;
   if (top.reorderBuffer()) stats.reorderMaxOccupancy = top.reorderBuffer()->statistics().maxOccupancy;
+  if (top.sceneManager()) stats.scene = top.sceneManager()->statistics();
   stats.idealMemory = top.memory().combinational();
   if (!stats.idealMemory) {
     for (int i = 0; i < config.cores; ++i) stats.l1.push_back(top.memory().l1Statistics(i));

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ struct RtuStatistics {
   uint64_t maxWait = 0, maxWaitWithReadyCore = 0;
   uint64_t resultBuffersMaxFull = 0;
   uint64_t reorderMaxOccupancy = 0;
+  std::optional<SceneManagerStatistics> scene;  // a run through the scene manager
   bool idealMemory = true;
   std::vector<CacheStats> l1;
   L2Stats l2;

@@ -19,7 +19,7 @@ std::unique_ptr<TransferChannel<Payload>> channel(const std::string& name, const
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
                const std::vector<HostRecord>& records, CycleTrace* trace,
-               const CacheContents* caches)
+               const CacheContents* caches, const std::vector<SceneInstance>* scene)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {
   validate(config);
   const std::string top = this->name();
@@ -37,7 +37,17 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
                                            trace, caches);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
-  hostJobs_->connect(*source_, 0, *jobManager_, 0);
+  if (scene) {
+    sceneRays_ = channel<HostJob>("scene_rays", clock_, trace, top + ".scene_manager.in");
+    rayResults_ = channel<CoreResult>("ray_results", clock_, trace, top + ".scene_manager.out");
+    sceneManager_ = std::make_unique<SceneManagerModule>("scene_manager", clock_, pump_, *scene,
+                                                         config.sceneManager,
+                                                         config.jobManager.format);
+    sceneRays_->connect(*source_, 0, *sceneManager_, 0);
+    hostJobs_->connect(*sceneManager_, 1, *jobManager_, 0);
+  } else {
+    hostJobs_->connect(*source_, 0, *jobManager_, 0);
+  }
   pendingJobs_->connect(*jobManager_, 0, *scheduler_, 0);
 
   std::vector<Channel<CoreJob>*> jobsToCores;
@@ -63,13 +73,22 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
     orderedResults_ = channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
     reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, clock_, config.reorderCapacity);
     managedResults_->connect(*resultManager_, -1, *reorderBuffer_, 0);
-    orderedResults_->connect(*reorderBuffer_, 1, *sink_, 0);
     toHost = orderedResults_.get();
-  } else {
-    managedResults_->connect(*resultManager_, -1, *sink_, 0);
+  }
+  // The RTU's results go to the host, or through the scene manager, which merges them per ray.
+  Agent& resultsConsumer = sceneManager_ ? static_cast<Agent&>(*sceneManager_) : *sink_;
+  const int resultsPort = sceneManager_ ? 2 : 0;
+  if (reorderBuffer_)
+    orderedResults_->connect(*reorderBuffer_, 1, resultsConsumer, resultsPort);
+  else
+    managedResults_->connect(*resultManager_, -1, resultsConsumer, resultsPort);
+  if (sceneManager_) {
+    rayResults_->connect(*sceneManager_, 3, *sink_, 0);
+    sceneManager_->bind(*sceneRays_, *hostJobs_, *toHost, *rayResults_);
+    toHost = rayResults_.get();
   }
 
-  source_->bind(*hostJobs_);
+  source_->bind(sceneManager_ ? *sceneRays_ : *hostJobs_);
   jobManager_->bind(*hostJobs_, *pendingJobs_);
   scheduler_->bind(*pendingJobs_, jobsToCores);
   for (size_t i = 0; i < coreCount; ++i) cores_[i]->bind(*coreJobs_[i], *coreResults_[i]);

@@ -1,7 +1,10 @@
 #pragma once
 // The RTU of thesis figure 6.1 (appendix C.1) with its host: source -> job manager -> scheduler ->
 // N traversal cores (reading the memory system) -> result manager [-> reorder buffer] -> sink,
-// every arrow a transfer channel (modules/transfer_channel.h), every module deciding through one
+// every arrow a transfer channel. A scene puts the scene manager between the host and the RTU:
+// source -> scene manager -> job manager, result manager [-> reorder buffer] -> scene manager ->
+// sink; it issues jobs per instance and hands the host one merged result per ray. Every arrow is a
+// transfer channel (modules/transfer_channel.h), every module deciding through one
 // decision pump (modules/decision_pump.h).
 
 #include <memory>
@@ -18,6 +21,7 @@
 #include "memory_system.h"
 #include "reorder_buffer.h"
 #include "result_manager.h"
+#include "scene_manager_module.h"
 #include "rtu_config.h"
 #include "scheduler.h"
 #include "svo_traversal_core.h"
@@ -28,10 +32,11 @@ namespace rtu {
 class RtuTop : public sc_core::sc_module {
  public:
   // `memory`, `records` and the trace must outlive the top; `trace` may be null.
-  // `caches`: lines resident from cycle 0 (sampled simulation), or null.
+  // `caches`: lines resident from cycle 0 (sampled simulation), or null. `scene`: the instances
+  // the host's ray records are traced against, or null for records each traced once.
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
          const std::vector<HostRecord>& records, CycleTrace* trace,
-         const CacheContents* caches = nullptr);
+         const CacheContents* caches = nullptr, const std::vector<SceneInstance>* scene = nullptr);
 
   // How far ahead of simulated time the host source offers records.
   static constexpr uint64_t kLookAheadCycles = 4096;
@@ -44,6 +49,7 @@ class RtuTop : public sc_core::sc_module {
   const std::vector<std::unique_ptr<SvoTraversalCore>>& cores() const { return cores_; }
   const ResultManager& resultManager() const { return *resultManager_; }
   const ReorderBuffer* reorderBuffer() const { return reorderBuffer_.get(); }
+  const SceneManagerModule* sceneManager() const { return sceneManager_.get(); }
 
  private:
   template <class Payload>
@@ -56,6 +62,8 @@ class RtuTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<Channel<CoreJob>>> coreJobs_;
   std::vector<std::unique_ptr<Channel<CoreResult>>> coreResults_;
   std::unique_ptr<Channel<CoreResult>> managedResults_, orderedResults_;
+  std::unique_ptr<Channel<HostJob>> sceneRays_;
+  std::unique_ptr<Channel<CoreResult>> rayResults_;
 
   std::unique_ptr<HostSource> source_;
   std::unique_ptr<JobManager> jobManager_;
@@ -64,6 +72,7 @@ class RtuTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<SvoTraversalCore>> cores_;
   std::unique_ptr<ResultManager> resultManager_;
   std::unique_ptr<ReorderBuffer> reorderBuffer_;
+  std::unique_ptr<SceneManagerModule> sceneManager_;
   std::unique_ptr<HostSink> sink_;
 };
 

@@ -224,10 +224,13 @@ SceneDescription twoBallScene(bool moveCamera, bool moveBall) {
   return scene;
 }
 
-std::vector<SceneFrame> renderAll(const SceneDescription& scene, bool hitBuffer) {
+// `rtu`: on the cycle-accurate model.
+std::vector<SceneFrame> renderAll(const SceneDescription& scene, bool hitBuffer,
+                                  const RtuConfig* rtu = nullptr) {
   const std::vector<SceneModel> models = {ballModel(5)};
   AnimationOptions options;
   options.hitBuffer = hitBuffer;
+  options.rtu = rtu;
   options.threads = 3;
   AnimationRenderer renderer(scene, models, options);
   std::vector<SceneFrame> frames;
@@ -269,6 +272,26 @@ TEST_CASE("With a still camera and one model moving, the hit buffer saves the ra
     const FrameStatistics& statistics = buffered[frame].statistics;
     CHECK(statistics.raysSaved > statistics.pixels / 2);
     CHECK(statistics.raysSaved < statistics.pixels);
+  }
+}
+
+TEST_CASE("Frames on the cycle-accurate model equal the golden frames pixel for pixel") {
+  SceneDescription scene = twoBallScene(true, true);
+  scene.frames = 3;
+  RtuConfig oneCore;
+  oneCore.cores = 1;
+  RtuConfig fourCores;
+  fourCores.cores = 4;
+  const std::vector<SceneFrame> golden = renderAll(scene, true);
+  const std::vector<SceneFrame> slow = renderAll(scene, true, &oneCore);
+  const std::vector<SceneFrame> fast = renderAll(scene, true, &fourCores);
+  requireSamePictures(slow, golden);
+  requireSamePictures(fast, golden);
+  for (size_t frame = 0; frame < golden.size(); ++frame) {
+    CHECK(fast[frame].statistics.jobs == golden[frame].statistics.jobs);
+    // One core traverses every job in turn: at least the sum of the jobs' costs.
+    CHECK(slow[frame].statistics.cycles >= golden[frame].statistics.traversalCycles);
+    CHECK(fast[frame].statistics.cycles * 2 < slow[frame].statistics.cycles);
   }
 }
 
