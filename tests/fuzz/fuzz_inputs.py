@@ -36,6 +36,33 @@ INTERESTING_WORDS = [0, 1, 0xFFFFFFFF, 0x80000000, 0x7FFFFFFF, 0xFFFF, 0x10000, 
                      0xFF800000, 0x7FC00000]
 
 
+# A small animated scene (docs/scenes.md): two instances of a procedural ball, one moving.
+SCENE = b"""width = 8
+height = 6
+frames = 2
+frame_rate = 4
+
+[models.ball]
+procedural = "sphere"
+depth = 3
+
+[[instances]]
+model = "ball"
+colour = [0.8, 0.3, 0.2]
+keys = [{ time = 0, translation = [-0.6, 0, 0], scale = 0.5 }]
+
+[[instances]]
+model = "ball"
+keys = [
+  { time = 0, translation = [0.6, 0, 1], rotation_deg = [0, 30, 0] },
+  { time = 1, translation = [0.6, 0.5, 0], scale = [1, 0.5, 1] },
+]
+
+[camera]
+keys = [{ time = 0, position = [0, 0.5, -4], look_at = [0, 0, 0] }]
+"""
+
+
 class Format:
     """A file format: its extension, whether it is text, and the rtusim commands that read it
     ({file} is the input, {dir} the scratch directory with the seed files of other formats).
@@ -92,6 +119,13 @@ FORMATS = {f.name: f for f in [
         ["config", "--dump", "--config", "{file}"],
         ["golden", "--config", "{file}", "--svo", "{dir}/seed.svo", "--jobs", "{dir}/seed.jobs",
          "--out", "{dir}/out.bin"],
+    ]),
+    Format("scene", "toml", True, [
+        ["animate", "--scene-file", "{file}", "--frames", "1", "--width", "8", "--height", "6",
+         "--out-dir", "{dir}/animation", "--cache-dir", "{dir}/models", "--threads", "1"],
+        ["animate", "--scene-file", "{file}", "--frames", "1", "--width", "8", "--height", "6",
+         "--out-dir", "{dir}/animation", "--cache-dir", "{dir}/models", "--model", "ca",
+         "--cores", "2"],
     ]),
     Format("sweep", "toml", True, [
         ["sweep", "--sweep-file", "{file}", "--out", "{dir}/out", "--slurm", "--dry-run",
@@ -201,6 +235,7 @@ def write_seeds(runner):
         "toml": [runner.output(["config", "--dump", "--preset", "cached"]).encode()],
         "json": [CONFIG_JSON],
         "sweep": [SWEEP],
+        "scene": [SCENE],
     }
     return seeds
 
