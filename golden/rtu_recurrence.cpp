@@ -1,5 +1,7 @@
 #include "rtu_recurrence.h"
 
+#include "scheduler_choice.h"
+
 #include <algorithm>
 #include <limits>
 #include <optional>
@@ -116,7 +118,8 @@ class Recurrence {
         idleFrom_(cores_, 0),
         waiting_(cores_, kNoJob),
         buffered_(cores_, kNoJob),
-        lastDrain_(cores_, kUnknown) {
+        lastDrain_(cores_, kUnknown),
+        choice_(config.policy, config.cores) {
     const size_t n = jobs.size();
     run_.acceptCycles.resize(n);
     run_.pendingCycles.resize(n);
@@ -154,44 +157,33 @@ class Recurrence {
     run_.pendingCycles[i] = pending;
   }
 
+  // What the recurrence knows of the cores, as the policy's query (scheduler_choice.h): every
+  // drain before a cycle decides which cores are idle by then; a busy core's idle cycle is known
+  // once its result drained.
+  struct CoreQuery {
+    Recurrence& r;
+    Idle in(int core, uint64_t cycle) {
+      r.drainBefore(cycle);
+      return r.idleFrom_[static_cast<size_t>(core)] <= cycle ? Idle::Yes : Idle::No;
+    }
+    uint64_t from(int core) {
+      while (r.idleFrom_[static_cast<size_t>(core)] == kUnknown) r.drainNext();
+      return r.idleFrom_[static_cast<size_t>(core)];
+    }
+  };
+
   // D_i and the core, then the core's handover if its result buffer is free.
   void dispatch(size_t i) {
     uint64_t cycle = run_.pendingCycles[i];
-    int core = -1;
-    switch (config_.policy) {
-      case SchedulerPolicy::CyclicFirstAvailable:
-        for (;; ++cycle) {
-          drainBefore(cycle);
-          core = static_cast<int>(cycle % cores_);
-          if (idleFrom_[static_cast<size_t>(core)] <= cycle) break;
-        }
-        break;
-      case SchedulerPolicy::FirstAvailable:
-        for (;; ++cycle) {
-          drainBefore(cycle);
-          core = lowestIdle(cycle);
-          if (core >= 0) break;
-        }
-        break;
-      case SchedulerPolicy::RoundRobin:
-        core = nextInTurn_;
-        while (idleFrom_[static_cast<size_t>(core)] == kUnknown) drainNext();
-        cycle = std::max(cycle, idleFrom_[static_cast<size_t>(core)]);
-        nextInTurn_ = (core + 1) % config_.cores;
-        break;
-    }
+    CoreQuery query{*this};
+    const int core = choice_.choose(query, cycle);
+    choice_.dispatched(core);
     run_.dispatchCycles[i] = cycle;
     run_.cores[i] = core;
     const size_t c = static_cast<size_t>(core);
     waiting_[c] = i;
     idleFrom_[c] = kUnknown;
     if (buffered_[c] == kNoJob) handOver(core);
-  }
-
-  int lowestIdle(uint64_t cycle) const {
-    for (size_t core = 0; core < cores_; ++core)
-      if (idleFrom_[core] <= cycle) return static_cast<int>(core);
-    return -1;
   }
 
   // The waiting result of `core` moves into its (free) buffer.
@@ -236,7 +228,7 @@ class Recurrence {
   std::vector<uint64_t> lastDrain_;
   uint64_t fetchUntil_ = 0;
   size_t inPipeline_ = 0;  // the oldest job not yet dispatched when the current one entered
-  int nextInTurn_ = 0;
+  SchedulerChoice choice_;
   RecurrenceRun run_;
 };
 

@@ -4,7 +4,8 @@
 
 namespace rtu {
 
-Scheduler::Scheduler(DecisionPump& pump, SchedulerPolicy policy) : Agent(pump), policy_(policy) {}
+Scheduler::Scheduler(DecisionPump& pump, SchedulerPolicy policy, int cores)
+    : Agent(pump), choice_(policy, cores) {}
 
 void Scheduler::bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores) {
   in_ = &in;
@@ -15,8 +16,9 @@ void Scheduler::decide() {
   if (!in_->offering()) return;
   const uint64_t pending = in_->offerCycle();
   uint64_t cycle = std::max(pending, searchedFrom_);
-  const int core = choose(cycle);
-  if (core == kWait) {
+  CoreQuery query{*this};
+  const int core = choice_.choose(query, cycle);
+  if (core == SchedulerChoice::kWait) {
     searchedFrom_ = cycle;  // the cycles before are settled: no dispatch there
     return;
   }
@@ -51,57 +53,19 @@ SchedulerStatistics Scheduler::statistics() const {
   return all;
 }
 
-Scheduler::Idle Scheduler::idleIn(int core, uint64_t cycle) const {
+Idle Scheduler::idleIn(int core, uint64_t cycle) const {
   const TransferChannel<CoreJob>& channel = *cores_[static_cast<size_t>(core)];
   if (channel.readyCycle() <= cycle) return Idle::Yes;
   if (channel.readyBound() > cycle) return Idle::No;
   return Idle::Unknown;
 }
 
-int Scheduler::choose(uint64_t& cycle) {
-  switch (policy_) {
-    case SchedulerPolicy::CyclicFirstAvailable: return cyclicFirstAvailable(cycle);
-    case SchedulerPolicy::FirstAvailable: return firstAvailable(cycle);
-    case SchedulerPolicy::RoundRobin: return roundRobin(cycle);
-  }
-  return kWait;
+uint64_t Scheduler::CoreQuery::from(int core) const {
+  const uint64_t ready = scheduler.cores_[static_cast<size_t>(core)]->readyCycle();
+  return ready == kNeverCycle ? kIdleUnknown : ready;
 }
 
-// Core t mod N in cycle t, if it is idle then.
-int Scheduler::cyclicFirstAvailable(uint64_t& cycle) const {
-  const uint64_t n = cores_.size();
-  for (;; ++cycle) {
-    const int core = static_cast<int>(cycle % n);
-    switch (idleIn(core, cycle)) {
-      case Idle::Yes: return core;
-      case Idle::Unknown: return kWait;
-      case Idle::No: break;
-    }
-  }
-}
-
-// The lowest idle core, in the first cycle with one.
-int Scheduler::firstAvailable(uint64_t& cycle) const {
-  for (;; ++cycle) {
-    bool unknown = false;
-    for (size_t core = 0; core < cores_.size(); ++core) {
-      const Idle idle = idleIn(static_cast<int>(core), cycle);
-      if (idle == Idle::Unknown) unknown = true;
-      if (idle == Idle::Yes) return unknown ? kWait : static_cast<int>(core);
-    }
-    if (unknown) return kWait;
-  }
-}
-
-// The next core in turn, once it is idle.
-int Scheduler::roundRobin(uint64_t& cycle) const {
-  const TransferChannel<CoreJob>& channel = *cores_[static_cast<size_t>(nextInLine_)];
-  if (channel.readyCycle() == kNeverCycle) return kWait;
-  cycle = std::max(cycle, channel.readyCycle());
-  return nextInLine_;
-}
-
-Scheduler::Idle Scheduler::someCoreIdleIn(uint64_t cycle) const {
+Idle Scheduler::someCoreIdleIn(uint64_t cycle) const {
   bool unknown = false;
   for (size_t core = 0; core < cores_.size(); ++core) {
     const Idle idle = idleIn(static_cast<int>(core), cycle);
@@ -116,7 +80,7 @@ void Scheduler::dispatch(int core, uint64_t cycle) {
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
   searchedFrom_ = cycle + 1;
-  if (policy_ == SchedulerPolicy::RoundRobin) nextInLine_ = (core + 1) % static_cast<int>(cores_.size());
+  choice_.dispatched(core);
 }
 
 }  // namespace rtu

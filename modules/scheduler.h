@@ -13,7 +13,7 @@
 
 #include "decision_pump.h"
 #include "rtu_payloads.h"
-#include "scheduling_policy.h"
+#include "scheduler_choice.h"
 #include "transfer_channel.h"
 
 namespace rtu {
@@ -28,7 +28,7 @@ struct SchedulerStatistics {
 
 class Scheduler : public Agent {
  public:
-  Scheduler(DecisionPump& pump, SchedulerPolicy policy);
+  Scheduler(DecisionPump& pump, SchedulerPolicy policy, int cores);
 
   void bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores);
   void decide() override;
@@ -36,26 +36,23 @@ class Scheduler : public Agent {
   SchedulerStatistics statistics() const;
 
  private:
-  static constexpr int kWait = -1;  // the policy needs a core to declare more first
-  enum class Idle { Yes, No, Unknown };
+  // What the cores' channels have declared, as the policy's query (scheduler_choice.h).
+  struct CoreQuery {
+    const Scheduler& scheduler;
+    Idle in(int core, uint64_t cycle) const { return scheduler.idleIn(core, cycle); }
+    uint64_t from(int core) const;
+  };
 
   Idle idleIn(int core, uint64_t cycle) const;
-  // The core the pending job goes to, searching from `cycle` on (left at the dispatch cycle, or
-  // at the first cycle the policy cannot decide yet), or kWait.
-  int choose(uint64_t& cycle);
-  int cyclicFirstAvailable(uint64_t& cycle) const;
-  int firstAvailable(uint64_t& cycle) const;
-  int roundRobin(uint64_t& cycle) const;
   // Whether some core was ready when the job became pending (eq. 6.7), or Unknown.
   Idle someCoreIdleIn(uint64_t cycle) const;
   void dispatch(int core, uint64_t cycle);
   void countWait(uint64_t wait);
 
-  SchedulerPolicy policy_;
+  SchedulerChoice choice_;
   TransferChannel<CoreJob>* in_ = nullptr;
   std::vector<TransferChannel<CoreJob>*> cores_;
   uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
-  int nextInLine_ = 0;         // round-robin
   SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
   std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job
 };

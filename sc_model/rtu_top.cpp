@@ -33,7 +33,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   source_ = std::make_unique<HostSource>("host_source", clock_, pump_, records,
                                          config.hostInput, kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
-  scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler);
+  scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler, config.cores);
   memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
                                            trace, caches);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
