@@ -22,6 +22,13 @@ namespace rtu {
 enum class Idle { Yes, No, Unknown };
 constexpr uint64_t kIdleUnknown = std::numeric_limits<uint64_t>::max();
 
+// The first cycle from `cycle` on in which a select counter that advances every cycle over
+// `cores` cores from 0 at reset (the RTL's, in the scheduler and the result manager) selects `core`.
+inline uint64_t selectCounterReaches(int core, int cores, uint64_t cycle) {
+  const uint64_t n = static_cast<uint64_t>(cores);
+  return cycle + (static_cast<uint64_t>(core) + n - cycle % n) % n;
+}
+
 class SchedulerChoice {
  public:
   static constexpr int kWait = -1;  // the policy needs a core to declare more first
@@ -38,6 +45,14 @@ class SchedulerChoice {
       case SchedulerPolicy::RoundRobin: return roundRobin(query, cycle);
     }
     return kWait;
+  }
+
+  // The first cycle from `cycle` on in which the policy gives the job to `core` when that core is
+  // the only idle one (the loosely-timed dispatcher's view): cfa waits for the select counter,
+  // fa and rr take it at once. Cost independent of the core count.
+  uint64_t firstCycleFor(int core, uint64_t cycle) const {
+    if (policy_ != SchedulerPolicy::CyclicFirstAvailable) return cycle;
+    return selectCounterReaches(core, cores_, cycle);
   }
 
   // The job went to `core`: round-robin's turn moves on.

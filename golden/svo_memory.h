@@ -16,6 +16,8 @@ class SvoMemory {
 
   uint32_t read(uint32_t address) const { return address < size_ ? words_[address] : 0; }
   size_t size() const { return size_; }
+  // The words themselves, for a component that grants direct access (the LT model's ROM).
+  const uint32_t* data() const { return words_; }
 
  private:
   const uint32_t* words_ = nullptr;

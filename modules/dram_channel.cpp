@@ -1,6 +1,5 @@
 #include "dram_channel.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace rtu {
@@ -10,13 +9,12 @@ uint64_t DramChannel::transferCycles(uint32_t bytes) const {
 }
 
 uint64_t DramChannel::read(uint32_t bytes, uint64_t issueCycle) {
-  const uint64_t start = std::max(issueCycle + config_.latency, busFree_);
   const uint64_t transfer = transferCycles(bytes);
-  busFree_ = start + transfer;
+  const uint64_t start = bus_.book(issueCycle + config_.latency, transfer);
   ++stats_.reads;
   stats_.bytes += bytes;
   stats_.busyCycles += transfer;
-  return busFree_;
+  return start + transfer;
 }
 
 }  // namespace rtu

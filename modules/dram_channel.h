@@ -3,11 +3,14 @@
 // latencies), in front of one data bus that transfers whole requests one after another in the
 // order they are issued. A read issued at cycle I of B bytes:
 //   start = max(I + latency, busFree),  end = start + ceil(B / bytesPerCycle),  busFree = end,
-// and its data is complete at `end`. Addresses play no part (no banks or rows).
+// and its data is complete at `end`. Addresses play no part (no banks or rows). With
+// RequestOrder::Any (the loosely-timed model) reads may be issued out of cycle order: each takes
+// the first gap on the bus from issue + latency on (resource_booking.h).
 
 #include <cstdint>
 
 #include "memory_config.h"
+#include "resource_booking.h"
 
 namespace rtu {
 
@@ -20,17 +23,20 @@ struct DramStats {
 class DramChannel {
  public:
   // `config` must have passed validate().
-  explicit DramChannel(const DramConfig& config) : config_(config) {}
+  explicit DramChannel(const DramConfig& config, RequestOrder order = RequestOrder::Cycle)
+      : config_(config), bus_(order) {}
 
   // Returns the cycle the last byte of the read has arrived.
   uint64_t read(uint32_t bytes, uint64_t issueCycle);
 
   uint64_t transferCycles(uint32_t bytes) const;
+  // No later read is issued before `cycle` (RequestOrder::Any keeps bookings until then).
+  void forgetBefore(uint64_t cycle) { bus_.forgetBefore(cycle); }
   const DramStats& stats() const { return stats_; }
 
  private:
   DramConfig config_;
-  uint64_t busFree_ = 0;
+  ResourceBooking bus_;
   DramStats stats_;
 };
 

@@ -79,20 +79,20 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   for (const Window& stall : stalls_)
     if (stall.from > cycle) outputCycle += stall.to - stall.from;
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
-  pipeline_.push_back(InFlight{convert(host.ids, set.job), outputCycle});
+  pipeline_.push_back(InFlight{coreJobOf(host.ids, set.job, config_), outputCycle});
   traceReadyAt(cycle + 1);
   if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);
   // The new job may be the one at the output now.
   if (pipeline_.size() == 1) decide();
 }
 
-CoreJob JobManager::convert(PayloadIds ids, const TraversalJob& host) const {
+CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config) {
   CoreJob job;
   job.ids = ids;
   job.idWord = host.idWord();
   job.a = host.a;
-  job.t0 = convertToFixed(host.t0Bits, config_.format, config_.conversion);
-  job.t1 = convertToFixed(host.t1Bits, config_.format, config_.conversion);
+  job.t0 = convertToFixed(host.t0Bits, config.format, config.conversion);
+  job.t1 = convertToFixed(host.t1Bits, config.format, config.conversion);
   job.root = host.root;
   return job;
 }

@@ -55,7 +55,6 @@ class JobManager : public Agent {
   void acceptOffered();
   uint64_t acceptanceCycle(uint64_t offered) const;
   void accept(const HostJob& host, uint64_t cycle);
-  CoreJob convert(PayloadIds ids, const TraversalJob& job) const;
   // The trace of in_ready, recomputed at the cycles where it may change.
   bool readyIn(uint64_t cycle) const;
   void traceReadyAt(uint64_t cycle);
@@ -75,5 +74,9 @@ class JobManager : public Agent {
   std::vector<uint64_t> readyPoints_;  // traced cycles whose level a later window may change
   JobManagerStatistics statistics_;
 };
+
+// The job the core receives: the host job's float32 t-values converted to fixed point (appendix
+// C.2.1), as the pipeline's last stage converts them.
+CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config);
 
 }  // namespace rtu

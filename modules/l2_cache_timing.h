@@ -1,8 +1,13 @@
 #pragma once
 // Timing of the shared L2 cache and the DRAM behind it. The cores run ahead of global time, so
 // the model answers "a read of this line requested at cycle R: at which cycle is its data at the
-// L2's output?". Requests must come in non-decreasing R (the caller orders the cores' requests
-// by cycle); an earlier one throws std::logic_error.
+// L2's output?". With RequestOrder::Cycle (the cycle-accurate model) requests must come in
+// non-decreasing R (the caller orders the cores' requests by cycle); an earlier one throws
+// std::logic_error. With RequestOrder::Any (the loosely-timed model, whose cores run ahead of
+// each other within a quantum) they may come in any order, as a documented approximation: the
+// port and the DRAM bus give a request the first free gap from its cycle on (resource_booking.h),
+// an MSHR counts as busy at T when its release is after T (whenever it was issued), and the tag
+// store sees the requests in the order they come. In cycle order both give the same answers.
 //
 // The model, with h = hitLatency:
 //   Port     one request accepted per cycle: accept = max(R, portFree); portFree = accept + 1.
@@ -17,15 +22,17 @@
 //            the MSHR is released at F (free for a miss issuing at F), the line is allocated
 //            at once with fill cycle F, ready = F.
 // A line being allocated at the miss means later requests for it merge instead of missing again.
+// The DRAM may instead be another component's (the loosely-timed model's DRAM target): a
+// DramRead given to the constructor then transfers the lines.
 
 #include <cstdint>
 #include <functional>
-#include <queue>
 #include <vector>
 
 #include "cache_array.h"
 #include "dram_channel.h"
 #include "memory_config.h"
+#include "resource_booking.h"
 
 namespace rtu {
 
@@ -38,11 +45,18 @@ struct L2Stats {
 
 class L2CacheTiming {
  public:
-  // Validates both configurations (std::invalid_argument).
-  L2CacheTiming(const CacheConfig& cache, const DramConfig& dram);
+  // The cycle the last byte of a line read issued at `issueCycle` has arrived.
+  using DramRead = std::function<uint64_t(uint32_t bytes, uint64_t issueCycle)>;
+
+  // Validates both configurations (std::invalid_argument). Without `dram`, its own DramChannel.
+  L2CacheTiming(const CacheConfig& cache, const DramConfig& dram,
+                RequestOrder order = RequestOrder::Cycle, DramRead external = nullptr);
 
   // The cycle the data of the line holding `byteAddress` is at the L2's output.
   uint64_t read(uint64_t byteAddress, uint64_t requestCycle);
+
+  // RequestOrder::Any: no later request comes for a cycle before `cycle`.
+  void forgetBefore(uint64_t cycle);
 
   L2Stats stats() const;
   const CacheArray& array() const { return array_; }
@@ -53,13 +67,17 @@ class L2CacheTiming {
   uint64_t acceptRequest(uint64_t requestCycle);
   uint64_t fetchLine(uint64_t tagCheckDone);
   uint64_t claimMshr(uint64_t cycle);
+  void forgetMshrsBefore(uint64_t cycle);
 
   CacheArray array_;
   DramChannel dram_;
+  DramRead externalDram_;
+  RequestOrder order_;
   uint64_t lastRequestCycle_ = 0;
-  uint64_t portFree_ = 0;
-  // Release cycles of the busy MSHRs, earliest on top.
-  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> mshrReleases_;
+  ResourceBooking port_;
+  // Release cycles of the MSHRs that may still be busy for a later request (at most
+  // maxOutstandingMisses of them in cycle order).
+  std::vector<uint64_t> mshrReleases_;
   uint64_t portQueueCycles_ = 0;
   uint64_t mshrQueueCycles_ = 0;
 };

@@ -26,6 +26,7 @@ struct RtuConfig {
   int reorderCapacity = 0;  // 0: no reorder buffer
   SceneManagerConfig sceneManager;  // used when the run traces a scene
   double clockMhz = 100.0;
+  uint64_t ltQuantum = 1000;  // loosely-timed model: global quantum in cycles (lt.quantum)
   std::optional<TraceOptions> trace;
   TimelineOptions timeline;  // path empty: no timeline
 

@@ -7,16 +7,10 @@
 #include <systemc>
 
 #include "rtu_top.h"
+#include "sc_kernel.h"
 
 namespace rtu {
 namespace {
-
-// SystemC cannot elaborate again once a simulation has started, so each run gets its own kernel.
-// The previous kernel is left allocated: deleting it is not supported by SystemC 2.3.
-void freshKernel() {
-  sc_core::sc_curr_simcontext = new sc_core::sc_simcontext();
-  sc_core::sc_default_global_context = sc_core::sc_curr_simcontext;
-}
 
 // Simulates until no event is left. With a progress callback it stops every 2^18 cycles to report;
 // with a trace every TraceOptions::flushCycles to write the cycles that are final, which bounds

@@ -1,0 +1,108 @@
+// Loosely-timed model (issue 10 §2) against the cycle-accurate model and the golden model:
+// 1280x720 primary rays of the default camera on depth-8 procedural scenes, 16 cores, cfa, with
+// the `cached` preset's memory and with ideal memory. Per scene and quantum: host seconds, rays
+// per host second as a share of the golden model's, total cycles and their error against the
+// cycle-accurate model, L1/L2 hit rates. Targets (issue 10): LT at least a quarter of golden's
+// rays per host second; total cycles within 5 % (cached) and 2 % (ideal). Not a test: run it and
+// record the figures in docs/fidelity.md.
+//   build/bench/lt_bench [--quanta 100,1000,10000] [scene ...]
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_frame.h"
+#include "configuration.h"
+#include "golden_model.h"
+#include "lt_simulation.h"
+#include "rtu_simulation.h"
+
+using namespace rtu;
+
+namespace {
+
+double secondsOf(const std::chrono::steady_clock::time_point& start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<uint64_t> parseQuanta(const std::string& list) {
+  std::vector<uint64_t> quanta;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) quanta.push_back(std::stoull(item));
+  return quanta;
+}
+
+struct Memory {
+  const char* name;
+  RtuConfig config;
+  double bound;  // the issue's total-cycle error bound
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<uint64_t> quanta{100, 1000, 10000};
+  std::vector<std::string> names;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--quanta" && i + 1 < argc)
+      quanta = parseQuanta(argv[++i]);
+    else
+      names.push_back(arg);
+  }
+  if (names.empty()) names = proceduralSceneNames();
+  Configuration preset;
+  preset.applyPreset("cached");
+  const RtuConfig cached = preset.values().rtu;
+  RtuConfig ideal = cached;
+  ideal.memory = RtuConfig::idealMemory();
+  const std::vector<Memory> memories{{"cached", cached, 0.05}, {"ideal", ideal, 0.02}};
+
+  std::printf("LT against cycle-accurate, 1280x720, depth-8 scenes, 16 cores, cfa, cached preset\n");
+  std::printf("%-8s %-6s %-9s %8s %9s %9s %14s %9s %7s %7s %s\n", "scene", "memory", "model",
+              "seconds", "Mrays/s", "x golden", "total cycles", "error", "L1 hit", "L2 hit",
+              "targets");
+  bool allMet = true;
+  for (const std::string& name : names) {
+    const BenchFrame frame = benchFrame(name);
+    const SvoMemory memory = frame.build.image.memory();
+    auto start = std::chrono::steady_clock::now();
+    GoldenModel(memory, cached.golden()).traceAll(frame.jobs);
+    const double goldenRate = static_cast<double>(frame.jobs.size()) / secondsOf(start);
+    for (const Memory& mem : memories) {
+      const RtuRun ca = simulateRtu(memory, frame.jobs, mem.config);
+      const auto row = [&](const char* model, const RtuRun& run, const std::string& targets) {
+        const RtuStatistics& s = run.statistics;
+        const double error =
+            static_cast<double>(run.totalCycles) / static_cast<double>(ca.totalCycles) - 1;
+        std::printf("%-8s %-6s %-9s %8.3f %9.2f %9.2f %14llu %+8.2f%% %7.4f %7.4f %s\n",
+                    name.c_str(), mem.name, model, s.hostSeconds,
+                    s.simulatedRaysPerHostSecond() / 1e6,
+                    s.simulatedRaysPerHostSecond() / goldenRate,
+                    static_cast<unsigned long long>(run.totalCycles), 100 * error,
+                    hitRate(s.allL1()), hitRate(s.l2.cache), targets.c_str());
+      };
+      row("ca", ca, "");
+      for (uint64_t quantum : quanta) {
+        RtuConfig config = mem.config;
+        config.ltQuantum = quantum;
+        const RtuRun lt = runLooselyTimed(memory, frame.jobs, config);
+        const double error =
+            std::abs(static_cast<double>(lt.totalCycles) / static_cast<double>(ca.totalCycles) - 1);
+        const bool fast = lt.statistics.simulatedRaysPerHostSecond() >= goldenRate / 4;
+        const bool close = error <= mem.bound;
+        allMet &= fast && close;
+        const std::string label = "lt q" + std::to_string(quantum);
+        row(label.c_str(), lt,
+            std::string(fast ? "speed met" : "speed MISSED") + ", " +
+                (close ? "error met" : "error MISSED"));
+      }
+    }
+    std::printf("%-8s golden %.2f M rays/s\n", name.c_str(), goldenRate / 1e6);
+  }
+  return allMet ? 0 : 1;
+}

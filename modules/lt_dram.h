@@ -1,0 +1,30 @@
+#pragma once
+// The DRAM behind the L2 as a loosely-timed TLM-2.0 target: a read of a line (the payload's
+// length in bytes), issued at the cycle its delay annotates, returns with the delay to the
+// cycle its last byte arrived. Timing: dram_channel.h with RequestOrder::Any, as the reads come
+// from cores that run ahead of each other within a quantum.
+
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "dram_channel.h"
+#include "lt_time.h"
+
+namespace rtu {
+
+class LtDram : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<LtDram> socket;
+
+  LtDram(sc_core::sc_module_name name, const DramConfig& config, const LtTime& time);
+
+  const DramStats& statistics() const { return channel_.stats(); }
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+
+  DramChannel channel_;
+  LtTime time_;
+};
+
+}  // namespace rtu

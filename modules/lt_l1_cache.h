@@ -1,0 +1,37 @@
+#pragma once
+// A core's private L1 as a loosely-timed TLM-2.0 target: a word read at the cycle its delay
+// annotates returns the word (from the read-only image: the cache holds tags, as cache_array.h
+// says) with the delay to the cycle the word is there. Timing: l1_cache_timing.h; a miss reads
+// the line from the L2 through `next`. One core reads it, in its own cycle order, so the L1 is
+// exact; only the shared L2 sees requests out of order.
+
+#include <tlm>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "l1_cache_timing.h"
+#include "lt_time.h"
+#include "svo_memory.h"
+
+namespace rtu {
+
+class LtL1Cache : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<LtL1Cache> socket;
+  tlm_utils::simple_initiator_socket<LtL1Cache> next;
+
+  LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
+            const LtTime& time, const CacheArray* start);
+
+  const CacheStats& statistics() const { return timing_.stats(); }
+
+ private:
+  void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+
+  SvoMemory words_;
+  LtTime time_;
+  L1CacheTiming timing_;
+  LineRead lineRead_;
+};
+
+}  // namespace rtu

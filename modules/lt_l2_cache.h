@@ -1,0 +1,35 @@
+#pragma once
+// The shared L2 as a loosely-timed TLM-2.0 target, bound by every core's L1: a line read
+// requested at the cycle its delay annotates returns with the delay to the cycle the line is at
+// the L2's output. Timing: l2_cache_timing.h with RequestOrder::Any (the cores' requests come out
+// of cycle order within a quantum); its misses go to the DRAM target through `dram`.
+
+#include <tlm>
+#include <tlm_utils/multi_passthrough_target_socket.h>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "l2_cache_timing.h"
+#include "lt_time.h"
+
+namespace rtu {
+
+class LtL2Cache : public sc_core::sc_module {
+ public:
+  tlm_utils::multi_passthrough_target_socket<LtL2Cache> socket;
+  tlm_utils::simple_initiator_socket<LtL2Cache> dram;
+
+  LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, const LtTime& time,
+            const CacheArray* start);
+
+  // The cache's counts; the DRAM's are the DRAM target's.
+  L2Stats statistics() const { return timing_.stats(); }
+
+ private:
+  void b_transport(int id, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+
+  LtTime time_;
+  L2CacheTiming timing_;
+  LineRead dramRead_;
+};
+
+}  // namespace rtu

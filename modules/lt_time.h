@@ -1,0 +1,59 @@
+#pragma once
+// Time in the loosely-timed model (docs/fidelity.md, "The loosely-timed model"): TLM-2.0's
+// annotated delays, counted in whole clock cycles. A component's cycle is simulated time plus its
+// delay; every delay is a whole number of cycles, as every wait is.
+
+#include <cstdint>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+
+#include "cycle_clock.h"
+
+namespace rtu {
+
+class LtTime {
+ public:
+  explicit LtTime(const CycleClock& clock) : clock_(clock), periodPs_(clock.period().value()) {}
+
+  // The cycle `delay` after simulated time.
+  uint64_t cycleAt(const sc_core::sc_time& delay) const {
+    return clock_.now() + delay.value() / periodPs_;
+  }
+  // The delay from simulated time to `cycle` (not before it).
+  sc_core::sc_time delayTo(uint64_t cycle) const { return clock_.until(cycle); }
+  uint64_t now() const { return clock_.now(); }
+  sc_core::sc_time period() const { return clock_.period(); }
+
+ private:
+  CycleClock clock_;
+  uint64_t periodPs_;
+};
+
+// A read of a cache line through a socket, for its timing: the caches hold tags only (the image
+// is read-only, cache_array.h), so the target fills no data. Returns the cycle the line is there.
+class LineRead {
+ public:
+  explicit LineRead(uint32_t maxBytes) : buffer_(maxBytes) {
+    payload_.set_read();
+    payload_.set_data_ptr(buffer_.data());
+  }
+
+  template <typename Socket>
+  uint64_t operator()(Socket& socket, const LtTime& time, uint64_t address, uint32_t bytes,
+                      uint64_t cycle) {
+    payload_.set_address(address);
+    payload_.set_data_length(bytes);
+    payload_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    sc_core::sc_time delay = time.delayTo(cycle);
+    socket->b_transport(payload_, delay);
+    return time.cycleAt(delay);
+  }
+
+ private:
+  std::vector<unsigned char> buffer_;
+  tlm::tlm_generic_payload payload_;
+};
+
+}  // namespace rtu
