@@ -12,8 +12,11 @@
 //   cfa  the first cycle t >= max(A_i, idle) with t mod N = the core (the select counter);
 //   fa   the first cycle >= max(A_i, idle) in which no other job was dispatched;
 //   rr   core k runs jobs k, k + N, ... (the policy's turns), dispatched as fa.
-// The job manager's stalls (a full pipeline holding the host) are not modelled: they move the
-// host's acceptances, not the cores' work.
+// The job manager's output register and its stalls (a job waiting for a core holds the pipeline
+// and the host) are not modelled: jobs are pending as the input link brings them. Holding job i
+// until D_{i-1} + 1 would serialise the cores, since a core that runs ahead in its quantum takes
+// job i - 1 at a late cycle; so the scheduler statistics' waits (D - A) are longer than the
+// cycle-accurate model's, and a run bound by the input link comes out a few percent short.
 
 #include <cstdint>
 #include <map>

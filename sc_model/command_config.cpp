@@ -8,7 +8,8 @@
 namespace rtu {
 namespace {
 
-constexpr unsigned kAllUses = kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseBuffers | kUseSampling;
+constexpr unsigned kAllUses = kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseBuffers |
+                           kUseSampling;
 
 void listSettings(std::ostream& out) {
   const RunConfig defaults;

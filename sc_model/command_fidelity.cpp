@@ -11,6 +11,7 @@
 #include "config_options.h"
 #include "exploration_run.h"
 #include "fidelity_study.h"
+#include "lt_simulation.h"
 #include "output_paths.h"
 #include "scene_loader.h"
 #include "stack_check.h"
@@ -83,18 +84,25 @@ void writeCsv(const std::vector<ModeFidelity>& modes, const std::string& path) {
 void addFidelityCommand(CLI::App& app) {
   struct Options {
     std::vector<double> fractions = {0.02, 0.05, 0.1};
+    std::vector<uint64_t> quanta = {100, 1000, 10000};
     std::string csv;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "fidelity",
-      "one frame answered by every mode (SystemC, recurrence, sampled, golden), each measured "
+      "one frame answered by every mode (SystemC, recurrence, loosely-timed, sampled, golden), "
+      "each measured "
       "against the cycle-accurate SystemC model: speed and error");
   auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera |
                                                 kUseSampling,
                                   {"--sample"});
   command->add_option("--fractions", options->fractions, "sampled fractions to measure")
       ->delimiter(',')
+      ->capture_default_str();
+  command->add_option("--quanta", options->quanta,
+                      "global quanta (cycles) of the loosely-timed model to measure")
+      ->delimiter(',')
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
       ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per mode");
   command->callback([options, request] {
@@ -106,6 +114,8 @@ void addFidelityCommand(CLI::App& app) {
     const Scene scene = loadScene(settings.scene);
     const std::vector<TraversalJob> jobs = makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
+    if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
+      throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
     for (double fraction : options->fractions) {
       SampleSpec spec = settings.sample;
       spec.fraction = fraction;
@@ -116,7 +126,8 @@ void addFidelityCommand(CLI::App& app) {
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory; errors against "
               << "the SystemC model\n";
     const std::vector<ModeFidelity> modes =
-        measureFidelity(scene.image.memory(), jobs, settings.rtu, options->fractions, settings.sample);
+        measureFidelity(scene.image.memory(), jobs, settings.rtu, options->quanta,
+                        options->fractions, settings.sample);
     printTable(modes, std::cout);
     if (!options->csv.empty()) {
       writeCsv(modes, options->csv);

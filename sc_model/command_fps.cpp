@@ -106,6 +106,8 @@ std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
   if (models.count("recurrence")) parts.push_back("the exact recurrence where it applies (--simulate: SystemC)");
   if (models.count("systemc")) parts.push_back("SystemC simulation");
   if (models.count("sampled")) parts.push_back("sampled SystemC simulation (estimates, 95 % intervals in the CSV)");
+  if (models.count("lt")) parts.push_back("the loosely-timed model (estimates, docs/fidelity.md)");
+  if (models.count("golden")) parts.push_back("golden costs in the recurrence (memory as ideal)");
   std::string text = "answered by ";
   for (size_t i = 0; i < parts.size(); ++i) text += (i > 0 ? ", " : "") + parts[i];
   return parts.empty() ? "no row answered" : text;
@@ -134,7 +136,7 @@ void addFpsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fps", "frame rate per resolution and core count on the cycle-accurate model: a table in "
              "the form of thesis Tables 8.4 and 8.5");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling,
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseSampling,
                                   {"--cores", "--width", "--height"});
   command->add_option("--resolutions", options->resolutions, "WIDTHxHEIGHT list")
       ->delimiter(',')

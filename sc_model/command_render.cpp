@@ -7,6 +7,7 @@
 #include "config_options.h"
 #include "frame_images.h"
 #include "golden_model.h"
+#include "model_run.h"
 #include "output_paths.h"
 #include "result_summary.h"
 #include "rtu_options.h"
@@ -19,10 +20,8 @@ namespace {
 
 struct RenderOptions {
   RunOutputs outputs;
-  std::string model = "systemc";
   std::string image, depthImage, costImage;
 
-  bool golden() const { return model == "golden"; }
   std::vector<NamedPath> imagePaths() const {
     return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
   }
@@ -39,13 +38,18 @@ struct RenderOptions {
 };
 
 // The untimed golden model has no cores, memory, links, statistics or trace: settings of the
-// timed model are errors there rather than silently dropped.
-void restrictToGoldenModel(const RenderOptions& options, ConfigRequest& request) {
-  if (options.outputs.any())
-    throw std::invalid_argument("--stats, --trace and --timeline need --model systemc: the golden model is "
-                                "untimed");
-  request.uses &= ~kUseModel;
-  request.command = "render --model golden";
+// timed model are errors there rather than silently dropped. The loosely-timed model has
+// statistics but no trace or timeline.
+void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& request,
+                         const Configuration& configuration) {
+  const ModelKind model = configuration.values().model;
+  if (model == ModelKind::Golden) {
+    if (options.outputs.any())
+      throw std::invalid_argument("--stats, --trace and --timeline need --model ca or lt: the golden "
+                                  "model is untimed");
+    configuration.checkApplicable(request.uses & ~kUseModel, "render --model golden");
+  }
+  checkOutputsOfModel(options.outputs, model);
 }
 
 std::vector<TraversalResult> traceWithGolden(const Scene& scene,
@@ -63,7 +67,7 @@ std::vector<TraversalResult> traceWithGolden(const Scene& scene,
   return results;
 }
 
-std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
+std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
                                               const std::vector<TraversalJob>& jobs,
                                               const Configuration& configuration,
                                               const RenderOptions& options) {
@@ -73,7 +77,8 @@ std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
   const RtuConfig planned =
       plannedTrace(scene.image.memory(), records, config, options.outputs, std::cout);
   RunProgressLine progress("render", "rays");
-  const RtuRun run = simulateRtu(scene.image.memory(), records, planned, progress.callback());
+  const RtuRun run = runModel(configuration.values().model, scene.image.memory(), records, planned,
+                              progress.callback());
   std::vector<TraversalResult> results = resultsInJobOrder(run);
   std::cout << ResultSummary::of(results).describe();
   reportRun(run, configuration, options.outputs, std::cout);
@@ -87,26 +92,23 @@ std::vector<TraversalResult> traceWithSystemC(const Scene& scene,
 void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand(
-      "render", "render one frame of primary rays on the cycle-accurate RTU model (or the golden "
-                "model) and report it");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera);
+      "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
+                "loosely-timed or golden model: --model) and report it");
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic |
+                                                kUseScene | kUseCamera);
   addRunOutputOptions(*command, options->outputs);
-  command->add_option("--model", options->model,
-                      "systemc (cycle-accurate, with statistics and frame rate) or golden "
-                      "(untimed, bit-exact)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"systemc", "golden"}));
   command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
   command->add_option("--depth-image", options->depthImage,
                       "depth image: float t in EXR/TIFF, grey levels otherwise");
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
   command->callback([options, request] {
-    if (options->golden()) restrictToGoldenModel(*options, *request);
     const Configuration configuration = request->resolve();
+    checkOutputsOfModel(*options, *request, configuration);
     const RunConfig& settings = configuration.values();
+    const bool untimed = settings.model == ModelKind::Golden;
     settings.camera.validate();
-    if (!options->golden()) {
+    if (!untimed) {
       validate(options->outputs.traced(settings.rtu));
       checkBuiltSceneFitsStack(settings.scene, settings.rtu.stackFrames,
                                settings.allowStackOverflow);
@@ -119,13 +121,13 @@ void addRenderCommand(CLI::App& app) {
     const std::vector<TraversalJob> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "model       " << options->model << ", " << golden.format.describe() << ", "
+              << "model       " << toString(settings.model) << ", " << golden.format.describe() << ", "
               << toString(golden.conversion) << " conversion, " << golden.stackFrames
               << " stack frames\n"
               << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
     const std::vector<TraversalResult> results =
-        options->golden() ? traceWithGolden(scene, jobs, configuration)
-                          : traceWithSystemC(scene, jobs, configuration, *options);
+        untimed ? traceWithGolden(scene, jobs, configuration)
+                : traceWithTimedModel(scene, jobs, configuration, *options);
     const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);

@@ -21,8 +21,9 @@ void addReplayCommand(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "replay", "replay a host input buffer through the cycle-accurate SystemC model of the RTU");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseBuffers);
+      "replay", "replay a host input buffer through the cycle-accurate SystemC model of the RTU "
+                "(or the loosely-timed or golden model: --model)");
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseBuffers);
   command->add_option("--out", options->out, "host output buffer to write, in arrival order")
       ->required();
   addRunOutputOptions(*command, options->outputs);
@@ -30,6 +31,7 @@ void addReplayCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     checkOneInputBuffer(settings);
+    checkOutputsOfModel(options->outputs, settings.model);
     const RtuConfig config = options->outputs.traced(settings.rtu);
     validate(config);
     const size_t recordWords = resultRecordWords(config.jobManager.format);
@@ -56,7 +58,7 @@ void addReplayCommand(CLI::App& app) {
     const RtuConfig planned =
         plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");
-    const RtuRun run = simulateRtu(image.memory(), records, planned, progress.callback());
+    const RtuRun run = runModel(settings.model, image.memory(), records, planned, progress.callback());
     writeResultBuffer(options->out, run.results, recordWords);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, configuration, options->outputs, std::cout);

@@ -99,7 +99,7 @@ void addSweepCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "sweep", "run a grid and/or list of configurations on the cycle-accurate model in parallel "
                "workers: one row per configuration in CSV and JSON lines, resumable");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling);
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseSampling);
   command->add_option("--grid", options->grid,
                       "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
   command->add_option("--sweep-file", options->sweepFile,

@@ -205,6 +205,12 @@ std::string ignoredWithoutBuiltTree(const RunConfig& c) {
   return "";
 }
 
+std::string modelKindName(const ModelKind& model) { return toString(model); }
+
+std::string ignoredUnlessLooselyTimed(const RunConfig& c) {
+  return c.model == ModelKind::LooselyTimed ? "" : std::string("model is ") + toString(c.model);
+}
+
 std::string ignoredWithoutSampling(const RunConfig& c) {
   return c.sample.enabled() ? "" : "sample.fraction is 0 (every ray simulated)";
 }
@@ -243,6 +249,14 @@ std::vector<Setting> makeSchema() {
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
                      camera = kUseCamera, buffers = kUseBuffers, sampling = kUseSampling;
   std::vector<Setting> s;
+  s.push_back(choice("model", "--model", {"golden", "lt", "ca"}, kUseModelChoice,
+                     "which model answers: ca (cycle-accurate SystemC, exact), lt (loosely-timed "
+                     "TLM-2.0, estimated cycles) or golden (untimed; cycles from golden costs)",
+                     [](C& c) -> ModelKind& { return c.model; }, modelKindName, parseModelKind));
+  s.push_back(integer("lt.quantum", "--lt-quantum", "cycles", 1, 1e9, kUseModelChoice,
+                      "loosely-timed model: global quantum of temporal decoupling",
+                      [](C& c) -> uint64_t& { return c.rtu.ltQuantum; }));
+  s.back().ignoredBecause = ignoredUnlessLooselyTimed;
   s.push_back(integer("cores", "--cores", "", 1, kMaxCores, model, "number of traversal cores",
                       [](C& c) -> int& { return c.rtu.cores; }));
   s.push_back(choice("scheduler", "--scheduler", {"cfa", "rr", "fa"}, model,

@@ -22,6 +22,7 @@ enum SettingUse : unsigned {
   kUseCamera = 1u << 3,      // camera and frame size
   kUseBuffers = 1u << 4,     // job or ray buffers and the .svo they run on
   kUseSampling = 1u << 5,    // sampled simulation of fps and sweep rows
+  kUseModelChoice = 1u << 6,  // which model answers: golden, lt or ca
 };
 
 struct Setting {

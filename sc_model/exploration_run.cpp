@@ -101,6 +101,15 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
   const std::vector<TraversalJob> jobs =
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
   checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
+  if (settings.model != ModelKind::CycleAccurate) {
+    if (settings.sample.enabled())
+      throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
+                                              "not go with --model ") + toString(settings.model));
+    const RtuRun run = runModel(settings.model, scene.image.memory(), jobs, settings.rtu);
+    nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+    row.update(runJson(run.statistics, configuration));
+    return row;
+  }
   const bool recurrence = model == RowModel::RecurrenceWhereExact && !whyNotAnalytic(settings.rtu);
   if (!recurrence && settings.sample.enabled()) {
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};

@@ -7,6 +7,7 @@
 
 #include "analytic_run.h"
 #include "golden_model.h"
+#include "lt_simulation.h"
 
 namespace rtu {
 namespace {
@@ -73,6 +74,13 @@ class Study {
     return exact("recurrence", run, secondsSince(start));
   }
 
+  ModeFidelity looselyTimed(uint64_t quantum) {
+    RtuConfig config = config_;
+    config.ltQuantum = quantum;
+    const RtuRun run = runLooselyTimed(memory_, jobs_, config);
+    return exact("lt q" + std::to_string(quantum), run, run.statistics.hostSeconds);
+  }
+
   ModeFidelity sampled(double fraction, SampleSpec spec) {
     spec.fraction = fraction;
     const SampledRun run = runSampled(memory_, jobs_, config_, spec);
@@ -135,10 +143,12 @@ class Study {
 std::vector<ModeFidelity> measureFidelity(const SvoMemory& memory,
                                           const std::vector<TraversalJob>& jobs,
                                           const RtuConfig& config,
+                                          const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample) {
   Study study(memory, jobs, config);
   std::vector<ModeFidelity> modes{study.systemc()};
   if (auto recurrence = study.recurrence()) modes.push_back(*recurrence);
+  for (uint64_t quantum : quanta) modes.push_back(study.looselyTimed(quantum));
   for (double fraction : fractions) modes.push_back(study.sampled(fraction, sample));
   modes.push_back(study.golden());
   return modes;

@@ -1,6 +1,7 @@
 #pragma once
 // The speed-accuracy trade, measured on one frame and configuration: each faster way of answering
-// (golden, the recurrence where it applies, sampled simulation at several fractions) against the
+// (golden, the recurrence where it applies, the loosely-timed model at several quanta, sampled
+// simulation at several fractions) against the
 // cycle-accurate SystemC model, which answers every ray. `rtusim fidelity` prints it;
 // docs/fidelity.md holds the measured tables.
 
@@ -14,7 +15,7 @@
 namespace rtu {
 
 struct ModeFidelity {
-  std::string mode;  // "systemc", "recurrence", "sampled 0.1", "golden"
+  std::string mode;  // "systemc", "recurrence", "lt q1000", "sampled 0.1", "golden"
   double hostSeconds = 0;
   double raysPerHostSecond = 0;
   double speedUp = 1;  // over the SystemC model's host seconds
@@ -30,11 +31,12 @@ struct ModeFidelity {
   std::optional<bool> resultsEqualGolden;
 };
 
-// The modes in order: systemc, recurrence (where it applies), sampled per fraction (with
-// `sample` for seed and block sizes), golden.
+// The modes in order: systemc, recurrence (where it applies), lt per quantum, sampled per
+// fraction (with `sample` for seed and block sizes), golden.
 std::vector<ModeFidelity> measureFidelity(const SvoMemory& memory,
                                           const std::vector<TraversalJob>& jobs,
                                           const RtuConfig& config,
+                                          const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample);
 
 }  // namespace rtu

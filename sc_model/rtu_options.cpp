@@ -91,4 +91,12 @@ void reportRun(const RtuRun& run, const Configuration& configuration, const RunO
   out << "wrote       " << outputs.statsPath << "\n";
 }
 
+void checkOutputsOfModel(const RunOutputs& outputs, ModelKind model) {
+  if (model == ModelKind::CycleAccurate) return;
+  if (!outputs.vcdPath.empty() || !outputs.timelinePath.empty())
+    throw std::invalid_argument(std::string("--trace and --timeline need --model ca: waveforms and "
+                                            "timelines are the cycle-accurate model's, not ") +
+                                toString(model) + "'s");
+}
+
 }  // namespace rtu

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "configuration.h"
+#include "model_run.h"
 #include "output_paths.h"
 #include "rtu_config.h"
 #include "rtu_simulation.h"
@@ -40,6 +41,8 @@ struct RunOutputs {
 };
 
 void addRunOutputOptions(CLI::App& command, RunOutputs& outputs);
+// Traces and timelines are the cycle-accurate model's: an error naming them for another model.
+void checkOutputsOfModel(const RunOutputs& outputs, ModelKind model);
 
 // `config` with the trace's window (--trace-ray), after measuring the trace and the timeline
 // (sc_model/trace_plan.h): prints their sizes, refuses one above --trace-max-mb.

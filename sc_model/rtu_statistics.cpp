@@ -191,6 +191,18 @@ nlohmann::ordered_json RtuStatistics::toJson() const {
   return result;
 }
 
+namespace {
+
+// How the report's last line names what answered.
+std::string answeredBy(const std::string& model) {
+  if (model == "systemc") return "simulated in ";
+  if (model == "lt") return "estimated by the loosely-timed model (docs/fidelity.md) in ";
+  if (model == "golden") return "golden costs in the recurrence, memory as ideal, in ";
+  return "answered by the " + model + " in ";
+}
+
+}  // namespace
+
 void RtuStatistics::writeReport(std::ostream& out) const {
   out << std::fixed << std::setprecision(2);
   out << "rays " << rays << ", total cycles " << totalCycles << " (" << cyclesPerRay()

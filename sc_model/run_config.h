@@ -6,6 +6,7 @@
 #include <string>
 
 #include "camera.h"
+#include "model_run.h"
 #include "rtu_config.h"
 #include "sampled_run.h"
 #include "scene_loader.h"
@@ -14,6 +15,7 @@ namespace rtu {
 
 struct RunConfig {
   RtuConfig rtu;
+  ModelKind model = ModelKind::CycleAccurate;  // which model answers (replay, render, fps, sweep)
   SceneSpec scene;
   Camera camera;
   double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
