@@ -7,10 +7,12 @@
 namespace rtu {
 
 LtDispatcher::LtDispatcher(sc_core::sc_module_name name, SvoMemory memory,
-                           const std::vector<HostRecord>& records, const LtDispatcherConfig& config)
+                           const std::vector<HostRecord>& records, const LtDispatcherConfig& config,
+                           const LtTime& time)
     : sc_core::sc_module(name),
       records_(records),
       config_(config),
+      time_(time),
       setup_(memory, config.jobManager),
       input_(config.hostInput),
       choice_(config.policy, config.cores),
@@ -62,14 +64,17 @@ uint64_t LtDispatcher::dispatchCycle(int core, uint64_t pending, uint64_t idleFr
   const uint64_t cycle = choice_.firstCycleFor(core, std::max(pending, idleFrom));
   // The select counter gives each cycle to one core; otherwise one dispatch a cycle is booked.
   if (config_.policy == SchedulerPolicy::CyclicFirstAvailable) return cycle;
-  return dispatches_.book(cycle, 1);
+  dispatches_.forgetBefore(time_.now());  // no core asks behind simulated time
+  return dispatches_.takeFirstFree(cycle);
 }
 
 void LtDispatcher::countWait(uint64_t pending, uint64_t dispatch, uint64_t idleFrom) {
   const uint64_t wait = dispatch - pending;
   statistics_.stallCycles += wait;
-  if (wait >= waits_.size()) waits_.resize(wait + 1, 0);
-  ++waits_[wait];
+  if (wait < shortWaits_.size())
+    ++shortWaits_[wait];
+  else
+    ++statistics_.waitHistogram[wait];
   statistics_.maxWait = std::max(statistics_.maxWait, wait);
   if (idleFrom <= pending)
     statistics_.maxWaitWithReadyCore = std::max(statistics_.maxWaitWithReadyCore, wait);
@@ -77,8 +82,8 @@ void LtDispatcher::countWait(uint64_t pending, uint64_t dispatch, uint64_t idleF
 
 LtDispatchStatistics LtDispatcher::statistics() const {
   LtDispatchStatistics all = statistics_;
-  for (uint64_t wait = 0; wait < waits_.size(); ++wait)
-    if (waits_[wait] > 0) all.waitHistogram[wait] = waits_[wait];
+  for (uint64_t wait = 0; wait < shortWaits_.size(); ++wait)
+    if (shortWaits_[wait] > 0) all.waitHistogram[wait] += shortWaits_[wait];
   return all;
 }
 

@@ -18,15 +18,17 @@
 // job i - 1 at a late cycle; so the scheduler statistics' waits (D - A) are longer than the
 // cycle-accurate model's, and a run bound by the input link comes out a few percent short.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
 
 #include "host_link.h"
 #include "job_setup.h"
+#include "lt_time.h"
 #include "lt_transactions.h"
-#include "resource_booking.h"
 #include "scheduler_choice.h"
+#include "slot_calendar.h"
 
 namespace rtu {
 
@@ -48,7 +50,8 @@ class LtDispatcher : public sc_core::sc_module, public LtJobSourceIf {
  public:
   // `records` must outlive the dispatcher.
   LtDispatcher(sc_core::sc_module_name name, SvoMemory memory,
-               const std::vector<HostRecord>& records, const LtDispatcherConfig& config);
+               const std::vector<HostRecord>& records, const LtDispatcherConfig& config,
+               const LtTime& time);
 
   bool take(int core, uint64_t idleFrom, LtDispatch& dispatch) override;
 
@@ -65,18 +68,19 @@ class LtDispatcher : public sc_core::sc_module, public LtJobSourceIf {
 
   const std::vector<HostRecord>& records_;
   LtDispatcherConfig config_;
+  LtTime time_;
   JobSetup setup_;
   HostLinkPacer input_;
   SchedulerChoice choice_;
-  ResourceBooking dispatches_{RequestOrder::Any};  // one dispatch per cycle (fa, rr)
+  SlotCalendar dispatches_;  // one dispatch per cycle (fa, rr)
   std::vector<TraversalJob> jobs_;                 // set up, by index, up to pending_.size()
   std::vector<uint64_t> pending_;
   uint64_t lastAccept_ = 0, fetchUntil_ = 0;
   size_t nextShared_ = 0;                  // cfa, fa: the next job in host order
   std::vector<size_t> nextOwn_;            // rr: each core's next job
   std::vector<uint64_t> dispatchCycles_;
-  LtDispatchStatistics statistics_;  // its histogram is waits_, a vector: no map look-up per job
-  std::vector<uint64_t> waits_;
+  LtDispatchStatistics statistics_;  // its histogram holds the waits past shortWaits_
+  std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: no map look-up per job
 };
 
 }  // namespace rtu

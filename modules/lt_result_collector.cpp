@@ -58,8 +58,7 @@ uint64_t LtResultCollector::handOver(int core, uint64_t outCycle, const CoreResu
 uint64_t LtResultCollector::drainCycle(int core, uint64_t from) {
   uint64_t cycle = selectCounterReaches(core, static_cast<int>(coreCount_), from);
   if (linkCycles_ == 0) return cycle;
-  while (linkSlots_.firstFree(cycle / linkCycles_, 1) != cycle / linkCycles_) cycle += coreCount_;
-  linkSlots_.book(cycle / linkCycles_, 1);
+  while (!linkSlots_.takeIfFree(cycle / linkCycles_)) cycle += coreCount_;
   return cycle;
 }
 

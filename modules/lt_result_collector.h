@@ -6,7 +6,7 @@
 //   drain    R = the first cycle t >= K + 1 with t mod N = the core (the select counter) and,
 //              with a paced output link, in a free slot of it.
 // A paced output link is cut into slots of P = ceil(record bytes / bytes per cycle) cycles, one
-// record each, booked out of cycle order (resource_booking.h): an approximation of host_link.h's
+// record each, taken out of cycle order (slot_calendar.h): an approximation of host_link.h's
 // pacing, which spreads fractional rates over records and starts a record P cycles after the
 // previous one, not on a grid. Slots keep the link's throughput where free runs booked out of
 // order would leave gaps shorter than a record.
@@ -18,7 +18,7 @@
 #include "lt_time.h"
 #include "lt_transactions.h"
 #include "occupancy_peak.h"
-#include "resource_booking.h"
+#include "slot_calendar.h"
 #include "svo_traversal_core.h"
 
 namespace rtu {
@@ -49,7 +49,7 @@ class LtResultCollector : public sc_core::sc_module, public LtResultSinkIf {
   LtTime time_;
   uint64_t coreCount_;
   uint64_t linkCycles_;  // cycles a record takes on the output link (0: unlimited)
-  ResourceBooking linkSlots_{RequestOrder::Any};  // slot k: cycles [k P, (k + 1) P)
+  SlotCalendar linkSlots_;  // slot k: cycles [k P, (k + 1) P)
   std::vector<uint64_t> lastDrain_;  // per core, kNoDrain before the first
   std::vector<CoreStatistics> cores_;
   std::vector<LtArrival> arrivals_;

@@ -194,7 +194,7 @@ const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() 
       {"dram_bytes", Json::json_pointer("/memory/dram/bytes")},
       {"dram_bytes_per_cycle", Json::json_pointer("/memory/dram/bytes_per_cycle")},
       {"host_seconds", Json::json_pointer("/simulation/host_seconds")},
-      {"model", Json::json_pointer("/simulation/model")},
+      {"answered_by", Json::json_pointer("/simulation/model")},
       {"total_cycles_ci_low", Json::json_pointer("/sample/total_cycles_ci95/0")},
       {"total_cycles_ci_high", Json::json_pointer("/sample/total_cycles_ci95/1")},
       {"simulated_fraction", Json::json_pointer("/sample/fraction_simulated")}};

@@ -13,7 +13,8 @@ LtTop::LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory me
                                                    static_cast<double>(config.ltQuantum));
   dispatcher_ = std::make_unique<LtDispatcher>(
       "dispatcher", memory, records,
-      LtDispatcherConfig{config.cores, config.scheduler, config.jobManager, config.hostInput});
+      LtDispatcherConfig{config.cores, config.scheduler, config.jobManager, config.hostInput},
+      time_);
   collector_ = std::make_unique<LtResultCollector>("collector", config.cores, config.outputLink(),
                                                    records.size(), time_);
   const GoldenConfig golden = config.golden();

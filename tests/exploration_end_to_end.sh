@@ -40,7 +40,7 @@ expect_error "cores: 0 is out of range 1 .. 1024" "$rtusim" sweep --grid cores=1
 "$rtusim" sweep --scene sphere --depth 5 --width 24 --height 16 --memory cached \
   --grid cores=1,4 --grid memory.l1.size=512,2KiB -j 2 --out rows.csv >sweep.txt
 [[ $(wc -l <rows.jsonl) -eq 4 && $(wc -l <rows.csv) -eq 5 ]] || fail "sweep row count"
-head -1 rows.csv | grep -q '^cores,scheduler,clock_mhz,' || fail "CSV header starts with the keys"
+head -1 rows.csv | grep -q '^model,lt.quantum,cores,scheduler,clock_mhz,' || fail "CSV header starts with the keys"
 i=0
 while read -r row; do
   i=$((i + 1))
@@ -66,7 +66,7 @@ grep -q "^32,18,8,576,$cycles," fps.csv || fail "fps row differs from render ($c
 "$python" - sampled.csv <<'PY' || fail "sampled fps row"
 import csv, sys
 row = next(csv.DictReader(open(sys.argv[1])))
-assert row["model"] == "sampled", row["model"]
+assert row["answered_by"] == "sampled", row["answered_by"]
 assert float(row["total_cycles_ci_low"]) <= float(row["total_cycles"]) <= float(row["total_cycles_ci_high"])
 assert 0 < float(row["simulated_fraction"]) <= 0.5
 PY
@@ -81,11 +81,13 @@ grep -q "sample.fraction 0.01" small.txt || fail "too small sample fraction not 
 
 # fidelity: every mode against the SystemC model; the exact modes exact, golden's results equal.
 "$rtusim" fidelity --scene menger --depth 5 --width 160 --height 120 --cores 4 --fractions 0.5 \
-  --csv fidelity.csv >fidelity.txt
+  --quanta 100,1000 --csv fidelity.csv >fidelity.txt
 "$python" - fidelity.csv <<'PY' || fail "fidelity rows"
 import csv, sys
 rows = {r["mode"]: r for r in csv.DictReader(open(sys.argv[1]))}
-assert list(rows) == ["systemc", "recurrence", "sampled 0.5", "golden"], list(rows)
+assert list(rows) == ["systemc", "recurrence", "lt q100", "lt q1000", "sampled 0.5", "golden"], list(rows)
+for lt in ("lt q100", "lt q1000"):
+    assert rows[lt]["results_equal_golden"] == "yes" and abs(float(rows[lt]["total_cycles_error"])) < 0.05, rows[lt]
 for exact in ("systemc", "recurrence"):
     assert float(rows[exact]["total_cycles_error"]) == 0 and float(rows[exact]["per_ray_error_p99"]) == 0
     assert rows[exact]["results_equal_golden"] == "yes"
@@ -93,6 +95,17 @@ sampled = rows["sampled 0.5"]
 assert float(sampled["total_cycles_ci_low"]) <= float(sampled["total_cycles"]) <= float(sampled["total_cycles_ci_high"])
 assert rows["golden"]["total_cycles"] == "" and rows["golden"]["results_equal_golden"] == "yes"
 PY
+
+# --model: the loosely-timed and golden models answer fps and sweep rows, named in the CSV.
+"$rtusim" sweep --scene menger --depth 5 --width 64 --height 48 --memory cached --model lt \
+  --grid cores=4,16 --out lt_sweep.csv -j 1 >/dev/null
+test "$(grep -c '^lt,.*,lt,' lt_sweep.csv)" = 2 || fail "sweep --model lt rows"
+"$rtusim" fps --scene menger --depth 5 --resolutions 64x48 --cores 4 --model golden \
+  --csv golden_fps.csv >golden_fps.txt
+grep -q "golden costs in the recurrence" golden_fps.txt || fail "fps --model golden heading"
+"$rtusim" fps --scene menger --depth 5 --resolutions 64x48 --cores 4 --model lt --sample 0.5 \
+  >lt_sample.txt 2>&1 || true
+grep -q "does not go with --model lt" lt_sample.txt || fail "--sample with --model lt not refused"
 
 # A configuration that cannot run gets its error in its row; the sweep goes on.
 "$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \

@@ -50,7 +50,7 @@ mkdir adir
 expect_error "--image 'adir' is a directory" "$rtusim" render --scene sphere --depth 4 --image adir
 
 # The golden model refuses what only the timed model uses.
-expect_error "--stats, --trace and --timeline need --model systemc" \
+expect_error "--stats, --trace and --timeline need --model ca or lt" \
   "$rtusim" render --model golden --scene sphere --depth 4 --stats s.json
 expect_error "cores (command line) has no effect: rtusim render --model golden does not use it" \
   "$rtusim" render --model golden --scene sphere --depth 4 --cores 4
