@@ -109,9 +109,11 @@ class Drains {
 
 class Recurrence {
  public:
-  Recurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config)
+  Recurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+             const TraversalTimer& timer)
       : jobs_(jobs),
         config_(config),
+        timer_(timer),
         cores_(static_cast<uint64_t>(config.cores)),
         inputLink_(config.hostInput),
         drains_(config.cores, config.hostOutput),
@@ -128,6 +130,7 @@ class Recurrence {
     run_.handoverCycles.resize(n);
     run_.drainCycles.resize(n);
     run_.hostOrder.reserve(n);
+    traversal_.resize(n);
   }
 
   RecurrenceRun run() {
@@ -180,6 +183,7 @@ class Recurrence {
     choice_.dispatched(core);
     run_.dispatchCycles[i] = cycle;
     run_.cores[i] = core;
+    traversal_[i] = timer_ ? timer_(i, core, cycle + 1) : jobs_[i].cost;
     const size_t c = static_cast<size_t>(core);
     waiting_[c] = i;
     idleFrom_[c] = kUnknown;
@@ -190,7 +194,7 @@ class Recurrence {
   void handOver(int core) {
     const size_t c = static_cast<size_t>(core);
     const size_t job = waiting_[c];
-    const uint64_t out = run_.dispatchCycles[job] + 1 + jobs_[job].cost;
+    const uint64_t out = run_.dispatchCycles[job] + 1 + traversal_[job];
     const uint64_t handover = lastDrain_[c] == kUnknown ? out : std::max(out, lastDrain_[c] + 1);
     run_.handoverCycles[job] = handover;
     idleFrom_[c] = handover + 1;
@@ -219,6 +223,7 @@ class Recurrence {
 
   const std::vector<RecurrenceJob>& jobs_;
   const RecurrenceConfig& config_;
+  const TraversalTimer& timer_;
   const uint64_t cores_;
   HostLinkPacer inputLink_;
   Drains drains_;
@@ -229,14 +234,16 @@ class Recurrence {
   uint64_t fetchUntil_ = 0;
   size_t inPipeline_ = 0;  // the oldest job not yet dispatched when the current one entered
   SchedulerChoice choice_;
+  std::vector<uint64_t> traversal_;  // W_i
   RecurrenceRun run_;
 };
 
 }  // namespace
 
-RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config) {
+RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+                            const TraversalTimer& timer) {
   config.validate();
-  return Recurrence(jobs, config).run();
+  return Recurrence(jobs, config, timer).run();
 }
 
 }  // namespace rtu

@@ -13,7 +13,8 @@
 //   dispatch D_i = cfa: first t >= A_i whose core t mod N is idle in t;
 //                  fa: first t >= A_i with an idle core, the lowest one; rr: the next core in
 //                  turn, at max(A_i, the cycle it is idle)
-//   handover K_i = max(D_i + 1 + W_i, the cycle after the core's previous result drained);
+//   handover K_i = max(D_i + 1 + W_i, the cycle after the core's previous result drained), W_i
+//                  the job's cost, or what a TraversalTimer says at its dispatch;
 //                  the core is idle again from K_i + 1, the result is buffered from K_i + 1
 //   drain    R_i = first t >= K_i + 1 with t mod N = its core and the output link ready in t;
 //                  drains are resolved in cycle order, as the output link's pacing depends on it
@@ -23,6 +24,7 @@
 // search of cfa and fa while no core is idle.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "host_link.h"
@@ -31,7 +33,7 @@
 namespace rtu {
 
 struct RecurrenceJob {
-  uint64_t cost = 0;           // traversal cycles, INIT up to the last state before OUT
+  uint64_t cost = 0;           // traversal cycles W_i, INIT up to the last state before OUT
   uint64_t pipelineCycles = 6;  // job manager latency (L_i): stages, plus ray set-up and fetch
   uint64_t headerFetch = 0;     // cycles after its acceptance in which no record is accepted
 };
@@ -57,6 +59,13 @@ struct RecurrenceRun {
   uint64_t totalCycles = 0;
 };
 
-RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config);
+// Times a traversal when its job is dispatched: W_i of job `job` on `core`, INIT in `initCycle`
+// (D_i + 1). The loosely-timed model's memory makes W_i depend on the core and the cycle; jobs are
+// dispatched in order, so the calls come in increasing initCycle.
+using TraversalTimer = std::function<uint64_t(size_t job, int core, uint64_t initCycle)>;
+
+// With `timer`, W_i comes from it and the jobs' `cost` is not read.
+RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+                            const TraversalTimer& timer = {});
 
 }  // namespace rtu

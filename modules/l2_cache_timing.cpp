@@ -31,23 +31,32 @@ L2CacheTiming::L2CacheTiming(const CacheConfig& cache, const DramConfig& dram,
       port_(order) {}
 
 uint64_t L2CacheTiming::read(uint64_t byteAddress, uint64_t requestCycle) {
+  const bool inCycleOrder = requestCycle >= lastRequestCycle_;
   const uint64_t accept = acceptRequest(requestCycle);
   const uint64_t tagCheckDone = accept + array_.config().hitLatency;
   const CacheLookup line = array_.access(byteAddress, accept);
-  if (line.present) return std::max(tagCheckDone, line.fillCycle);
+  if (line.present)
+    return std::max(tagCheckDone,
+                    inCycleOrder ? line.fillCycle : mergedFill(line.fillCycle, tagCheckDone));
   const uint64_t fill = fetchLine(tagCheckDone);
   array_.allocate(byteAddress, fill);
   return fill;
 }
 
+// A request behind the latest one finds a line in flight: the miss that allocated it may have
+// been issued after this request's tag check. In cycle order this request would have missed and
+// that one merged, so it waits no longer than its own uncontended miss would.
+uint64_t L2CacheTiming::mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) const {
+  const DramConfig& dram = dram_.config();
+  return std::min(fillCycle, tagCheckDone + dram.latency + dram_.transferCycles(array_.config().lineBytes));
+}
+
 uint64_t L2CacheTiming::acceptRequest(uint64_t requestCycle) {
-  if (order_ == RequestOrder::Cycle) {
-    if (requestCycle < lastRequestCycle_)
-      throw std::logic_error("L2 requests must come in cycle order: cycle " +
-                             std::to_string(requestCycle) + " after cycle " +
-                             std::to_string(lastRequestCycle_));
-    lastRequestCycle_ = requestCycle;
-  }
+  if (order_ == RequestOrder::Cycle && requestCycle < lastRequestCycle_)
+    throw std::logic_error("L2 requests must come in cycle order: cycle " +
+                           std::to_string(requestCycle) + " after cycle " +
+                           std::to_string(lastRequestCycle_));
+  lastRequestCycle_ = std::max(lastRequestCycle_, requestCycle);
   const uint64_t accept = port_.book(requestCycle, 1);
   portQueueCycles_ += accept - requestCycle;
   return accept;
@@ -59,31 +68,30 @@ uint64_t L2CacheTiming::fetchLine(uint64_t tagCheckDone) {
   mshrQueueCycles_ += issue - tagCheckDone;
   const uint32_t bytes = array_.config().lineBytes;
   const uint64_t fill = externalDram_ ? externalDram_(bytes, issue) : dram_.read(bytes, issue);
-  mshrReleases_.push_back(fill);
+  mshrUses_.push_back({issue, fill});
   return fill;
 }
 
-// The cycle, not before `cycle`, at which an MSHR is free; an MSHR busy then is taken off the
-// list (the caller adds the release of its new miss).
+// The first cycle from `cycle` on in which fewer than maxOutstandingMisses MSHRs are busy.
 uint64_t L2CacheTiming::claimMshr(uint64_t cycle) {
   if (order_ == RequestOrder::Cycle) forgetMshrsBefore(cycle);
-  auto earliest = mshrReleases_.end();
-  uint32_t busy = 0;
-  for (auto release = mshrReleases_.begin(); release != mshrReleases_.end(); ++release) {
-    if (*release <= cycle) continue;
-    ++busy;
-    if (earliest == mshrReleases_.end() || *release < *earliest) earliest = release;
+  for (;;) {
+    uint32_t busy = 0;
+    uint64_t firstRelease = UINT64_MAX;
+    for (const MshrUse& use : mshrUses_) {
+      if (use.issue > cycle || use.release <= cycle) continue;
+      ++busy;
+      firstRelease = std::min(firstRelease, use.release);
+    }
+    if (busy < array_.config().maxOutstandingMisses) return cycle;
+    cycle = firstRelease;
   }
-  if (busy < array_.config().maxOutstandingMisses) return cycle;
-  const uint64_t release = *earliest;
-  mshrReleases_.erase(earliest);
-  return release;
 }
 
 void L2CacheTiming::forgetMshrsBefore(uint64_t cycle) {
-  mshrReleases_.erase(std::remove_if(mshrReleases_.begin(), mshrReleases_.end(),
-                                     [cycle](uint64_t release) { return release <= cycle; }),
-                      mshrReleases_.end());
+  mshrUses_.erase(std::remove_if(mshrUses_.begin(), mshrUses_.end(),
+                                 [cycle](const MshrUse& use) { return use.release <= cycle; }),
+                  mshrUses_.end());
 }
 
 void L2CacheTiming::forgetBefore(uint64_t cycle) {

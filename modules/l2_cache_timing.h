@@ -4,10 +4,13 @@
 // L2's output?". With RequestOrder::Cycle (the cycle-accurate model) requests must come in
 // non-decreasing R (the caller orders the cores' requests by cycle); an earlier one throws
 // std::logic_error. With RequestOrder::Any (the loosely-timed model, whose cores run ahead of
-// each other within a quantum) they may come in any order, as a documented approximation: the
-// port and the DRAM bus give a request the first free gap from its cycle on (resource_booking.h),
-// an MSHR counts as busy at T when its release is after T (whenever it was issued), and the tag
-// store sees the requests in the order they come. In cycle order both give the same answers.
+// each other) they may come in any order, as a documented approximation: the port and the DRAM
+// bus give a request the first free gap from its cycle on (resource_booking.h), a miss counts the
+// MSHRs busy at T (issued by T, released after it) without checking the later cycles its own use
+// covers, a request behind the latest one that finds its line in flight waits no longer than its
+// own uncontended miss would (the miss in flight may have been issued after it), and the tag
+// store sees the requests
+// in the order they come. In cycle order both give the same answers.
 //
 // The model, with h = hitLatency:
 //   Port     one request accepted per cycle: accept = max(R, portFree); portFree = accept + 1.
@@ -65,6 +68,7 @@ class L2CacheTiming {
 
  private:
   uint64_t acceptRequest(uint64_t requestCycle);
+  uint64_t mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) const;
   uint64_t fetchLine(uint64_t tagCheckDone);
   uint64_t claimMshr(uint64_t cycle);
   void forgetMshrsBefore(uint64_t cycle);
@@ -73,11 +77,13 @@ class L2CacheTiming {
   DramChannel dram_;
   DramRead externalDram_;
   RequestOrder order_;
-  uint64_t lastRequestCycle_ = 0;
+  uint64_t lastRequestCycle_ = 0;  // the latest request so far
   ResourceBooking port_;
-  // Release cycles of the MSHRs that may still be busy for a later request (at most
-  // maxOutstandingMisses of them in cycle order).
-  std::vector<uint64_t> mshrReleases_;
+  // The MSHRs' uses, [issue, release), that may still be busy for a later request.
+  struct MshrUse {
+    uint64_t issue, release;
+  };
+  std::vector<MshrUse> mshrUses_;
   uint64_t portQueueCycles_ = 0;
   uint64_t mshrQueueCycles_ = 0;
 };

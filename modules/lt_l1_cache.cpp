@@ -5,7 +5,7 @@
 namespace rtu {
 
 LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
-                     const LtTime& time, const CacheArray* start)
+                     const LtTime& time)
     : sc_core::sc_module(name),
       socket("socket"),
       next("next"),
@@ -14,7 +14,6 @@ LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, Sv
       timing_(config),
       lineRead_(config.lineBytes) {
   socket.register_b_transport(this, &LtL1Cache::b_transport);
-  if (start) timing_.startFrom(*start);
 }
 
 void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {

@@ -21,7 +21,7 @@ class LtL1Cache : public sc_core::sc_module {
   tlm_utils::simple_initiator_socket<LtL1Cache> next;
 
   LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
-            const LtTime& time, const CacheArray* start);
+            const LtTime& time);
 
   const CacheStats& statistics() const { return timing_.stats(); }
 

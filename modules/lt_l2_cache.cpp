@@ -2,8 +2,7 @@
 
 namespace rtu {
 
-LtL2Cache::LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, const LtTime& time,
-                     const CacheArray* start)
+LtL2Cache::LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, const LtTime& time)
     : sc_core::sc_module(name),
       socket("socket"),
       dram("dram"),
@@ -14,7 +13,6 @@ LtL2Cache::LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, c
               }),
       dramRead_(config.l2.lineBytes) {
   socket.register_b_transport(this, &LtL2Cache::b_transport);
-  if (start) timing_.startFrom(*start);
 }
 
 void LtL2Cache::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {

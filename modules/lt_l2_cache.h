@@ -18,8 +18,7 @@ class LtL2Cache : public sc_core::sc_module {
   tlm_utils::multi_passthrough_target_socket<LtL2Cache> socket;
   tlm_utils::simple_initiator_socket<LtL2Cache> dram;
 
-  LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, const LtTime& time,
-            const CacheArray* start);
+  LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, const LtTime& time);
 
   // The cache's counts; the DRAM's are the DRAM target's.
   L2Stats statistics() const { return timing_.stats(); }

@@ -15,19 +15,29 @@ namespace rtu {
 
 class LtTime {
  public:
-  explicit LtTime(const CycleClock& clock) : clock_(clock), periodPs_(clock.period().value()) {}
+  explicit LtTime(const CycleClock& clock)
+      : clock_(clock), period_(clock.period()), periodPs_(period_.value()) {}
 
   // The cycle `delay` after simulated time.
   uint64_t cycleAt(const sc_core::sc_time& delay) const {
     return clock_.now() + delay.value() / periodPs_;
   }
-  // The delay from simulated time to `cycle` (not before it).
-  sc_core::sc_time delayTo(uint64_t cycle) const { return clock_.until(cycle); }
+  // The delay from simulated time to `cycle` (not before it). Scaled in line, exactly while the
+  // picoseconds fit a double's 53 bits: the library's sc_time::from_value is a call per read.
+  sc_core::sc_time delayTo(uint64_t cycle) const {
+    const uint64_t cycles = cycle - clock_.now();
+    if (cycle > kMaxCycles || cycles > (uint64_t{1} << 53) / periodPs_)
+      return clock_.until(cycle);  // exact, and throws std::overflow_error past kMaxCycles
+    sc_core::sc_time delay = period_;
+    delay *= static_cast<double>(cycles);
+    return delay;
+  }
   uint64_t now() const { return clock_.now(); }
-  sc_core::sc_time period() const { return clock_.period(); }
+  sc_core::sc_time period() const { return period_; }
 
  private:
   CycleClock clock_;
+  sc_core::sc_time period_;
   uint64_t periodPs_;
 };
 

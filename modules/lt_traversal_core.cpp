@@ -7,41 +7,18 @@
 
 namespace rtu {
 
-LtTraversalCore::LtTraversalCore(sc_core::sc_module_name name, int index, FixedFormat format,
+LtTraversalCore::LtTraversalCore(sc_core::sc_module_name name, FixedFormat format,
                                  int stackFrames, const LtTime& time)
-    : sc_core::sc_module(name),
-      memory("memory"),
-      jobs("jobs"),
-      results("results"),
-      index_(index),
-      time_(time),
-      core_(FixedArith{format}, stackFrames) {
+    : sc_core::sc_module(name), memory("memory"), time_(time), core_(FixedArith{format}, stackFrames) {
   read_.set_read();
   read_.set_data_ptr(reinterpret_cast<unsigned char*>(&word_));
   read_.set_data_length(sizeof word_);
   read_.set_streaming_width(sizeof word_);
-  SC_HAS_PROCESS(LtTraversalCore);
-  SC_THREAD(run);
 }
 
-void LtTraversalCore::run() {
-  acquireDmi();
-  quantum_.reset();
-  uint64_t idleFrom = 0;
-  LtDispatch dispatch;
-  while (jobs->take(index_, idleFrom, dispatch)) {
-    const CoreJob& job = dispatch.job;
-    core_.start(job.t0, job.t1, job.a, job.root);
-    uint32_t blocked = 0;
-    const uint64_t out = traverse(dispatch.cycle, blocked);
-    const CoreResult result{job.ids, makeResult(job.idWord, core_), blocked};
-    core_.finish();
-    idleFrom = results->handOver(index_, out, result);
-    keepQuantum(idleFrom);
-  }
-}
-
+// Asked once, at the first job: the targets are bound by then.
 void LtTraversalCore::acquireDmi() {
+  dmiAsked_ = true;
   tlm::tlm_dmi dmi;
   read_.set_address(0);
   if (!memory->get_direct_mem_ptr(read_, dmi) || !dmi.is_read_allowed()) return;
@@ -50,29 +27,32 @@ void LtTraversalCore::acquireDmi() {
                       static_cast<size_t>((dmi.get_end_address() + 1) / 4));
 }
 
-uint64_t LtTraversalCore::traverse(uint64_t dispatch, uint32_t& blocked) {
-  uint64_t cycle = dispatch + 1;
+CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
+  if (!dmiAsked_) acquireDmi();
+  core_.start(job.t0, job.t1, job.a, job.root);
+  uint64_t cycle = initCycle;
+  uint32_t blocked = 0;
   if (dmi_) {
     while (core_.busy()) {
       core_.step([this](uint32_t address) { return direct_.read(address); });
       ++cycle;
     }
-    return cycle;
-  }
-  while (core_.busy()) {
-    if (core_.readsMemory()) {
-      const uint64_t issued = cycle;
-      const uint32_t word = readWord(core_.memoryAddress(), cycle);
-      blocked += static_cast<uint32_t>(cycle - issued);
+  } else {
+    while (core_.busy()) {
+      uint32_t word = 0;
+      if (core_.readsMemory()) {
+        const uint64_t issued = cycle;
+        word = readWord(core_.memoryAddress(), cycle);
+        blocked += static_cast<uint32_t>(cycle - issued);
+      }
+      // Only a state that announced its read reads a word.
       core_.step([word](uint32_t) { return word; });
-    } else {
-      core_.step([](uint32_t address) -> uint32_t {
-        throw std::logic_error("state read word " + std::to_string(address) + " unannounced");
-      });
+      ++cycle;
     }
-    ++cycle;
   }
-  return cycle;
+  CoreResult result{job.ids, makeResult(job.idWord, core_), blocked};
+  core_.finish();
+  return result;
 }
 
 uint32_t LtTraversalCore::readWord(uint32_t address, uint64_t& cycle) {
@@ -85,12 +65,6 @@ uint32_t LtTraversalCore::readWord(uint32_t address, uint64_t& cycle) {
                              read_.get_response_string());
   cycle = time_.cycleAt(delay);
   return word_;
-}
-
-// Local time is the cycle the core is idle from; past the quantum, the core yields.
-void LtTraversalCore::keepQuantum(uint64_t cycle) {
-  quantum_.set(time_.delayTo(cycle));
-  if (quantum_.need_sync()) quantum_.sync();
 }
 
 }  // namespace rtu

@@ -1,48 +1,68 @@
 #pragma once
-// The loosely-timed RTU (docs/fidelity.md, "The loosely-timed model"): thesis figure 6.1 at
-// transaction level. N traversal cores, TLM-2.0 initiators with temporal decoupling, take jobs
-// from the dispatcher (job manager and scheduler) and hand results to the collector (result
-// manager and output link); their memory is the ideal ROM (DMI) or, per core, an L1 target in
-// front of the shared L2 target and the DRAM target.
+// The loosely-timed RTU (docs/fidelity.md, "The loosely-timed model"): thesis figure 6.1 with
+// its memory at transaction level. N traversal cores are TLM-2.0 initiators; their memory is the
+// ideal ROM (DMI) or, per core, an L1 target in front of the shared L2 target and the DRAM target.
+//
+// One thread drives them, temporally decoupled (tlm_utils::tlm_quantumkeeper, after the
+// Accellera lt_td_initiator example): the job manager, scheduler and result manager are the
+// recurrence of golden/rtu_recurrence.h, the same rules as the cycle-accurate modules; at each
+// dispatch the chosen core traverses its job through its memory at once, and the thread
+// synchronises with the kernel whenever the dispatches run a quantum ahead of simulated time.
+// Jobs are dispatched in cycle order, so the per-core L1s see their reads in cycle order; the
+// shared L2 and DRAM see one traversal's reads after another's, out of cycle order by up to a
+// traversal, and take them in their out-of-order form (modules/resource_booking.h).
 
 #include <memory>
 #include <vector>
 
-#include "cache_contents.h"
-#include "lt_dispatcher.h"
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/tlm_quantumkeeper.h>
+
+#include "job_setup.h"
 #include "lt_dram.h"
 #include "lt_l1_cache.h"
 #include "lt_l2_cache.h"
-#include "lt_result_collector.h"
 #include "lt_rom.h"
 #include "lt_traversal_core.h"
 #include "rtu_config.h"
+#include "rtu_recurrence.h"
 
 namespace rtu {
 
 class LtTop : public sc_core::sc_module {
  public:
-  // `records` must outlive the top. `startCaches`: lines resident from cycle 0, or null.
+  // `records` must outlive the top.
   LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
-        const std::vector<HostRecord>& records, const CacheContents* startCaches = nullptr);
+        const std::vector<HostRecord>& records);
 
-  const LtDispatcher& dispatcher() const { return *dispatcher_; }
-  const LtResultCollector& collector() const { return *collector_; }
+  // After the simulation: the cycles, and each job's result by job index.
+  const RecurrenceRun& timing() const { return timing_; }
+  const std::vector<TraversalResult>& results() const { return results_; }
+  const std::vector<uint32_t>& blocked() const { return blocked_; }
   bool idealMemory() const { return rom_ != nullptr; }
   std::vector<CacheStats> l1Statistics() const;
   L2Stats l2Statistics() const;  // the L2's counts with the DRAM target's
 
  private:
-  void bindCachedMemory(const RtuConfig& config, SvoMemory memory, const CacheContents* start);
+  void drive();
+  uint64_t traverse(size_t job, int core, uint64_t initCycle);
+  void bindCachedMemory(const RtuConfig& config, SvoMemory memory);
 
+  const RtuConfig& config_;
+  const std::vector<HostRecord>& records_;
   LtTime time_;
-  std::unique_ptr<LtDispatcher> dispatcher_;
-  std::unique_ptr<LtResultCollector> collector_;
+  JobSetup setup_;
+  tlm_utils::tlm_quantumkeeper quantum_;
   std::vector<std::unique_ptr<LtTraversalCore>> cores_;
   std::unique_ptr<LtRom> rom_;
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
+  std::vector<CoreJob> jobs_;
+  RecurrenceRun timing_;
+  std::vector<TraversalResult> results_;
+  std::vector<uint32_t> blocked_;
 };
 
 }  // namespace rtu

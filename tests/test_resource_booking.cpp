@@ -7,7 +7,6 @@
 
 #include "l2_cache_timing.h"
 #include "resource_booking.h"
-#include "slot_calendar.h"
 
 using namespace rtu;
 
@@ -71,21 +70,4 @@ TEST_CASE("L2 out of order: an earlier request after a later one, cycles by hand
   // 106 (before A's transfer at 148), there at 106.
   CHECK(loose.read(64, 50) == 106);
   CHECK_THROWS_AS(strict.read(0, 100) + strict.read(64, 50), std::logic_error);
-}
-
-TEST_CASE("Slot calendar: slots taken out of order, forgotten behind, grown ahead", "[booking]") {
-  SlotCalendar slots;
-  CHECK(slots.takeFirstFree(5) == 5);
-  CHECK(slots.takeFirstFree(3) == 3);
-  CHECK(slots.takeFirstFree(3) == 4);
-  CHECK(slots.takeFirstFree(3) == 6);  // 3, 4 and 5 are taken
-  CHECK(slots.takeIfFree(7));
-  CHECK_FALSE(slots.takeIfFree(7));
-  CHECK(slots.takeIfFree(100000));      // far ahead: the ring grows and keeps what it held
-  CHECK_FALSE(slots.takeIfFree(5));
-  slots.forgetBefore(6);
-  CHECK_FALSE(slots.takeIfFree(5));     // forgotten slots count as taken
-  CHECK(slots.takeFirstFree(0) == 8);   // 6 and 7 stand
-  CHECK_FALSE(slots.takeIfFree(100000));
-  CHECK(slots.takeFirstFree(100000) == 100001);
 }

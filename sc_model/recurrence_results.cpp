@@ -1,0 +1,108 @@
+#include "recurrence_results.h"
+
+#include <algorithm>
+#include <array>
+#include <queue>
+
+namespace rtu {
+namespace {
+
+// Per job: whether some core was idle in the cycle it became pending (eq. 6.7's case). A core is
+// busy from the cycle after its dispatch to its handover; every earlier job was dispatched
+// before that cycle and no later one, so the busy cores are the earlier jobs not yet handed over.
+std::vector<bool> coreIdleWhenPending(const RecurrenceRun& run, int cores) {
+  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<>> handovers;  // earlier jobs
+  std::vector<bool> idle(run.pendingCycles.size());
+  for (size_t i = 0; i < idle.size(); ++i) {
+    while (!handovers.empty() && handovers.top() < run.pendingCycles[i]) handovers.pop();
+    idle[i] = handovers.size() < static_cast<size_t>(cores);
+    handovers.push(run.handoverCycles[i]);
+  }
+  return idle;
+}
+
+// The most result buffers full at once, as the result manager counts them: a result counts from
+// the cycle it is buffered to the cycle after it drained.
+uint64_t maxBuffersFull(const RecurrenceRun& run) {
+  std::vector<uint64_t> starts(run.handoverCycles.size()), ends(run.drainCycles.size());
+  for (size_t j = 0; j < starts.size(); ++j) {
+    starts[j] = run.handoverCycles[j] + 1;
+    ends[j] = run.drainCycles[j] + 2;
+  }
+  std::sort(starts.begin(), starts.end());
+  std::sort(ends.begin(), ends.end());
+  uint64_t full = 0, most = 0;
+  size_t ended = 0;
+  for (uint64_t start : starts) {
+    for (; ended < ends.size() && ends[ended] <= start; ++ended) --full;
+    most = std::max(most, ++full);
+  }
+  return most;
+}
+
+RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<TraversalResult>& results,
+                           const std::vector<uint32_t>& blocked, const RtuConfig& config) {
+  RtuStatistics stats;
+  stats.rays = results.size();
+  stats.totalCycles = run.totalCycles;
+  stats.clockMhz = config.clockMhz;
+  stats.cores = config.cores;
+  stats.scheduler = toString(config.scheduler);
+  stats.coreTimes.resize(static_cast<size_t>(config.cores));
+  stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
+  stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
+  stats.hostOutRecordBytes = config.outputLink().recordBytes;
+  const std::vector<bool> idleWhenPending = coreIdleWhenPending(run, config.cores);
+  std::array<uint64_t, 256> shortWaits{};  // jobs by wait: no map look-up per job
+  for (size_t j = 0; j < results.size(); ++j) {
+    const TraversalResult& result = results[j];
+    const uint64_t blockedCycles = blocked.empty() ? 0 : blocked[j];
+    CoreStatistics& core = stats.coreTimes[static_cast<size_t>(run.cores[j])];
+    ++core.jobs;
+    core.busyCycles += result.cost;
+    core.blockedCycles += blockedCycles;
+    core.outCycles +=
+        run.handoverCycles[j] + 1 - (run.dispatchCycles[j] + 1 + result.cost + blockedCycles);
+    stats.totalBlocked += blockedCycles;
+    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, blockedCycles);
+    core.stackOverflows += result.stackOverflow;
+    core.tOverflows += result.tOverflow;
+    stats.belowResolution += result.belowResolution;
+    stats.totalCost += result.cost;
+    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.cost);
+    const uint64_t wait = run.dispatchCycles[j] - run.pendingCycles[j];
+    stats.jobManagerStallCycles += wait;
+    if (wait < shortWaits.size())
+      ++shortWaits[wait];
+    else
+      ++stats.waitHistogram[wait];
+    stats.maxWait = std::max(stats.maxWait, wait);
+    if (idleWhenPending[j]) stats.maxWaitWithReadyCore = std::max(stats.maxWaitWithReadyCore, wait);
+  }
+  for (uint64_t wait = 0; wait < shortWaits.size(); ++wait)
+    if (shortWaits[wait] > 0) stats.waitHistogram[wait] += shortWaits[wait];
+  stats.stackOverflows = stats.allCores().stackOverflows;
+  stats.resultBuffersMaxFull = maxBuffersFull(run);
+  return stats;
+}
+
+}  // namespace
+
+RtuRun recurrenceResults(const RecurrenceRun& timing, const std::vector<TraversalResult>& results,
+                         const std::vector<uint32_t>& blocked, const RtuConfig& config) {
+  RtuRun run;
+  run.totalCycles = timing.totalCycles;
+  run.results.reserve(results.size());
+  run.jobIndices = timing.hostOrder;
+  run.arrivalCycles.reserve(results.size());
+  run.blockedCycles.reserve(results.size());
+  for (size_t job : timing.hostOrder) {
+    run.results.push_back(results[job]);
+    run.arrivalCycles.push_back(timing.drainCycles[job]);
+    run.blockedCycles.push_back(blocked.empty() ? 0 : blocked[job]);
+  }
+  run.statistics = statisticsOf(timing, results, blocked, config);
+  return run;
+}
+
+}  // namespace rtu
