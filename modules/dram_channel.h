@@ -30,7 +30,6 @@ class DramChannel {
   uint64_t read(uint32_t bytes, uint64_t issueCycle);
 
   uint64_t transferCycles(uint32_t bytes) const;
-  const DramConfig& config() const { return config_; }
   // No later read is issued before `cycle` (RequestOrder::Any keeps bookings until then).
   void forgetBefore(uint64_t cycle) { bus_.forgetBefore(cycle); }
   const DramStats& stats() const { return stats_; }

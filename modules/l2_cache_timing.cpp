@@ -28,7 +28,8 @@ L2CacheTiming::L2CacheTiming(const CacheConfig& cache, const DramConfig& dram,
       dram_(validated(dram), order),
       externalDram_(std::move(external)),
       order_(order),
-      port_(order) {}
+      port_(order),
+      uncontendedMiss_(dram.latency + dram_.transferCycles(cache.lineBytes)) {}
 
 uint64_t L2CacheTiming::read(uint64_t byteAddress, uint64_t requestCycle) {
   const bool inCycleOrder = requestCycle >= lastRequestCycle_;
@@ -47,8 +48,7 @@ uint64_t L2CacheTiming::read(uint64_t byteAddress, uint64_t requestCycle) {
 // been issued after this request's tag check. In cycle order this request would have missed and
 // that one merged, so it waits no longer than its own uncontended miss would.
 uint64_t L2CacheTiming::mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) const {
-  const DramConfig& dram = dram_.config();
-  return std::min(fillCycle, tagCheckDone + dram.latency + dram_.transferCycles(array_.config().lineBytes));
+  return std::min(fillCycle, tagCheckDone + uncontendedMiss_);
 }
 
 uint64_t L2CacheTiming::acceptRequest(uint64_t requestCycle) {

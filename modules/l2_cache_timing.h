@@ -79,6 +79,7 @@ class L2CacheTiming {
   RequestOrder order_;
   uint64_t lastRequestCycle_ = 0;  // the latest request so far
   ResourceBooking port_;
+  uint64_t uncontendedMiss_;  // DRAM latency and one line's transfer
   // The MSHRs' uses, [issue, release), that may still be busy for a later request.
   struct MshrUse {
     uint64_t issue, release;

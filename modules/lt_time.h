@@ -16,17 +16,22 @@ namespace rtu {
 class LtTime {
  public:
   explicit LtTime(const CycleClock& clock)
-      : clock_(clock), period_(clock.period()), periodPs_(period_.value()) {}
+      : clock_(clock),
+        period_(clock.period()),
+        periodPs_(period_.value()),
+        cyclesPerPs_(1.0 / static_cast<double>(periodPs_)) {}
 
-  // The cycle `delay` after simulated time.
+  // The cycle `delay` after simulated time. Delays are whole cycles, so a multiplication by the
+  // reciprocal, rounded, gives the quotient exactly (below 2^53 ps) without a division per read.
   uint64_t cycleAt(const sc_core::sc_time& delay) const {
-    return clock_.now() + delay.value() / periodPs_;
+    if (delay.value() >= kExactPs) return clock_.now() + delay.value() / periodPs_;
+    return clock_.now() + static_cast<uint64_t>(static_cast<double>(delay.value()) * cyclesPerPs_ + 0.5);
   }
   // The delay from simulated time to `cycle` (not before it). Scaled in line, exactly while the
   // picoseconds fit a double's 53 bits: the library's sc_time::from_value is a call per read.
   sc_core::sc_time delayTo(uint64_t cycle) const {
     const uint64_t cycles = cycle - clock_.now();
-    if (cycle > kMaxCycles || cycles > (uint64_t{1} << 53) / periodPs_)
+    if (cycle > kMaxCycles || cycles >= kExactPs / periodPs_)
       return clock_.until(cycle);  // exact, and throws std::overflow_error past kMaxCycles
     sc_core::sc_time delay = period_;
     delay *= static_cast<double>(cycles);
@@ -36,9 +41,12 @@ class LtTime {
   sc_core::sc_time period() const { return period_; }
 
  private:
+  static constexpr uint64_t kExactPs = uint64_t{1} << 53;  // a double holds them exactly
+
   CycleClock clock_;
   sc_core::sc_time period_;
   uint64_t periodPs_;
+  double cyclesPerPs_;
 };
 
 // A read of a cache line through a socket, for its timing: the caches hold tags only (the image

@@ -1,50 +1,52 @@
 #include "resource_booking.h"
 
 #include <algorithm>
-#include <iterator>
 
 namespace rtu {
 
 uint64_t ResourceBooking::book(uint64_t from, uint64_t cycles) {
   const uint64_t start = firstFree(from, cycles);
-  if (order_ == RequestOrder::Cycle)
+  if (order_ == RequestOrder::Cycle) {
     free_ = start + cycles;
-  else
-    insertRun(start, start + cycles);
+    return start;
+  }
+  if (start + cycles - base_ > ringCycles()) grow(start + cycles - base_);
+  for (uint64_t cycle = start; cycle < start + cycles; ++cycle)
+    word(cycle) |= uint64_t{1} << (cycle % 64);
+  end_ = std::max(end_, start + cycles);
   return start;
 }
 
 uint64_t ResourceBooking::firstFree(uint64_t from, uint64_t cycles) const {
   if (order_ == RequestOrder::Cycle) return std::max(from, free_);
-  uint64_t start = from;
-  // The run that starts last at or before `from` may still cover it.
-  auto next = busy_.upper_bound(from);
-  if (next != busy_.begin()) start = std::max(start, std::prev(next)->second);
-  for (; next != busy_.end() && next->first < start + cycles; ++next)
-    start = std::max(start, next->second);
+  uint64_t start = std::max(from, base_);
+  for (uint64_t cycle = start; cycle < start + cycles && cycle < end_; ++cycle)
+    if (booked(cycle)) start = cycle + 1;  // the run must begin after it
   return start;
-}
-
-// Books the free run [start, end), merged with the runs it touches to keep the map small.
-void ResourceBooking::insertRun(uint64_t start, uint64_t end) {
-  auto next = busy_.lower_bound(start);
-  if (next != busy_.end() && next->first == end) {
-    end = next->second;
-    next = busy_.erase(next);
-  }
-  if (next != busy_.begin()) {
-    const auto before = std::prev(next);
-    if (before->second == start) {
-      before->second = end;
-      return;
-    }
-  }
-  busy_.emplace_hint(next, start, end);
 }
 
 void ResourceBooking::forgetBefore(uint64_t cycle) {
   if (order_ == RequestOrder::Cycle) return;
-  while (!busy_.empty() && busy_.begin()->second <= cycle) busy_.erase(busy_.begin());
+  for (; base_ < cycle && base_ < end_; ++base_) word(base_) &= ~(uint64_t{1} << (base_ % 64));
+  base_ = std::max(base_, cycle);
+  end_ = std::max(end_, base_);
+}
+
+bool ResourceBooking::booked(uint64_t cycle) const {
+  return (bits_[(cycle & (ringCycles() - 1)) / 64] >> (cycle % 64)) & 1;
+}
+
+// Room for cycles [base_, base_ + span), the booked ones kept.
+void ResourceBooking::grow(uint64_t span) {
+  ResourceBooking larger(order_);
+  size_t words = bits_.size();
+  while (words * 64 < span) words *= 2;
+  larger.bits_.assign(words, 0);
+  larger.base_ = base_;
+  larger.end_ = end_;
+  for (uint64_t cycle = base_; cycle < end_; ++cycle)
+    if (booked(cycle)) larger.word(cycle) |= uint64_t{1} << (cycle % 64);
+  *this = std::move(larger);
 }
 
 }  // namespace rtu

@@ -6,13 +6,15 @@
 // RequestOrder::Cycle, for the cycle-accurate model, whose requests come in cycle order: the
 // resource is free from the end of the last booking on, so start = max(from, end of last).
 // RequestOrder::Any, for the loosely-timed model, whose cores run ahead of each other within a
-// quantum and so make their requests out of cycle order: the booked runs are kept, and a request
-// fills the first gap it fits in, even one before a later booking. With requests in cycle order
-// both give the same starts (a gap before the last booking is then always earlier than `from`).
-// Runs that end before forgetBefore's cycle are dropped: no request can start before it.
+// quantum and so make their requests out of cycle order: the booked cycles are kept, and a
+// request fills the first gap it fits in, even one before a later booking. With requests in cycle
+// order both give the same starts (a gap before the last booking is then always earlier than
+// `from`). The booked cycles are a ring of bits from forgetBefore's cycle (no request starts
+// before it) on, grown (a power of two long) when a booking lies further ahead: a few bit
+// operations a request, where an ordered map of runs cost a tree node each.
 
 #include <cstdint>
-#include <map>
+#include <vector>
 
 namespace rtu {
 
@@ -30,11 +32,16 @@ class ResourceBooking {
   void forgetBefore(uint64_t cycle);
 
  private:
-  void insertRun(uint64_t start, uint64_t end);
+  bool booked(uint64_t cycle) const;
+  uint64_t& word(uint64_t cycle) { return bits_[(cycle & (ringCycles() - 1)) / 64]; }
+  uint64_t ringCycles() const { return bits_.size() * 64; }
+  void grow(uint64_t span);
 
   RequestOrder order_;
-  uint64_t free_ = 0;                  // Cycle: free from here on
-  std::map<uint64_t, uint64_t> busy_;  // Any: booked runs, start -> end (exclusive), disjoint
+  uint64_t free_ = 0;  // Cycle: free from here on
+  // Any: bit c mod ring size for cycle c in [base_, end_); none booked at or after end_.
+  std::vector<uint64_t> bits_ = std::vector<uint64_t>(4, 0);
+  uint64_t base_ = 0, end_ = 0;
 };
 
 }  // namespace rtu

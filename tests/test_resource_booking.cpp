@@ -27,9 +27,11 @@ TEST_CASE("Booking out of order: a request fills the first gap it fits in", "[bo
   CHECK(bus.book(18, 2) == 18);  // exactly the gap 18..20
   CHECK(bus.firstFree(0, 10) == 0);
   CHECK(bus.firstFree(5, 10) == 28);  // [10, 28) is booked whole now
-  bus.forgetBefore(25);               // the runs ended by 25 are gone
-  CHECK(bus.firstFree(0, 2) == 0);
-  CHECK(bus.book(25, 1) == 28);  // [24, 28) still stands
+  bus.forgetBefore(25);               // nothing starts before 25 any more
+  CHECK(bus.firstFree(0, 2) == 28);   // from 25 on: [24, 28) still stands
+  CHECK(bus.book(25, 1) == 28);
+  CHECK(bus.book(1000, 3) == 1000);   // far ahead: the ring grows and keeps what it held
+  CHECK(bus.firstFree(26, 1) == 29);
 }
 
 TEST_CASE("Booking: both orders agree on requests that come in cycle order", "[booking]") {
