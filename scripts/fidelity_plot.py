@@ -20,7 +20,7 @@ FLOOR = 0.001  # percent: where exact modes are drawn on the log axis
 def main():
     out, files = sys.argv[1], sys.argv[2:]
     figure, axes = plt.subplots(figsize=(9.5, 5), dpi=120)
-    markers = {"systemc": "s", "recurrence": "D", "sampled": "o"}
+    markers = {"systemc": "s", "recurrence": "D", "lt": "^", "sampled": "o"}
     colours = plt.get_cmap("tab20")
     for index, path in enumerate(files):
         label = os.path.basename(path)[: -len(".csv")]
@@ -32,7 +32,7 @@ def main():
             speed = float(row["speed_up"])
             axes.scatter(speed, error, marker=markers[kind], color=colours(index % 20),
                          label=label if kind == "systemc" else None, s=36)
-            if kind == "sampled":
+            if kind in ("sampled", "lt"):
                 axes.annotate(row["mode"].split()[1], (speed, error), textcoords="offset points",
                               xytext=(4, 3), fontsize=7, color=colours(index % 20))
     axes.set_xscale("log")
@@ -45,8 +45,8 @@ def main():
     axes.text(axes.get_xlim()[0] * 1.05, 3.3, "3 %", color="grey", fontsize=8)
     axes.set_xlabel("speed-up over the SystemC model (host seconds)")
     axes.set_ylabel("|error of total cycles| (%%); exact modes at %g" % FLOOR)
-    axes.set_title("Speed against accuracy: squares SystemC, diamonds recurrence, "
-                   "circles sampled (fraction)", fontsize=9)
+    axes.set_title("Speed against accuracy: squares SystemC, diamonds recurrence, triangles "
+                   "loosely-timed (quantum), circles sampled (fraction)", fontsize=9)
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="configuration",
                 title_fontsize=8)
