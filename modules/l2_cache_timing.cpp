@@ -68,13 +68,31 @@ uint64_t L2CacheTiming::fetchLine(uint64_t tagCheckDone) {
   mshrQueueCycles_ += issue - tagCheckDone;
   const uint32_t bytes = array_.config().lineBytes;
   const uint64_t fill = externalDram_ ? externalDram_(bytes, issue) : dram_.read(bytes, issue);
-  mshrUses_.push_back({issue, fill});
+  if (order_ == RequestOrder::Cycle)
+    mshrReleases_.push(fill);
+  else
+    mshrUses_.push_back({issue, fill});
   return fill;
 }
 
 // The first cycle from `cycle` on in which fewer than maxOutstandingMisses MSHRs are busy.
 uint64_t L2CacheTiming::claimMshr(uint64_t cycle) {
-  if (order_ == RequestOrder::Cycle) forgetMshrsBefore(cycle);
+  return order_ == RequestOrder::Cycle ? claimMshrInOrder(cycle) : claimMshrAnyOrder(cycle);
+}
+
+// In cycle order the busy MSHRs are those released after `cycle`: a heap of at most
+// maxOutstandingMisses releases, the earliest taken over when all are busy.
+uint64_t L2CacheTiming::claimMshrInOrder(uint64_t cycle) {
+  while (!mshrReleases_.empty() && mshrReleases_.top() <= cycle) mshrReleases_.pop();
+  if (mshrReleases_.size() < array_.config().maxOutstandingMisses) return cycle;
+  const uint64_t release = mshrReleases_.top();
+  mshrReleases_.pop();
+  return release;
+}
+
+// Out of order a use may have been issued after `cycle`: the busy ones at a cycle are those
+// issued by it and released after it.
+uint64_t L2CacheTiming::claimMshrAnyOrder(uint64_t cycle) {
   for (;;) {
     uint32_t busy = 0;
     uint64_t firstRelease = UINT64_MAX;

@@ -30,6 +30,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <queue>
 #include <vector>
 
 #include "cache_array.h"
@@ -71,6 +72,8 @@ class L2CacheTiming {
   uint64_t mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) const;
   uint64_t fetchLine(uint64_t tagCheckDone);
   uint64_t claimMshr(uint64_t cycle);
+  uint64_t claimMshrInOrder(uint64_t cycle);
+  uint64_t claimMshrAnyOrder(uint64_t cycle);
   void forgetMshrsBefore(uint64_t cycle);
 
   CacheArray array_;
@@ -80,7 +83,9 @@ class L2CacheTiming {
   uint64_t lastRequestCycle_ = 0;  // the latest request so far
   ResourceBooking port_;
   uint64_t uncontendedMiss_;  // DRAM latency and one line's transfer
-  // The MSHRs' uses, [issue, release), that may still be busy for a later request.
+  // RequestOrder::Cycle: release cycles of the busy MSHRs, earliest on top.
+  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> mshrReleases_;
+  // RequestOrder::Any: the MSHRs' uses, [issue, release), that may still be busy for a request.
   struct MshrUse {
     uint64_t issue, release;
   };
