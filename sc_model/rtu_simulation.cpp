@@ -124,6 +124,7 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   run.results.reserve(arrivals.size());
   run.jobIndices.reserve(arrivals.size());
   run.blockedCycles.reserve(arrivals.size());
+  run.instances.reserve(arrivals.size());
   for (const auto& [cycle, result] : arrivals) {
     run.arrivalCycles.push_back(cycle);
     run.results.push_back(result.result);

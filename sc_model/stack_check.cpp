@@ -12,8 +12,9 @@ namespace rtu {
 void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
                      bool allowOverflow) {
   std::vector<uint32_t> roots;
-  roots.reserve(jobs.size());
-  for (const TraversalJob& job : jobs) roots.push_back(job.root);
+  // A frame's jobs mostly share one root: skipping repeats keeps the sort short.
+  for (const TraversalJob& job : jobs)
+    if (roots.empty() || roots.back() != job.root) roots.push_back(job.root);
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
   const std::vector<int> needed = descriptorDepths(image, roots);
