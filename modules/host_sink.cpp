@@ -4,6 +4,8 @@
 #include <numeric>
 #include <type_traits>
 
+#include "prefault.h"
+
 namespace rtu {
 
 namespace {
@@ -24,7 +26,10 @@ void forEachColumn(HostSink::Arrivals& arrivals, Apply&& apply) {
 HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link)
     : Agent(pump), expected_(expected), link_(link), pacer_(link) {
   validate(link, "host output");
-  forEachColumn(arrivals_, [expected](auto& column) { column.reserve(expected); });
+  forEachColumn(arrivals_, [expected](auto& column) {
+    column.reserve(expected);
+    prefaultCapacity(column);
+  });
 }
 
 void HostSink::bind(TransferChannel<CoreResult>& in) {

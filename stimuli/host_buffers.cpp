@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "binary_file.h"
+#include "prefault.h"
 #include "ray_setup.h"
 
 namespace rtu {
@@ -238,6 +239,7 @@ std::vector<Out> readAll(const std::string& path, std::vector<SkippedRecord>* sk
   RecordFileReader reader(path, Codec::kWords * 4, what);
   std::vector<Out> records;
   records.reserve(reader.records());
+  prefaultCapacity(records);
   size_t count = 0, index = 0;
   try {
     while (const uint32_t* chunk = reader.next(count))
