@@ -22,26 +22,6 @@ CacheArray::CacheArray(const CacheConfig& config)
       ways_(size_t{config.sets()} * config.ways),
       random_(config.seed) {}
 
-size_t CacheArray::find(uint64_t line) const {
-  const size_t first = firstWayOf(line);
-  for (size_t i = first; i < first + config_.ways; ++i)
-    if (ways_[i].valid && ways_[i].line == line) return i;
-  return kAbsent;
-}
-
-CacheLookup CacheArray::access(uint64_t byteAddress, uint64_t cycle) {
-  ++stats_.accesses;
-  const size_t i = find(lineOf(byteAddress));
-  if (i == kAbsent) {
-    ++stats_.misses;
-    return {};
-  }
-  Way& way = ways_[i];
-  ++(way.fillCycle <= cycle ? stats_.hits : stats_.merged);
-  if (config_.replacement == Replacement::Lru) way.stamp = ++clock_;
-  return {true, way.fillCycle};
-}
-
 void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
   const uint64_t line = lineOf(byteAddress);
   if (find(line) != kAbsent)

@@ -41,7 +41,19 @@ class CacheArray {
   explicit CacheArray(const CacheConfig& config);
 
   // Looks the line of `byteAddress` up at `cycle` and, if present, makes it most recently used.
-  CacheLookup access(uint64_t byteAddress, uint64_t cycle);
+  // Inline: every L1 lookup of a cached run comes here.
+  CacheLookup access(uint64_t byteAddress, uint64_t cycle) {
+    ++stats_.accesses;
+    const size_t i = find(lineOf(byteAddress));
+    if (i == kAbsent) {
+      ++stats_.misses;
+      return {};
+    }
+    Way& way = ways_[i];
+    ++(way.fillCycle <= cycle ? stats_.hits : stats_.merged);
+    if (config_.replacement == Replacement::Lru) way.stamp = ++clock_;
+    return {true, way.fillCycle};
+  }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
   void allocate(uint64_t byteAddress, uint64_t fillCycle);
   // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
@@ -71,7 +83,12 @@ class CacheArray {
   uint64_t lineOf(uint64_t byteAddress) const { return byteAddress >> lineShift_; }
   size_t firstWayOf(uint64_t line) const { return (line & setMask_) * config_.ways; }
   // Index in ways_ of the way holding `line`, or kAbsent.
-  size_t find(uint64_t line) const;
+  size_t find(uint64_t line) const {
+    const size_t first = firstWayOf(line);
+    for (size_t i = first; i < first + config_.ways; ++i)
+      if (ways_[i].valid && ways_[i].line == line) return i;
+    return kAbsent;
+  }
   size_t victim(size_t firstWay);
 
   CacheConfig config_;

@@ -1,13 +1,35 @@
 #include "host_sink.h"
 
 #include <algorithm>
+#include <numeric>
+#include <type_traits>
+
+#include "prefault.h"
 
 namespace rtu {
+
+namespace {
+
+// Calls `apply(column)` for each column of `arrivals`.
+template <class Apply>
+void forEachColumn(HostSink::Arrivals& arrivals, Apply&& apply) {
+  apply(arrivals.cycles);
+  apply(arrivals.results);
+  apply(arrivals.rays);
+  apply(arrivals.jobs);
+  apply(arrivals.blockedCycles);
+  apply(arrivals.instances);
+}
+
+}  // namespace
 
 HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link)
     : Agent(pump), expected_(expected), link_(link), pacer_(link) {
   validate(link, "host output");
-  arrivals_.reserve(expected);
+  forEachColumn(arrivals_, [expected](auto& column) {
+    column.reserve(expected);
+    prefaultCapacity(column);
+  });
 }
 
 void HostSink::bind(TransferChannel<CoreResult>& in) {
@@ -33,7 +55,12 @@ void HostSink::decide() {
 }
 
 void HostSink::receive(uint64_t cycle, const CoreResult& result) {
-  arrivals_.push_back({cycle, result});
+  arrivals_.cycles.push_back(cycle);
+  arrivals_.results.push_back(result.result);
+  arrivals_.rays.push_back(result.ids.ray);
+  arrivals_.jobs.push_back(result.ids.job);
+  arrivals_.blockedCycles.push_back(result.blockedCycles);
+  arrivals_.instances.push_back(result.instance);
   notYetArrived_.push_back(cycle);
   lastArrival_ = std::max(lastArrival_, cycle);
   if (complete()) {
@@ -80,10 +107,39 @@ uint64_t HostSink::arrivedBefore(uint64_t cycle) {
   return arrived_;
 }
 
+// Results are received nearly in cycle order (at 16 cores half a place late on average, at most
+// a place per core), so moving each late one back to its place moves few, in place. Should the
+// order be far off, a sort of all of them finishes once the moves reach a few per result.
 void HostSink::arrange() {
-  // The job breaks ties, should there be any, so the order never depends on the sort.
-  std::sort(arrivals_.begin(), arrivals_.end(), [](const Arrival& a, const Arrival& b) {
-    return a.cycle != b.cycle ? a.cycle < b.cycle : a.result.ids.job < b.result.ids.job;
+  const size_t n = arrivals_.size();
+  uint64_t movesLeft = 8 * n;
+  for (size_t late = 1; late < n; ++late) {
+    size_t place = late;
+    while (place > 0 && before(late, place - 1)) --place;
+    if (place == late) continue;
+    forEachColumn(arrivals_, [place, late](auto& column) {
+      std::rotate(column.begin() + place, column.begin() + late, column.begin() + late + 1);
+    });
+    if (late - place >= movesLeft) return sortAll();
+    movesLeft -= late - place;
+  }
+}
+
+// The job breaks ties, should there be any, so the order never depends on the sort.
+bool HostSink::before(size_t a, size_t b) const {
+  const uint64_t cycleA = arrivals_.cycles[a], cycleB = arrivals_.cycles[b];
+  return cycleA != cycleB ? cycleA < cycleB : arrivals_.jobs[a] < arrivals_.jobs[b];
+}
+
+void HostSink::sortAll() {
+  std::vector<size_t> order(arrivals_.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(), [this](size_t a, size_t b) { return before(a, b); });
+  forEachColumn(arrivals_, [&order](auto& column) {
+    std::remove_reference_t<decltype(column)> sorted;
+    sorted.reserve(order.size());
+    for (size_t i : order) sorted.push_back(column[i]);
+    column.swap(sorted);
   });
 }
 

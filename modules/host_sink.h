@@ -5,6 +5,7 @@
 // sorts them by arrival at the end, in place.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "decision_pump.h"
@@ -16,9 +17,15 @@ namespace rtu {
 
 class HostSink : public Agent {
  public:
-  struct Arrival {
-    uint64_t cycle;
-    CoreResult result;
+  // The results received, a column per field, so a run takes them over without a copy.
+  struct Arrivals {
+    std::vector<uint64_t> cycles;
+    std::vector<TraversalResult> results;
+    std::vector<uint64_t> rays;  // each result's ids.ray
+    std::vector<uint64_t> jobs;  // and ids.job
+    std::vector<uint32_t> blockedCycles;
+    std::vector<int> instances;
+    size_t size() const { return cycles.size(); }
   };
 
   HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link);
@@ -27,7 +34,9 @@ class HostSink : public Agent {
   void decide() override;
 
   // In arrival order once the run is complete (arrange()).
-  const std::vector<Arrival>& arrivals() const { return arrivals_; }
+  const Arrivals& arrivals() const { return arrivals_; }
+  // Moves them out (the sink is then empty).
+  Arrivals takeArrivals() { return std::move(arrivals_); }
   bool complete() const { return arrivals_.size() == expected_; }
   uint64_t expected() const { return expected_; }
   uint64_t lastArrival() const { return lastArrival_; }
@@ -37,6 +46,9 @@ class HostSink : public Agent {
 
  private:
   void receive(uint64_t cycle, const CoreResult& result);
+  // Whether the arrival received a-th goes before the one received b-th.
+  bool before(size_t a, size_t b) const;
+  void sortAll();
   TransferChannel<CoreResult>::Ready readyIn(uint64_t cycle);
   uint64_t firstReadyFrom(uint64_t cycle);
 
@@ -47,7 +59,7 @@ class HostSink : public Agent {
   uint64_t allowedFrom_ = 0;
   uint64_t drawnUntil_ = 0;           // a random link: cycles drawn so far ...
   std::vector<bool> activeFrom_;      // ... and their outcomes from allowedFrom_
-  std::vector<Arrival> arrivals_;
+  Arrivals arrivals_;
   uint64_t lastArrival_ = 0;
   std::vector<uint64_t> notYetArrived_;  // cycles of results not yet counted by arrivedBefore
   uint64_t arrived_ = 0;

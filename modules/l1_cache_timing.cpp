@@ -1,6 +1,5 @@
 #include "l1_cache_timing.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace rtu {
@@ -17,15 +16,6 @@ const CacheConfig& validated(const CacheConfig& config) {
 
 L1CacheTiming::L1CacheTiming(const CacheConfig& config, NextLevel next)
     : array_(validated(config)), next_(std::move(next)) {}
-
-L1Lookup L1CacheTiming::lookup(uint32_t wordAddress, uint64_t cycle) {
-  const uint64_t address = byteAddress(wordAddress);
-  const uint64_t tagCheckDone = cycle + array_.config().hitLatency;
-  const uint64_t lineAddress = address & ~uint64_t{array_.config().lineBytes - 1};
-  const CacheLookup line = array_.access(address, cycle);
-  if (line.present) return {true, std::max(tagCheckDone, line.fillCycle), lineAddress};
-  return {false, tagCheckDone, lineAddress};
-}
 
 uint64_t L1CacheTiming::fill(uint32_t wordAddress, uint64_t readyCycle) {
   array_.allocate(byteAddress(wordAddress), readyCycle);

@@ -18,6 +18,7 @@
 //                     fill() returns the cycle the data is there. Each missing lookup() must
 //                     be followed by its fill() before the core's next lookup().
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 
@@ -42,7 +43,15 @@ class L1CacheTiming {
   // Validates `config` (std::invalid_argument). `next` is needed by read() only.
   explicit L1CacheTiming(const CacheConfig& config, NextLevel next = nullptr);
 
-  L1Lookup lookup(uint32_t wordAddress, uint64_t cycle);
+  // Inline: a cached run's cores call it for nearly every state that reads memory.
+  L1Lookup lookup(uint32_t wordAddress, uint64_t cycle) {
+    const uint64_t address = byteAddress(wordAddress);
+    const uint64_t tagCheckDone = cycle + array_.config().hitLatency;
+    const uint64_t lineAddress = address & ~uint64_t{array_.config().lineBytes - 1};
+    const CacheLookup line = array_.access(address, cycle);
+    if (line.present) return {true, std::max(tagCheckDone, line.fillCycle), lineAddress};
+    return {false, tagCheckDone, lineAddress};
+  }
   // Allocates the missing line of `wordAddress`, its data arriving at readyCycle; returns it.
   uint64_t fill(uint32_t wordAddress, uint64_t readyCycle);
   // The cycle the word read at `cycle` is there.

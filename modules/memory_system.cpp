@@ -71,16 +71,17 @@ void MemorySystem::serveShared() {
     served_.push_back(calendar_.top().core);
     calendar_.pop();
   }
-  const int n = static_cast<int>(cores_.size());
-  const auto priority = [&](int core) { return (core - nextPriority_ + n) % n; };
-  std::sort(served_.begin(), served_.end(), [&](int a, int b) { return priority(a) < priority(b); });
+  // Round-robin: from the core after the one served last on (a core has one request at most).
+  std::sort(served_.begin(), served_.end());
+  std::rotate(served_.begin(), std::lower_bound(served_.begin(), served_.end(), nextPriority_),
+              served_.end());
   for (int core : served_) {
     CorePort& port = cores_[static_cast<size_t>(core)];
     const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
     // The core goes on at once and may register its next request (for a later cycle).
     port.reader->sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, now)));
   }
-  if (!served_.empty()) nextPriority_ = (served_.back() + 1) % n;
+  if (!served_.empty()) nextPriority_ = (served_.back() + 1) % static_cast<int>(cores_.size());
   if (!calendar_.empty()) wake_.at(calendar_.top().cycle);
   if (trace_ && !served_.empty()) {
     const L2Stats stats = l2_->stats();

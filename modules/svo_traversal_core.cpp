@@ -42,6 +42,13 @@ void SvoTraversalCore::decide() {
     in_->notReadyBefore(out_->readyBound() + 1);  // the result manager takes it then at the earliest
 }
 
+// The current state's cycle: the word it reads, if any, is there by now.
+inline void SvoTraversalCore::stepState() {
+  core_.step([this](uint32_t address) { return words_->read(address); });
+  ++localCycle_;
+  if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
+}
+
 // The shared level served the request: the word is there in `dataCycle`.
 void SvoTraversalCore::sharedReplied(uint64_t dataCycle) {
   waitForWord(dataCycle);
@@ -82,13 +89,6 @@ void SvoTraversalCore::run() {
     stepState();
   }
   offerResult();
-}
-
-// The current state's cycle: the word it reads, if any, is there by now.
-void SvoTraversalCore::stepState() {
-  core_.step([this](uint32_t address) { return words_->read(address); });
-  ++localCycle_;
-  if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
 }
 
 // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.

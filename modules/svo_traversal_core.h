@@ -68,7 +68,8 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   void sharedReplied(uint64_t dataCycle) override;
   void start(uint64_t dispatch, const CoreJob& job);
   void run();
-  void stepState();
+  // Forced inline: it runs once per simulated state, and a call costs a fifth of a state.
+  [[gnu::always_inline]] inline void stepState();
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
   void offerResult();

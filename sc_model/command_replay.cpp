@@ -40,21 +40,21 @@ void addReplayCommand(CLI::App& app) {
     checkOutputPaths(outputs, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     std::vector<HostRecord> records;
-    std::vector<TraversalJob> jobs;
     std::vector<SkippedRecord> skipped;
     if (!settings.rays.empty()) {
       const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
-      // The job manager's own set-up, run ahead once to check every header and tree up front.
-      jobs = jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
+      // The job manager's own set-up, run ahead once to check every header and tree up front;
+      // only the checks read these jobs (the run reads the records), so they go at the block's end.
+      const std::vector<TraversalJob> jobs =
+          jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
       records.assign(rays.begin(), rays.end());
       warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
+      checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
     } else {
-      jobs = readJobBufferSkipping(settings.jobs, skipped);
-      records.assign(jobs.begin(), jobs.end());
+      records = readJobRecordsSkipping(settings.jobs, skipped);
       warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
+      checkInputTrees(image, records, config.stackFrames, settings.allowStackOverflow, settings);
     }
-    checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
-    std::vector<TraversalJob>().swap(jobs);  // only the checks read them: the run reads records
     const RtuConfig planned =
         plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");

@@ -30,5 +30,8 @@ void warnSkippedRecords(const std::string& what, const std::string& path,
 // error naming the SVO image and the job or ray buffer of `settings` that points into it.
 void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs,
                      int stackFrames, bool allowOverflow, const RunConfig& settings);
+// The same on the records of a job buffer (readJobRecordsSkipping).
+void checkInputTrees(const SvoImage& image, const std::vector<HostRecord>& jobRecords,
+                     int stackFrames, bool allowOverflow, const RunConfig& settings);
 
 }  // namespace rtu

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include <systemc>
 
@@ -108,25 +109,20 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   HostSink& sink = top->sink();
   sink.arrange();
   // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
-  const std::vector<HostSink::Arrival>& arrivals = sink.arrivals();
-  if (trace) trace->finish(arrivals.empty() ? 0 : arrivals.front().cycle);
+  const std::vector<uint64_t>& cycles = sink.arrivals().cycles;
+  if (trace) trace->finish(cycles.empty() ? 0 : cycles.front());
   if (!sink.complete())
-    throw std::runtime_error("simulation stalled after " + std::to_string(arrivals.size()) +
+    throw std::runtime_error("simulation stalled after " + std::to_string(cycles.size()) +
                              " of " + std::to_string(records.size()) + " results");
-  run.totalCycles = arrivals.empty() ? 0 : arrivals.back().cycle + 1;
-  run.arrivalCycles.reserve(arrivals.size());
-  run.results.reserve(arrivals.size());
-  run.jobIndices.reserve(arrivals.size());
-  run.blockedCycles.reserve(arrivals.size());
-  for (const auto& [cycle, result] : arrivals) {
-    run.arrivalCycles.push_back(cycle);
-    run.results.push_back(result.result);
-    run.jobIndices.push_back(result.ids.ray);
-    run.blockedCycles.push_back(result.blockedCycles);
-    run.instances.push_back(result.instance);
-  }
+  run.totalCycles = cycles.empty() ? 0 : cycles.back() + 1;
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
+  HostSink::Arrivals arrivals = sink.takeArrivals();
+  run.arrivalCycles = std::move(arrivals.cycles);
+  run.results = std::move(arrivals.results);
+  run.jobIndices = std::move(arrivals.rays);
+  run.blockedCycles = std::move(arrivals.blockedCycles);
+  run.instances = std::move(arrivals.instances);
   if (trace) run.traceBytes = trace->countedBytes();
   if (timeline) run.timelineBytes = timeline->bytes();
   return run;

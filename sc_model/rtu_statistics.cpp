@@ -248,12 +248,15 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.scheduler = toString(config.scheduler);
   for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
   stats.stackOverflows = stats.allCores().stackOverflows;
-  for (const auto& [cycle, result] : top.sink().arrivals()) {
-    stats.totalCost += result.result.cost;
-    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.result.cost);
-    stats.totalBlocked += result.blockedCycles;
-    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, result.blockedCycles);
-    stats.belowResolution += result.result.belowResolution;
+  const HostSink::Arrivals& arrivals = top.sink().arrivals();
+  for (const TraversalResult& result : arrivals.results) {
+    stats.totalCost += result.cost;
+    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.cost);
+    stats.belowResolution += result.belowResolution;
+  }
+  for (uint32_t blocked : arrivals.blockedCycles) {
+    stats.totalBlocked += blocked;
+    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, blocked);
   }
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;

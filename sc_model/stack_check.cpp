@@ -4,6 +4,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "svo_validator.h"
 
@@ -12,8 +13,12 @@ namespace rtu {
 void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
                      bool allowOverflow) {
   std::vector<uint32_t> roots;
-  roots.reserve(jobs.size());
-  for (const TraversalJob& job : jobs) roots.push_back(job.root);
+  for (const TraversalJob& job : jobs) addRoot(roots, job.root);
+  checkRootDepths(image, std::move(roots), stackFrames, allowOverflow);
+}
+
+void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
+                     bool allowOverflow) {
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
   const std::vector<int> needed = descriptorDepths(image, roots);

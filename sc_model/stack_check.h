@@ -1,6 +1,7 @@
 #pragma once
 // Whether the configured traversal stack can hold the trees a job stream uses.
 
+#include <cstdint>
 #include <vector>
 
 #include "scene_loader.h"
@@ -14,6 +15,14 @@ namespace rtu {
 // such rays would corrupt it; rtusim ends them as flagged misses.
 void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
                      bool allowOverflow);
+// The same on the roots the jobs start from, repeats allowed.
+void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
+                     bool allowOverflow);
+// Adds a job's root to those for checkRootDepths unless it repeats the last: a frame's jobs
+// mostly share one root, so the roots' sort stays short.
+inline void addRoot(std::vector<uint32_t>& roots, uint32_t root) {
+  if (roots.empty() || roots.back() != root) roots.push_back(root);
+}
 
 // The same check before a procedural scene or a mesh is built, from its --depth alone: a tree of
 // depth d has descriptors down to level d - 1. Scenes read from files are checked once loaded.

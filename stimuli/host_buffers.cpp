@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "binary_file.h"
+#include "prefault.h"
 #include "ray_setup.h"
 
 namespace rtu {
@@ -217,8 +218,8 @@ std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& recor
 
 // Decodes record `index` into `records`; with `skipped`, an impossible record is noted there
 // instead of failing.
-template <class Codec>
-void decodeInto(const uint32_t* words, size_t index, std::vector<typename Codec::Record>& records,
+template <class Codec, class Out>
+void decodeInto(const uint32_t* words, size_t index, std::vector<Out>& records,
                 std::vector<SkippedRecord>* skipped) {
   if (!skipped) {
     records.push_back(Codec::decode(words, index));
@@ -231,14 +232,14 @@ void decodeInto(const uint32_t* words, size_t index, std::vector<typename Codec:
   }
 }
 
-// Decoding errors are prefixed with the file.
-template <class Codec>
-std::vector<typename Codec::Record> readAll(const std::string& path,
-                                            std::vector<SkippedRecord>* skipped = nullptr) {
+// Decoding errors are prefixed with the file. `Out`: what the records are kept as.
+template <class Codec, class Out = typename Codec::Record>
+std::vector<Out> readAll(const std::string& path, std::vector<SkippedRecord>* skipped = nullptr) {
   const std::string what = Codec::kWhat;
   RecordFileReader reader(path, Codec::kWords * 4, what);
-  std::vector<typename Codec::Record> records;
+  std::vector<Out> records;
   records.reserve(reader.records());
+  prefaultCapacity(records);
   size_t count = 0, index = 0;
   try {
     while (const uint32_t* chunk = reader.next(count))
@@ -304,6 +305,10 @@ std::vector<TraversalJob> readJobBuffer(const std::string& path) { return readAl
 std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
                                                 std::vector<SkippedRecord>& skipped) {
   return readAll<JobCodec>(path, &skipped);
+}
+std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
+                                              std::vector<SkippedRecord>& skipped) {
+  return readAll<JobCodec, HostRecord>(path, &skipped);
 }
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
   writeAll<JobCodec>(path, jobs);

@@ -17,6 +17,7 @@
 
 #include "fixed_point.h"
 #include "host_link.h"
+#include "job_setup.h"
 #include "ray_transform.h"
 #include "traversal_job.h"
 
@@ -62,6 +63,9 @@ std::vector<TraversalJob> readJobBuffer(const std::string& path);
 // still throw.
 std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
                                                 std::vector<SkippedRecord>& skipped);
+// readJobBufferSkipping straight into the records a run reads, without a job vector in between.
+std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
+                                              std::vector<SkippedRecord>& skipped);
 std::vector<RayRecord> readRayBufferSkipping(const std::string& path,
                                              std::vector<SkippedRecord>& skipped);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
