@@ -27,7 +27,16 @@ uint64_t ResourceBooking::firstFree(uint64_t from, uint64_t cycles) const {
 
 void ResourceBooking::forgetBefore(uint64_t cycle) {
   if (order_ == RequestOrder::Cycle) return;
-  for (; base_ < cycle && base_ < end_; ++base_) word(base_) &= ~(uint64_t{1} << (base_ % 64));
+  const uint64_t stop = std::min(cycle, end_);
+  while (base_ < stop) {  // whole words at once where they are all behind
+    if (base_ % 64 == 0 && stop - base_ >= 64) {
+      word(base_) = 0;
+      base_ += 64;
+    } else {
+      word(base_) &= ~(uint64_t{1} << (base_ % 64));
+      ++base_;
+    }
+  }
   base_ = std::max(base_, cycle);
   end_ = std::max(end_, base_);
 }

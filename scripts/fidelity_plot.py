@@ -32,7 +32,7 @@ def main():
             speed = float(row["speed_up"])
             axes.scatter(speed, error, marker=markers[kind], color=colours(index % 20),
                          label=label if kind == "systemc" else None, s=36)
-            if kind in ("sampled", "lt"):
+            if kind == "sampled":
                 axes.annotate(row["mode"].split()[1], (speed, error), textcoords="offset points",
                               xytext=(4, 3), fontsize=7, color=colours(index % 20))
     axes.set_xscale("log")
@@ -46,7 +46,7 @@ def main():
     axes.set_xlabel("speed-up over the SystemC model (host seconds)")
     axes.set_ylabel("|error of total cycles| (%%); exact modes at %g" % FLOOR)
     axes.set_title("Speed against accuracy: squares SystemC, diamonds recurrence, triangles "
-                   "loosely-timed (quantum), circles sampled (fraction)", fontsize=9)
+                   "loosely-timed, circles sampled (fraction)", fontsize=9)
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), title="configuration",
                 title_fontsize=8)
