@@ -1,0 +1,76 @@
+// The cycle-accurate scene manager (modules/scene_manager_module.h, inside the SystemC RTU)
+// against its plain per-cycle reference (golden/scene_manager_cycles.h, above the per-cycle RTL
+// transcription): the same merged result of every ray, arriving in the same cycle, the same
+// total cycles and statistics, for several core counts and scene manager settings.
+#include <catch2/catch.hpp>
+
+#include <tuple>
+
+#include "rtu_simulation.h"
+#include "scene_manager_cycles.h"
+#include "three_balls_scene.h"
+
+namespace rtu {
+namespace {
+
+RtlTopConfig rtlConfig(const RtuConfig& config) {
+  return RtlTopConfig{config.cores, config.golden(), config.jobManager.rayStages,
+                      config.jobManager.headerFetchCycles};
+}
+
+void checkEqual(const RtuRun& run, const SceneCyclesRun& reference) {
+  REQUIRE(run.statistics.scene.has_value());
+  CHECK(run.totalCycles == reference.totalCycles);
+  CHECK(run.arrivalCycles == reference.arrivalCycles);
+  CHECK(run.jobIndices == reference.rays);
+  CHECK(run.results == reference.results);
+  CHECK(run.instances == reference.instances);
+  CHECK(*run.statistics.scene == reference.statistics);
+}
+
+}  // namespace
+
+TEST_CASE("Scene manager module equals the per-cycle reference in every cycle", "[scene][cycles]") {
+  const ThreeBalls scene;
+  const std::vector<RayRecord> rays = frameRays(20, 12);
+  const auto [cores, raysInFlight, jobsOutstanding, latency, cull, early] = GENERATE(
+      std::make_tuple(1, 1, 1, 0, true, true), std::make_tuple(4, 8, 8, 2, true, true),
+      std::make_tuple(4, 8, 3, 5, true, true), std::make_tuple(2, 3, 8, 1, true, true),
+      std::make_tuple(16, 32, 32, 2, true, true), std::make_tuple(4, 6, 4, 0, false, true),
+      std::make_tuple(3, 8, 8, 2, true, false));
+  RtuConfig config;
+  config.cores = cores;
+  config.sceneManager.raysInFlight = raysInFlight;
+  config.sceneManager.jobsOutstanding = jobsOutstanding;
+  config.sceneManager.latency = latency;
+  config.sceneManager.options = SceneManagerOptions{cull, early};
+  CAPTURE(cores, raysInFlight, jobsOutstanding, latency, cull, early);
+
+  const SceneCyclesRun reference = runSceneCycles(scene.memory.memory(), rays, scene.instances,
+                                                  config.sceneManager, rtlConfig(config));
+  // The frame exercises what the settings allow: rays through several instances, rays with
+  // every instance culled, rays that end early.
+  const SceneManagerStatistics& stats = reference.statistics;
+  REQUIRE(stats.jobsPerRay.rbegin()->first > 1);
+  if (cull) REQUIRE(stats.jobsPerRay.count(0) == 1);
+  if (early) REQUIRE(stats.earlyTerminations > 0);
+  checkEqual(simulateScene(scene.memory.memory(), rays, scene.instances, config), reference);
+}
+
+TEST_CASE("Scene manager module equals the per-cycle reference with other job manager latencies",
+          "[scene][cycles]") {
+  const ThreeBalls scene;
+  const std::vector<RayRecord> rays = frameRays(12, 8);
+  const auto [rayStages, headerFetch] = GENERATE(std::make_tuple(0, 0), std::make_tuple(3, 40));
+  RtuConfig config;
+  config.cores = 4;
+  config.sceneManager.raysInFlight = 6;
+  config.jobManager.rayStages = rayStages;
+  config.jobManager.headerFetchCycles = headerFetch;
+  CAPTURE(rayStages, headerFetch);
+  checkEqual(simulateScene(scene.memory.memory(), rays, scene.instances, config),
+             runSceneCycles(scene.memory.memory(), rays, scene.instances, config.sceneManager,
+                            rtlConfig(config)));
+}
+
+}  // namespace rtu
