@@ -66,6 +66,15 @@ void runInWorkers(const std::vector<size_t>& rows, int jobs,
                   const std::function<std::string(size_t)>& work,
                   const std::function<void(size_t, const WorkerOutcome&)>& done);
 
+// For work that answers as it goes: `work(row, say)` hands the parent text at once with `say`,
+// and the parent calls `heard(row, line)` for each line ('\n' ended) as it arrives, then
+// `done(row, outcome)` with all the text the worker said. `work` must not throw.
+using WorkerSay = std::function<void(const std::string&)>;
+void runInWorkers(const std::vector<size_t>& rows, int jobs,
+                  const std::function<void(size_t, const WorkerSay&)>& work,
+                  const std::function<void(size_t, const std::string&)>& heard,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done);
+
 int defaultWorkerCount();
 
 }  // namespace rtu
