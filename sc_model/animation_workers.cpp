@@ -9,35 +9,16 @@
 #include "sweep_workers.h"
 
 namespace rtu {
+
+// A frame's statistics on one line from worker to parent (doubles survive the JSON exactly).
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FrameStatistics, frame, time, pixels, raysTraced, raysSaved,
+                                   hits, jobs, culled, earlyTerminations, skipped,
+                                   traversalCycles, cycles, hostSeconds)
+
 namespace {
 
-// A frame's statistics on one line from worker to parent; doubles as %.17g survive exactly.
-std::string statisticsLine(const FrameStatistics& s) {
-  const nlohmann::json line = {
-      {"frame", s.frame},           {"time", s.time},       {"pixels", s.pixels},
-      {"rays_traced", s.raysTraced}, {"rays_saved", s.raysSaved}, {"hits", s.hits},
-      {"jobs", s.jobs},             {"culled", s.culled},   {"early_terminations", s.earlyTerminations},
-      {"skipped", s.skipped},       {"traversal_cycles", s.traversalCycles},
-      {"cycles", s.cycles},         {"host_seconds", s.hostSeconds}};
-  return line.dump() + "\n";
-}
-
-FrameStatistics statisticsFrom(const nlohmann::json& line) {
-  FrameStatistics s;
-  line.at("frame").get_to(s.frame);
-  line.at("time").get_to(s.time);
-  line.at("pixels").get_to(s.pixels);
-  line.at("rays_traced").get_to(s.raysTraced);
-  line.at("rays_saved").get_to(s.raysSaved);
-  line.at("hits").get_to(s.hits);
-  line.at("jobs").get_to(s.jobs);
-  line.at("culled").get_to(s.culled);
-  line.at("early_terminations").get_to(s.earlyTerminations);
-  line.at("skipped").get_to(s.skipped);
-  line.at("traversal_cycles").get_to(s.traversalCycles);
-  line.at("cycles").get_to(s.cycles);
-  line.at("host_seconds").get_to(s.hostSeconds);
-  return s;
+std::string statisticsLine(const FrameStatistics& statistics) {
+  return nlohmann::json(statistics).dump() + "\n";
 }
 
 std::string rangeText(const FrameRange& range) {
@@ -71,7 +52,7 @@ class FrameCollector {
     try {
       const nlohmann::json line = nlohmann::json::parse(text);
       if (line.contains("error")) return fail(range, line["error"].get<std::string>());
-      const FrameStatistics statistics = statisticsFrom(line);
+      const FrameStatistics statistics = line.get<FrameStatistics>();
       waiting_.emplace(statistics.frame, statistics);
     } catch (const nlohmann::json::exception& error) {
       return fail(range, std::string("unreadable worker answer: ") + error.what());

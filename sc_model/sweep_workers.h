@@ -1,5 +1,6 @@
 #pragma once
-// Rows of an exploration run in parallel worker processes, with a progress line.
+// Rows of an exploration run (or ranges of an animation's frames) in parallel worker processes,
+// with a progress line.
 //
 // Each row runs in a process forked for it, so rows share what the parent built before (the
 // scenes) without copying, a row that crashes or is killed takes only itself down, and every
