@@ -1,5 +1,6 @@
 #include "animation_workers.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -92,11 +93,11 @@ class FrameCollector {
 
 }  // namespace
 
-std::vector<FrameRange> splitFrames(int frames, int workers) {
-  const int ranges = std::max(1, std::min(workers, frames));
+std::vector<FrameRange> splitFrames(int frames, int ranges) {
+  const int count = std::max(1, std::min(ranges, frames));
   std::vector<FrameRange> split;
-  for (int i = 0, first = 0; i < ranges; ++i) {
-    const int length = frames / ranges + (i < frames % ranges ? 1 : 0);
+  for (int i = 0, first = 0; i < count; ++i) {
+    const int length = frames / count + (i < frames % count ? 1 : 0);
     split.push_back({first, first + length});
     first += length;
   }
@@ -107,12 +108,13 @@ void renderFramesInWorkers(const SceneDescription& scene, const std::vector<Scen
                            const AnimationOptions& options, int workers,
                            const std::function<void(const SceneFrame&)>& writeFrame,
                            const std::function<void(const FrameStatistics&)>& frameDone) {
-  const std::vector<FrameRange> ranges = splitFrames(scene.frames, workers);
+  const std::vector<FrameRange> ranges =
+      splitFrames(scene.frames, workers == 1 ? 1 : workers * kFrameRangesPerWorker);
   std::vector<size_t> rows;
   for (size_t i = 0; i < ranges.size(); ++i) rows.push_back(i);
   FrameCollector collector(scene.frames, frameDone);
   runInWorkers(
-      rows, static_cast<int>(ranges.size()),
+      rows, workers,
       [&](size_t row, const WorkerSay& say) {
         renderRange(scene, models, options, ranges[row], writeFrame, say);
       },

@@ -158,7 +158,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
     writeRgbImage(options.framePath(rendered.statistics.frame), scene.width, scene.height,
                   shadeSceneFrame(rendered, scene));
   };
-  const int workers = static_cast<int>(splitFrames(scene.frames, options.workerCount()).size());
+  const int workers = std::min(options.workerCount(), scene.frames);
   const auto start = std::chrono::steady_clock::now();
   renderFramesInWorkers(scene, models, run, workers, writeFrame,
                         [&](const FrameStatistics& frame) {

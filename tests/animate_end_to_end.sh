@@ -33,7 +33,8 @@ done
 # Traced rays cost simulated cycles; the cycles column is the SystemC run's, not the recurrence's.
 awk -F, 'NR > 1 && $4 > 0 && $13 == 0 { exit 1 }' out_ca/frames.csv || fail "ca frame without cycles"
 # Frames in two forked workers: the same rows (but the host seconds) and the same images as in
-# one. Frame 2 starts the second worker's range; its hit buffer, primed with frame 1, saves rays.
+# one. With two workers each of the 4 frames is a range of its own: frames 1 to 3 prime their hit
+# buffer with the frame before, and save rays.
 for jobs in 1 2; do
   "$rtusim" animate --scene-file "$scenes/procedural.toml" --frames 4 --width 48 --height 27 \
     --out-dir out_j$jobs --cache-dir cache --model ca --cores 4 -j $jobs >j$jobs.txt
@@ -44,8 +45,7 @@ cmp -s rows_j1.csv rows_j2.csv || fail "2 workers wrote other CSV rows than 1: $
 for frame in 0000 0001 0002 0003; do
   cmp -s out_j1/frame_$frame.png out_j2/frame_$frame.png || fail "frame $frame differs with 2 workers"
 done
-saved=$(awk -F, 'NR == 4 { print $5 }' rows_j2.csv)
-(( saved > 0 )) || fail "the second worker's first frame saved no ray"
+awk -F, 'NR > 2 && $5 == 0 { exit 1 }' rows_j2.csv || fail "a primed frame saved no ray"
 expect_error "--jobs: Value 0 not in range" \
   "$rtusim" animate --scene-file "$scenes/procedural.toml" -j 0 --out-dir out5
 
