@@ -273,14 +273,14 @@ const std::vector<uint64_t>& RtlTop::acceptCycles() const { return registers_->a
 const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_->dispatchCycles; }
 
 // The thesis' host: job i + 1 offered from the cycle after job i was taken.
-RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config) {
   RtlTop top(memory, config);
   RtlTopRun run;
   size_t next = 0;
-  while (run.results.size() < jobs.size()) {
+  while (run.results.size() < records.size()) {
     std::optional<RtlOffer> offer;
-    if (next < jobs.size()) offer = RtlOffer{jobs[next], next};
+    if (next < records.size()) offer = RtlOffer{records[next], next};
     const RtlCycle cycle = top.step(offer ? &*offer : nullptr);
     if (cycle.accepted) ++next;
     if (cycle.delivered) {
@@ -292,6 +292,11 @@ RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jo
   run.dispatchCycles = top.dispatchCycles();
   run.totalCycles = top.cycle();
   return run;
+}
+
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                    const RtlTopConfig& config) {
+  return runRtlTop(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
 }
 
 }  // namespace rtu

@@ -47,6 +47,8 @@ struct RtlTopRun {
   uint64_t totalCycles = 0;              // cycle in which the last result was taken, plus one
 };
 
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                    const RtlTopConfig& config);
 RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                     const RtlTopConfig& config);
 
