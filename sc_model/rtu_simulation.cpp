@@ -131,6 +131,7 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
     run.blockedCycles.push_back(result.blockedCycles);
     run.instances.push_back(result.instance);
   }
+  if (top->sceneManager()) run.jobIssueCycles = top->sceneManager()->issueCycles();
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
   if (trace) run.traceBytes = trace->countedBytes();

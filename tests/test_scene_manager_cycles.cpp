@@ -1,7 +1,8 @@
 // The cycle-accurate scene manager (modules/scene_manager_module.h, inside the SystemC RTU)
 // against its plain per-cycle reference (golden/scene_manager_cycles.h, above the per-cycle RTL
-// transcription): the same merged result of every ray, arriving in the same cycle, the same
-// total cycles and statistics, for several core counts and scene manager settings.
+// transcription): every job entering the job manager in the same cycle, the same merged result
+// of every ray arriving in the same cycle, the same total cycles and statistics, for several core
+// counts and scene manager settings.
 #include <catch2/catch.hpp>
 
 #include <tuple>
@@ -21,6 +22,7 @@ RtlTopConfig rtlConfig(const RtuConfig& config) {
 void checkEqual(const RtuRun& run, const SceneCyclesRun& reference) {
   REQUIRE(run.statistics.scene.has_value());
   CHECK(run.totalCycles == reference.totalCycles);
+  CHECK(run.jobIssueCycles == reference.issueCycles);
   CHECK(run.arrivalCycles == reference.arrivalCycles);
   CHECK(run.jobIndices == reference.rays);
   CHECK(run.results == reference.results);
