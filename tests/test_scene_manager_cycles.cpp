@@ -5,6 +5,7 @@
 // counts and scene manager settings.
 #include <catch2/catch.hpp>
 
+#include <map>
 #include <tuple>
 
 #include "rtu_simulation.h"
@@ -73,6 +74,34 @@ TEST_CASE("Scene manager module equals the per-cycle reference with other job ma
   checkEqual(simulateScene(scene.memory.memory(), rays, scene.instances, config),
              runSceneCycles(scene.memory.memory(), rays, scene.instances, config.sceneManager,
                             rtlConfig(config)));
+}
+
+TEST_CASE("Rays that miss every instance leave `latency` cycles after they entered",
+          "[scene][cycles]") {
+  // Worked out from the rules: ray i is offered from the cycle after ray i - 1 was taken. With
+  // room for every ray, ray i is taken in i, done and handed to the host in i + latency. With one
+  // ray in flight, ray i is taken in the cycle after ray i - 1 left: i (latency + 1), and leaves
+  // latency cycles later.
+  const ThreeBalls scene;
+  std::vector<RayRecord> away;  // from behind the balls, looking away from them
+  for (uint32_t id = 0; id < 6; ++id)
+    away.push_back(makeRayRecord(id, Ray{{0.1 * id, 0.0, -3.5}, {0.0, 0.2, -1.0}}, 0));
+  const int latency = GENERATE(0, 3);
+  const int raysInFlight = GENERATE(1, 8);
+  RtuConfig config;
+  config.cores = 2;
+  config.sceneManager.latency = latency;
+  config.sceneManager.raysInFlight = raysInFlight;
+  CAPTURE(latency, raysInFlight);
+  const SceneCyclesRun reference = runSceneCycles(scene.memory.memory(), away, scene.instances,
+                                                  config.sceneManager, rtlConfig(config));
+  std::vector<uint64_t> expected;
+  for (uint64_t i = 0; i < away.size(); ++i)
+    expected.push_back((raysInFlight == 1 ? i * (latency + 1) : i) + latency);
+  CHECK(reference.arrivalCycles == expected);
+  CHECK(reference.statistics.jobsPerRay == std::map<uint64_t, uint64_t>{{0, away.size()}});
+  CHECK(reference.statistics.culled == away.size() * scene.instances.size());
+  checkEqual(simulateScene(scene.memory.memory(), away, scene.instances, config), reference);
 }
 
 }  // namespace rtu
