@@ -1,6 +1,8 @@
 #include "rtl_cycle_model.h"
 
+#include <algorithm>
 #include <array>
+#include <deque>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +18,10 @@ void RtlTopConfig::validate() const {
   if (golden.stackFrames < 1 || golden.stackFrames > kMaxStackFrames)
     throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
                                 " frames, got " + std::to_string(golden.stackFrames));
+  if (rayStages < 0 || rayStages > 64 || headerFetchCycles < 0)
+    throw std::invalid_argument("ray stages must be 0 to 64 and header fetch cycles not negative, "
+                                "got " + std::to_string(rayStages) + " and " +
+                                std::to_string(headerFetchCycles));
 }
 
 namespace {
@@ -24,7 +30,7 @@ constexpr int kJobManagerStages = 6;  // P_STAGES
 
 // job_t: what the job manager hands to the cores.
 struct Job {
-  size_t index = 0;  // in the host's job list: not an RTL signal, it names the job in the run
+  uint64_t tag = 0;  // not an RTL signal: it names the job to the host
   uint32_t idWord = 0;
   uint8_t a = 0;
   uint32_t root = 0;
@@ -36,7 +42,7 @@ struct Job {
 struct Wires {
   // host -> job_manager
   bool inValid = false;
-  Job inRay;
+  const RtlOffer* inRay = nullptr;
   bool pipelineEnable = false;
   bool inReady = false;
   // job_manager -> scheduler -> cores
@@ -48,118 +54,124 @@ struct Wires {
   // cores -> result_manager -> host
   std::vector<bool> coreOutValid;
   std::vector<bool> coreOutReady;
-  std::vector<TraversalResult> coreOutResult;
+  std::vector<RtlCycle::Delivery> coreOutResult;
   bool outValid = false;
   bool outReady = true;
-  TraversalResult outResult;
+  RtlCycle::Delivery outResult;
+};
+
+// C.2's valid_delay shift register and the job fields beside it, kept as the jobs in the pipeline
+// with the cycles each still has to go: a t-value record goes P_STAGES, a ray record more
+// (JobSetup). Every job moves one stage when pipeline_enable is high and none when it is low; a
+// job reaches the output no earlier than the cycle after the one ahead of it. For t-value
+// records alone this is exactly the shift register.
+struct PipelineJob {
+  Job job;
+  uint64_t remaining = 0;  // cycles to the output; 0: at the output (valid_delay[5])
 };
 
 struct JobManager {
-  std::array<bool, kJobManagerStages> validDelay{};
-  // The job fields and, in step with them, the t-values of the conversion pipeline.
-  std::array<Job, kJobManagerStages> pipeline{};
+  std::deque<PipelineJob> pipeline;
+  uint64_t fetchRemaining = 0;  // cycles of a model header fetch still to come
 };
 
 struct Core {
   TraversalCore<FixedArith> traversal;  // core_state, the frames and the result fields
   uint32_t idWord = 0;                  // out_result.job_id
+  uint64_t tag = 0;
 };
 
 struct ResultManager {
   std::vector<bool> resultValid;
-  std::vector<TraversalResult> resultBuffer;
+  std::vector<RtlCycle::Delivery> resultBuffer;
   int resultSelect = 0;
 };
 
 // core_select and result_select: count 0 .. count - 1 and wrap, every cycle.
 int nextSelect(int select, int count) { return select < count - 1 ? select + 1 : 0; }
 
-class RtlTop {
- public:
-  RtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
-         const RtlTopConfig& config);
+void recordCycle(std::vector<uint64_t>& cycles, uint64_t tag, uint64_t cycle) {
+  if (cycles.size() <= tag) cycles.resize(tag + 1, 0);
+  cycles[tag] = cycle;
+}
 
-  RtlTopRun run();
+}  // namespace
+
+class RtlTop::Registers {
+ public:
+  Registers(const SvoMemory& memory, const RtlTopConfig& config);
+
+  RtlCycle step(const RtlOffer* offer);
+
+  uint64_t cycle = 0;
+  std::vector<uint64_t> acceptCycles;
+  std::vector<uint64_t> dispatchCycles;
 
  private:
-  Job offeredJob() const;
-  Wires evaluate() const;
+  Wires evaluate(const RtlOffer* offer) const;
   // Each clock function updates one module from the wires and its own registers only, so the
   // order in which they run does not matter.
-  void clockHost(const Wires& wires);
   void clockJobManager(const Wires& wires);
   void clockScheduler();
   void clockCores(const Wires& wires);
   void clockResultManager(const Wires& wires);
+  // The conversion is a pure function of the input, so converting on entry and carrying the
+  // result down the stages gives what float_to_fixed delivers at the end of them.
+  void accept(const RtlOffer& offer);
 
   SvoMemory memory_;
-  const std::vector<TraversalJob>& jobs_;
   RtlTopConfig config_;
-  uint64_t cycle_ = 0;
-  size_t nextJob_ = 0;
+  JobSetup setup_;  // the ray transform, and the model headers read so far
   JobManager jobManager_;
   int coreSelect_ = 0;
   std::vector<Core> cores_;
   ResultManager resultManager_;
-  RtlTopRun run_;
 };
 
-RtlTop::RtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
-               const RtlTopConfig& config)
-    : memory_(memory), jobs_(jobs), config_(config) {
+RtlTop::Registers::Registers(const SvoMemory& memory, const RtlTopConfig& config)
+    : memory_(memory),
+      config_(config),
+      setup_(memory, JobManagerConfig{config.golden.format, config.golden.conversion,
+                                      kJobManagerStages, config.rayStages,
+                                      config.headerFetchCycles}) {
   config_.validate();
   const size_t cores = static_cast<size_t>(config_.cores);
   const Core idle{TraversalCore<FixedArith>(FixedArith{config_.golden.format},
                                             config_.golden.stackFrames)};
   cores_.assign(cores, idle);
   resultManager_.resultValid.assign(cores, false);
-  resultManager_.resultBuffer.assign(cores, TraversalResult{});
-  run_.acceptCycles.assign(jobs.size(), 0);
-  run_.dispatchCycles.assign(jobs.size(), 0);
+  resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
 }
 
-RtlTopRun RtlTop::run() {
-  while (run_.results.size() < jobs_.size()) {
-    const Wires wires = evaluate();
-    clockHost(wires);
-    clockJobManager(wires);
-    clockScheduler();
-    clockCores(wires);
-    clockResultManager(wires);
-    ++cycle_;
-  }
-  run_.totalCycles = cycle_;
-  return run_;
+RtlCycle RtlTop::Registers::step(const RtlOffer* offer) {
+  const Wires wires = evaluate(offer);
+  RtlCycle handshakes{cycle, wires.inValid && wires.inReady, std::nullopt};
+  if (wires.outValid && wires.outReady) handshakes.delivered = wires.outResult;
+  if (handshakes.accepted) recordCycle(acceptCycles, offer->tag, cycle);
+  clockJobManager(wires);
+  clockScheduler();
+  clockCores(wires);
+  clockResultManager(wires);
+  ++cycle;
+  return handshakes;
 }
 
-// in_ray. The conversion is a pure function of the input, so converting on entry and carrying the
-// result down the six stages gives what float_to_fixed delivers at the end of them.
-Job RtlTop::offeredJob() const {
-  const TraversalJob& job = jobs_[nextJob_];
-  const GoldenConfig& golden = config_.golden;
-  return Job{nextJob_,
-             job.idWord(),
-             job.a,
-             job.root,
-             convertToFixed(job.t0Bits, golden.format, golden.conversion),
-             convertToFixed(job.t1Bits, golden.format, golden.conversion)};
-}
-
-Wires RtlTop::evaluate() const {
+Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
   const size_t cores = cores_.size();
   Wires w;
   w.coreInReady.assign(cores, false);
   w.coreInValid.assign(cores, false);
   w.coreOutValid.assign(cores, false);
   w.coreOutReady.assign(cores, false);
-  w.coreOutResult.assign(cores, TraversalResult{});
+  w.coreOutResult.assign(cores, RtlCycle::Delivery{});
 
   // svo_trav_core
   for (size_t i = 0; i < cores; ++i) {
     const CoreState state = cores_[i].traversal.state();
     w.coreInReady[i] = state == CoreState::Idle;
     w.coreOutValid[i] = state == CoreState::Out;
-    if (w.coreOutValid[i]) w.coreOutResult[i] = makeResult(cores_[i].idWord, cores_[i].traversal);
+    if (w.coreOutValid[i])
+      w.coreOutResult[i] = {makeResult(cores_[i].idWord, cores_[i].traversal), cores_[i].tag};
   }
 
   // result_manager
@@ -169,48 +181,53 @@ Wires RtlTop::evaluate() const {
   w.outResult = rm.resultBuffer[rm.resultSelect];
 
   // scheduler
+  const JobManager& jm = jobManager_;
   w.schedReady = w.coreInReady[coreSelect_];
-  w.schedValid = jobManager_.validDelay.back();
+  w.schedValid = !jm.pipeline.empty() && jm.pipeline.front().remaining == 0;
   for (size_t i = 0; i < cores; ++i)
     w.coreInValid[i] = w.schedValid && i == static_cast<size_t>(coreSelect_);
 
   // job_manager
-  w.pendingJob = jobManager_.pipeline.back();
+  if (w.schedValid) w.pendingJob = jm.pipeline.front().job;
   w.pipelineEnable = w.schedReady || !w.schedValid;
-  w.inReady = w.pipelineEnable;
+  w.inReady = w.pipelineEnable && jm.fetchRemaining == 0;
 
   // host
-  w.inValid = nextJob_ < jobs_.size();
-  if (w.inValid) w.inRay = offeredJob();
+  w.inValid = offer != nullptr;
+  w.inRay = offer;
   w.outReady = true;
   return w;
 }
 
-void RtlTop::clockHost(const Wires& w) {
-  if (w.inValid && w.inReady) {
-    run_.acceptCycles[nextJob_] = cycle_;
-    ++nextJob_;
-  }
-  if (w.outValid && w.outReady) {
-    run_.results.push_back(w.outResult);
-    run_.resultCycles.push_back(cycle_);
-  }
-}
-
-void RtlTop::clockJobManager(const Wires& w) {
-  if (!w.pipelineEnable) return;
+void RtlTop::Registers::clockJobManager(const Wires& w) {
   JobManager& jm = jobManager_;
-  for (int stage = kJobManagerStages - 1; stage > 0; --stage) {
-    jm.validDelay[stage] = jm.validDelay[stage - 1];
-    jm.pipeline[stage] = jm.pipeline[stage - 1];
-  }
-  jm.validDelay[0] = w.inValid && w.inReady;
-  jm.pipeline[0] = w.inRay;
+  if (jm.fetchRemaining > 0) --jm.fetchRemaining;
+  if (!w.pipelineEnable) return;
+  if (w.schedValid) jm.pipeline.pop_front();  // enabled with a valid output: the core took it
+  for (PipelineJob& job : jm.pipeline) --job.remaining;
+  if (w.inValid && w.inReady) accept(*w.inRay);
 }
 
-void RtlTop::clockScheduler() { coreSelect_ = nextSelect(coreSelect_, config_.cores); }
+void RtlTop::Registers::accept(const RtlOffer& offer) {
+  const JobSetup::SetUp set = setup_.setUp(offer.record);
+  const GoldenConfig& golden = config_.golden;
+  const Job job{offer.tag,
+                set.job.idWord(),
+                set.job.a,
+                set.job.root,
+                convertToFixed(set.job.t0Bits, golden.format, golden.conversion),
+                convertToFixed(set.job.t1Bits, golden.format, golden.conversion)};
+  // In the pipeline from the next cycle, at the output `latency` cycles after this one.
+  uint64_t remaining = set.latency - 1;
+  if (!jobManager_.pipeline.empty())
+    remaining = std::max(remaining, jobManager_.pipeline.back().remaining + 1);
+  jobManager_.pipeline.push_back({job, remaining});
+  jobManager_.fetchRemaining = set.headerFetch;
+}
 
-void RtlTop::clockCores(const Wires& w) {
+void RtlTop::Registers::clockScheduler() { coreSelect_ = nextSelect(coreSelect_, config_.cores); }
+
+void RtlTop::Registers::clockCores(const Wires& w) {
   const auto read = [this](uint32_t address) { return memory_.read(address); };
   for (size_t i = 0; i < cores_.size(); ++i) {
     Core& core = cores_[i];
@@ -219,8 +236,9 @@ void RtlTop::clockCores(const Wires& w) {
         if (w.coreInReady[i] && w.coreInValid[i]) {
           const Job& job = w.pendingJob;
           core.idWord = job.idWord;
+          core.tag = job.tag;
           core.traversal.start(job.t0, job.t1, job.a, job.root);
-          run_.dispatchCycles[job.index] = cycle_;
+          recordCycle(dispatchCycles, job.tag, cycle);
         }
         break;
       case CoreState::Out:
@@ -233,7 +251,7 @@ void RtlTop::clockCores(const Wires& w) {
   }
 }
 
-void RtlTop::clockResultManager(const Wires& w) {
+void RtlTop::Registers::clockResultManager(const Wires& w) {
   ResultManager& rm = resultManager_;
   for (size_t i = 0; i < rm.resultValid.size(); ++i) {
     if (w.coreOutReady[i] && w.coreOutValid[i]) {
@@ -245,11 +263,40 @@ void RtlTop::clockResultManager(const Wires& w) {
   rm.resultSelect = nextSelect(rm.resultSelect, config_.cores);
 }
 
-}  // namespace
+RtlTop::RtlTop(const SvoMemory& memory, const RtlTopConfig& config)
+    : registers_(std::make_unique<Registers>(memory, config)) {}
+RtlTop::~RtlTop() = default;
+
+RtlCycle RtlTop::step(const RtlOffer* offer) { return registers_->step(offer); }
+uint64_t RtlTop::cycle() const { return registers_->cycle; }
+const std::vector<uint64_t>& RtlTop::acceptCycles() const { return registers_->acceptCycles; }
+const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_->dispatchCycles; }
+
+// The thesis' host: job i + 1 offered from the cycle after job i was taken.
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                    const RtlTopConfig& config) {
+  RtlTop top(memory, config);
+  RtlTopRun run;
+  size_t next = 0;
+  while (run.results.size() < records.size()) {
+    std::optional<RtlOffer> offer;
+    if (next < records.size()) offer = RtlOffer{records[next], next};
+    const RtlCycle cycle = top.step(offer ? &*offer : nullptr);
+    if (cycle.accepted) ++next;
+    if (cycle.delivered) {
+      run.results.push_back(cycle.delivered->result);
+      run.resultCycles.push_back(cycle.cycle);
+    }
+  }
+  run.acceptCycles = top.acceptCycles();
+  run.dispatchCycles = top.dispatchCycles();
+  run.totalCycles = top.cycle();
+  return run;
+}
 
 RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
                     const RtlTopConfig& config) {
-  return RtlTop(memory, jobs, config).run();
+  return runRtlTop(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
 }
 
 }  // namespace rtu

@@ -43,6 +43,7 @@ void JobManager::takeDispatch() {
   statistics_.stallCycles += stall;
   if (stall > 0) stalls_.push_back({pipeline_.front().outputCycle, dispatch});
   pipeline_.pop_front();
+  lastDispatch_ = dispatch;
   for (InFlight& job : pipeline_) job.outputCycle += stall;
   frontOffered_ = false;
   retraceReady();
@@ -78,7 +79,10 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   uint64_t outputCycle = cycle + set.latency;
   for (const Window& stall : stalls_)
     if (stall.from > cycle) outputCycle += stall.to - stall.from;
+  // Behind the job ahead, which may have left already: its dispatch can be decided before this
+  // acceptance (after a header fetch that outlasted a stall, the next ray is accepted late).
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
+  if (lastDispatch_) outputCycle = std::max(outputCycle, *lastDispatch_ + 1);
   pipeline_.push_back(InFlight{coreJobOf(host.ids, set.job, config_), outputCycle});
   traceReadyAt(cycle + 1);
   if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);

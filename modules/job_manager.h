@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "cycle_clock.h"
@@ -67,6 +68,7 @@ class JobManager : public Agent {
   TransferChannel<CoreJob>* out_ = nullptr;
   std::deque<InFlight> pipeline_;
   bool frontOffered_ = false;
+  std::optional<uint64_t> lastDispatch_;  // of the job that left the output last
   std::deque<Window> stalls_;   // decided stalls a later acceptance may fall into
   std::deque<Window> fetches_;  // header fetches
   bool accepted_ = false;

@@ -40,28 +40,10 @@
 #include "module_process.h"
 #include "rtu_payloads.h"
 #include "scene_manager.h"
+#include "scene_manager_timing.h"
 #include "transfer_channel.h"
 
 namespace rtu {
-
-struct SceneManagerConfig {
-  int raysInFlight = 32;
-  int jobsOutstanding = 32;
-  int latency = 2;  // cycles from taking a ray to its first job
-  SceneManagerOptions options;
-
-  // Throws std::invalid_argument naming the setting.
-  void validate() const;
-};
-
-struct SceneManagerStatistics {
-  uint64_t rays = 0;
-  uint64_t jobs = 0;
-  uint64_t culled = 0;             // instances whose sphere a ray missed
-  uint64_t earlyTerminations = 0;  // rays that ended with instances left to trace
-  uint64_t skipped = 0;            // instances those rays did not trace
-  std::map<uint64_t, uint64_t> jobsPerRay;  // jobs -> rays
-};
 
 class SceneManagerModule : public sc_core::sc_module, public Agent {
  public:

@@ -129,8 +129,38 @@ uint64_t AnimationRenderer::simulateFrame(Work& work, const std::vector<uint32_t
 
 SceneFrame AnimationRenderer::render(int frame) {
   const auto start = std::chrono::steady_clock::now();
-  const double time = scene_.timeOf(frame);
   SceneFrame result;
+  Work work = trace(frame, result);
+  FrameStatistics& statistics = result.statistics;
+  for (const FrameStatistics& part : work.perThread) add(statistics, part);
+  if (options_.rtu) {
+    std::vector<uint32_t> traced;
+    for (uint32_t pixel = 0; pixel < work.traced.size(); ++pixel)
+      if (work.traced[pixel]) traced.push_back(pixel);
+    statistics.cycles = traced.empty() ? 0 : simulateFrame(work, traced);
+  } else {
+    statistics.cycles = frameCycles(work.issuedPerRow);
+  }
+  remember(result, work);
+  statistics.frame = frame;
+  statistics.time = scene_.timeOf(frame);
+  statistics.pixels = work.pixels.size();
+  result.pixels = std::move(work.pixels);
+  statistics.hostSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+void AnimationRenderer::prime(int frame) {
+  SceneFrame result;
+  Work work = trace(frame, result);
+  remember(result, work);
+}
+
+// The frame's camera and instances, and every pixel through the hit buffer or the golden scene
+// manager, in parallel threads.
+AnimationRenderer::Work AnimationRenderer::trace(int frame, SceneFrame& result) {
+  const double time = scene_.timeOf(frame);
   result.camera = scene_.camera.at(time, scene_.width, scene_.height);
   for (const InstanceDescription& instance : scene_.instances)
     result.placements.push_back(instance.placement.at(time));
@@ -153,30 +183,16 @@ SceneFrame AnimationRenderer::render(int frame) {
   for (int t = 1; t < threads; ++t) pool.emplace_back([&work, t, threads, this] { traceRows(work, t, threads); });
   traceRows(work, 0, threads);
   for (std::thread& thread : pool) thread.join();
+  return work;
+}
 
-  FrameStatistics& statistics = result.statistics;
-  for (const FrameStatistics& part : work.perThread) add(statistics, part);
-  if (options_.rtu) {
-    std::vector<uint32_t> traced;
-    for (uint32_t pixel = 0; pixel < work.traced.size(); ++pixel)
-      if (work.traced[pixel]) traced.push_back(pixel);
-    statistics.cycles = traced.empty() ? 0 : simulateFrame(work, traced);
-  } else {
-    statistics.cycles = frameCycles(work.issuedPerRow);
-  }
+// What the next frame's hit buffer compares with.
+void AnimationRenderer::remember(const SceneFrame& frame, const Work& work) {
   for (size_t pixel = 0; pixel < work.pixels.size(); ++pixel)
     hitBuffer_.store(pixel, work.pixels[pixel]);
-  lastCamera_ = result.camera;
+  lastCamera_ = frame.camera;
   lastHeaders_.clear();
   for (size_t i = 0; i < memory_.instanceCount(); ++i) lastHeaders_.push_back(memory_.headerWords(i));
-
-  statistics.frame = frame;
-  statistics.time = time;
-  statistics.pixels = work.pixels.size();
-  result.pixels = std::move(work.pixels);
-  statistics.hostSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
 }
 
 }  // namespace rtu

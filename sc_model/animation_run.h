@@ -66,9 +66,16 @@ class AnimationRenderer {
 
   // Frames must come in order for the hit buffer to help; any order gives the same images.
   SceneFrame render(int frame);
+  // Leaves the hit buffer as rendering every frame up to `frame` would: it keeps each pixel's
+  // last answer, which the golden scene manager gives without simulating (the cycle-accurate
+  // one answers the same). A renderer that starts in the middle of a sequence primes itself
+  // with the frame before.
+  void prime(int frame);
 
  private:
   struct Work;
+  Work trace(int frame, SceneFrame& result);
+  void remember(const SceneFrame& frame, const Work& work);
   void traceRows(Work& work, int firstRow, int rowStep);
   uint64_t frameCycles(const std::vector<std::vector<IssuedJob>>& issuedPerRow) const;
   // Simulates the rays `traced` on the cycle-accurate model; their pixels become its answers.

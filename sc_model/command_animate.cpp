@@ -9,6 +9,7 @@
 
 #include "animated_image.h"
 #include "animation_run.h"
+#include "animation_workers.h"
 #include "commands.h"
 #include "config_options.h"
 #include "exploration_run.h"
@@ -30,9 +31,16 @@ struct AnimateOptions {
   std::string model = "golden";
   std::string cacheDir;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int jobs = 0;  // 0: one worker per core on the cycle-accurate model, one on golden
   bool noHitBuffer = false;
   bool traceAll = false;
 
+  // The golden model traces a frame in `threads` threads already; the cycle-accurate one
+  // simulates it in one.
+  int workerCount() const {
+    if (jobs > 0) return jobs;
+    return model == "ca" ? defaultWorkerCount() : 1;
+  }
   std::string csvPath() const { return csv.empty() ? outDir + "/frames.csv" : csv; }
   std::string framePath(int frame) const {
     char name[32];
@@ -84,8 +92,9 @@ std::vector<std::string> csvRow(const FrameStatistics& s, double clockMhz) {
           real(s.framesPerSecond(clockMhz)), real(s.hostSeconds)};
 }
 
+// `seconds`: the frames' wall-clock time, in `workers` workers.
 void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz,
-                  const std::string& model) {
+                  const std::string& model, double seconds, int workers) {
   uint64_t pixels = 0, traced = 0, saved = 0, jobs = 0, cycles = 0, culled = 0, early = 0;
   double host = 0.0;
   for (const FrameStatistics& s : frames) {
@@ -104,8 +113,8 @@ void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz,
               traced ? static_cast<double>(jobs) / traced : 0.0,
               traced ? static_cast<double>(culled) / traced : 0.0,
               traced ? 100.0 * early / traced : 0.0);
-  std::printf("host        %.2f s, %.2f s per frame (%s model)\n", host, host / frames.size(),
-              model.c_str());
+  std::printf("host        %.2f s in %d worker%s, %.2f s per frame (%s model)\n", seconds,
+              workers, workers == 1 ? "" : "s", host / frames.size(), model.c_str());
 }
 
 void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
@@ -141,23 +150,26 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   AnimationOptions run{rtu.golden(), {!options.traceAll, !options.traceAll}, !options.noHitBuffer,
                        options.threads, rtu.cores, rtu.clockMhz,
                        options.model == "ca" ? &rtu : nullptr};
-  AnimationRenderer renderer(scene, models, run);
   std::ofstream csv(options.csvPath());
-  csv << csvLine(csvHeader());
+  csv << csvLine(csvHeader()) << std::flush;
   std::vector<FrameStatistics> statistics;
   std::vector<std::string> framePaths;
-  Progress progress("animate", static_cast<size_t>(scene.frames), "frames");
-  for (int frame = 0; frame < scene.frames; ++frame) {
-    const SceneFrame rendered = renderer.render(frame);
-    framePaths.push_back(options.framePath(frame));
-    writeRgbImage(framePaths.back(), scene.width, scene.height, shadeSceneFrame(rendered, scene));
-    statistics.push_back(rendered.statistics);
-    csv << csvLine(csvRow(rendered.statistics, rtu.clockMhz)) << std::flush;
-    progress.update(static_cast<size_t>(frame + 1), 0);
-  }
-  progress.finish();
+  const auto writeFrame = [&options, &scene](const SceneFrame& rendered) {
+    writeRgbImage(options.framePath(rendered.statistics.frame), scene.width, scene.height,
+                  shadeSceneFrame(rendered, scene));
+  };
+  const int workers = std::min(options.workerCount(), scene.frames);
+  const auto start = std::chrono::steady_clock::now();
+  renderFramesInWorkers(scene, models, run, workers, writeFrame,
+                        [&](const FrameStatistics& frame) {
+                          framePaths.push_back(options.framePath(frame.frame));
+                          statistics.push_back(frame);
+                          csv << csvLine(csvRow(frame, rtu.clockMhz)) << std::flush;
+                        });
   if (!csv) throw std::runtime_error("cannot write " + options.csvPath());
-  printSummary(statistics, rtu.clockMhz, options.model);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  printSummary(statistics, rtu.clockMhz, options.model, seconds, workers);
   std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
             << framePaths.back().substr(options.outDir.size() + 1) << ", "
             << options.csvPath() << "\n";
@@ -193,6 +205,10 @@ void addAnimateCommand(CLI::App& app) {
                       "where built models are kept (default: ~/.cache/rtusim/models)");
   command->add_option("--threads", options->threads, "threads tracing each frame's rays")
       ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+  command->add_option("-j,--jobs", options->jobs,
+                      "worker processes rendering ranges of frames (default: all cores with "
+                      "--model ca, 1 with golden)")
       ->check(CLI::Range(1, 256));
   command->add_flag("--no-hit-buffer", options->noHitBuffer, "trace every pixel of every frame");
   command->add_flag("--trace-all", options->traceAll,

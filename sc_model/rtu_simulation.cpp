@@ -115,6 +115,7 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
     throw std::runtime_error("simulation stalled after " + std::to_string(cycles.size()) +
                              " of " + std::to_string(records.size()) + " results");
   run.totalCycles = cycles.empty() ? 0 : cycles.back() + 1;
+  if (top->sceneManager()) run.jobIssueCycles = top->sceneManager()->issueCycles();
   run.statistics = collectStatistics(*top, config, run.totalCycles);
   run.statistics.hostSeconds = seconds;
   HostSink::Arrivals arrivals = sink.takeArrivals();

@@ -41,6 +41,8 @@ struct RtuRun {
   std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
   std::vector<int> instances;            // a scene: the instance each result hit (-1: none)
   std::vector<uint32_t> blockedCycles;   // each result's cycles BLOCKED on memory (beside its cost)
+  std::vector<uint64_t> jobIssueCycles;  // a scene: per job the scene manager issued, the cycle
+                                         // the job manager took it
   // From the first cycle after reset up to and including the cycle the last result is taken.
   uint64_t totalCycles = 0;
   RtuStatistics statistics;

@@ -27,6 +27,7 @@ struct Worker {
   int fd;
   size_t row;
   std::string output;
+  size_t heardUpTo = 0;  // output handed to `heard` so far
 };
 
 void writeAll(int fd, const std::string& text) {
@@ -39,7 +40,7 @@ void writeAll(int fd, const std::string& text) {
   }
 }
 
-Worker startWorker(size_t row, const std::function<std::string(size_t)>& work) {
+Worker startWorker(size_t row, const std::function<void(size_t, const WorkerSay&)>& work) {
   int pipeFds[2];
   if (::pipe(pipeFds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   std::cout.flush();
@@ -48,11 +49,21 @@ Worker startWorker(size_t row, const std::function<std::string(size_t)>& work) {
   if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
     ::close(pipeFds[0]);
-    writeAll(pipeFds[1], work(row));
+    work(row, [fd = pipeFds[1]](const std::string& text) { writeAll(fd, text); });
     ::_exit(0);  // no destructors or atexit handlers of the parent's objects in the child
   }
   ::close(pipeFds[1]);
   return {pid, pipeFds[0], row, {}};
+}
+
+// Hands the complete lines the worker said since the last call to `heard`.
+void passLines(Worker& worker, const std::function<void(size_t, const std::string&)>& heard) {
+  if (!heard) return;
+  size_t end;
+  while ((end = worker.output.find('\n', worker.heardUpTo)) != std::string::npos) {
+    heard(worker.row, worker.output.substr(worker.heardUpTo, end - worker.heardUpTo));
+    worker.heardUpTo = end + 1;
+  }
 }
 
 WorkerOutcome finishWorker(Worker& worker) {
@@ -119,6 +130,14 @@ void Progress::finish() {
 void runInWorkers(const std::vector<size_t>& rows, int jobs,
                   const std::function<std::string(size_t)>& work,
                   const std::function<void(size_t, const WorkerOutcome&)>& done) {
+  runInWorkers(
+      rows, jobs, [&work](size_t row, const WorkerSay& say) { say(work(row)); }, {}, done);
+}
+
+void runInWorkers(const std::vector<size_t>& rows, int jobs,
+                  const std::function<void(size_t, const WorkerSay&)>& work,
+                  const std::function<void(size_t, const std::string&)>& heard,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done) {
   std::vector<Worker> running;
   size_t next = 0;
   while (next < rows.size() || !running.empty()) {
@@ -134,6 +153,7 @@ void runInWorkers(const std::vector<size_t>& rows, int jobs,
       const ssize_t n = ::read(running[i].fd, buffer, sizeof buffer);
       if (n > 0) {
         running[i].output.append(buffer, static_cast<size_t>(n));
+        passLines(running[i], heard);
         continue;
       }
       if (n < 0 && errno == EINTR) continue;

@@ -1,5 +1,6 @@
 #pragma once
-// Rows of an exploration run in parallel worker processes, with a progress line.
+// Rows of an exploration run (or ranges of an animation's frames) in parallel worker processes,
+// with a progress line.
 //
 // Each row runs in a process forked for it, so rows share what the parent built before (the
 // scenes) without copying, a row that crashes or is killed takes only itself down, and every
@@ -64,6 +65,15 @@ struct WorkerOutcome {
 // in the parent as each finishes. `work` returns one line (it must not throw).
 void runInWorkers(const std::vector<size_t>& rows, int jobs,
                   const std::function<std::string(size_t)>& work,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done);
+
+// For work that answers as it goes: `work(row, say)` hands the parent text at once with `say`,
+// and the parent calls `heard(row, line)` for each line ('\n' ended) as it arrives, then
+// `done(row, outcome)` with all the text the worker said. `work` must not throw.
+using WorkerSay = std::function<void(const std::string&)>;
+void runInWorkers(const std::vector<size_t>& rows, int jobs,
+                  const std::function<void(size_t, const WorkerSay&)>& work,
+                  const std::function<void(size_t, const std::string&)>& heard,
                   const std::function<void(size_t, const WorkerOutcome&)>& done);
 
 int defaultWorkerCount();

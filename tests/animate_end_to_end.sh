@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # rtusim animate (issue 14) from the command line: frames, CSV, plot and the cache on the
-# procedural example scene; the same frames on the cycle-accurate model with its simulated cycles;
-# the loosely-timed model refused; a malformed scene file named with its key
-# before any model is built. Usage: animate_end_to_end.sh path/to/rtusim path/to/scenes
+# procedural example scene; the same frames on the cycle-accurate model with its simulated cycles,
+# in one worker process and in two; the loosely-timed model refused; a malformed scene file named
+# with its key before any model is built. Usage: animate_end_to_end.sh path/to/rtusim path/to/scenes
 set -euo pipefail
 rtusim=$1
 scenes=$(cd "$2" && pwd)
@@ -32,6 +32,23 @@ for frame in 0000 0002; do
 done
 # Traced rays cost simulated cycles; the cycles column is the SystemC run's, not the recurrence's.
 awk -F, 'NR > 1 && $4 > 0 && $13 == 0 { exit 1 }' out_ca/frames.csv || fail "ca frame without cycles"
+# Frames in two forked workers: the same rows (but the host seconds) and the same images as in
+# one. With two workers each of the 4 frames is a range of its own: frames 1 to 3 prime their hit
+# buffer with the frame before, and save rays.
+for jobs in 1 2; do
+  "$rtusim" animate --scene-file "$scenes/procedural.toml" --frames 4 --width 48 --height 27 \
+    --out-dir out_j$jobs --cache-dir cache --model ca --cores 4 -j $jobs >j$jobs.txt
+  cut -d, -f1-15 out_j$jobs/frames.csv >rows_j$jobs.csv
+done
+[[ $(wc -l <rows_j2.csv) -eq 5 ]] || fail "the 2-worker run should write a header and 4 frames"
+cmp -s rows_j1.csv rows_j2.csv || fail "2 workers wrote other CSV rows than 1: $(diff rows_j1.csv rows_j2.csv)"
+for frame in 0000 0001 0002 0003; do
+  cmp -s out_j1/frame_$frame.png out_j2/frame_$frame.png || fail "frame $frame differs with 2 workers"
+done
+awk -F, 'NR > 2 && $5 == 0 { exit 1 }' rows_j2.csv || fail "a primed frame saved no ray"
+expect_error "--jobs: Value 0 not in range" \
+  "$rtusim" animate --scene-file "$scenes/procedural.toml" -j 0 --out-dir out5
+
 expect_error "loosely-timed model is not yet built" \
   "$rtusim" animate --scene-file "$scenes/procedural.toml" --model lt --out-dir out3
 

@@ -21,6 +21,7 @@
 #include "ray_setup.h"
 #include "rtl_cycle_model.h"
 #include "svo_builder.h"
+#include "three_balls_scene.h"
 
 using namespace rtu;
 
@@ -242,8 +243,31 @@ TEST_CASE("Every ray's result equals the golden model's, whatever the core count
   }
 }
 
+TEST_CASE("Ray records: the ray stages, and a model's first ray waits for its header", "[rtl]") {
+  // One core, 6 + 6 stages, 16 cycles of header fetch. Ray 0 (instance 0) is taken in 0 and
+  // fetches the header in 1 .. 16, so ray 1 (instance 0 again) is taken in 17 and ray 2 (instance
+  // 1, a header of its own) in 18, fetching in 19 .. 34. Ray 0 reaches the output in
+  // 0 + 12 + 16 = 28 and goes to the idle core; ray 1 reaches it in 17 + 12 = 29 and waits for
+  // the core until 30 + W0, a stall of 1 + W0 cycles that holds ray 2 too: 18 + 12 + 16 + 1 + W0.
+  const ThreeBalls scene;
+  const RayRecord ray = frameRays(3, 3)[4];
+  std::vector<HostRecord> records;
+  for (size_t instance : {0, 0, 1}) {
+    RayRecord record = ray;
+    record.modelAddress = scene.instances[instance].headerAddress;
+    records.push_back(record);
+  }
+  RtlTopConfig config;
+  config.cores = 1;
+  const RtlTopRun run = runRtlTop(scene.memory.memory(), records, config);
+  REQUIRE(run.results.size() == 3);
+  const uint64_t w0 = run.results[0].cost, w1 = run.results[1].cost;
+  CHECK(run.acceptCycles == Cycles{0, 17, 18});
+  CHECK(run.dispatchCycles == Cycles{28, 30 + w0, std::max(47 + w0, 32 + w0 + w1)});
+}
+
 TEST_CASE("No jobs take no cycles", "[rtl]") {
-  const RtlTopRun run = runRtlTop(SvoMemory(), {}, RtlTopConfig{});
+  const RtlTopRun run = runRtlTop(SvoMemory(), std::vector<TraversalJob>{}, RtlTopConfig{});
   REQUIRE(run.results.empty());
   REQUIRE(run.totalCycles == 0);
 }

@@ -1,5 +1,6 @@
 // The cycle-accurate SystemC model against the golden model (per-ray results) and against the
-// naive per-cycle transcription of the RTL (total cycles and the cycle of every result).
+// naive per-cycle transcription of the RTL (total cycles and the cycle of every result), for the
+// thesis' t-value records and for ray records against models (ray stages, header fetches).
 
 #include <catch2/catch.hpp>
 
@@ -9,6 +10,7 @@
 #include "rtl_cycle_model.h"
 #include "rtu_simulation.h"
 #include "svo_builder.h"
+#include "three_balls_scene.h"
 
 namespace rtu {
 namespace {
@@ -38,6 +40,30 @@ TEST_CASE("Thesis configuration: results and every cycle equal the RTL", "[rtu]"
   const RtuRun run = simulateRtu(s.build.image.memory(), s.jobs, config);
   const RtlTopRun rtl = runRtlTop(s.build.image.memory(), s.jobs, RtlTopConfig{cores, config.golden()});
   INFO(scene << ", " << cores << " cores");
+  CHECK(run.totalCycles == rtl.totalCycles);
+  CHECK(run.arrivalCycles == rtl.resultCycles);
+  CHECK(run.results == rtl.results);
+}
+
+TEST_CASE("Ray records: results and every cycle equal the RTL transcription", "[rtu]") {
+  // Each instance's header is fetched at its first ray; the later instances' first rays come
+  // while earlier rays wait for cores, so fetches and stalls overlap.
+  const ThreeBalls scene;
+  const int cores = GENERATE(1, 2, 4);
+  std::vector<HostRecord> records;
+  const std::vector<RayRecord> rays = frameRays(16, 10);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    RayRecord record = rays[i];
+    record.modelAddress = scene.instances[std::min<size_t>(i / 40, 2)].headerAddress;
+    records.push_back(record);
+  }
+  RtuConfig config;
+  config.cores = cores;
+  const RtuRun run = simulateRtu(scene.memory.memory(), records, config);
+  const RtlTopRun rtl = runRtlTop(scene.memory.memory(), records,
+                                  RtlTopConfig{cores, config.golden(), config.jobManager.rayStages,
+                                               config.jobManager.headerFetchCycles});
+  INFO(cores << " cores");
   CHECK(run.totalCycles == rtl.totalCycles);
   CHECK(run.arrivalCycles == rtl.resultCycles);
   CHECK(run.results == rtl.results);
