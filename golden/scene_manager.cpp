@@ -94,7 +94,7 @@ SceneHit SceneManager::trace(const RayRecord& ray, std::vector<IssuedJob>* issue
         model_.trace(rayRecordToJob(ray, headers_[candidate.instance], epsilon_));
     ++best.jobs;
     cost += result.cost;
-    if (issued) issued->push_back({candidate.instance, result.cost});
+    if (issued) issued->push_back({candidate.instance, result.cost, ray.id});
     if (nearerSceneHit(result, candidate.instance, best.result, best.instance)) {
       best.result = result;
       best.instance = static_cast<int>(candidate.instance);

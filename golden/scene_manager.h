@@ -69,6 +69,7 @@ bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
 struct IssuedJob {
   uint32_t instance = 0;
   uint32_t cost = 0;
+  uint32_t ray = 0;  // the ray's id
 };
 
 struct SceneHit {

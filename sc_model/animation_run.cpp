@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "job_setup.h"
+#include "lt_simulation.h"
 #include "rtu_recurrence.h"
 #include "rtu_simulation.h"
 
@@ -110,6 +111,21 @@ uint64_t AnimationRenderer::frameCycles(
   return runRecurrence(jobs, config).totalCycles;
 }
 
+// The issued jobs in pixel order as ray records against their instances' headers, through the
+// loosely-timed RTU: its job manager fetches each header once, as the cycle-accurate one does.
+uint64_t AnimationRenderer::looselyTimedCycles(const Work& work) const {
+  std::vector<HostRecord> records;
+  const int width = work.camera.width;
+  for (const std::vector<IssuedJob>& row : work.issuedPerRow)
+    for (const IssuedJob& issued : row) {
+      const Ray ray = work.camera.primaryRay(static_cast<int>(issued.ray % width),
+                                             static_cast<int>(issued.ray / width));
+      records.push_back(makeRayRecord(issued.ray, ray, memory_.headerAddress(issued.instance)));
+    }
+  if (records.empty()) return 0;
+  return runLooselyTimed(memory_.memory(), records, *options_.rtu).totalCycles;
+}
+
 uint64_t AnimationRenderer::simulateFrame(Work& work, const std::vector<uint32_t>& traced) const {
   std::vector<RayRecord> rays;
   for (uint32_t id : traced)
@@ -133,7 +149,9 @@ SceneFrame AnimationRenderer::render(int frame) {
   Work work = trace(frame, result);
   FrameStatistics& statistics = result.statistics;
   for (const FrameStatistics& part : work.perThread) add(statistics, part);
-  if (options_.rtu) {
+  if (options_.model == ModelKind::LooselyTimed) {
+    statistics.cycles = looselyTimedCycles(work);
+  } else if (options_.model == ModelKind::CycleAccurate) {
     std::vector<uint32_t> traced;
     for (uint32_t pixel = 0; pixel < work.traced.size(); ++pixel)
       if (work.traced[pixel]) traced.push_back(pixel);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "hit_buffer.h"
+#include "model_run.h"
 #include "rtu_config.h"
 #include "scene_file.h"
 #include "scene_memory.h"
@@ -29,7 +30,11 @@ struct AnimationOptions {
   int threads = 1;
   int cores = 16;
   double clockMhz = 100.0;
-  const RtuConfig* rtu = nullptr;  // set: the cycle-accurate model times and answers the frame
+  // Which model times the frames: golden (its costs in the recurrence), ca (the SystemC scene
+  // manager and RTU answer and time them) or lt (the golden scene manager's jobs, in pixel
+  // order, through the loosely-timed RTU). `rtu` is set for ca and lt.
+  ModelKind model = ModelKind::Golden;
+  const RtuConfig* rtu = nullptr;
 };
 
 struct FrameStatistics {
@@ -80,6 +85,7 @@ class AnimationRenderer {
   uint64_t frameCycles(const std::vector<std::vector<IssuedJob>>& issuedPerRow) const;
   // Simulates the rays `traced` on the cycle-accurate model; their pixels become its answers.
   uint64_t simulateFrame(Work& work, const std::vector<uint32_t>& traced) const;
+  uint64_t looselyTimedCycles(const Work& work) const;
 
   const SceneDescription& scene_;
   AnimationOptions options_;

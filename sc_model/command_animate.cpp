@@ -14,6 +14,7 @@
 #include "config_options.h"
 #include "exploration_run.h"
 #include "frame_images.h"
+#include "lt_simulation.h"
 #include "model_cache.h"
 #include "output_paths.h"
 #include "plot_script.h"
@@ -35,11 +36,11 @@ struct AnimateOptions {
   bool noHitBuffer = false;
   bool traceAll = false;
 
-  // The golden model traces a frame in `threads` threads already; the cycle-accurate one
-  // simulates it in one.
+  // The golden model traces a frame in `threads` threads already; the cycle-accurate and
+  // loosely-timed ones simulate it in one.
   int workerCount() const {
     if (jobs > 0) return jobs;
-    return model == "ca" ? defaultWorkerCount() : 1;
+    return model == "golden" ? 1 : defaultWorkerCount();
   }
   std::string csvPath() const { return csv.empty() ? outDir + "/frames.csv" : csv; }
   std::string framePath(int frame) const {
@@ -49,12 +50,17 @@ struct AnimateOptions {
   }
 };
 
-// The loosely-timed model is another issue's (10).
-void refuseLooselyTimed(const std::string& model) {
-  if (model != "lt") return;
-  throw std::invalid_argument("--model lt: the loosely-timed model is not yet built; animate "
-                              "runs on --model golden (cycles from the golden costs and the RTU "
-                              "recurrence) or --model ca (the SystemC scene manager and RTU)");
+// The loosely-timed model takes the golden scene manager's jobs as host records; in the hardware
+// the host links carry rays into the scene manager and merged results out of it, not jobs. So
+// paced links would time the wrong records: refused, as are the settings lt never models.
+void refuseForLooselyTimedScenes(const RtuConfig& rtu) {
+  if (const auto why = whyNotLooselyTimed(rtu))
+    throw std::invalid_argument("--model lt does not apply: " + *why);
+  if (rtu.hostInput.bytesPerCycle > 0 || rtu.hostOutput.bytesPerCycle > 0)
+    throw std::invalid_argument(
+        "animate --model lt does not model paced host links (they carry rays and merged results, "
+        "the loosely-timed RTU sees jobs): set --host-in-bytes-per-cycle 0 "
+        "--host-out-bytes-per-cycle 0, or use --model ca");
 }
 
 std::vector<SceneModel> loadModels(const SceneDescription& scene, const std::string& cacheDir) {
@@ -135,7 +141,7 @@ void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
 }
 
 void animate(const AnimateOptions& options, const RtuConfig& rtu) {
-  refuseLooselyTimed(options.model);
+  if (options.model == "lt") refuseForLooselyTimedScenes(rtu);
   const SceneDescription scene = readSceneFile(options.sceneFile, options.overrides);
   std::filesystem::create_directories(options.outDir);
   checkOutputPaths({{"--csv", options.csvPath()}, {"--out-dir", options.framePath(0)}},
@@ -149,7 +155,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
 
   AnimationOptions run{rtu.golden(), {!options.traceAll, !options.traceAll}, !options.noHitBuffer,
                        options.threads, rtu.cores, rtu.clockMhz,
-                       options.model == "ca" ? &rtu : nullptr};
+                       parseModelKind(options.model), options.model == "golden" ? nullptr : &rtu};
   std::ofstream csv(options.csvPath());
   csv << csvLine(csvHeader()) << std::flush;
   std::vector<FrameStatistics> statistics;
@@ -198,7 +204,8 @@ void addAnimateCommand(CLI::App& app) {
   command->add_option("--csv", options->csv, "per-frame statistics (default: OUT-DIR/frames.csv)");
   command->add_option("--model", options->model,
                       "golden (untimed; cycles from its costs and the RTU recurrence), ca "
-                      "(cycle-accurate: the SystemC scene manager and RTU); lt: not yet built")
+                      "(cycle-accurate: the SystemC scene manager and RTU) or lt (the golden scene "
+                      "manager's jobs through the loosely-timed RTU)")
       ->capture_default_str()
       ->check(CLI::IsMember({"golden", "ca", "lt"}));
   command->add_option("--cache-dir", options->cacheDir,

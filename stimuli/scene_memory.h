@@ -29,12 +29,12 @@ class SceneMemory {
   SvoMemory memory() const { return SvoMemory(words_); }
   ModelHeaderWords headerWords(size_t instance) const;
   size_t instanceCount() const { return instanceModels_.size(); }
-
- private:
+  // Word address of the instance's header: what a ray record against it names.
   uint32_t headerAddress(size_t instance) const {
     return headersStart_ + static_cast<uint32_t>(instance * kModelHeaderWords);
   }
 
+ private:
   std::vector<uint32_t> words_;
   std::vector<uint32_t> modelRoots_;
   std::vector<VoxelBounds> modelBounds_;

@@ -49,8 +49,18 @@ awk -F, 'NR > 2 && $5 == 0 { exit 1 }' rows_j2.csv || fail "a primed frame saved
 expect_error "--jobs: Value 0 not in range" \
   "$rtusim" animate --scene-file "$scenes/procedural.toml" -j 0 --out-dir out5
 
-expect_error "loosely-timed model is not yet built" \
-  "$rtusim" animate --scene-file "$scenes/procedural.toml" --model lt --out-dir out3
+# The loosely-timed model: the same frames as golden, cycles of its own (near ca's).
+"$rtusim" animate --scene-file "$scenes/procedural.toml" --frames 3 --width 48 --height 27 \
+  --out-dir out_lt --cache-dir cache --model lt --cores 4 >lt.txt
+grep -q "(lt model)" lt.txt || fail "the lt run did not say its model"
+for frame in 0000 0002; do
+  cmp -s out/frame_$frame.png out_lt/frame_$frame.png || fail "lt frame $frame differs from golden"
+done
+awk -F, 'NR > 1 && $4 > 0 && $13 == 0 { exit 1 }' out_lt/frames.csv || fail "lt frame without cycles"
+expect_error "--model lt does not apply: results pass a reorder buffer" \
+  "$rtusim" animate --scene-file "$scenes/procedural.toml" --model lt --reorder 8 --out-dir out3
+expect_error "does not model paced host links" \
+  "$rtusim" animate --scene-file "$scenes/procedural.toml" --model lt --preset cached --out-dir out3
 
 sed 's/translation = \[0, -1.3, 0\]/translaton = [0, -1.3, 0]/' \
   "$scenes/procedural.toml" >bad.toml
