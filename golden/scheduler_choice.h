@@ -1,8 +1,8 @@
 #pragma once
 // The scheduler's choice of a core for the pending job (thesis 6.2.2, appendix C.3), apart from
-// any timing shell: the SystemC scheduler (modules/scheduler.h), the recurrence
-// (rtu_recurrence.h) and the loosely-timed dispatcher (modules/lt_dispatcher.h) each say what
-// they know of the cores through a query, and this decides by the policy:
+// any timing shell: the SystemC scheduler (modules/scheduler.h) and the recurrence
+// (rtu_recurrence.h, which the loosely-timed model runs on) each say what they know of the cores
+// through a query, and this decides by the policy:
 //  - cfa: core t mod N in cycle t, the first cycle it is idle;
 //  - fa:  the lowest-numbered idle core, in the first cycle with one;
 //  - rr:  the next core in turn, from the cycle it is idle.
@@ -22,13 +22,6 @@ namespace rtu {
 enum class Idle { Yes, No, Unknown };
 constexpr uint64_t kIdleUnknown = std::numeric_limits<uint64_t>::max();
 
-// The first cycle from `cycle` on in which a select counter that advances every cycle over
-// `cores` cores from 0 at reset (the RTL's, in the scheduler and the result manager) selects `core`.
-inline uint64_t selectCounterReaches(int core, int cores, uint64_t cycle) {
-  const uint64_t n = static_cast<uint64_t>(cores);
-  return cycle + (static_cast<uint64_t>(core) + n - cycle % n) % n;
-}
-
 class SchedulerChoice {
  public:
   static constexpr int kWait = -1;  // the policy needs a core to declare more first
@@ -47,18 +40,8 @@ class SchedulerChoice {
     return kWait;
   }
 
-  // The first cycle from `cycle` on in which the policy gives the job to `core` when that core is
-  // the only idle one (the loosely-timed dispatcher's view): cfa waits for the select counter,
-  // fa and rr take it at once. Cost independent of the core count.
-  uint64_t firstCycleFor(int core, uint64_t cycle) const {
-    if (policy_ != SchedulerPolicy::CyclicFirstAvailable) return cycle;
-    return selectCounterReaches(core, cores_, cycle);
-  }
-
   // The job went to `core`: round-robin's turn moves on.
   void dispatched(int core) { nextInLine_ = (core + 1) % cores_; }
-  int nextInLine() const { return nextInLine_; }
-  SchedulerPolicy policy() const { return policy_; }
 
  private:
   template <typename Query>

@@ -4,19 +4,19 @@
 #include <memory>
 #include <stdexcept>
 
+#include "analytic_run.h"
 #include "lt_top.h"
 #include "recurrence_results.h"
 #include "sc_kernel.h"
 
 namespace rtu {
 
+// The model is the recurrence with the memory's timing in the traversals: it runs what the
+// recurrence runs, with any memory.
 std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
-  if (config.reorderCapacity > 0) return "results pass a reorder buffer (--reorder)";
-  if (config.trace) return "a trace is recorded (waveforms are the cycle-accurate model's)";
-  if (config.timeline.wanted()) return "a timeline is recorded (it is the cycle-accurate model's)";
-  if (config.hostInput.activeProbability < 1.0 || config.hostOutput.activeProbability < 1.0)
-    return "a host link is randomly inactive";
-  return std::nullopt;
+  RtuConfig anyMemory = config;
+  anyMemory.memory.ideal = true;
+  return whyNotAnalytic(anyMemory);
 }
 
 RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,

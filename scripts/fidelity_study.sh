@@ -8,11 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/fidelity}
 rtusim=${2:-build/rtusim}
-mesh=/usr/share/assimp/models/OBJ/spider.obj
-if [[ ! -f $mesh ]]; then
-  echo "installing assimp-testmodels for the spider mesh"
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq assimp-testmodels >/dev/null
-fi
+source scripts/spider_mesh.sh
 mkdir -p "$out"
 common=(--width 1280 --height 720 --quanta 1000,100000 --fractions 0.05,0.1,0.2 --sample-seed 1)
 

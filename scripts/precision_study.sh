@@ -7,11 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/precision}
 rtusim=${2:-build/rtusim}
-mesh=/usr/share/assimp/models/OBJ/spider.obj
-if [[ ! -f $mesh ]]; then
-  echo "installing assimp-testmodels for the spider mesh"
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq assimp-testmodels >/dev/null
-fi
+source scripts/spider_mesh.sh
 mkdir -p "$out"
 formats=16.8,16.12,20.12,20.16,24.12,24.16,24.20,28.16,28.20,28.24,32.16,32.20,32.24,32.28,40.20,40.28,40.32,48.24,48.32,48.40
 size=(--width 256 --height 256)
