@@ -235,7 +235,7 @@ void RtuStatistics::writeReport(std::ostream& out) const {
     out << "t overflows: " << wrapped << " rays (t-values beyond the fixed-point range; flag 2)\n";
   if (belowResolution > 0)
     out << "below resolution: " << belowResolution << " rays (nodes narrower than a step; flag 4)\n";
-  out << (model == "systemc" ? "simulated in " : "answered by the " + model + " in ") << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
+  out << answeredBy(model) << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
       << " M rays per host second)\n";
 }
 

@@ -100,6 +100,10 @@ PY
 "$rtusim" sweep --scene menger --depth 5 --width 64 --height 48 --memory cached --model lt \
   --grid cores=4,16 --out lt_sweep.csv -j 1 >/dev/null
 test "$(grep -c '^lt,.*,lt,' lt_sweep.csv)" = 2 || fail "sweep --model lt rows"
+"$rtusim" render --scene menger --depth 5 --width 64 --height 48 --memory cached --model lt \
+  --stats lt_stats.json >lt_render.txt
+grep -q "estimated by the loosely-timed model" lt_render.txt || fail "render --model lt report"
+grep -q '"model": "lt"' lt_stats.json || fail "render --model lt statistics JSON"
 "$rtusim" fps --scene menger --depth 5 --resolutions 64x48 --cores 4 --model golden \
   --csv golden_fps.csv >golden_fps.txt
 grep -q "golden costs in the recurrence" golden_fps.txt || fail "fps --model golden heading"
