@@ -3,8 +3,8 @@
 // the model answers "a read of this line requested at cycle R: at which cycle is its data at the
 // L2's output?". With RequestOrder::Cycle (the cycle-accurate model) requests must come in
 // non-decreasing R (the caller orders the cores' requests by cycle); an earlier one throws
-// std::logic_error. With RequestOrder::Any (the loosely-timed model, whose cores run ahead of
-// each other) they may come in any order, as a documented approximation: the port and the DRAM
+// std::logic_error. With RequestOrder::Any (the loosely-timed model, whose traversals run one
+// after another) they may come in any order, as a documented approximation: the port and the DRAM
 // bus give a request the first free gap from its cycle on (resource_booking.h), a miss counts the
 // MSHRs busy at T (issued by T, released after it) without checking the later cycles its own use
 // covers, a request behind the latest one that finds its line in flight waits no longer than its

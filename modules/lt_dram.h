@@ -2,7 +2,7 @@
 // The DRAM behind the L2 as a loosely-timed TLM-2.0 target: a read of a line (the payload's
 // length in bytes), issued at the cycle its delay annotates, returns with the delay to the
 // cycle its last byte arrived. Timing: dram_channel.h with RequestOrder::Any, as the reads come
-// from cores that run ahead of each other within a quantum.
+// one traversal after another, out of cycle order (sc_model/lt_top.h).
 
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>

@@ -1,8 +1,9 @@
 #pragma once
 // The shared L2 as a loosely-timed TLM-2.0 target, bound by every core's L1: a line read
 // requested at the cycle its delay annotates returns with the delay to the cycle the line is at
-// the L2's output. Timing: l2_cache_timing.h with RequestOrder::Any (the cores' requests come out
-// of cycle order within a quantum); its misses go to the DRAM target through `dram`.
+// the L2's output. Timing: l2_cache_timing.h with RequestOrder::Any (the cores' requests come one
+// traversal after another, out of cycle order: sc_model/lt_top.h); its misses go to the DRAM
+// target through `dram`.
 
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>

@@ -5,8 +5,8 @@
 //
 // RequestOrder::Cycle, for the cycle-accurate model, whose requests come in cycle order: the
 // resource is free from the end of the last booking on, so start = max(from, end of last).
-// RequestOrder::Any, for the loosely-timed model, whose cores run ahead of each other within a
-// quantum and so make their requests out of cycle order: the booked cycles are kept, and a
+// RequestOrder::Any, for the loosely-timed model, whose traversals run one after another and so
+// make their requests out of cycle order: the booked cycles are kept, and a
 // request fills the first gap it fits in, even one before a later booking. With requests in cycle
 // order both give the same starts (a gap before the last booking is then always earlier than
 // `from`). The booked cycles are a ring of bits from forgetBefore's cycle (no request starts
