@@ -50,7 +50,7 @@ void LtTop::drive() {
   for (size_t i = 0; i < records_.size(); ++i) {
     const JobSetup::SetUp set = setup_.setUp(records_[i]);
     pipeline.push_back(RecurrenceJob{0, set.latency, set.headerFetch});
-    jobs_.push_back(coreJobOf(PayloadIds::plain(i), set.job, config_.jobManager));
+    jobs_.push_back(set.job);
   }
   results_.resize(records_.size());
   blocked_.resize(records_.size());
@@ -65,7 +65,8 @@ void LtTop::drive() {
 uint64_t LtTop::traverse(size_t job, int core, uint64_t initCycle) {
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
-  const CoreResult result = cores_[static_cast<size_t>(core)]->traverse(jobs_[job], initCycle);
+  const CoreJob fixed = coreJobOf(PayloadIds::plain(job), jobs_[job], config_.jobManager);
+  const CoreResult result = cores_[static_cast<size_t>(core)]->traverse(fixed, initCycle);
   results_[job] = result.result;
   blocked_[job] = result.blockedCycles;
   return result.result.cost + result.blockedCycles;

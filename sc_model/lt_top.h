@@ -59,7 +59,7 @@ class LtTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
-  std::vector<CoreJob> jobs_;
+  std::vector<TraversalJob> jobs_;  // set up, float t-values: converted at dispatch
   RecurrenceRun timing_;
   std::vector<TraversalResult> results_;
   std::vector<uint32_t> blocked_;
