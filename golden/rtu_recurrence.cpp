@@ -1,13 +1,13 @@
 #include "rtu_recurrence.h"
 
-#include "scheduler_choice.h"
-
 #include <algorithm>
 #include <limits>
 #include <optional>
 #include <queue>
 #include <stdexcept>
 #include <utility>
+
+#include "scheduler_choice.h"
 
 namespace rtu {
 
