@@ -12,17 +12,25 @@ LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, Sv
       words_(words),
       time_(time),
       timing_(config),
+      hitCycles_(config.hitLatency),
+      hitDelay_(time.cycles(config.hitLatency)),
       lineRead_(config.lineBytes) {
   socket.register_b_transport(this, &LtL1Cache::b_transport);
 }
 
 void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   const uint32_t word = static_cast<uint32_t>(trans.get_address() / 4);
-  const L1Lookup lookup = timing_.lookup(word, time_.cycleAt(delay));
-  const uint64_t ready =
-      lookup.hit ? lookup.cycle : timing_.fill(word, lineRead_(next, time_, lookup.lineAddress,
-                                         timing_.array().config().lineBytes, lookup.cycle));
-  delay = time_.delayTo(ready);
+  const uint64_t cycle = time_.cycleAt(delay);
+  const L1Lookup lookup = timing_.lookup(word, cycle);
+  if (!lookup.hit) {
+    const uint64_t filled = lineRead_(next, time_, lookup.lineAddress,
+                                      timing_.array().config().lineBytes, lookup.cycle);
+    delay = time_.delayTo(timing_.fill(word, filled));
+  } else if (lookup.cycle == cycle + hitCycles_) {
+    delay += hitDelay_;  // the common hit, without converting cycles to time
+  } else {
+    delay = time_.delayTo(lookup.cycle);
+  }
   serveWordRead(words_, trans);
 }
 

@@ -31,6 +31,8 @@ class LtL1Cache : public sc_core::sc_module {
   SvoMemory words_;
   LtTime time_;
   L1CacheTiming timing_;
+  uint64_t hitCycles_;
+  sc_core::sc_time hitDelay_;
   LineRead lineRead_;
 };
 

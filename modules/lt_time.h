@@ -19,7 +19,8 @@ class LtTime {
       : clock_(clock),
         period_(clock.period()),
         periodPs_(period_.value()),
-        cyclesPerPs_(1.0 / static_cast<double>(periodPs_)) {}
+        cyclesPerPs_(1.0 / static_cast<double>(periodPs_)),
+        exactCycles_(kExactPs / periodPs_) {}
 
   // The cycle `delay` after simulated time. Delays are whole cycles, so a multiplication by the
   // reciprocal, rounded, gives the quotient exactly (below 2^53 ps) without a division per read.
@@ -30,11 +31,14 @@ class LtTime {
   // The delay from simulated time to `cycle` (not before it). Scaled in line, exactly while the
   // picoseconds fit a double's 53 bits: the library's sc_time::from_value is a call per read.
   sc_core::sc_time delayTo(uint64_t cycle) const {
-    const uint64_t cycles = cycle - clock_.now();
-    if (cycle > kMaxCycles || cycles >= kExactPs / periodPs_)
-      return clock_.until(cycle);  // exact, and throws std::overflow_error past kMaxCycles
+    if (cycle > kMaxCycles) return clock_.until(cycle);  // throws std::overflow_error
+    return cycles(cycle - clock_.now());
+  }
+  // `count` cycles as a delay.
+  sc_core::sc_time cycles(uint64_t count) const {
+    if (count >= exactCycles_) return sc_core::sc_time::from_value(count * periodPs_);
     sc_core::sc_time delay = period_;
-    delay *= static_cast<double>(cycles);
+    delay *= static_cast<double>(count);
     return delay;
   }
   uint64_t now() const { return clock_.now(); }
@@ -47,6 +51,7 @@ class LtTime {
   sc_core::sc_time period_;
   uint64_t periodPs_;
   double cyclesPerPs_;
+  uint64_t exactCycles_;  // fewer cycles than this scale exactly through a double
 };
 
 // A read of a cache line through a socket, for its timing: the caches hold tags only (the image

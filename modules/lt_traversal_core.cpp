@@ -9,7 +9,7 @@ namespace rtu {
 
 LtTraversalCore::LtTraversalCore(sc_core::sc_module_name name, FixedFormat format,
                                  int stackFrames, const LtTime& time)
-    : sc_core::sc_module(name), memory("memory"), time_(time), core_(FixedArith{format}, stackFrames) {
+    : sc_core::sc_module(name), memory("memory"), time_(time), period_(time.period()), core_(FixedArith{format}, stackFrames) {
   read_.set_read();
   read_.set_data_ptr(reinterpret_cast<unsigned char*>(&word_));
   read_.set_data_length(sizeof word_);
@@ -38,16 +38,21 @@ CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
       ++cycle;
     }
   } else {
+    // The state's cycle as a delay after simulated time, kept beside it: a whole cycle is an
+    // addition, and only a read's answer is converted back.
+    sc_core::sc_time delay = time_.delayTo(cycle);
     while (core_.busy()) {
       uint32_t word = 0;
       if (core_.readsMemory()) {
         const uint64_t issued = cycle;
-        word = readWord(core_.memoryAddress(), cycle);
+        word = readWord(core_.memoryAddress(), delay);
+        cycle = time_.cycleAt(delay);
         blocked += static_cast<uint32_t>(cycle - issued);
       }
       // Only a state that announced its read reads a word.
       core_.step([word](uint32_t) { return word; });
       ++cycle;
+      delay += period_;
     }
   }
   CoreResult result{job.ids, makeResult(job.idWord, core_), blocked};
@@ -55,15 +60,13 @@ CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
   return result;
 }
 
-uint32_t LtTraversalCore::readWord(uint32_t address, uint64_t& cycle) {
+uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& delay) {
   read_.set_address(uint64_t{address} * 4);
   read_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_core::sc_time delay = time_.delayTo(cycle);
   memory->b_transport(read_, delay);
   if (read_.is_response_error())
     throw std::runtime_error(std::string(name()) + ": memory read failed: " +
                              read_.get_response_string());
-  cycle = time_.cycleAt(delay);
   return word_;
 }
 

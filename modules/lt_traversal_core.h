@@ -31,10 +31,12 @@ class LtTraversalCore : public sc_core::sc_module {
 
  private:
   void acquireDmi();
-  // The word at `address`, read in `cycle`; `cycle` becomes the cycle it is there.
-  uint32_t readWord(uint32_t address, uint64_t& cycle);
+  // The word at `address`, read at `delay` after simulated time; `delay` becomes the delay to
+  // the cycle it is there.
+  uint32_t readWord(uint32_t address, sc_core::sc_time& delay);
 
   LtTime time_;
+  sc_core::sc_time period_;
   TraversalCore<FixedArith> core_;
   tlm::tlm_generic_payload read_;
   uint32_t word_ = 0;  // the read's data
