@@ -9,7 +9,7 @@ LtDram::LtDram(sc_core::sc_module_name name, const DramConfig& config, const LtT
 
 void LtDram::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   // No initiator is behind simulated time: bookings that ended before it are of no use.
-  channel_.forgetBefore(time_.now());
+  if (time_.movedSince(forgottenAt_)) channel_.forgetBefore(forgottenAt_);
   const uint64_t end = channel_.read(trans.get_data_length(), time_.cycleAt(delay));
   delay = time_.delayTo(end);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);

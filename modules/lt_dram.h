@@ -25,6 +25,7 @@ class LtDram : public sc_core::sc_module {
 
   DramChannel channel_;
   LtTime time_;
+  uint64_t forgottenAt_ = 0;  // the cycle of the last forgetBefore
 };
 
 }  // namespace rtu

@@ -16,7 +16,8 @@ LtL2Cache::LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, c
 }
 
 void LtL2Cache::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
-  timing_.forgetBefore(time_.now());  // no request comes for a cycle behind simulated time
+  // No request comes for a cycle behind simulated time.
+  if (time_.movedSince(forgottenAt_)) timing_.forgetBefore(forgottenAt_);
   const uint64_t ready = timing_.read(trans.get_address(), time_.cycleAt(delay));
   delay = time_.delayTo(ready);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);

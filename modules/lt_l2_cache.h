@@ -28,6 +28,7 @@ class LtL2Cache : public sc_core::sc_module {
   void b_transport(int id, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
 
   LtTime time_;
+  uint64_t forgottenAt_ = 0;  // the cycle of the last forgetBefore
   L2CacheTiming timing_;
   LineRead dramRead_;
 };

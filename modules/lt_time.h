@@ -42,6 +42,14 @@ class LtTime {
     return delay;
   }
   uint64_t now() const { return clock_.now(); }
+  // Whether simulated time has moved since `seen` was last set here (it moves only at the
+  // initiator's quantum synchronisations): a target then forgets the bookings behind it.
+  bool movedSince(uint64_t& seen) const {
+    const uint64_t cycle = clock_.now();
+    if (cycle == seen) return false;
+    seen = cycle;
+    return true;
+  }
   sc_core::sc_time period() const { return period_; }
 
  private:

@@ -30,34 +30,25 @@ void LtTraversalCore::acquireDmi() {
 CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
   if (!dmiAsked_) acquireDmi();
   core_.start(job.t0, job.t1, job.a, job.root);
-  uint64_t cycle = initCycle;
   uint32_t blocked = 0;
-  if (dmi_) {
-    while (core_.busy()) {
-      core_.step([this](uint32_t address) { return direct_.read(address); });
-      ++cycle;
-    }
-  } else {
-    // The state's cycle as a delay after simulated time, kept beside it: a whole cycle is an
-    // addition, and only a read's answer is converted back.
-    sc_core::sc_time delay = time_.delayTo(cycle);
-    while (core_.busy()) {
-      uint32_t word = 0;
-      if (core_.readsMemory()) {
-        const uint64_t issued = cycle;
-        word = readWord(core_.memoryAddress(), delay);
-        cycle = time_.cycleAt(delay);
-        blocked += static_cast<uint32_t>(cycle - issued);
-      }
-      // Only a state that announced its read reads a word.
-      core_.step([word](uint32_t) { return word; });
-      ++cycle;
-      delay += period_;
-    }
-  }
+  if (dmi_)
+    while (core_.busy()) core_.step([this](uint32_t address) { return direct_.read(address); });
+  else
+    blocked = stepThroughSocket(initCycle);
   CoreResult result{job.ids, makeResult(job.idWord, core_), blocked};
   core_.finish();
   return result;
+}
+
+// The state's cycle is kept as a delay after simulated time: a cycle is an addition, and a read
+// returns the delay to the cycle its word is there. The cycles past one per state were blocked.
+uint32_t LtTraversalCore::stepThroughSocket(uint64_t initCycle) {
+  sc_core::sc_time delay = time_.delayTo(initCycle);
+  while (core_.busy()) {
+    core_.step([this, &delay](uint32_t address) { return readWord(address, delay); });
+    delay += period_;
+  }
+  return static_cast<uint32_t>(time_.cycleAt(delay) - initCycle - core_.cost());
 }
 
 uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& delay) {

@@ -31,6 +31,8 @@ class LtTraversalCore : public sc_core::sc_module {
 
  private:
   void acquireDmi();
+  // Steps the started job to its end through `memory`; returns its blocked cycles.
+  uint32_t stepThroughSocket(uint64_t initCycle);
   // The word at `address`, read at `delay` after simulated time; `delay` becomes the delay to
   // the cycle it is there.
   uint32_t readWord(uint32_t address, sc_core::sc_time& delay);
