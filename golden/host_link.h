@@ -39,6 +39,7 @@ class HostLinkPacer {
   uint64_t slotStart(uint64_t records) const;
 
   HostLinkConfig config_;
+  double slot_;                        // cycles a record takes on a paced link
   uint64_t restartCycle_ = 0;          // pacing runs from here ...
   uint64_t recordsSinceRestart_ = 0;   // ... with this many records crossed since
   std::mt19937_64 generator_;

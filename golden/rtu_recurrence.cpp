@@ -109,9 +109,10 @@ class Drains {
 
 class Recurrence {
  public:
-  Recurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+  Recurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
              const TraversalTimer& timer)
       : jobs_(jobs),
+        jobAt_(jobAt),
         config_(config),
         timer_(timer),
         cores_(static_cast<uint64_t>(config.cores)),
@@ -122,7 +123,7 @@ class Recurrence {
         buffered_(cores_, kNoJob),
         lastDrain_(cores_, kUnknown),
         choice_(config.policy, config.cores) {
-    const size_t n = jobs.size();
+    const size_t n = jobs;
     run_.acceptCycles.resize(n);
     run_.pendingCycles.resize(n);
     run_.dispatchCycles.resize(n);
@@ -134,18 +135,19 @@ class Recurrence {
   }
 
   RecurrenceRun run() {
-    for (size_t i = 0; i < jobs_.size(); ++i) {
-      enterPipeline(i);
-      dispatch(i);
+    for (size_t i = 0; i < jobs_; ++i) {
+      const RecurrenceJob job = jobAt_(i);
+      enterPipeline(i, job);
+      dispatch(i, job.cost);
     }
     while (!drains_.empty()) drainNext();  // drains come in cycle order
-    run_.totalCycles = jobs_.empty() ? 0 : run_.drainCycles[run_.hostOrder.back()] + 1;
+    run_.totalCycles = jobs_ == 0 ? 0 : run_.drainCycles[run_.hostOrder.back()] + 1;
     return std::move(run_);
   }
 
  private:
   // c_i and A_i.
-  void enterPipeline(size_t i) {
+  void enterPipeline(size_t i, const RecurrenceJob& job) {
     uint64_t accept = i == 0 ? 0 : inputLink_.nextAllowed(run_.acceptCycles[i - 1]);
     accept = std::max(accept, fetchUntil_);
     while (inPipeline_ < i && run_.dispatchCycles[inPipeline_] <= accept) ++inPipeline_;
@@ -153,9 +155,9 @@ class Recurrence {
       accept = run_.dispatchCycles[inPipeline_++];  // the pipeline is held until that dispatch
     uint64_t stalls = 0;
     for (size_t k = inPipeline_; k < i; ++k) stalls += run_.dispatchCycles[k] - run_.pendingCycles[k];
-    uint64_t pending = accept + jobs_[i].pipelineCycles + stalls;
+    uint64_t pending = accept + job.pipelineCycles + stalls;
     if (i > 0) pending = std::max(pending, run_.dispatchCycles[i - 1] + 1);
-    if (jobs_[i].headerFetch > 0) fetchUntil_ = accept + 1 + jobs_[i].headerFetch;
+    if (job.headerFetch > 0) fetchUntil_ = accept + 1 + job.headerFetch;
     run_.acceptCycles[i] = accept;
     run_.pendingCycles[i] = pending;
   }
@@ -176,14 +178,14 @@ class Recurrence {
   };
 
   // D_i and the core, then the core's handover if its result buffer is free.
-  void dispatch(size_t i) {
+  void dispatch(size_t i, uint64_t cost) {
     uint64_t cycle = run_.pendingCycles[i];
     CoreQuery query{*this};
     const int core = choice_.choose(query, cycle);
     choice_.dispatched(core);
     run_.dispatchCycles[i] = cycle;
     run_.cores[i] = core;
-    traversal_[i] = timer_ ? timer_(i, core, cycle + 1) : jobs_[i].cost;
+    traversal_[i] = timer_ ? timer_(i, core, cycle + 1) : cost;
     const size_t c = static_cast<size_t>(core);
     waiting_[c] = i;
     idleFrom_[c] = kUnknown;
@@ -221,7 +223,8 @@ class Recurrence {
     if (waiting_[c] != kNoJob) handOver(core);
   }
 
-  const std::vector<RecurrenceJob>& jobs_;
+  const size_t jobs_;
+  const JobSource& jobAt_;
   const RecurrenceConfig& config_;
   const TraversalTimer& timer_;
   const uint64_t cores_;
@@ -240,10 +243,16 @@ class Recurrence {
 
 }  // namespace
 
-RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
                             const TraversalTimer& timer) {
   config.validate();
-  return Recurrence(jobs, config, timer).run();
+  return Recurrence(jobs, jobAt, config, timer).run();
+}
+
+RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+                            const TraversalTimer& timer) {
+  return runRecurrence(
+      jobs.size(), [&jobs](size_t i) { return jobs[i]; }, config, timer);
 }
 
 }  // namespace rtu

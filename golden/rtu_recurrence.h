@@ -59,12 +59,19 @@ struct RecurrenceRun {
   uint64_t totalCycles = 0;
 };
 
+// The jobs, asked for in order, each once: a caller can set a job up when the recurrence reaches
+// it rather than hold them all.
+using JobSource = std::function<RecurrenceJob(size_t job)>;
+
 // Times a traversal when its job is dispatched: W_i of job `job` on `core`, INIT in `initCycle`
-// (D_i + 1). The loosely-timed model's memory makes W_i depend on the core and the cycle; jobs are
-// dispatched in order, so the calls come in increasing initCycle.
+// (D_i + 1). The loosely-timed model's memory makes W_i depend on the core and the cycle. Jobs
+// are dispatched in order, so the calls come in increasing initCycle, and each comes after its
+// job was asked from the JobSource and before the next one is.
 using TraversalTimer = std::function<uint64_t(size_t job, int core, uint64_t initCycle)>;
 
 // With `timer`, W_i comes from it and the jobs' `cost` is not read.
+RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
+                            const TraversalTimer& timer = {});
 RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
                             const TraversalTimer& timer = {});
 

@@ -1,5 +1,6 @@
 #include "lt_top.h"
 
+#include <stdexcept>
 #include <string>
 
 #include "job_manager.h"
@@ -41,34 +42,35 @@ void LtTop::bindCachedMemory(const RtuConfig& config, SvoMemory memory) {
   }
 }
 
-// The job manager's set-up of every record (in host order: model headers are read by the first
-// ray against them), then the recurrence, which calls traverse() at each dispatch.
+// The recurrence asks for each record in host order: the job manager sets it up then (model
+// headers are read by the first ray against them), and the recurrence calls traverse() at its
+// dispatch, before it asks for the next.
 void LtTop::drive() {
-  std::vector<RecurrenceJob> pipeline;
-  pipeline.reserve(records_.size());
-  jobs_.reserve(records_.size());
-  for (size_t i = 0; i < records_.size(); ++i) {
-    const JobSetup::SetUp set = setup_.setUp(records_[i]);
-    pipeline.push_back(RecurrenceJob{0, set.latency, set.headerFetch});
-    jobs_.push_back(set.job);
-  }
-  results_.resize(records_.size());
-  blocked_.resize(records_.size());
+  results_.reserve(records_.size());
+  blocked_.reserve(records_.size());
   quantum_.reset();
   timing_ = runRecurrence(
-      pipeline, RecurrenceConfig{config_.cores, config_.scheduler, config_.hostInput, config_.outputLink()},
+      records_.size(), [this](size_t job) { return setUp(job); },
+      RecurrenceConfig{config_.cores, config_.scheduler, config_.hostInput, config_.outputLink()},
       [this](size_t job, int core, uint64_t initCycle) { return traverse(job, core, initCycle); });
 }
 
+RecurrenceJob LtTop::setUp(size_t job) {
+  const JobSetup::SetUp set = setup_.setUp(records_[job]);
+  current_ = set.job;
+  return RecurrenceJob{0, set.latency, set.headerFetch};
+}
+
 // Dispatches come in cycle order: the thread's local time is the latest, synchronised with the
-// kernel once it runs a quantum ahead.
+// kernel once it runs a quantum ahead. They come in job order too, each right after its set-up.
 uint64_t LtTop::traverse(size_t job, int core, uint64_t initCycle) {
+  if (job != results_.size()) throw std::logic_error("LtTop: jobs must be dispatched in order");
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
-  const CoreJob fixed = coreJobOf(PayloadIds::plain(job), jobs_[job], config_.jobManager);
+  const CoreJob fixed = coreJobOf(PayloadIds::plain(job), current_, config_.jobManager);
   const CoreResult result = cores_[static_cast<size_t>(core)]->traverse(fixed, initCycle);
-  results_[job] = result.result;
-  blocked_[job] = result.blockedCycles;
+  results_.push_back(result.result);
+  blocked_.push_back(result.blockedCycles);
   return result.result.cost + result.blockedCycles;
 }
 

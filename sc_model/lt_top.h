@@ -46,6 +46,7 @@ class LtTop : public sc_core::sc_module {
 
  private:
   void drive();
+  RecurrenceJob setUp(size_t job);
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
   void bindCachedMemory(const RtuConfig& config, SvoMemory memory);
 
@@ -59,7 +60,7 @@ class LtTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
-  std::vector<TraversalJob> jobs_;  // set up, float t-values: converted at dispatch
+  TraversalJob current_;  // the job set up last, float t-values: converted at dispatch
   RecurrenceRun timing_;
   std::vector<TraversalResult> results_;
   std::vector<uint32_t> blocked_;

@@ -21,20 +21,32 @@ std::vector<bool> coreIdleWhenPending(const RecurrenceRun& run, int cores) {
   return idle;
 }
 
-// The most result buffers full at once, as the result manager counts them: a result counts from
-// the cycle it is buffered to the cycle after it drained.
-uint64_t maxBuffersFull(const RecurrenceRun& run) {
-  std::vector<uint64_t> starts(run.handoverCycles.size()), ends(run.drainCycles.size());
-  for (size_t j = 0; j < starts.size(); ++j) {
-    starts[j] = run.handoverCycles[j] + 1;
-    ends[j] = run.drainCycles[j] + 2;
+// Sorts values that are nearly in order, by moving each late one back to its place: few moves
+// each. Should they be far off, a sort finishes once the moves reach a few per value.
+void sortNearlySorted(std::vector<uint64_t>& values) {
+  uint64_t movesLeft = 8 * values.size();
+  for (size_t late = 1; late < values.size(); ++late) {
+    const uint64_t value = values[late];
+    size_t place = late;
+    for (; place > 0 && values[place - 1] > value; --place) values[place] = values[place - 1];
+    values[place] = value;
+    if (late - place >= movesLeft) return std::sort(values.begin(), values.end());
+    movesLeft -= late - place;
   }
-  std::sort(starts.begin(), starts.end());
-  std::sort(ends.begin(), ends.end());
+}
+
+// The most result buffers full at once, as the result manager counts them: a result counts from
+// the cycle it is buffered to the cycle after it drained. Drains come in host order, so their
+// ends are in order; the buffering cycles follow the dispatches, nearly in order.
+uint64_t maxBuffersFull(const RecurrenceRun& run) {
+  std::vector<uint64_t> starts(run.handoverCycles.size());
+  for (size_t j = 0; j < starts.size(); ++j) starts[j] = run.handoverCycles[j] + 1;
+  sortNearlySorted(starts);
   uint64_t full = 0, most = 0;
   size_t ended = 0;
+  const auto end = [&run](size_t k) { return run.drainCycles[run.hostOrder[k]] + 2; };
   for (uint64_t start : starts) {
-    for (; ended < ends.size() && ends[ended] <= start; ++ended) --full;
+    for (; ended < run.hostOrder.size() && end(ended) <= start; ++ended) --full;
     most = std::max(most, ++full);
   }
   return most;

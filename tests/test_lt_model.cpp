@@ -88,7 +88,7 @@ TEST_CASE("LT: ideal memory, every cycle as the cycle-accurate model's", "[lt]")
 TEST_CASE("LT: cached memory, total cycles near the cycle-accurate model's", "[lt]") {
   // Within 5 % on these small frames (docs/fidelity.md has the full frames): the shared L2 and
   // DRAM take one traversal's reads after another's instead of in cycle order.
-  for (const std::string& scene : {"menger", "terrain", "noise"}) {
+  for (const char* scene : {"menger", "terrain", "noise"}) {
     const Frame f = frame(scene, 7, 160, 90);
     for (int cores : {4, 16}) {
       RtuConfig config = configWith(cores, true, SchedulerPolicy::CyclicFirstAvailable);
