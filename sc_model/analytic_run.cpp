@@ -58,10 +58,10 @@ RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records, 
   traced.results.reserve(records.size());
   traced.timing.reserve(records.size());
   for (const Record& record : records) traced.trace(record);
-  const RecurrenceRun timing =
+  RecurrenceRun timing =
       runRecurrence(traced.timing, RecurrenceConfig{config.cores, config.scheduler,
                                                     config.hostInput, config.outputLink()});
-  RtuRun run = recurrenceResults(timing, traced.results, {}, config);
+  RtuRun run = recurrenceResults(std::move(timing), std::move(traced.results), {}, config);
   run.statistics.model = "recurrence";
   run.statistics.hostSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -28,7 +28,7 @@ RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<HostRecord>& r
   const auto start = std::chrono::steady_clock::now();
   auto top = std::make_unique<LtTop>("rtu", config, memory, records);
   sc_core::sc_start();
-  RtuRun run = recurrenceResults(top->timing(), top->results(), top->blocked(), config);
+  RtuRun run = recurrenceResults(top->takeTiming(), top->takeResults(), top->takeBlocked(), config);
   if (progress) progress(records.size(), records.size());
   RtuStatistics& stats = run.statistics;
   stats.model = "lt";

@@ -13,6 +13,7 @@
 // traversal, and take them in their out-of-order form (modules/resource_booking.h).
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <systemc>
@@ -36,10 +37,11 @@ class LtTop : public sc_core::sc_module {
   LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
         const std::vector<HostRecord>& records);
 
-  // After the simulation: the cycles, and each job's result by job index.
-  const RecurrenceRun& timing() const { return timing_; }
-  const std::vector<TraversalResult>& results() const { return results_; }
-  const std::vector<uint32_t>& blocked() const { return blocked_; }
+  // After the simulation, taken once: the cycles, and each job's result and blocked cycles by
+  // job index.
+  RecurrenceRun takeTiming() { return std::move(timing_); }
+  std::vector<TraversalResult> takeResults() { return std::move(results_); }
+  std::vector<uint32_t> takeBlocked() { return std::move(blocked_); }
   bool idealMemory() const { return rom_ != nullptr; }
   std::vector<CacheStats> l1Statistics() const;
   L2Stats l2Statistics() const;  // the L2's counts with the DRAM target's

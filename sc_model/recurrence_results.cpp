@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <queue>
+#include <utility>
 
 namespace rtu {
 namespace {
@@ -98,22 +99,37 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
   return stats;
 }
 
+// `values` by job index, rearranged into host order in place (following the permutation's
+// cycles): a frame's columns are tens of MB, which a copy would take in fresh pages.
+template <typename T>
+std::vector<T> inHostOrder(std::vector<T> values, const std::vector<size_t>& hostOrder) {
+  std::vector<bool> placed(values.size());
+  for (size_t start = 0; start < values.size(); ++start) {
+    if (placed[start]) continue;
+    T first = std::move(values[start]);
+    size_t place = start;
+    for (size_t from = hostOrder[place]; from != start; place = from, from = hostOrder[place]) {
+      values[place] = std::move(values[from]);
+      placed[place] = true;
+    }
+    values[place] = std::move(first);
+    placed[place] = true;
+  }
+  return values;
+}
+
 }  // namespace
 
-RtuRun recurrenceResults(const RecurrenceRun& timing, const std::vector<TraversalResult>& results,
-                         const std::vector<uint32_t>& blocked, const RtuConfig& config) {
+RtuRun recurrenceResults(RecurrenceRun timing, std::vector<TraversalResult> results,
+                         std::vector<uint32_t> blocked, const RtuConfig& config) {
   RtuRun run;
   run.totalCycles = timing.totalCycles;
-  run.results.reserve(results.size());
-  run.jobIndices = timing.hostOrder;
-  run.arrivalCycles.reserve(results.size());
-  run.blockedCycles.reserve(results.size());
-  for (size_t job : timing.hostOrder) {
-    run.results.push_back(results[job]);
-    run.arrivalCycles.push_back(timing.drainCycles[job]);
-    run.blockedCycles.push_back(blocked.empty() ? 0 : blocked[job]);
-  }
   run.statistics = statisticsOf(timing, results, blocked, config);
+  if (blocked.empty()) blocked.assign(results.size(), 0);
+  run.results = inHostOrder(std::move(results), timing.hostOrder);
+  run.arrivalCycles = inHostOrder(std::move(timing.drainCycles), timing.hostOrder);
+  run.blockedCycles = inHostOrder(std::move(blocked), timing.hostOrder);
+  run.jobIndices = std::move(timing.hostOrder);
   return run;
 }
 

@@ -15,7 +15,8 @@ namespace rtu {
 // `results` and `blocked` by job index; `blocked` (cycles BLOCKED on memory, W_i = cost +
 // blocked) empty for ideal memory. The statistics' model, memory counts and host seconds are the
 // caller's to fill.
-RtuRun recurrenceResults(const RecurrenceRun& timing, const std::vector<TraversalResult>& results,
-                         const std::vector<uint32_t>& blocked, const RtuConfig& config);
+// Taken by value: the columns are rearranged in place (callers move them in).
+RtuRun recurrenceResults(RecurrenceRun timing, std::vector<TraversalResult> results,
+                         std::vector<uint32_t> blocked, const RtuConfig& config);
 
 }  // namespace rtu
