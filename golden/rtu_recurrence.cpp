@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "prefault.h"
 #include "scheduler_choice.h"
 
 namespace rtu {
@@ -23,6 +24,13 @@ namespace {
 
 constexpr uint64_t kUnknown = std::numeric_limits<uint64_t>::max();
 constexpr size_t kNoJob = std::numeric_limits<size_t>::max();
+
+// Room for `n` values, its pages mapped at once (prefault.h): a frame's columns are large.
+template <typename T>
+void reserveMapped(std::vector<T>& column, size_t n) {
+  column.reserve(n);
+  prefaultCapacity(column);
+}
 
 // The result buffers and the output link: drains are found in cycle order. A buffer of core x
 // filled from cycle f drains in the first cycle >= max(f, r) whose select counter shows x, with
@@ -123,15 +131,14 @@ class Recurrence {
         buffered_(cores_, kNoJob),
         lastDrain_(cores_, kUnknown),
         choice_(config.policy, config.cores) {
-    const size_t n = jobs;
-    run_.acceptCycles.resize(n);
-    run_.pendingCycles.resize(n);
-    run_.dispatchCycles.resize(n);
-    run_.cores.resize(n);
-    run_.handoverCycles.resize(n);
-    run_.drainCycles.resize(n);
-    run_.hostOrder.reserve(n);
-    traversal_.resize(n);
+    // Columns written in job order are appended; handovers and drains come out of order.
+    for (auto* column : {&run_.acceptCycles, &run_.pendingCycles, &run_.dispatchCycles,
+                         &traversal_, &run_.handoverCycles, &run_.drainCycles})
+      reserveMapped(*column, jobs);
+    reserveMapped(run_.cores, jobs);
+    reserveMapped(run_.hostOrder, jobs);
+    run_.handoverCycles.resize(jobs);
+    run_.drainCycles.resize(jobs);
   }
 
   RecurrenceRun run() {
@@ -158,8 +165,8 @@ class Recurrence {
     uint64_t pending = accept + job.pipelineCycles + stalls;
     if (i > 0) pending = std::max(pending, run_.dispatchCycles[i - 1] + 1);
     if (job.headerFetch > 0) fetchUntil_ = accept + 1 + job.headerFetch;
-    run_.acceptCycles[i] = accept;
-    run_.pendingCycles[i] = pending;
+    run_.acceptCycles.push_back(accept);
+    run_.pendingCycles.push_back(pending);
   }
 
   // What the recurrence knows of the cores, as the policy's query (scheduler_choice.h): every
@@ -183,9 +190,9 @@ class Recurrence {
     CoreQuery query{*this};
     const int core = choice_.choose(query, cycle);
     choice_.dispatched(core);
-    run_.dispatchCycles[i] = cycle;
-    run_.cores[i] = core;
-    traversal_[i] = timer_ ? timer_(i, core, cycle + 1) : cost;
+    run_.dispatchCycles.push_back(cycle);
+    run_.cores.push_back(core);
+    traversal_.push_back(timer_ ? timer_(i, core, cycle + 1) : cost);
     const size_t c = static_cast<size_t>(core);
     waiting_[c] = i;
     idleFrom_[c] = kUnknown;

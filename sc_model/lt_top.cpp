@@ -4,6 +4,7 @@
 #include <string>
 
 #include "job_manager.h"
+#include "prefault.h"
 
 namespace rtu {
 
@@ -48,6 +49,8 @@ void LtTop::bindCachedMemory(const RtuConfig& config, SvoMemory memory) {
 void LtTop::drive() {
   results_.reserve(records_.size());
   blocked_.reserve(records_.size());
+  prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
+  prefaultCapacity(blocked_);
   quantum_.reset();
   timing_ = runRecurrence(
       records_.size(), [this](size_t job) { return setUp(job); },
