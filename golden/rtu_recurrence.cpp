@@ -128,12 +128,13 @@ class Recurrence {
         drains_(config.cores, config.hostOutput),
         idleFrom_(cores_, 0),
         waiting_(cores_, kNoJob),
+        waitingFrom_(cores_, 0),
         buffered_(cores_, kNoJob),
         lastDrain_(cores_, kUnknown),
         choice_(config.policy, config.cores) {
     // Columns written in job order are appended; handovers and drains come out of order.
     for (auto* column : {&run_.acceptCycles, &run_.pendingCycles, &run_.dispatchCycles,
-                         &traversal_, &run_.handoverCycles, &run_.drainCycles})
+                         &run_.handoverCycles, &run_.drainCycles})
       reserveMapped(*column, jobs);
     reserveMapped(run_.cores, jobs);
     reserveMapped(run_.hostOrder, jobs);
@@ -192,9 +193,10 @@ class Recurrence {
     choice_.dispatched(core);
     run_.dispatchCycles.push_back(cycle);
     run_.cores.push_back(core);
-    traversal_.push_back(timer_ ? timer_(i, core, cycle + 1) : cost);
+    const uint64_t traversal = timer_ ? timer_(i, core, cycle + 1) : cost;  // W_i
     const size_t c = static_cast<size_t>(core);
     waiting_[c] = i;
+    waitingFrom_[c] = cycle + 1 + traversal;
     idleFrom_[c] = kUnknown;
     if (buffered_[c] == kNoJob) handOver(core);
   }
@@ -203,7 +205,7 @@ class Recurrence {
   void handOver(int core) {
     const size_t c = static_cast<size_t>(core);
     const size_t job = waiting_[c];
-    const uint64_t out = run_.dispatchCycles[job] + 1 + traversal_[job];
+    const uint64_t out = waitingFrom_[c];
     const uint64_t handover = lastDrain_[c] == kUnknown ? out : std::max(out, lastDrain_[c] + 1);
     run_.handoverCycles[job] = handover;
     idleFrom_[c] = handover + 1;
@@ -239,12 +241,12 @@ class Recurrence {
   Drains drains_;
   std::vector<uint64_t> idleFrom_;  // per core: idle from this cycle on (kUnknown: not yet known)
   std::vector<size_t> waiting_;     // per core: job whose result waits in the core (kNoJob: none)
+  std::vector<uint64_t> waitingFrom_;  // ... from this cycle, D_i + 1 + W_i
   std::vector<size_t> buffered_;    // per core: job whose result is in the result buffer
   std::vector<uint64_t> lastDrain_;
   uint64_t fetchUntil_ = 0;
   size_t inPipeline_ = 0;  // the oldest job not yet dispatched when the current one entered
   SchedulerChoice choice_;
-  std::vector<uint64_t> traversal_;  // W_i
   RecurrenceRun run_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <queue>
+#include <tuple>
 #include <utility>
 
 namespace rtu {
@@ -99,23 +100,22 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
   return stats;
 }
 
-// `values` by job index, rearranged into host order in place (following the permutation's
-// cycles): a frame's columns are tens of MB, which a copy would take in fresh pages.
-template <typename T>
-std::vector<T> inHostOrder(std::vector<T> values, const std::vector<size_t>& hostOrder) {
-  std::vector<bool> placed(values.size());
-  for (size_t start = 0; start < values.size(); ++start) {
+// Columns by job index, rearranged into host order in place, all in one walk along the
+// permutation's cycles: a frame's columns are tens of MB, which copies would take in fresh pages.
+template <typename... Columns>
+void arrangeInHostOrder(const std::vector<size_t>& hostOrder, Columns&... columns) {
+  std::vector<bool> placed(hostOrder.size());
+  for (size_t start = 0; start < hostOrder.size(); ++start) {
     if (placed[start]) continue;
-    T first = std::move(values[start]);
+    auto first = std::make_tuple(std::move(columns[start])...);
     size_t place = start;
     for (size_t from = hostOrder[place]; from != start; place = from, from = hostOrder[place]) {
-      values[place] = std::move(values[from]);
+      ((columns[place] = std::move(columns[from])), ...);
       placed[place] = true;
     }
-    values[place] = std::move(first);
+    std::tie(columns[place]...) = std::move(first);
     placed[place] = true;
   }
-  return values;
 }
 
 }  // namespace
@@ -126,9 +126,10 @@ RtuRun recurrenceResults(RecurrenceRun timing, std::vector<TraversalResult> resu
   run.totalCycles = timing.totalCycles;
   run.statistics = statisticsOf(timing, results, blocked, config);
   if (blocked.empty()) blocked.assign(results.size(), 0);
-  run.results = inHostOrder(std::move(results), timing.hostOrder);
-  run.arrivalCycles = inHostOrder(std::move(timing.drainCycles), timing.hostOrder);
-  run.blockedCycles = inHostOrder(std::move(blocked), timing.hostOrder);
+  arrangeInHostOrder(timing.hostOrder, results, timing.drainCycles, blocked);
+  run.results = std::move(results);
+  run.arrivalCycles = std::move(timing.drainCycles);
+  run.blockedCycles = std::move(blocked);
   run.jobIndices = std::move(timing.hostOrder);
   return run;
 }
