@@ -34,18 +34,6 @@ void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& d
   serveWordRead(words_, trans);
 }
 
-tlm::tlm_sync_enum LtL1Cache::nb_transport_fw(tlm::tlm_generic_payload& trans,
-                                              tlm::tlm_phase& phase, sc_core::sc_time& delay) {
-  b_transport(trans, delay);
-  phase = tlm::BEGIN_RESP;
-  return tlm::TLM_COMPLETED;
-}
-
-bool LtL1Cache::get_direct_mem_ptr(tlm::tlm_generic_payload&, tlm::tlm_dmi& dmi) {
-  dmi.allow_none();
-  return false;
-}
-
 unsigned int LtL1Cache::transport_dbg(tlm::tlm_generic_payload& trans) {
   serveWordRead(words_, trans);
   return trans.is_response_ok() ? trans.get_data_length() : 0;

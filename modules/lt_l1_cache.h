@@ -4,22 +4,19 @@
 // says) with the delay to the cycle the word is there. Timing: l1_cache_timing.h; a miss reads
 // the line from the L2 through `next`. One core reads it, in its own cycle order, so the L1 is
 // exact; only the shared L2 sees requests out of order.
-//
-// The cache is its socket's forward interface itself (a plain tlm_target_socket), not a
-// tlm_utils::simple_target_socket: that one's dispatch through its own process and a member
-// pointer cost about 30 instructions a word, a tenth of a read. It has no DMI (every read is
-// timed); nb_transport_fw completes at once, as the base protocol allows.
+// It is its socket's interface itself (lt_timing_target.h); its debug access reads the word.
 
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "l1_cache_timing.h"
 #include "lt_time.h"
+#include "lt_timing_target.h"
 #include "svo_memory.h"
 
 namespace rtu {
 
-class LtL1Cache : public sc_core::sc_module, public tlm::tlm_fw_transport_if<> {
+class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
  public:
   tlm::tlm_target_socket<> socket;
   tlm_utils::simple_initiator_socket<LtL1Cache> next;
@@ -30,9 +27,6 @@ class LtL1Cache : public sc_core::sc_module, public tlm::tlm_fw_transport_if<> {
   const CacheStats& statistics() const { return timing_.stats(); }
 
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) override;
-  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
-                                     sc_core::sc_time& delay) override;
-  bool get_direct_mem_ptr(tlm::tlm_generic_payload& trans, tlm::tlm_dmi& dmi) override;
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans) override;
 
  private:

@@ -12,10 +12,10 @@ LtL2Cache::LtL2Cache(sc_core::sc_module_name name, const MemoryConfig& config, c
                 return dramRead_(dram, time_, 0, bytes, issue);
               }),
       dramRead_(config.l2.lineBytes) {
-  socket.register_b_transport(this, &LtL2Cache::b_transport);
+  socket.bind(*this);
 }
 
-void LtL2Cache::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+void LtL2Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   // No request comes for a cycle behind simulated time.
   if (time_.movedSince(forgottenAt_)) timing_.forgetBefore(forgottenAt_);
   const uint64_t ready = timing_.read(trans.get_address(), time_.cycleAt(delay));
