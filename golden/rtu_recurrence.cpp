@@ -82,7 +82,8 @@ class Drains {
 
   // The first cycle >= from in which the select counter shows `core`.
   uint64_t firstSelect(uint64_t from, int core) const {
-    return from + (static_cast<uint64_t>(core) + cores_ - from % cores_) % cores_;
+    const uint64_t shown = from % cores_, wanted = static_cast<uint64_t>(core);
+    return from + (wanted >= shown ? wanted - shown : wanted + cores_ - shown);
   }
 
   void setCompeting(int core, bool on) {

@@ -46,14 +46,14 @@ class SchedulerChoice {
  private:
   template <typename Query>
   int cyclicFirstAvailable(Query& query, uint64_t& cycle) const {
-    const uint64_t n = static_cast<uint64_t>(cores_);
-    for (;; ++cycle) {
-      const int core = static_cast<int>(cycle % n);
+    const int n = cores_;
+    for (int core = static_cast<int>(cycle % static_cast<uint64_t>(n));; ++cycle) {
       switch (query.in(core, cycle)) {
         case Idle::Yes: return core;
         case Idle::Unknown: return kWait;
         case Idle::No: break;
       }
+      if (++core == n) core = 0;  // t mod N, without a division per cycle searched
     }
   }
 
