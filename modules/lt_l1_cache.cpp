@@ -22,16 +22,17 @@ void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& d
   const uint32_t word = static_cast<uint32_t>(trans.get_address() / 4);
   const uint64_t cycle = time_.cycleAt(delay);
   const L1Lookup lookup = timing_.lookup(word, cycle);
-  if (!lookup.hit) {
-    const uint64_t filled = lineRead_(next, time_, lookup.lineAddress,
-                                      timing_.array().config().lineBytes, lookup.cycle);
-    delay = time_.delayTo(timing_.fill(word, filled));
-  } else if (lookup.cycle == cycle + hitCycles_) {
+  if (lookup.hit && lookup.cycle == cycle + hitCycles_)
     delay += hitDelay_;  // the common hit, without converting cycles to time
-  } else {
-    delay = time_.delayTo(lookup.cycle);
-  }
+  else
+    delay = time_.delayTo(lookup.hit ? lookup.cycle : fetch(word, lookup));
   serveWordRead(words_, trans);
+}
+
+uint64_t LtL1Cache::fetch(uint32_t word, const L1Lookup& miss) {
+  const uint64_t filled =
+      lineRead_(next, time_, miss.lineAddress, timing_.array().config().lineBytes, miss.cycle);
+  return timing_.fill(word, filled);
 }
 
 unsigned int LtL1Cache::transport_dbg(tlm::tlm_generic_payload& trans) {

@@ -30,6 +30,9 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans) override;
 
  private:
+  // The line of a missing word from the L2, allocated; returns the cycle the word is there.
+  uint64_t fetch(uint32_t word, const L1Lookup& miss);
+
 
   SvoMemory words_;
   LtTime time_;

@@ -1,7 +1,5 @@
 #include "lt_rom.h"
 
-#include <cstring>
-
 namespace rtu {
 
 LtRom::LtRom(sc_core::sc_module_name name, SvoMemory words)
@@ -22,16 +20,6 @@ bool LtRom::get_direct_mem_ptr(int, tlm::tlm_generic_payload&, tlm::tlm_dmi& dmi
   dmi.set_end_address(words_.size() * 4 - 1);
   dmi.set_read_latency(sc_core::SC_ZERO_TIME);
   return words_.size() > 0;
-}
-
-void serveWordRead(const SvoMemory& words, tlm::tlm_generic_payload& trans) {
-  if (trans.get_command() != tlm::TLM_READ_COMMAND || trans.get_data_length() != 4) {
-    trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
-    return;
-  }
-  const uint32_t word = words.read(static_cast<uint32_t>(trans.get_address() / 4));
-  std::memcpy(trans.get_data_ptr(), &word, sizeof word);
-  trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
 }  // namespace rtu

@@ -3,6 +3,8 @@
 // It grants DMI to the whole image, so the cores read it directly (no transaction per word);
 // b_transport serves initiators that do not use DMI, with no delay.
 
+#include <cstring>
+
 #include <tlm>
 #include <tlm_utils/multi_passthrough_target_socket.h>
 
@@ -25,6 +27,15 @@ class LtRom : public sc_core::sc_module {
 
 // Serves a read of one 32-bit word from `words` (the image is read-only): the word at the
 // payload's byte address, 0 past the image, as SvoMemory reads. Other commands are errors.
-void serveWordRead(const SvoMemory& words, tlm::tlm_generic_payload& trans);
+// Inline: the L1 serves every word a cached run's cores read.
+inline void serveWordRead(const SvoMemory& words, tlm::tlm_generic_payload& trans) {
+  if (trans.get_command() != tlm::TLM_READ_COMMAND || trans.get_data_length() != 4) {
+    trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return;
+  }
+  const uint32_t word = words.read(static_cast<uint32_t>(trans.get_address() / 4));
+  std::memcpy(trans.get_data_ptr(), &word, sizeof word);
+  trans.set_response_status(tlm::TLM_OK_RESPONSE);
+}
 
 }  // namespace rtu
