@@ -17,10 +17,12 @@ HostLinkPacer::HostLinkPacer(HostLinkConfig config)
 // Slot boundaries are computed from the last restart, not accumulated, so rounding cannot drift
 // them across a cycle boundary over millions of records. The ceiling is taken by hand: std::ceil
 // is a library call on x86-64's baseline, and this runs for every record.
+// Signed conversions: x86-64 converts unsigned 64-bit integers to and from double in several
+// instructions. Record counts and cycles stay far below 2^63.
 uint64_t HostLinkPacer::slotStart(uint64_t records) const {
-  const double cycles = static_cast<double>(records) * slot_ - 1e-6;  // > -1
-  const auto whole = static_cast<uint64_t>(std::max(cycles, 0.0));
-  return restartCycle_ + (static_cast<double>(whole) < cycles ? whole + 1 : whole);
+  const double cycles = static_cast<double>(static_cast<int64_t>(records)) * slot_ - 1e-6;  // > -1
+  const auto whole = static_cast<int64_t>(std::max(cycles, 0.0));
+  return restartCycle_ + static_cast<uint64_t>(static_cast<double>(whole) < cycles ? whole + 1 : whole);
 }
 
 uint64_t HostLinkPacer::nextAllowed(uint64_t cycle) {

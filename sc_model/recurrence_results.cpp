@@ -2,26 +2,28 @@
 
 #include <algorithm>
 #include <array>
-#include <queue>
 #include <tuple>
 #include <utility>
 
 namespace rtu {
 namespace {
 
-// Per job: whether some core was idle in the cycle it became pending (eq. 6.7's case). A core is
-// busy from the cycle after its dispatch to its handover; every earlier job was dispatched
-// before that cycle and no later one, so the busy cores are the earlier jobs not yet handed over.
-std::vector<bool> coreIdleWhenPending(const RecurrenceRun& run, int cores) {
-  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<>> handovers;  // earlier jobs
-  std::vector<bool> idle(run.pendingCycles.size());
-  for (size_t i = 0; i < idle.size(); ++i) {
-    while (!handovers.empty() && handovers.top() < run.pendingCycles[i]) handovers.pop();
-    idle[i] = handovers.size() < static_cast<size_t>(cores);
-    handovers.push(run.handoverCycles[i]);
+// Whether some core was idle in the cycle a job became pending (eq. 6.7's case), asked in job
+// order. A core is busy from the cycle after its dispatch to its handover; every earlier job was
+// dispatched before that cycle, and a core's earlier jobs handed over before its last one was
+// dispatched, so only each core's last job so far can still be busy.
+class IdleCores {
+ public:
+  explicit IdleCores(int cores) : busyUntil_(static_cast<size_t>(cores), 0) {}
+  bool anyAt(uint64_t cycle) const {
+    return std::any_of(busyUntil_.begin(), busyUntil_.end(),
+                       [cycle](uint64_t until) { return until <= cycle; });
   }
-  return idle;
-}
+  void ran(int core, uint64_t handover) { busyUntil_[static_cast<size_t>(core)] = handover + 1; }
+
+ private:
+  std::vector<uint64_t> busyUntil_;  // per core: its last job's handover + 1 (0: none yet)
+};
 
 // Sorts values that are nearly in order, by moving each late one back to its place: few moves
 // each. Should they be far off, a sort finishes once the moves reach a few per value.
@@ -66,7 +68,7 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
   stats.hostOutRecordBytes = config.outputLink().recordBytes;
-  const std::vector<bool> idleWhenPending = coreIdleWhenPending(run, config.cores);
+  IdleCores idleCores(config.cores);
   std::array<uint64_t, 256> shortWaits{};  // jobs by wait: no map look-up per job
   for (size_t j = 0; j < results.size(); ++j) {
     const TraversalResult& result = results[j];
@@ -91,7 +93,10 @@ RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<Traversal
     else
       ++stats.waitHistogram[wait];
     stats.maxWait = std::max(stats.maxWait, wait);
-    if (idleWhenPending[j]) stats.maxWaitWithReadyCore = std::max(stats.maxWaitWithReadyCore, wait);
+    // Only a wait that would raise the maximum needs the cores asked.
+    if (wait > stats.maxWaitWithReadyCore && idleCores.anyAt(run.pendingCycles[j]))
+      stats.maxWaitWithReadyCore = wait;
+    idleCores.ran(run.cores[j], run.handoverCycles[j]);
   }
   for (uint64_t wait = 0; wait < shortWaits.size(); ++wait)
     if (shortWaits[wait] > 0) stats.waitHistogram[wait] += shortWaits[wait];
