@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "modulo.h"
 #include "prefault.h"
 #include "scheduler_choice.h"
 
@@ -39,7 +40,10 @@ void reserveMapped(std::vector<T>& column, size_t n) {
 class Drains {
  public:
   Drains(int cores, HostLinkConfig output)
-      : cores_(static_cast<uint64_t>(cores)), link_(output), compete_((cores_ + 63) / 64, 0) {}
+      : cores_(static_cast<uint64_t>(cores)),
+        select_(cores_),
+        link_(output),
+        compete_((cores_ + 63) / 64, 0) {}
 
   // The buffer of `core` holds a result from cycle `from`.
   void add(int core, uint64_t from) {
@@ -74,7 +78,7 @@ class Drains {
     Candidate best{kUnknown, -1};
     if (!byCycle_.empty()) best = byCycle_.top();
     if (competing_ > 0) {
-      const int core = firstCompetingFrom(static_cast<int>(linkReadyFrom_ % cores_));
+      const int core = firstCompetingFrom(static_cast<int>(select_.of(linkReadyFrom_)));
       best = std::min(best, Candidate{firstSelect(linkReadyFrom_, core), core});
     }
     return best;
@@ -82,7 +86,7 @@ class Drains {
 
   // The first cycle >= from in which the select counter shows `core`.
   uint64_t firstSelect(uint64_t from, int core) const {
-    const uint64_t shown = from % cores_, wanted = static_cast<uint64_t>(core);
+    const uint64_t shown = select_.of(from), wanted = static_cast<uint64_t>(core);
     return from + (wanted >= shown ? wanted - shown : wanted + cores_ - shown);
   }
 
@@ -98,7 +102,7 @@ class Drains {
     const size_t words = compete_.size();
     const size_t first = static_cast<size_t>(start) / 64;
     for (size_t n = 0; n <= words; ++n) {
-      const size_t w = (first + n) % words;
+      const size_t w = first + n < words ? first + n : first + n - words;
       uint64_t word = compete_[w];
       if (n == 0) word &= ~uint64_t{0} << (start % 64);
       if (n == words) word &= (uint64_t{1} << (start % 64)) - 1;
@@ -108,6 +112,7 @@ class Drains {
   }
 
   uint64_t cores_;
+  Modulo select_;  // the select counter's core in a cycle
   HostLinkPacer link_;
   uint64_t linkReadyFrom_ = 0;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> byCycle_;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "modulo.h"
 #include "scheduling_policy.h"
 
 namespace rtu {
@@ -26,7 +27,8 @@ class SchedulerChoice {
  public:
   static constexpr int kWait = -1;  // the policy needs a core to declare more first
 
-  SchedulerChoice(SchedulerPolicy policy, int cores) : policy_(policy), cores_(cores) {}
+  SchedulerChoice(SchedulerPolicy policy, int cores)
+      : policy_(policy), cores_(cores), select_(static_cast<uint64_t>(cores)) {}
 
   // The core the pending job goes to, searching from `cycle` on: `cycle` is left at the dispatch
   // cycle, or at the first cycle the choice cannot decide yet (then kWait).
@@ -47,7 +49,7 @@ class SchedulerChoice {
   template <typename Query>
   int cyclicFirstAvailable(Query& query, uint64_t& cycle) const {
     const int n = cores_;
-    for (int core = static_cast<int>(cycle % static_cast<uint64_t>(n));; ++cycle) {
+    for (int core = static_cast<int>(select_.of(cycle));; ++cycle) {
       switch (query.in(core, cycle)) {
         case Idle::Yes: return core;
         case Idle::Unknown: return kWait;
@@ -80,6 +82,7 @@ class SchedulerChoice {
 
   SchedulerPolicy policy_;
   int cores_;
+  Modulo select_;  // cfa: the core t mod N
   int nextInLine_ = 0;
 };
 
