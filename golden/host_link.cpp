@@ -29,12 +29,13 @@ uint64_t HostLinkPacer::nextAllowed(uint64_t cycle) {
   if (config_.bytesPerCycle <= 0.0) return cycle + 1;
   // A record that crossed as early as allowed keeps the fraction of its slot; one held back
   // (an idle producer or consumer) restarts the pacing from its own cycle.
-  if (cycle > slotStart(recordsSinceRestart_)) {
+  if (cycle > lastSlotStart_) {
     restartCycle_ = cycle;
     recordsSinceRestart_ = 0;
   }
   ++recordsSinceRestart_;
-  return std::max(cycle + 1, slotStart(recordsSinceRestart_));
+  lastSlotStart_ = slotStart(recordsSinceRestart_);
+  return std::max(cycle + 1, lastSlotStart_);
 }
 
 bool HostLinkPacer::drawActive() {

@@ -42,6 +42,7 @@ class HostLinkPacer {
   double slot_;                        // cycles a record takes on a paced link
   uint64_t restartCycle_ = 0;          // pacing runs from here ...
   uint64_t recordsSinceRestart_ = 0;   // ... with this many records crossed since
+  uint64_t lastSlotStart_ = 0;         // slotStart(recordsSinceRestart_)
   std::mt19937_64 generator_;
 };
 
