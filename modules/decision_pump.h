@@ -50,22 +50,30 @@ class DecisionPump {
     agent.queued_ = true;
     queue_.push_back(&agent);
   }
+  // Puts `agent` on the queue to decide once every other agent has nothing new: for an agent
+  // that reads bounds the others publish (the memory serving shared requests ahead of simulated
+  // time), which hold only when no decision is half made.
+  void scheduleLast(Agent& agent) {
+    if (agent.queued_) return;
+    agent.queued_ = true;
+    last_.push_back(&agent);
+  }
   // Lets the agents decide until none has anything new. Called from within run() (a decision
   // that schedules another agent) it only queues: the outer loop drains.
   void run() {
     if (running_) return;
     running_ = true;
     try {
-      for (size_t next = 0; next < queue_.size(); ++next) {
-        Agent* agent = queue_[next];
-        agent->queued_ = false;
-        agent->decide();
+      for (;;) {
+        for (size_t next = 0; next < queue_.size(); ++next) decideOne(*queue_[next]);
+        queue_.clear();
+        if (last_.empty()) break;
+        decideOne(takeLast());
       }
     } catch (...) {
       running_ = false;
       throw;
     }
-    queue_.clear();
     running_ = false;
   }
   void runWith(Agent& agent) {
@@ -74,7 +82,18 @@ class DecisionPump {
   }
 
  private:
+  static void decideOne(Agent& agent) {
+    agent.queued_ = false;
+    agent.decide();
+  }
+  Agent& takeLast() {
+    Agent& agent = *last_.front();
+    last_.erase(last_.begin());
+    return agent;
+  }
+
   std::vector<Agent*> queue_;
+  std::vector<Agent*> last_;  // decide when queue_ is drained, in the order scheduled
   bool running_ = false;
 };
 

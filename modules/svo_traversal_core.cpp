@@ -49,12 +49,12 @@ inline void SvoTraversalCore::stepState() {
   if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
 }
 
-// The shared level served the request: the word is there in `dataCycle`.
+// The shared level served the request: the word is there in `dataCycle`. (Called while the pump
+// runs: what the core decides puts others on it.)
 void SvoTraversalCore::sharedReplied(uint64_t dataCycle) {
   waitForWord(dataCycle);
   stepState();
   run();
-  pump().run();
 }
 
 void SvoTraversalCore::start(uint64_t dispatch, const CoreJob& job) {
@@ -112,6 +112,7 @@ void SvoTraversalCore::offerResult() {
   if (core_.stackOverflow()) ++statistics_.stackOverflows;
   if (core_.tOverflow()) ++statistics_.tOverflows;
   phase_ = Phase::Out;
+  if (!combinational_) memory->coreOffering(index_, outCycle_);
   in_->notReadyBefore(outCycle_ + 1);
   out_->offer(result, outCycle_);
 }
@@ -123,6 +124,7 @@ void SvoTraversalCore::handOver() {
   core_.finish();
   traceState(idle, static_cast<uint64_t>(CoreState::Idle));
   phase_ = Phase::Idle;
+  if (!combinational_) memory->coreIdle(index_, idle);
   in_->readyFrom(idle);
 }
 
