@@ -8,13 +8,16 @@
 // costs a few function calls per ray.
 //
 // Simulated time still matters in two places: the memory serves the traversal cores' requests to
-// the shared L2 when simulated time reaches their cycle (requests reach the L2 in cycle order;
-// memory_system.h), and the host source offers a record only once simulated time is within a
-// look-ahead of its cycle, which keeps the run's memory, the trace's reorder window and progress
-// reports bounded. Both wake the pump through
-// SystemC processes. The rule that makes this exact: every cycle's decisions are made by
-// simulated time that cycle at the latest, so a shared-memory request never arrives behind
-// simulated time, and no trace record either.
+// the shared L2 in cycle order, and where a cycle's requests cannot all be known yet it waits
+// for simulated time to reach that cycle (memory_system.h); and the host source offers a record
+// only once simulated time is within a look-ahead of its cycle, which keeps the run's memory,
+// the trace's reorder window and progress reports bounded. Both wake the pump through SystemC
+// processes. The rule that makes this exact: every cycle's decisions are made by simulated time
+// that cycle at the latest, so a shared-memory request never arrives behind simulated time, and
+// no trace record either.
+//
+// An agent scheduled with scheduleLast() decides once the others have nothing new: the memory,
+// which serves requests from bounds the cores and the scheduler publish as they decide.
 
 #include <cstddef>
 #include <vector>
@@ -87,13 +90,13 @@ class DecisionPump {
     agent.decide();
   }
   Agent& takeLast() {
-    Agent& agent = *last_.front();
-    last_.erase(last_.begin());
+    Agent& agent = *last_.back();
+    last_.pop_back();
     return agent;
   }
 
   std::vector<Agent*> queue_;
-  std::vector<Agent*> last_;  // decide when queue_ is drained, in the order scheduled
+  std::vector<Agent*> last_;  // decide when queue_ is drained (in no particular order)
   bool running_ = false;
 };
 

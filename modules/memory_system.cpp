@@ -15,6 +15,7 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       backing_(backing),
       config_(config),
       cores_(static_cast<size_t>(cores)),
+      published_(static_cast<size_t>(cores), 2),  // ready from cycle 0, so EVAL in 2 at the earliest
       wake_(clock),
       trace_(trace) {
   if (config_.ideal) return;
@@ -53,11 +54,13 @@ MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
   if (config_.ideal) return {true, cycle};
   CorePort& port = cores_[static_cast<size_t>(core)];
   const L1Lookup result = port.l1->lookup(address, cycle);
-  if (trace_) {
-    trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
-    trace_->record(port.missSignal, cycle, port.l1->stats().misses);
-  }
+  if (trace_) traceL1(port, cycle);
   return {result.hit, result.cycle};
+}
+
+void MemorySystem::traceL1(const CorePort& port, uint64_t cycle) {
+  trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
+  trace_->record(port.missSignal, cycle, port.l1->stats().misses);
 }
 
 void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
@@ -69,6 +72,7 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   CorePort& port = cores_[static_cast<size_t>(core)];
   port.pendingAddress = address;
   port.reader = &reader;
+  published_.set(static_cast<size_t>(core), kNoBound);
   calendar_.push({cycle, core});
   heard(0);
 }
@@ -83,13 +87,15 @@ void MemorySystem::coreOffering(int core, uint64_t outCycle) {
 
 void MemorySystem::publish(int core, uint64_t noRequestBefore) {
   if (config_.ideal) return;
-  cores_[static_cast<size_t>(core)].noRequestBefore = noRequestBefore;
-  lowestPublished_ = std::min(lowestPublished_, noRequestBefore);
+  published_.set(static_cast<size_t>(core), noRequestBefore);
   heard(0);
 }
 
-// Decides after every other agent, so that each core's and the scheduler's bounds are settled.
-void MemorySystem::heard(int) { pump().scheduleLast(*this); }
+// Decides after every other agent, so that each core's and the scheduler's bounds are settled;
+// only while a request waits.
+void MemorySystem::heard(int) {
+  if (!calendar_.empty()) pump().scheduleLast(*this);
+}
 
 void MemorySystem::decide() {
   if (calendar_.empty()) return;
@@ -102,14 +108,19 @@ void MemorySystem::decide() {
   heard(0);  // the next cycle once the cores served have gone on
 }
 
-bool MemorySystem::requestsKnownFor(uint64_t cycle) {
-  if (cycle <= clock_.now()) return true;
-  const uint64_t floor = dispatchFloor() + 2;
-  if (cycle < std::max(lowestPublished_, floor)) return true;
-  lowestPublished_ = UINT64_MAX;
-  for (const CorePort& port : cores_)
-    if (!port.reader) lowestPublished_ = std::min(lowestPublished_, port.noRequestBefore);
-  return cycle < std::max(lowestPublished_, floor);
+bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
+  return cycle <= clock_.now() || cycle < std::max(published_.lowest(), dispatchFloor() + 2);
+}
+
+// Round-robin: from the core after the one served last on (a core has one request at most).
+void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
+  if (cores.size() > 1) {
+    std::sort(cores.begin(), cores.end());
+    std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
+                cores.end());
+  }
+  const int last = cores.back();
+  nextPriority_ = last + 1 == static_cast<int>(cores_.size()) ? 0 : last + 1;
 }
 
 // The earliest cycle the scheduler can still dispatch a job in.
@@ -125,11 +136,7 @@ void MemorySystem::serveCycle(uint64_t cycle) {
     calendar_.pop();
   }
   servedThrough_ = cycle;
-  // Round-robin: from the core after the one served last on (a core has one request at most).
-  std::sort(served_.begin(), served_.end());
-  std::rotate(served_.begin(), std::lower_bound(served_.begin(), served_.end(), nextPriority_),
-              served_.end());
-  nextPriority_ = (served_.back() + 1) % static_cast<int>(cores_.size());
+  inRoundRobinOrder(served_);
   for (int core : served_) {
     CorePort& port = cores_[static_cast<size_t>(core)];
     const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);

@@ -34,6 +34,7 @@
 #include "cycle_trace.h"
 #include "l1_cache_timing.h"
 #include "l2_cache_timing.h"
+#include "lowest_of.h"
 #include "memory_config.h"
 #include "module_process.h"
 #include "svo_memory.h"
@@ -65,13 +66,12 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }
 
  private:
+  static constexpr uint64_t kNoBound = UINT64_MAX;
+
   struct CorePort {
     std::unique_ptr<L1CacheTiming> l1;
     uint32_t pendingAddress = 0;
     SharedReadListener* reader = nullptr;  // null unless a request waits in the calendar
-    // Without a request waiting: the core makes none before this cycle, nor before the
-    // scheduler's floor + 2.
-    uint64_t noRequestBefore = 2;
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
   struct Request {
@@ -82,10 +82,13 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
 
   void end_of_elaboration() override;
   // Whether no core can still make a request for `cycle`.
-  bool requestsKnownFor(uint64_t cycle);
+  bool requestsKnownFor(uint64_t cycle) const;
   uint64_t dispatchFloor() const;
   void publish(int core, uint64_t noRequestBefore);
   void serveCycle(uint64_t cycle);
+  void inRoundRobinOrder(std::vector<int>& cores);
+  // Out of line, so that an untraced lookup saves fewer registers.
+  [[gnu::noinline]] void traceL1(const CorePort& port, uint64_t cycle);
 
   const CycleClock& clock_;
   SvoMemory backing_;
@@ -96,9 +99,9 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
-  // At most the lowest noRequestBefore of the cores without a request waiting; recomputed when
-  // it holds a cycle back.
-  uint64_t lowestPublished_ = 0;
+  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: idle and
+  // offering cores; kNoBound for a core whose request waits (it asks again after its cycle).
+  LowestOf published_;
   DispatchFloor* dispatches_ = nullptr;
   CycleWake wake_;
   CycleTrace* trace_;
