@@ -20,6 +20,7 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       trace_(trace) {
   if (config_.ideal) return;
   validate(config_);
+  while ((1 << coreBits_) < cores) ++coreBits_;
   l2_ = std::make_unique<L2CacheTiming>(config_.l2, config_.dram);
   if (start && !start->l2.empty()) l2_->startFrom(start->l2.front());
   for (size_t i = 0; i < cores_.size(); ++i) {
@@ -73,7 +74,7 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   port.pendingAddress = address;
   port.reader = &reader;
   published_.set(static_cast<size_t>(core), kNoBound);
-  calendar_.push({cycle, core});
+  calendar_.push(requestKey(cycle, core));
   heard(0);
 }
 
@@ -99,7 +100,7 @@ void MemorySystem::heard(int) {
 
 void MemorySystem::decide() {
   if (calendar_.empty()) return;
-  const uint64_t cycle = calendar_.top().cycle;
+  const uint64_t cycle = cycleOf(calendar_.top());
   if (!requestsKnownFor(cycle)) {
     wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
     return;
@@ -113,12 +114,11 @@ bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
 }
 
 // Round-robin: from the core after the one served last on (a core has one request at most).
+// `cores` come in increasing numbers.
 void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
-  if (cores.size() > 1) {
-    std::sort(cores.begin(), cores.end());
+  if (cores.size() > 1)
     std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
                 cores.end());
-  }
   const int last = cores.back();
   nextPriority_ = last + 1 == static_cast<int>(cores_.size()) ? 0 : last + 1;
 }
@@ -131,8 +131,8 @@ uint64_t MemorySystem::dispatchFloor() const {
 
 void MemorySystem::serveCycle(uint64_t cycle) {
   served_.clear();
-  while (!calendar_.empty() && calendar_.top().cycle == cycle) {
-    served_.push_back(calendar_.top().core);
+  while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle) {
+    served_.push_back(coreOf(calendar_.top()));  // in increasing core numbers
     calendar_.pop();
   }
   servedThrough_ = cycle;

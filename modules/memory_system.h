@@ -74,11 +74,13 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
     SharedReadListener* reader = nullptr;  // null unless a request waits in the calendar
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
-  struct Request {
-    uint64_t cycle;
-    int core;
-    bool operator>(const Request& other) const { return cycle > other.cycle; }
-  };
+  // A request in the calendar: its cycle above the core's number, so that the calendar's order
+  // is by cycle, then core.
+  uint64_t requestKey(uint64_t cycle, int core) const {
+    return cycle << coreBits_ | static_cast<uint64_t>(core);
+  }
+  uint64_t cycleOf(uint64_t key) const { return key >> coreBits_; }
+  int coreOf(uint64_t key) const { return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1)); }
 
   void end_of_elaboration() override;
   // Whether no core can still make a request for `cycle`.
@@ -95,7 +97,8 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   MemoryConfig config_;
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;
-  std::priority_queue<Request, std::vector<Request>, std::greater<Request>> calendar_;
+  int coreBits_ = 0;  // bits of the largest core number
+  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> calendar_;
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
