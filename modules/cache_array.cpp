@@ -24,39 +24,50 @@ CacheArray::CacheArray(const CacheConfig& config)
 
 void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
   const uint64_t line = lineOf(byteAddress);
-  if (find(line) != kAbsent)
-    throw std::logic_error("CacheArray::allocate: line of address " +
-                           std::to_string(byteAddress) + " is already resident");
-  Way& way = ways_[victim(firstWayOf(line))];
+  const size_t i = wayFor(line);
+  Way& way = ways_[i];
   if (way.valid) ++stats_.evictions;
   way = {true, line, fillCycle, ++clock_};
+  lastUsed_ = i;
 }
 
 bool CacheArray::touch(uint64_t byteAddress) {
   const uint64_t line = lineOf(byteAddress);
-  const size_t i = find(line);
-  if (i != kAbsent) {
+  size_t i = find(line);
+  const bool resident = i != kAbsent;
+  if (resident) {
     if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
-    return true;
+  } else {
+    i = wayFor(line);
+    ways_[i] = {true, line, 0, ++clock_};
   }
-  ways_[victim(firstWayOf(line))] = {true, line, 0, ++clock_};
-  return false;
+  lastUsed_ = i;
+  return resident;
 }
 
 bool CacheArray::contains(uint64_t byteAddress) const {
   return find(lineOf(byteAddress)) != kAbsent;
 }
 
-size_t CacheArray::victim(size_t firstWay) {
-  const size_t end = firstWay + config_.ways;
-  for (size_t i = firstWay; i < end; ++i)
-    if (!ways_[i].valid) return i;
+size_t CacheArray::wayFor(uint64_t line) {
+  const size_t first = firstWayOf(line);
+  const size_t end = first + config_.ways;
+  size_t empty = kAbsent, oldest = first;
+  for (size_t i = first; i < end; ++i) {
+    const Way& way = ways_[i];
+    if (!way.valid) {
+      if (empty == kAbsent) empty = i;
+    } else if (way.line == line) {
+      throw std::logic_error("CacheArray::allocate: line of address " +
+                             std::to_string(line << lineShift_) + " is already resident");
+    } else if (way.stamp < ways_[oldest].stamp) {
+      oldest = i;
+    }
+  }
+  if (empty != kAbsent) return empty;
   // Modulo rather than std::uniform_int_distribution, whose output differs between standard
   // libraries: a seed then gives the same victims everywhere (the bias is below 2^-32).
-  if (config_.replacement == Replacement::Random) return firstWay + random_() % config_.ways;
-  size_t oldest = firstWay;
-  for (size_t i = firstWay + 1; i < end; ++i)
-    if (ways_[i].stamp < ways_[oldest].stamp) oldest = i;
+  if (config_.replacement == Replacement::Random) return first + random_() % config_.ways;
   return oldest;
 }
 

@@ -44,14 +44,21 @@ class CacheArray {
   // Inline: every L1 lookup of a cached run comes here.
   CacheLookup access(uint64_t byteAddress, uint64_t cycle) {
     ++stats_.accesses;
-    const size_t i = find(lineOf(byteAddress));
-    if (i == kAbsent) {
-      ++stats_.misses;
-      return {};
+    const uint64_t line = lineOf(byteAddress);
+    size_t i = lastUsed_;
+    // The way used last holds the newest stamp of its set; found there, it keeps that rank
+    // without a new stamp (stamps are compared within a set only).
+    if (!ways_[i].valid || ways_[i].line != line) {
+      i = find(line);
+      if (i == kAbsent) {
+        ++stats_.misses;
+        return {};
+      }
+      if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
+      lastUsed_ = i;
     }
-    Way& way = ways_[i];
+    const Way& way = ways_[i];
     ++(way.fillCycle <= cycle ? stats_.hits : stats_.merged);
-    if (config_.replacement == Replacement::Lru) way.stamp = ++clock_;
     return {true, way.fillCycle};
   }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
@@ -89,13 +96,16 @@ class CacheArray {
       if (ways_[i].valid && ways_[i].line == line) return i;
     return kAbsent;
   }
-  size_t victim(size_t firstWay);
+  // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
+  // resident (one pass over the set for both).
+  size_t wayFor(uint64_t line);
 
   CacheConfig config_;
   int lineShift_;
   uint64_t setMask_;
   std::vector<Way> ways_;  // sets x ways, set-major
-  uint64_t clock_ = 0;     // source of stamps: counts accesses and allocations
+  uint64_t clock_ = 0;     // source of stamps
+  size_t lastUsed_ = 0;    // the way accessed or allocated last
   std::mt19937_64 random_;
   CacheStats stats_;
 };

@@ -3,16 +3,29 @@
 // once with the cycle the word is there, so the core can run ahead through cycles nobody else
 // sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
 // core registers its request for its cycle and stops; the memory serves the requests of a cycle
-// when simulated time reaches it (all of them are known by then: a core registers a request only
-// while running cycles before it) and tells each core the cycle its word is there.
+// once no core can still make one for it, and tells each core the cycle its word is there. To
+// know that, the memory hears from each core the earliest cycle it can ask again (coreIdle,
+// coreOffering; a core waiting for its word asks again only after it) and from the scheduler the
+// earliest cycle it can still dispatch a job (DispatchFloor).
 
 #include <cstdint>
 
 #include <systemc>
 
+#include "decision_pump.h"
 #include "svo_memory.h"
 
 namespace rtu {
+
+// The scheduler as the memory sees it.
+class DispatchFloor {
+ public:
+  virtual ~DispatchFloor() = default;
+  // No job is dispatched before this cycle any more; it only rises.
+  virtual uint64_t noDispatchBefore() const = 0;
+  // `watcher` hears (Agent::heard) when noDispatchBefore() rises.
+  virtual void watchDispatchFloor(Agent& watcher) = 0;
+};
 
 struct MemoryReply {
   bool known;      // true: the word is there in `cycle`; false: ask the shared level in `cycle`
@@ -36,9 +49,13 @@ class CoreMemoryIf : public virtual sc_core::sc_interface {
   // A read the core issues in `cycle` (its own, possibly ahead of simulated time).
   virtual MemoryReply lookup(int core, uint32_t address, uint64_t cycle) = 0;
   // The shared request lookup() asked for, in `cycle` (ahead of simulated time); `reader` hears
-  // the cycle the word is there once simulated time reaches `cycle`.
+  // the cycle the word is there once every request of `cycle` is known.
   virtual void requestShared(int core, uint32_t address, uint64_t cycle,
                              SharedReadListener& reader) = 0;
+  // The core is idle and ready for a job from `readyCycle`.
+  virtual void coreIdle(int core, uint64_t readyCycle) = 0;
+  // The core offers its result from `outCycle`.
+  virtual void coreOffering(int core, uint64_t outCycle) = 0;
 };
 
 }  // namespace rtu

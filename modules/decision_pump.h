@@ -8,13 +8,16 @@
 // costs a few function calls per ray.
 //
 // Simulated time still matters in two places: the memory serves the traversal cores' requests to
-// the shared L2 when simulated time reaches their cycle (requests reach the L2 in cycle order;
-// memory_system.h), and the host source offers a record only once simulated time is within a
-// look-ahead of its cycle, which keeps the run's memory, the trace's reorder window and progress
-// reports bounded. Both wake the pump through
-// SystemC processes. The rule that makes this exact: every cycle's decisions are made by
-// simulated time that cycle at the latest, so a shared-memory request never arrives behind
-// simulated time, and no trace record either.
+// the shared L2 in cycle order, and where a cycle's requests cannot all be known yet it waits
+// for simulated time to reach that cycle (memory_system.h); and the host source offers a record
+// only once simulated time is within a look-ahead of its cycle, which keeps the run's memory,
+// the trace's reorder window and progress reports bounded. Both wake the pump through SystemC
+// processes. The rule that makes this exact: every cycle's decisions are made by simulated time
+// that cycle at the latest, so a shared-memory request never arrives behind simulated time, and
+// no trace record either.
+//
+// An agent scheduled with scheduleLast() decides once the others have nothing new: the memory,
+// which serves requests from bounds the cores and the scheduler publish as they decide.
 
 #include <cstddef>
 #include <vector>
@@ -50,22 +53,30 @@ class DecisionPump {
     agent.queued_ = true;
     queue_.push_back(&agent);
   }
+  // Puts `agent` on the queue to decide once every other agent has nothing new: for an agent
+  // that reads bounds the others publish (the memory serving shared requests ahead of simulated
+  // time), which hold only when no decision is half made.
+  void scheduleLast(Agent& agent) {
+    if (agent.queued_) return;
+    agent.queued_ = true;
+    last_.push_back(&agent);
+  }
   // Lets the agents decide until none has anything new. Called from within run() (a decision
   // that schedules another agent) it only queues: the outer loop drains.
   void run() {
     if (running_) return;
     running_ = true;
     try {
-      for (size_t next = 0; next < queue_.size(); ++next) {
-        Agent* agent = queue_[next];
-        agent->queued_ = false;
-        agent->decide();
+      for (;;) {
+        for (size_t next = 0; next < queue_.size(); ++next) decideOne(*queue_[next]);
+        queue_.clear();
+        if (last_.empty()) break;
+        decideOne(takeLast());
       }
     } catch (...) {
       running_ = false;
       throw;
     }
-    queue_.clear();
     running_ = false;
   }
   void runWith(Agent& agent) {
@@ -74,7 +85,18 @@ class DecisionPump {
   }
 
  private:
+  static void decideOne(Agent& agent) {
+    agent.queued_ = false;
+    agent.decide();
+  }
+  Agent& takeLast() {
+    Agent& agent = *last_.back();
+    last_.pop_back();
+    return agent;
+  }
+
   std::vector<Agent*> queue_;
+  std::vector<Agent*> last_;  // decide when queue_ is drained (in no particular order)
   bool running_ = false;
 };
 

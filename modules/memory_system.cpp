@@ -7,17 +7,20 @@
 namespace rtu {
 
 MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock,
-                           SvoMemory backing, MemoryConfig config, int cores, CycleTrace* trace,
-                           const CacheContents* start)
+                           DecisionPump& pump, SvoMemory backing, MemoryConfig config, int cores,
+                           CycleTrace* trace, const CacheContents* start)
     : sc_core::sc_module(name),
+      Agent(pump),
       clock_(clock),
       backing_(backing),
       config_(config),
       cores_(static_cast<size_t>(cores)),
+      published_(static_cast<size_t>(cores), 2),  // ready from cycle 0, so EVAL in 2 at the earliest
       wake_(clock),
       trace_(trace) {
   if (config_.ideal) return;
   validate(config_);
+  while ((1 << coreBits_) < cores) ++coreBits_;
   l2_ = std::make_unique<L2CacheTiming>(config_.l2, config_.dram);
   if (start && !start->l2.empty()) l2_->startFrom(start->l2.front());
   for (size_t i = 0; i < cores_.size(); ++i) {
@@ -37,56 +40,115 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
   }
 }
 
+void MemorySystem::followDispatches(DispatchFloor& scheduler) {
+  if (config_.ideal) return;
+  dispatches_ = &scheduler;
+  scheduler.watchDispatchFloor(*this);
+}
+
 void MemorySystem::end_of_elaboration() {
-  if (!config_.ideal) spawnReaction("serve_shared", [this] { serveShared(); }, {&wake_.event()});
+  if (config_.ideal) return;
+  spawnReaction("serve_shared", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
 MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
   if (config_.ideal) return {true, cycle};
   CorePort& port = cores_[static_cast<size_t>(core)];
   const L1Lookup result = port.l1->lookup(address, cycle);
-  if (trace_) {
-    trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
-    trace_->record(port.missSignal, cycle, port.l1->stats().misses);
-  }
+  if (trace_) traceL1(port, cycle);
   return {result.hit, result.cycle};
+}
+
+void MemorySystem::traceL1(const CorePort& port, uint64_t cycle) {
+  trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
+  trace_->record(port.missSignal, cycle, port.l1->stats().misses);
 }
 
 void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
                                  SharedReadListener& reader) {
-  if (cycle <= clock_.now())
+  if (cycle <= std::max(clock_.now(), servedThrough_))
     throw std::logic_error("shared memory request of core " + std::to_string(core) +
-                           " for cycle " + std::to_string(cycle) + ", not after simulated time");
+                           " for cycle " + std::to_string(cycle) +
+                           ", not after simulated time and the cycles served");
   CorePort& port = cores_[static_cast<size_t>(core)];
   port.pendingAddress = address;
   port.reader = &reader;
-  calendar_.push({cycle, core});
-  if (calendar_.top().cycle == cycle) wake_.at(cycle);
+  published_.set(static_cast<size_t>(core), kNoBound);
+  calendar_.push(requestKey(cycle, core));
+  heard(0);
 }
 
-void MemorySystem::serveShared() {
+void MemorySystem::coreIdle(int core, uint64_t readyCycle) {
+  publish(core, readyCycle + 2);  // dispatched in readyCycle at the earliest, EVAL two later
+}
+
+void MemorySystem::coreOffering(int core, uint64_t outCycle) {
+  publish(core, outCycle + 3);  // handed over in outCycle at the earliest, then as idle
+}
+
+void MemorySystem::publish(int core, uint64_t noRequestBefore) {
+  if (config_.ideal) return;
+  published_.set(static_cast<size_t>(core), noRequestBefore);
+  heard(0);
+}
+
+// Decides after every other agent, so that each core's and the scheduler's bounds are settled;
+// only while a request waits.
+void MemorySystem::heard(int) {
+  if (!calendar_.empty()) pump().scheduleLast(*this);
+}
+
+void MemorySystem::decide() {
+  if (calendar_.empty()) return;
+  const uint64_t cycle = cycleOf(calendar_.top());
+  if (!requestsKnownFor(cycle)) {
+    wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
+    return;
+  }
+  serveCycle(cycle);
+  heard(0);  // the next cycle once the cores served have gone on
+}
+
+bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
+  return cycle <= clock_.now() || cycle < std::max(published_.lowest(), dispatchFloor() + 2);
+}
+
+// Round-robin: from the core after the one served last on (a core has one request at most).
+// `cores` come in increasing numbers.
+void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
+  if (cores.size() > 1)
+    std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
+                cores.end());
+  const int last = cores.back();
+  nextPriority_ = last + 1 == static_cast<int>(cores_.size()) ? 0 : last + 1;
+}
+
+// The earliest cycle the scheduler can still dispatch a job in.
+uint64_t MemorySystem::dispatchFloor() const {
   const uint64_t now = clock_.now();
+  return dispatches_ ? std::max(now, dispatches_->noDispatchBefore()) : now;
+}
+
+void MemorySystem::serveCycle(uint64_t cycle) {
   served_.clear();
-  while (!calendar_.empty() && calendar_.top().cycle == now) {
-    served_.push_back(calendar_.top().core);
+  while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle) {
+    served_.push_back(coreOf(calendar_.top()));  // in increasing core numbers
     calendar_.pop();
   }
-  // Round-robin: from the core after the one served last on (a core has one request at most).
-  std::sort(served_.begin(), served_.end());
-  std::rotate(served_.begin(), std::lower_bound(served_.begin(), served_.end(), nextPriority_),
-              served_.end());
+  servedThrough_ = cycle;
+  inRoundRobinOrder(served_);
   for (int core : served_) {
     CorePort& port = cores_[static_cast<size_t>(core)];
     const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
-    // The core goes on at once and may register its next request (for a later cycle).
-    port.reader->sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, now)));
+    SharedReadListener& reader = *port.reader;
+    port.reader = nullptr;
+    // The core goes on at once, and either asks again (for a later cycle) or publishes a bound.
+    reader.sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, cycle)));
   }
-  if (!served_.empty()) nextPriority_ = (served_.back() + 1) % static_cast<int>(cores_.size());
-  if (!calendar_.empty()) wake_.at(calendar_.top().cycle);
-  if (trace_ && !served_.empty()) {
+  if (trace_) {
     const L2Stats stats = l2_->stats();
-    trace_->record(l2HitSignal_, now, stats.cache.hits + stats.cache.merged);
-    trace_->record(l2MissSignal_, now, stats.cache.misses);
+    trace_->record(l2HitSignal_, cycle, stats.cache.hits + stats.cache.merged);
+    trace_->record(l2MissSignal_, cycle, stats.cache.misses);
   }
 }
 

@@ -7,8 +7,18 @@
 // L1 lookups happen in the core's own (run-ahead) cycle, since only that core touches its L1.
 // Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
 // round-robin over the cores, starting after the core served last. Pending requests wait in a
-// calendar by cycle; one wake-up at its earliest cycle serves all requests of that cycle and
-// tells their cores by a call (no kernel event per miss).
+// calendar by cycle. The memory is an agent of the decision pump that decides last, when every
+// other decision is made: it serves the earliest cycle's requests as soon as no core can still
+// make one for that cycle (the lowest cycle every core has published, below), which is usually
+// long before simulated time gets there, and tells their cores by a call. Only when a cycle's
+// requests are not all known yet does it wait for simulated time to reach that cycle, by when
+// they are (docs/cycle-semantics.md, "Run-ahead").
+//
+// A core that waits for its word asks again only after the word is there, so after its request's
+// cycle. An idle core, ready from R, reads first in its EVAL two cycles after a dispatch D >=
+// max(R, F), F the scheduler's floor; a core offering a result from O is handed over in K >= O
+// and dispatched after K, so it reads no earlier than O + 3. A dispatch not yet decided is at
+// or after simulated time, so F is at least that.
 
 #include <cstdint>
 #include <functional>
@@ -24,53 +34,78 @@
 #include "cycle_trace.h"
 #include "l1_cache_timing.h"
 #include "l2_cache_timing.h"
+#include "lowest_of.h"
 #include "memory_config.h"
 #include "module_process.h"
 #include "svo_memory.h"
 
 namespace rtu {
 
-class MemorySystem : public sc_core::sc_module, public CoreMemoryIf {
+class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agent {
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
-  MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, SvoMemory backing,
-               MemoryConfig config, int cores, CycleTrace* trace,
+  MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
+               SvoMemory backing, MemoryConfig config, int cores, CycleTrace* trace,
                const CacheContents* start = nullptr);
+
+  // The scheduler whose dispatches bound the idle cores' next requests.
+  void followDispatches(DispatchFloor& scheduler);
 
   const SvoMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }
   MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
+  void coreIdle(int core, uint64_t readyCycle) override;
+  void coreOffering(int core, uint64_t outCycle) override;
+  // Serves the earliest cycle's requests if all are known, then decides again.
+  void decide() override;
+  void heard(int port) override;
 
   CacheStats l1Statistics(int core) const { return cores_[static_cast<size_t>(core)].l1->stats(); }
   L2Stats l2Statistics() const { return l2_ ? l2_->stats() : L2Stats{}; }
 
  private:
+  static constexpr uint64_t kNoBound = UINT64_MAX;
+
   struct CorePort {
     std::unique_ptr<L1CacheTiming> l1;
     uint32_t pendingAddress = 0;
-    SharedReadListener* reader = nullptr;
+    SharedReadListener* reader = nullptr;  // null unless a request waits in the calendar
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
-  struct Request {
-    uint64_t cycle;
-    int core;
-    bool operator>(const Request& other) const { return cycle > other.cycle; }
-  };
+  // A request in the calendar: its cycle above the core's number, so that the calendar's order
+  // is by cycle, then core.
+  uint64_t requestKey(uint64_t cycle, int core) const {
+    return cycle << coreBits_ | static_cast<uint64_t>(core);
+  }
+  uint64_t cycleOf(uint64_t key) const { return key >> coreBits_; }
+  int coreOf(uint64_t key) const { return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1)); }
 
   void end_of_elaboration() override;
-  // Serves the requests of the current cycle, then waits for the next cycle with one.
-  void serveShared();
+  // Whether no core can still make a request for `cycle`.
+  bool requestsKnownFor(uint64_t cycle) const;
+  uint64_t dispatchFloor() const;
+  void publish(int core, uint64_t noRequestBefore);
+  void serveCycle(uint64_t cycle);
+  void inRoundRobinOrder(std::vector<int>& cores);
+  // Out of line, so that an untraced lookup saves fewer registers.
+  [[gnu::noinline]] void traceL1(const CorePort& port, uint64_t cycle);
 
   const CycleClock& clock_;
   SvoMemory backing_;
   MemoryConfig config_;
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;
-  std::priority_queue<Request, std::vector<Request>, std::greater<Request>> calendar_;
+  int coreBits_ = 0;  // bits of the largest core number
+  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> calendar_;
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
+  uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
+  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: idle and
+  // offering cores; kNoBound for a core whose request waits (it asks again after its cycle).
+  LowestOf published_;
+  DispatchFloor* dispatches_ = nullptr;
   CycleWake wake_;
   CycleTrace* trace_;
   int l2HitSignal_ = CycleTrace::kNoSignal, l2MissSignal_ = CycleTrace::kNoSignal;

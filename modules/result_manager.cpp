@@ -23,6 +23,9 @@ void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
 }
 
 void ResultManager::heard(int port) {
+  // A core that offers nothing only bounded its next offer, which matters to drains in cycle
+  // order alone (a host that is not always ready): a cached run's cores do so at every miss.
+  if (port >= 0 && out_->alwaysReady() && !cores_[static_cast<size_t>(port)]->offering()) return;
   heard_.push_back(port);
   Agent::heard(port);
 }

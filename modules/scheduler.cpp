@@ -19,7 +19,7 @@ void Scheduler::decide() {
   CoreQuery query{*this};
   const int core = choice_.choose(query, cycle);
   if (core == SchedulerChoice::kWait) {
-    searchedFrom_ = cycle;  // the cycles before are settled: no dispatch there
+    searchFrom(cycle);  // the cycles before are settled: no dispatch there
     return;
   }
   const uint64_t wait = cycle - pending;
@@ -28,7 +28,7 @@ void Scheduler::decide() {
   if (wait > statistics_.maxWaitWithReadyCore) {
     const Idle readyAtPending = someCoreIdleIn(pending);
     if (readyAtPending == Idle::Unknown) {
-      searchedFrom_ = cycle;
+      searchFrom(cycle);
       return;
     }
     if (readyAtPending == Idle::Yes) statistics_.maxWaitWithReadyCore = wait;
@@ -79,8 +79,14 @@ void Scheduler::dispatch(int core, uint64_t cycle) {
   const CoreJob& job = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
-  searchedFrom_ = cycle + 1;
+  searchFrom(cycle + 1);
   choice_.dispatched(core);
+}
+
+void Scheduler::searchFrom(uint64_t cycle) {
+  if (cycle == searchedFrom_) return;
+  searchedFrom_ = cycle;
+  if (floorWatcher_) floorWatcher_->heard(0);
 }
 
 }  // namespace rtu

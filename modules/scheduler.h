@@ -11,6 +11,7 @@
 #include <map>
 #include <vector>
 
+#include "core_memory_if.h"
 #include "decision_pump.h"
 #include "rtu_payloads.h"
 #include "scheduler_choice.h"
@@ -26,12 +27,16 @@ struct SchedulerStatistics {
   uint64_t maxWaitWithReadyCore = 0;
 };
 
-class Scheduler : public Agent {
+class Scheduler : public Agent, public DispatchFloor {
  public:
   Scheduler(DecisionPump& pump, SchedulerPolicy policy, int cores);
 
   void bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores);
   void decide() override;
+
+  // Jobs are dispatched in increasing cycles, and none before the cycles searched.
+  uint64_t noDispatchBefore() const override { return searchedFrom_; }
+  void watchDispatchFloor(Agent& watcher) override { floorWatcher_ = &watcher; }
 
   SchedulerStatistics statistics() const;
 
@@ -48,11 +53,13 @@ class Scheduler : public Agent {
   Idle someCoreIdleIn(uint64_t cycle) const;
   void dispatch(int core, uint64_t cycle);
   void countWait(uint64_t wait);
+  void searchFrom(uint64_t cycle);
 
   SchedulerChoice choice_;
   TransferChannel<CoreJob>* in_ = nullptr;
   std::vector<TransferChannel<CoreJob>*> cores_;
   uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
+  Agent* floorWatcher_ = nullptr;
   SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
   std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job
 };

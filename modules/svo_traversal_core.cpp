@@ -43,18 +43,18 @@ void SvoTraversalCore::decide() {
 }
 
 // The current state's cycle: the word it reads, if any, is there by now.
+template <bool kTraced>
 inline void SvoTraversalCore::stepState() {
   core_.step([this](uint32_t address) { return words_->read(address); });
   ++localCycle_;
-  if (trace_) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
+  if (kTraced) trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
 }
 
-// The shared level served the request: the word is there in `dataCycle`.
+// The shared level served the request: the word is there in `dataCycle`. (Called while the pump
+// runs: what the core decides puts others on it.)
 void SvoTraversalCore::sharedReplied(uint64_t dataCycle) {
   waitForWord(dataCycle);
-  stepState();
-  run();
-  pump().run();
+  run(true);
 }
 
 void SvoTraversalCore::start(uint64_t dispatch, const CoreJob& job) {
@@ -65,10 +65,21 @@ void SvoTraversalCore::start(uint64_t dispatch, const CoreJob& job) {
   ++statistics_.jobs;
 }
 
-// Steps the state machine until OUT or until a read needs the shared level.
-void SvoTraversalCore::run() {
+// Steps the state machine (first the current state, if its word is there) until OUT or until a
+// read needs the shared level. The loop is compiled with and without the trace's records, so
+// that an untraced run does not test for the trace in every state.
+void SvoTraversalCore::run(bool wordThere) {
+  if (trace_)
+    steps<true>(wordThere);
+  else
+    steps<false>(wordThere);
+}
+
+template <bool kTraced>
+void SvoTraversalCore::steps(bool wordThere) {
+  if (wordThere) stepState<kTraced>();
   while (core_.busy()) {
-    traceState(localCycle_, static_cast<uint64_t>(core_.state()));
+    if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
     if (!combinational_ && core_.readsMemory()) {
       const uint32_t address = core_.memoryAddress();
       const MemoryReply reply = memory->lookup(index_, address, localCycle_);
@@ -86,7 +97,7 @@ void SvoTraversalCore::run() {
       }
       consumeWordIn(reply.cycle);
     }
-    stepState();
+    stepState<kTraced>();
   }
   offerResult();
 }
@@ -112,6 +123,7 @@ void SvoTraversalCore::offerResult() {
   if (core_.stackOverflow()) ++statistics_.stackOverflows;
   if (core_.tOverflow()) ++statistics_.tOverflows;
   phase_ = Phase::Out;
+  if (!combinational_) memory->coreOffering(index_, outCycle_);
   in_->notReadyBefore(outCycle_ + 1);
   out_->offer(result, outCycle_);
 }
@@ -123,6 +135,7 @@ void SvoTraversalCore::handOver() {
   core_.finish();
   traceState(idle, static_cast<uint64_t>(CoreState::Idle));
   phase_ = Phase::Idle;
+  if (!combinational_) memory->coreIdle(index_, idle);
   in_->readyFrom(idle);
 }
 

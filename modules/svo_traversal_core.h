@@ -8,9 +8,10 @@
 // state machine from INIT in D + 1 through as many cycles as it can at once (all of them with
 // ideal memory) and offers the result from the cycle OUT begins; it records each state in its own
 // cycle for the trace. A read that must go to the shared level is registered with the memory for
-// its cycle and the core stops, since the shared level serves requests in cycle order when
-// simulated time reaches them (core_memory_if.h); meanwhile the core declares that it offers no
-// result and is not ready before then. The memory's reply lets it go on.
+// its cycle and the core stops, since the shared level serves requests in cycle order once every
+// request of their cycle is known (core_memory_if.h); meanwhile the core declares that it offers
+// no result and is not ready before then. The memory's reply lets it go on. The core tells the
+// memory when it offers its result and when it is idle, the bounds of its next request.
 //
 // A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
 // BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
@@ -67,8 +68,11 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   void end_of_elaboration() override;
   void sharedReplied(uint64_t dataCycle) override;
   void start(uint64_t dispatch, const CoreJob& job);
-  void run();
+  void run(bool wordThere = false);
+  template <bool kTraced>
+  void steps(bool wordThere);
   // Forced inline: it runs once per simulated state, and a call costs a fifth of a state.
+  template <bool kTraced>
   [[gnu::always_inline]] inline void stepState();
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);

@@ -34,8 +34,9 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
                                          config.hostInput, kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler, config.cores);
-  memory_ = std::make_unique<MemorySystem>("memory", clock_, memory, config.memory, config.cores,
-                                           trace, caches);
+  memory_ = std::make_unique<MemorySystem>("memory", clock_, pump_, memory, config.memory,
+                                           config.cores, trace, caches);
+  memory_->followDispatches(*scheduler_);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
   if (scene) {
     sceneRays_ = channel<HostJob>("scene_rays", clock_, trace, top + ".scene_manager.in");
