@@ -96,6 +96,8 @@ void addFidelityCommand(CLI::App& app) {
   auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera |
                                                 kUseSampling,
                                   {"--sample"});
+  // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
+  request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
   command->add_option("--fractions", options->fractions, "sampled fractions to measure")
       ->delimiter(',')
       ->capture_default_str();

@@ -9,7 +9,7 @@ Configuration ConfigRequest::resolve() const {
   for (const auto& [key, text] : flags) configuration.set(key, text, ConfigSource::CommandLine);
   for (const std::string& assignment : assignments)
     configuration.setAssignment(assignment, ConfigSource::CommandLine);
-  configuration.checkApplicable(uses, command);
+  configuration.checkApplicable(uses, command, commandSets);
   return configuration;
 }
 

@@ -3,6 +3,7 @@
 // `--set key=value` (repeatable) and every setting's own flag (`--cores 4` is `--set cores=4`),
 // for the settings a command uses.
 
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -22,6 +23,7 @@ struct ConfigRequest {
   std::vector<std::string> files;
   std::vector<std::pair<std::string, std::string>> flags;  // key, text
   std::vector<std::string> assignments;                    // --set key=value
+  std::function<void(RunConfig&)> commandSets;  // what the command sets itself, if anything
 
   // Defaults, then the preset, the files, the flags and --set; then checks that every setting the
   // user gave has an effect (see Configuration::checkApplicable).

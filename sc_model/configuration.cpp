@@ -154,8 +154,11 @@ ConfigSource Configuration::source(const std::string& key) const {
   return found == sources_.end() ? ConfigSource::Default : found->second;
 }
 
-void Configuration::checkApplicable(unsigned uses, const std::string& command) const {
+void Configuration::checkApplicable(unsigned uses, const std::string& command,
+                                    const std::function<void(RunConfig&)>& commandSets) const {
   const RunConfig defaults;
+  RunConfig effective = values_;
+  if (commandSets) commandSets(effective);
   for (const Setting& setting : configSchema()) {
     const ConfigSource from = source(setting.key);
     if (from != ConfigSource::File && from != ConfigSource::CommandLine) continue;
@@ -163,7 +166,7 @@ void Configuration::checkApplicable(unsigned uses, const std::string& command) c
     if (from == ConfigSource::File && setting.get(values_) == setting.get(defaults)) continue;
     std::string reason;
     if (!(setting.uses & uses)) reason = "rtusim " + command + " does not use it";
-    else if (setting.ignoredBecause) reason = setting.ignoredBecause(values_);
+    else if (setting.ignoredBecause) reason = setting.ignoredBecause(effective);
     if (reason.empty()) continue;
     const std::string message = setting.key + " (" + sourceName(from) + ") has no effect: " + reason;
     const bool sceneConflict = isSceneSource(setting.key) && reason.find(" is given") != std::string::npos;

@@ -4,6 +4,7 @@
 // setting's own flag). It remembers where each setting came from, so that a setting a user gave
 // and that has no effect is reported instead of silently dropped.
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,8 +35,10 @@ class Configuration {
   ConfigSource source(const std::string& key) const;
   // Settings given in a file or on the command line that the command (its `uses`) or this
   // configuration ignores: errors for the command line and for scene sources given together,
-  // warnings on standard error for files.
-  void checkApplicable(unsigned uses, const std::string& command) const;
+  // warnings on standard error for files. `commandSets`, if given, applies what the command
+  // sets itself (fidelity samples at its own fractions) before asking which settings are ignored.
+  void checkApplicable(unsigned uses, const std::string& command,
+                       const std::function<void(RunConfig&)>& commandSets = {}) const;
 
   // The whole configuration, loadable again with --config.
   std::string toToml() const;

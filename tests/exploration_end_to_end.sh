@@ -80,8 +80,10 @@ if "$rtusim" fps --scene menger --depth 5 --memory cached --resolutions 160x120 
 grep -q "sample.fraction 0.01" small.txt || fail "too small sample fraction not named"
 
 # fidelity: every mode against the SystemC model; the exact modes exact, golden's results equal.
+# Its sampled modes take --sample-seed at their own fractions: no "has no effect" warning.
 "$rtusim" fidelity --scene menger --depth 5 --width 160 --height 120 --cores 4 --fractions 0.5 \
-  --quanta 100,1000 --csv fidelity.csv >fidelity.txt
+  --quanta 100,1000 --sample-seed 3 --csv fidelity.csv >fidelity.txt 2>fidelity.err
+! grep -q "has no effect" fidelity.err || fail "fidelity warns that its sample seed has no effect"
 "$python" - fidelity.csv <<'PY' || fail "fidelity rows"
 import csv, sys
 rows = {r["mode"]: r for r in csv.DictReader(open(sys.argv[1]))}
