@@ -4,9 +4,9 @@
 // sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
 // core registers its request for its cycle and stops; the memory serves the requests of a cycle
 // once no core can still make one for it, and tells each core the cycle its word is there. To
-// know that, the memory hears from each core the earliest cycle it can ask again (coreIdle,
-// coreOffering; a core waiting for its word asks again only after it) and from the scheduler the
-// earliest cycle it can still dispatch a job (DispatchFloor).
+// know that, the memory hears from each core the earliest cycle it can ask again (coreOffering; a
+// core waiting for its word asks again only after it) and from the scheduler the earliest cycle
+// it can still dispatch a job (DispatchFloor).
 
 #include <cstdint>
 
@@ -52,8 +52,6 @@ class CoreMemoryIf : public virtual sc_core::sc_interface {
   // the cycle the word is there once every request of `cycle` is known.
   virtual void requestShared(int core, uint32_t address, uint64_t cycle,
                              SharedReadListener& reader) = 0;
-  // The core is idle and ready for a job from `readyCycle`.
-  virtual void coreIdle(int core, uint64_t readyCycle) = 0;
   // The core offers its result from `outCycle`.
   virtual void coreOffering(int core, uint64_t outCycle) = 0;
 };

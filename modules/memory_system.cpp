@@ -78,17 +78,10 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   heard(0);
 }
 
-void MemorySystem::coreIdle(int core, uint64_t readyCycle) {
-  publish(core, readyCycle + 2);  // dispatched in readyCycle at the earliest, EVAL two later
-}
-
+// Handed over in outCycle at the earliest, then idle and dispatched from the cycle after: its
+// EVAL reads two cycles later. The bound holds until the dispatch, however long it waits.
 void MemorySystem::coreOffering(int core, uint64_t outCycle) {
-  publish(core, outCycle + 3);  // handed over in outCycle at the earliest, then as idle
-}
-
-void MemorySystem::publish(int core, uint64_t noRequestBefore) {
-  if (config_.ideal) return;
-  published_.set(static_cast<size_t>(core), noRequestBefore);
+  published_.set(static_cast<size_t>(core), outCycle + 3);
   heard(0);
 }
 

@@ -15,10 +15,10 @@
 // they are (docs/cycle-semantics.md, "Run-ahead").
 //
 // A core that waits for its word asks again only after the word is there, so after its request's
-// cycle. An idle core, ready from R, reads first in its EVAL two cycles after a dispatch D >=
-// max(R, F), F the scheduler's floor; a core offering a result from O is handed over in K >= O
-// and dispatched after K, so it reads no earlier than O + 3. A dispatch not yet decided is at
-// or after simulated time, so F is at least that.
+// cycle. A core that offered a result from O is handed over in K >= O and dispatched in D > K
+// with D >= F, F the scheduler's floor, and reads first in its EVAL in D + 2: so no earlier
+// than O + 3 nor F + 2 (a core not yet used, no earlier than 2). A dispatch not yet decided is
+// at or after simulated time, so F is at least that.
 
 #include <cstdint>
 #include <functional>
@@ -56,7 +56,6 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
-  void coreIdle(int core, uint64_t readyCycle) override;
   void coreOffering(int core, uint64_t outCycle) override;
   // Serves the earliest cycle's requests if all are known, then decides again.
   void decide() override;
@@ -86,7 +85,6 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   // Whether no core can still make a request for `cycle`.
   bool requestsKnownFor(uint64_t cycle) const;
   uint64_t dispatchFloor() const;
-  void publish(int core, uint64_t noRequestBefore);
   void serveCycle(uint64_t cycle);
   void inRoundRobinOrder(std::vector<int>& cores);
   // Out of line, so that an untraced lookup saves fewer registers.
@@ -102,8 +100,9 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
-  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: idle and
-  // offering cores; kNoBound for a core whose request waits (it asks again after its cycle).
+  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: a core
+  // offering (or handed over and not dispatched yet); kNoBound for a core whose request waits
+  // (it asks again after its cycle) or that runs.
   LowestOf published_;
   DispatchFloor* dispatches_ = nullptr;
   CycleWake wake_;

@@ -135,7 +135,6 @@ void SvoTraversalCore::handOver() {
   core_.finish();
   traceState(idle, static_cast<uint64_t>(CoreState::Idle));
   phase_ = Phase::Idle;
-  if (!combinational_) memory->coreIdle(index_, idle);
   in_->readyFrom(idle);
 }
 

@@ -11,7 +11,7 @@
 // its cycle and the core stops, since the shared level serves requests in cycle order once every
 // request of their cycle is known (core_memory_if.h); meanwhile the core declares that it offers
 // no result and is not ready before then. The memory's reply lets it go on. The core tells the
-// memory when it offers its result and when it is idle, the bounds of its next request.
+// memory when it offers its result, which bounds its next request.
 //
 // A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
 // BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
