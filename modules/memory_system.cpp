@@ -51,15 +51,9 @@ void MemorySystem::end_of_elaboration() {
   spawnReaction("serve_shared", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
-MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
-  if (config_.ideal) return {true, cycle};
-  CorePort& port = cores_[static_cast<size_t>(core)];
-  const L1Lookup result = port.l1->lookup(address, cycle);
-  if (trace_) traceL1(port, cycle);
-  return {result.hit, result.cycle};
-}
-
-void MemorySystem::traceL1(const CorePort& port, uint64_t cycle) {
+void MemorySystem::tracePrivateLookup(int core, uint64_t cycle) {
+  if (!trace_) return;
+  const CorePort& port = cores_[static_cast<size_t>(core)];
   trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
   trace_->record(port.missSignal, cycle, port.l1->stats().misses);
 }

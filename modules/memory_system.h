@@ -53,7 +53,10 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
 
   const SvoMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }
-  MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
+  L1CacheTiming* privateCache(int core) override {
+    return config_.ideal ? nullptr : cores_[static_cast<size_t>(core)].l1.get();
+  }
+  void tracePrivateLookup(int core, uint64_t cycle) override;
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
   void coreOffering(int core, uint64_t outCycle) override;
@@ -87,8 +90,6 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   uint64_t dispatchFloor() const;
   void serveCycle(uint64_t cycle);
   void inRoundRobinOrder(std::vector<int>& cores);
-  // Out of line, so that an untraced lookup saves fewer registers.
-  [[gnu::noinline]] void traceL1(const CorePort& port, uint64_t cycle);
 
   const CycleClock& clock_;
   SvoMemory backing_;

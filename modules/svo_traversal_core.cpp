@@ -28,6 +28,7 @@ void SvoTraversalCore::bind(TransferChannel<CoreJob>& in, TransferChannel<CoreRe
 void SvoTraversalCore::end_of_elaboration() {
   words_ = &memory->backingStore();
   combinational_ = memory->combinational();
+  l1_ = memory->privateCache(index_);
 }
 
 void SvoTraversalCore::decide() {
@@ -82,8 +83,8 @@ void SvoTraversalCore::steps(bool wordThere) {
     if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
     if (!combinational_ && core_.readsMemory()) {
       const uint32_t address = core_.memoryAddress();
-      const MemoryReply reply = memory->lookup(index_, address, localCycle_);
-      if (!reply.known) {
+      const L1Lookup reply = lookUp<kTraced>(address);
+      if (!reply.hit) {
         // BLOCKED until the shared level answers. Recorded now, as a trace takes no record behind
         // simulated time and the core resumes only in reply.cycle. (Should the word come in
         // this very cycle, the next state's record in the same cycle replaces it.)
@@ -100,6 +101,14 @@ void SvoTraversalCore::steps(bool wordThere) {
     stepState<kTraced>();
   }
   offerResult();
+}
+
+// The read of the current state in its L1.
+template <bool kTraced>
+L1Lookup SvoTraversalCore::lookUp(uint32_t address) {
+  const L1Lookup reply = l1_->lookup(address, localCycle_);
+  if (kTraced) memory->tracePrivateLookup(index_, localCycle_);
+  return reply;
 }
 
 // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.

@@ -74,6 +74,9 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   // Forced inline: it runs once per simulated state, and a call costs a fifth of a state.
   template <bool kTraced>
   [[gnu::always_inline]] inline void stepState();
+  // Out of line: inlined, the lookup makes the stepping loop slower.
+  template <bool kTraced>
+  [[gnu::noinline]] L1Lookup lookUp(uint32_t address);
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
   void offerResult();
@@ -91,6 +94,7 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   uint64_t blocked_ = 0;     // blocked cycles of the current job
   const SvoMemory* words_ = nullptr;
   bool combinational_ = false;
+  L1CacheTiming* l1_ = nullptr;  // null for the combinational ROM
   CycleTrace* trace_;
   int stateSignal_ = CycleTrace::kNoSignal, stackSignal_ = CycleTrace::kNoSignal;
   CoreStatistics statistics_;
