@@ -41,7 +41,7 @@
 
 namespace rtu {
 
-class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agent {
+class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, public Agent {
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,

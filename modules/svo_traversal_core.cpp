@@ -96,7 +96,7 @@ void SvoTraversalCore::steps(bool wordThere) {
         in_->notReadyBefore(reply.cycle + 2);
         return;
       }
-      consumeWordIn(reply.cycle);
+      consumeWordIn<kTraced>(reply.cycle);
     }
     stepState<kTraced>();
   }
@@ -112,9 +112,10 @@ L1Lookup SvoTraversalCore::lookUp(uint32_t address) {
 }
 
 // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.
+template <bool kTraced>
 void SvoTraversalCore::consumeWordIn(uint64_t dataCycle) {
   if (dataCycle == localCycle_) return;
-  traceState(localCycle_ + 1, kBlockedStateCode);
+  if (kTraced) traceState(localCycle_ + 1, kBlockedStateCode);
   waitForWord(dataCycle);
 }
 

@@ -48,7 +48,7 @@ struct CoreStatistics {
   uint64_t tOverflows = 0;
 };
 
-class SvoTraversalCore : public sc_core::sc_module, public Agent, private SharedReadListener {
+class SvoTraversalCore final : public sc_core::sc_module, public Agent, private SharedReadListener {
  public:
   sc_core::sc_port<CoreMemoryIf> memory;
 
@@ -77,6 +77,7 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   // Out of line: inlined, the lookup makes the stepping loop slower.
   template <bool kTraced>
   [[gnu::noinline]] L1Lookup lookUp(uint32_t address);
+  template <bool kTraced>
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
   void offerResult();
