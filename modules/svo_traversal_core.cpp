@@ -83,7 +83,7 @@ void SvoTraversalCore::steps(bool wordThere) {
     if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
     if (!combinational_ && core_.readsMemory()) {
       const uint32_t address = core_.memoryAddress();
-      const L1Lookup reply = lookUp<kTraced>(address);
+      const PrivateRead reply = lookUp<kTraced>(address);
       if (!reply.hit) {
         // BLOCKED until the shared level answers. Recorded now, as a trace takes no record behind
         // simulated time and the core resumes only in reply.cycle. (Should the word come in
@@ -105,10 +105,10 @@ void SvoTraversalCore::steps(bool wordThere) {
 
 // The read of the current state in its L1.
 template <bool kTraced>
-L1Lookup SvoTraversalCore::lookUp(uint32_t address) {
+SvoTraversalCore::PrivateRead SvoTraversalCore::lookUp(uint32_t address) {
   const L1Lookup reply = l1_->lookup(address, localCycle_);
   if (kTraced) memory->tracePrivateLookup(index_, localCycle_);
-  return reply;
+  return {reply.hit, reply.cycle};
 }
 
 // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.

@@ -74,9 +74,14 @@ class SvoTraversalCore final : public sc_core::sc_module, public Agent, private 
   // Forced inline: it runs once per simulated state, and a call costs a fifth of a state.
   template <bool kTraced>
   [[gnu::always_inline]] inline void stepState();
+  // An L1 lookup's answer, small enough to come back in registers.
+  struct PrivateRead {
+    bool hit;
+    uint64_t cycle;  // hit: the word is there; miss: the shared request's cycle
+  };
   // Out of line: inlined, the lookup makes the stepping loop slower.
   template <bool kTraced>
-  [[gnu::noinline]] L1Lookup lookUp(uint32_t address);
+  [[gnu::noinline]] PrivateRead lookUp(uint32_t address);
   template <bool kTraced>
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
