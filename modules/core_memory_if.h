@@ -4,15 +4,16 @@
 // sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
 // core registers its request for its cycle and stops; the memory serves the requests of a cycle
 // once no core can still make one for it, and tells each core the cycle its word is there. To
-// know that, the memory hears from each core the earliest cycle it can ask again (coreIdle,
-// coreOffering; a core waiting for its word asks again only after it) and from the scheduler the
-// earliest cycle it can still dispatch a job (DispatchFloor).
+// know that, the memory hears from each core the earliest cycle it can ask again (coreOffering; a
+// core waiting for its word asks again only after it) and from the scheduler the earliest cycle
+// it can still dispatch a job (DispatchFloor).
 
 #include <cstdint>
 
 #include <systemc>
 
 #include "decision_pump.h"
+#include "l1_cache_timing.h"
 #include "svo_memory.h"
 
 namespace rtu {
@@ -27,11 +28,6 @@ class DispatchFloor {
   virtual void watchDispatchFloor(Agent& watcher) = 0;
 };
 
-struct MemoryReply {
-  bool known;      // true: the word is there in `cycle`; false: ask the shared level in `cycle`
-  uint64_t cycle;
-};
-
 class SharedReadListener {
  public:
   virtual ~SharedReadListener() = default;
@@ -44,16 +40,17 @@ class CoreMemoryIf : public virtual sc_core::sc_interface {
   // The words themselves (timing is the other calls' business).
   virtual const SvoMemory& backingStore() const = 0;
   // True for the thesis' combinational ROM: every word is there in the cycle it is read, so a
-  // core need not ask lookup().
+  // core need not look it up.
   virtual bool combinational() const = 0;
-  // A read the core issues in `cycle` (its own, possibly ahead of simulated time).
-  virtual MemoryReply lookup(int core, uint32_t address, uint64_t cycle) = 0;
-  // The shared request lookup() asked for, in `cycle` (ahead of simulated time); `reader` hears
+  // The core's L1 (null for the ROM). The core looks its reads up there itself, in its own
+  // (run-ahead) cycle, since no other core touches it; a miss goes to requestShared.
+  virtual L1CacheTiming* privateCache(int core) = 0;
+  // For the trace: the core looked a read up in its L1 in `cycle`.
+  virtual void tracePrivateLookup(int core, uint64_t cycle) = 0;
+  // The shared request of an L1 miss, in `cycle` (ahead of simulated time); `reader` hears
   // the cycle the word is there once every request of `cycle` is known.
   virtual void requestShared(int core, uint32_t address, uint64_t cycle,
                              SharedReadListener& reader) = 0;
-  // The core is idle and ready for a job from `readyCycle`.
-  virtual void coreIdle(int core, uint64_t readyCycle) = 0;
   // The core offers its result from `outCycle`.
   virtual void coreOffering(int core, uint64_t outCycle) = 0;
 };

@@ -15,7 +15,7 @@
 
 namespace rtu {
 
-class HostSink : public Agent {
+class HostSink final : public Agent {
  public:
   // The results received, a column per field, so a run takes them over without a copy.
   struct Arrivals {

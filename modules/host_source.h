@@ -19,7 +19,7 @@
 
 namespace rtu {
 
-class HostSource : public sc_core::sc_module, public Agent {
+class HostSource final : public sc_core::sc_module, public Agent {
  public:
   HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
              const std::vector<HostRecord>& records, HostLinkConfig link, uint64_t lookAhead);

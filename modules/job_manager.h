@@ -34,7 +34,7 @@ struct JobManagerStatistics {
   uint64_t stallCycles = 0;  // cycles the output was valid and not taken
 };
 
-class JobManager : public Agent {
+class JobManager final : public Agent {
  public:
   JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config, SvoMemory memory);
 

@@ -51,15 +51,9 @@ void MemorySystem::end_of_elaboration() {
   spawnReaction("serve_shared", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
-MemoryReply MemorySystem::lookup(int core, uint32_t address, uint64_t cycle) {
-  if (config_.ideal) return {true, cycle};
-  CorePort& port = cores_[static_cast<size_t>(core)];
-  const L1Lookup result = port.l1->lookup(address, cycle);
-  if (trace_) traceL1(port, cycle);
-  return {result.hit, result.cycle};
-}
-
-void MemorySystem::traceL1(const CorePort& port, uint64_t cycle) {
+void MemorySystem::tracePrivateLookup(int core, uint64_t cycle) {
+  if (!trace_) return;
+  const CorePort& port = cores_[static_cast<size_t>(core)];
   trace_->record(port.hitSignal, cycle, port.l1->stats().hits + port.l1->stats().merged);
   trace_->record(port.missSignal, cycle, port.l1->stats().misses);
 }
@@ -78,17 +72,10 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   heard(0);
 }
 
-void MemorySystem::coreIdle(int core, uint64_t readyCycle) {
-  publish(core, readyCycle + 2);  // dispatched in readyCycle at the earliest, EVAL two later
-}
-
+// Handed over in outCycle at the earliest, then idle and dispatched from the cycle after: its
+// EVAL reads two cycles later. The bound holds until the dispatch, however long it waits.
 void MemorySystem::coreOffering(int core, uint64_t outCycle) {
-  publish(core, outCycle + 3);  // handed over in outCycle at the earliest, then as idle
-}
-
-void MemorySystem::publish(int core, uint64_t noRequestBefore) {
-  if (config_.ideal) return;
-  published_.set(static_cast<size_t>(core), noRequestBefore);
+  published_.set(static_cast<size_t>(core), outCycle + 3);
   heard(0);
 }
 

@@ -15,10 +15,10 @@
 // they are (docs/cycle-semantics.md, "Run-ahead").
 //
 // A core that waits for its word asks again only after the word is there, so after its request's
-// cycle. An idle core, ready from R, reads first in its EVAL two cycles after a dispatch D >=
-// max(R, F), F the scheduler's floor; a core offering a result from O is handed over in K >= O
-// and dispatched after K, so it reads no earlier than O + 3. A dispatch not yet decided is at
-// or after simulated time, so F is at least that.
+// cycle. A core that offered a result from O is handed over in K >= O and dispatched in D > K
+// with D >= F, F the scheduler's floor, and reads first in its EVAL in D + 2: so no earlier
+// than O + 3 nor F + 2 (a core not yet used, no earlier than 2). A dispatch not yet decided is
+// at or after simulated time, so F is at least that.
 
 #include <cstdint>
 #include <functional>
@@ -41,7 +41,7 @@
 
 namespace rtu {
 
-class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agent {
+class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, public Agent {
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
@@ -53,10 +53,12 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
 
   const SvoMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }
-  MemoryReply lookup(int core, uint32_t address, uint64_t cycle) override;
+  L1CacheTiming* privateCache(int core) override {
+    return config_.ideal ? nullptr : cores_[static_cast<size_t>(core)].l1.get();
+  }
+  void tracePrivateLookup(int core, uint64_t cycle) override;
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
-  void coreIdle(int core, uint64_t readyCycle) override;
   void coreOffering(int core, uint64_t outCycle) override;
   // Serves the earliest cycle's requests if all are known, then decides again.
   void decide() override;
@@ -86,11 +88,8 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   // Whether no core can still make a request for `cycle`.
   bool requestsKnownFor(uint64_t cycle) const;
   uint64_t dispatchFloor() const;
-  void publish(int core, uint64_t noRequestBefore);
   void serveCycle(uint64_t cycle);
   void inRoundRobinOrder(std::vector<int>& cores);
-  // Out of line, so that an untraced lookup saves fewer registers.
-  [[gnu::noinline]] void traceL1(const CorePort& port, uint64_t cycle);
 
   const CycleClock& clock_;
   SvoMemory backing_;
@@ -102,8 +101,9 @@ class MemorySystem : public sc_core::sc_module, public CoreMemoryIf, public Agen
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
-  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: idle and
-  // offering cores; kNoBound for a core whose request waits (it asks again after its cycle).
+  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: a core
+  // offering (or handed over and not dispatched yet); kNoBound for a core whose request waits
+  // (it asks again after its cycle) or that runs.
   LowestOf published_;
   DispatchFloor* dispatches_ = nullptr;
   CycleWake wake_;

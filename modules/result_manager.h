@@ -31,7 +31,7 @@ struct ResultManagerStatistics {
   uint64_t maxBuffered = 0;  // most buffers full at once
 };
 
-class ResultManager : public sc_core::sc_module, public Agent {
+class ResultManager final : public sc_core::sc_module, public Agent {
  public:
   ResultManager(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump);
 

@@ -27,7 +27,7 @@ struct SchedulerStatistics {
   uint64_t maxWaitWithReadyCore = 0;
 };
 
-class Scheduler : public Agent, public DispatchFloor {
+class Scheduler final : public Agent, public DispatchFloor {
  public:
   Scheduler(DecisionPump& pump, SchedulerPolicy policy, int cores);
 

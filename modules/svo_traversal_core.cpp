@@ -28,6 +28,7 @@ void SvoTraversalCore::bind(TransferChannel<CoreJob>& in, TransferChannel<CoreRe
 void SvoTraversalCore::end_of_elaboration() {
   words_ = &memory->backingStore();
   combinational_ = memory->combinational();
+  l1_ = memory->privateCache(index_);
 }
 
 void SvoTraversalCore::decide() {
@@ -82,8 +83,8 @@ void SvoTraversalCore::steps(bool wordThere) {
     if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
     if (!combinational_ && core_.readsMemory()) {
       const uint32_t address = core_.memoryAddress();
-      const MemoryReply reply = memory->lookup(index_, address, localCycle_);
-      if (!reply.known) {
+      const PrivateRead reply = lookUp<kTraced>(address);
+      if (!reply.hit) {
         // BLOCKED until the shared level answers. Recorded now, as a trace takes no record behind
         // simulated time and the core resumes only in reply.cycle. (Should the word come in
         // this very cycle, the next state's record in the same cycle replaces it.)
@@ -95,17 +96,26 @@ void SvoTraversalCore::steps(bool wordThere) {
         in_->notReadyBefore(reply.cycle + 2);
         return;
       }
-      consumeWordIn(reply.cycle);
+      consumeWordIn<kTraced>(reply.cycle);
     }
     stepState<kTraced>();
   }
   offerResult();
 }
 
+// The read of the current state in its L1.
+template <bool kTraced>
+SvoTraversalCore::PrivateRead SvoTraversalCore::lookUp(uint32_t address) {
+  const L1Lookup reply = l1_->lookup(address, localCycle_);
+  if (kTraced) memory->tracePrivateLookup(index_, localCycle_);
+  return {reply.hit, reply.cycle};
+}
+
 // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.
+template <bool kTraced>
 void SvoTraversalCore::consumeWordIn(uint64_t dataCycle) {
   if (dataCycle == localCycle_) return;
-  traceState(localCycle_ + 1, kBlockedStateCode);
+  if (kTraced) traceState(localCycle_ + 1, kBlockedStateCode);
   waitForWord(dataCycle);
 }
 
@@ -135,7 +145,6 @@ void SvoTraversalCore::handOver() {
   core_.finish();
   traceState(idle, static_cast<uint64_t>(CoreState::Idle));
   phase_ = Phase::Idle;
-  if (!combinational_) memory->coreIdle(index_, idle);
   in_->readyFrom(idle);
 }
 

@@ -11,7 +11,7 @@
 // its cycle and the core stops, since the shared level serves requests in cycle order once every
 // request of their cycle is known (core_memory_if.h); meanwhile the core declares that it offers
 // no result and is not ready before then. The memory's reply lets it go on. The core tells the
-// memory when it offers its result and when it is idle, the bounds of its next request.
+// memory when it offers its result, which bounds its next request.
 //
 // A read issued in cycle c whose word is there in cycle d > c costs EVAL (or PUSH) in c and
 // BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
@@ -48,7 +48,7 @@ struct CoreStatistics {
   uint64_t tOverflows = 0;
 };
 
-class SvoTraversalCore : public sc_core::sc_module, public Agent, private SharedReadListener {
+class SvoTraversalCore final : public sc_core::sc_module, public Agent, private SharedReadListener {
  public:
   sc_core::sc_port<CoreMemoryIf> memory;
 
@@ -74,6 +74,15 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   // Forced inline: it runs once per simulated state, and a call costs a fifth of a state.
   template <bool kTraced>
   [[gnu::always_inline]] inline void stepState();
+  // An L1 lookup's answer, small enough to come back in registers.
+  struct PrivateRead {
+    bool hit;
+    uint64_t cycle;  // hit: the word is there; miss: the shared request's cycle
+  };
+  // Out of line: inlined, the lookup makes the stepping loop slower.
+  template <bool kTraced>
+  [[gnu::noinline]] PrivateRead lookUp(uint32_t address);
+  template <bool kTraced>
   void consumeWordIn(uint64_t dataCycle);
   void waitForWord(uint64_t dataCycle);
   void offerResult();
@@ -91,6 +100,7 @@ class SvoTraversalCore : public sc_core::sc_module, public Agent, private Shared
   uint64_t blocked_ = 0;     // blocked cycles of the current job
   const SvoMemory* words_ = nullptr;
   bool combinational_ = false;
+  L1CacheTiming* l1_ = nullptr;  // null for the combinational ROM
   CycleTrace* trace_;
   int stateSignal_ = CycleTrace::kNoSignal, stackSignal_ = CycleTrace::kNoSignal;
   CoreStatistics statistics_;
