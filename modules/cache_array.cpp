@@ -19,15 +19,17 @@ CacheArray::CacheArray(const CacheConfig& config)
     : config_(config),
       lineShift_(log2Exact(config.lineBytes)),
       setMask_(config.sets() - 1),
-      ways_(size_t{config.sets()} * config.ways),
+      waysPerSet_(config.ways),
+      lines_(size_t{config.sets()} * config.ways, kEmpty),
+      ways_(lines_.size()),
       random_(config.seed) {}
 
 void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
   const uint64_t line = lineOf(byteAddress);
   const size_t i = wayFor(line);
-  Way& way = ways_[i];
-  if (way.valid) ++stats_.evictions;
-  way = {true, line, fillCycle, ++clock_};
+  if (lines_[i] != kEmpty) ++stats_.evictions;
+  lines_[i] = line;
+  ways_[i] = {fillCycle, ++clock_};
   lastUsed_ = i;
 }
 
@@ -39,7 +41,8 @@ bool CacheArray::touch(uint64_t byteAddress) {
     if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
   } else {
     i = wayFor(line);
-    ways_[i] = {true, line, 0, ++clock_};
+    lines_[i] = line;
+    ways_[i] = {0, ++clock_};
   }
   lastUsed_ = i;
   return resident;
@@ -51,16 +54,18 @@ bool CacheArray::contains(uint64_t byteAddress) const {
 
 size_t CacheArray::wayFor(uint64_t line) {
   const size_t first = firstWayOf(line);
-  const size_t end = first + config_.ways;
+  const size_t end = first + waysPerSet_;
   size_t empty = kAbsent, oldest = first;
+  uint64_t oldestStamp = UINT64_MAX;
   for (size_t i = first; i < end; ++i) {
-    const Way& way = ways_[i];
-    if (!way.valid) {
-      if (empty == kAbsent) empty = i;
-    } else if (way.line == line) {
+    const uint64_t resident = lines_[i];
+    if (resident == line)
       throw std::logic_error("CacheArray::allocate: line of address " +
                              std::to_string(line << lineShift_) + " is already resident");
-    } else if (way.stamp < ways_[oldest].stamp) {
+    if (resident == kEmpty) {
+      if (empty == kAbsent) empty = i;
+    } else if (ways_[i].stamp < oldestStamp) {
+      oldestStamp = ways_[i].stamp;
       oldest = i;
     }
   }

@@ -48,7 +48,7 @@ class CacheArray {
     size_t i = lastUsed_;
     // The way used last holds the newest stamp of its set; found there, it keeps that rank
     // without a new stamp (stamps are compared within a set only).
-    if (!ways_[i].valid || ways_[i].line != line) {
+    if (lines_[i] != line) {
       i = find(line);
       if (i == kAbsent) {
         ++stats_.misses;
@@ -57,9 +57,9 @@ class CacheArray {
       if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
       lastUsed_ = i;
     }
-    const Way& way = ways_[i];
-    ++(way.fillCycle <= cycle ? stats_.hits : stats_.merged);
-    return {true, way.fillCycle};
+    const uint64_t fillCycle = ways_[i].fillCycle;
+    ++(fillCycle <= cycle ? stats_.hits : stats_.merged);
+    return {true, fillCycle};
   }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
   void allocate(uint64_t byteAddress, uint64_t fillCycle);
@@ -72,28 +72,30 @@ class CacheArray {
   const CacheConfig& config() const { return config_; }
   // Memory the tag store of `config` takes; it is allocated whole when the cache is made.
   static uint64_t tagBytes(const CacheConfig& config) {
-    return uint64_t{config.sizeBytes / config.lineBytes} * sizeof(Way);
+    return uint64_t{config.sizeBytes / config.lineBytes} * (sizeof(uint64_t) + sizeof(Way));
   }
   const CacheStats& stats() const { return stats_; }
 
  private:
+  // What a resident line's way holds beside its line number.
   struct Way {
-    bool valid = false;
-    uint64_t line = 0;  // byte address / line size: the whole line number serves as tag
     uint64_t fillCycle = 0;
     // Order of the last use (LRU) or of the allocation (FIFO); the smallest is the victim.
     uint64_t stamp = 0;
   };
 
   static constexpr size_t kAbsent = SIZE_MAX;
+  // The line number of an empty way: no byte address has it (lines are 4 bytes or more).
+  static constexpr uint64_t kEmpty = UINT64_MAX;
 
   uint64_t lineOf(uint64_t byteAddress) const { return byteAddress >> lineShift_; }
-  size_t firstWayOf(uint64_t line) const { return (line & setMask_) * config_.ways; }
-  // Index in ways_ of the way holding `line`, or kAbsent.
+  size_t firstWayOf(uint64_t line) const { return (line & setMask_) * waysPerSet_; }
+  // Index of the way holding `line`, or kAbsent. The line numbers are an array of their own, so
+  // a set's search is one comparison a way within one or two host cache lines.
   size_t find(uint64_t line) const {
     const size_t first = firstWayOf(line);
-    for (size_t i = first; i < first + config_.ways; ++i)
-      if (ways_[i].valid && ways_[i].line == line) return i;
+    for (size_t i = first; i < first + waysPerSet_; ++i)
+      if (lines_[i] == line) return i;
     return kAbsent;
   }
   // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
@@ -103,7 +105,9 @@ class CacheArray {
   CacheConfig config_;
   int lineShift_;
   uint64_t setMask_;
-  std::vector<Way> ways_;  // sets x ways, set-major
+  size_t waysPerSet_;
+  std::vector<uint64_t> lines_;  // per way, sets x ways, set-major: its line number or kEmpty
+  std::vector<Way> ways_;        // per way, as lines_
   uint64_t clock_ = 0;     // source of stamps
   size_t lastUsed_ = 0;    // the way accessed or allocated last
   std::mt19937_64 random_;

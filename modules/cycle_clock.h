@@ -34,6 +34,8 @@ class CycleClock {
     }
     return nowCycle_;
   }
+  // Simulated time in picoseconds (the time resolution): no conversion at all.
+  uint64_t nowPicoseconds() const { return time_->value(); }
   // The delay from now to the start of `cycle` (a later cycle). Throws std::overflow_error past
   // kMaxCycles rather than let the picosecond count wrap.
   sc_core::sc_time until(uint64_t cycle) const {

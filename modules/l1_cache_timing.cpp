@@ -14,8 +14,10 @@ const CacheConfig& validated(const CacheConfig& config) {
 
 }  // namespace
 
-L1CacheTiming::L1CacheTiming(const CacheConfig& config, NextLevel next)
-    : array_(validated(config)), next_(std::move(next)) {}
+L1CacheTiming::L1CacheTiming(const CacheConfig& config, NextLevel next, uint64_t unitsPerCycle)
+    : array_(validated(config)),
+      next_(std::move(next)),
+      hitLatency_(uint64_t{config.hitLatency} * unitsPerCycle) {}
 
 uint64_t L1CacheTiming::fill(uint32_t wordAddress, uint64_t readyCycle) {
   array_.allocate(byteAddress(wordAddress), readyCycle);

@@ -17,6 +17,9 @@
 //                       if (!l.hit) l1.fill(word, l2.read(l.lineAddress, l.cycle));
 //                     fill() returns the cycle the data is there. Each missing lookup() must
 //                     be followed by its fill() before the core's next lookup().
+// Times are cycles, or any finer unit of which a cycle has `unitsPerCycle` (all times given to one
+// cache in the same unit): the loosely-timed L1 counts the picoseconds of its annotated delays,
+// so that a hit converts nothing.
 
 #include <algorithm>
 #include <cstdint>
@@ -41,12 +44,13 @@ class L1CacheTiming {
   using NextLevel = std::function<uint64_t(uint64_t byteAddress, uint64_t cycle)>;
 
   // Validates `config` (std::invalid_argument). `next` is needed by read() only.
-  explicit L1CacheTiming(const CacheConfig& config, NextLevel next = nullptr);
+  explicit L1CacheTiming(const CacheConfig& config, NextLevel next = nullptr,
+                         uint64_t unitsPerCycle = 1);
 
   // Inline: a cached run's cores call it for nearly every state that reads memory.
   L1Lookup lookup(uint32_t wordAddress, uint64_t cycle) {
     const uint64_t address = byteAddress(wordAddress);
-    const uint64_t tagCheckDone = cycle + array_.config().hitLatency;
+    const uint64_t tagCheckDone = cycle + hitLatency_;
     const uint64_t lineAddress = address & ~uint64_t{array_.config().lineBytes - 1};
     const CacheLookup line = array_.access(address, cycle);
     if (line.present) return {true, std::max(tagCheckDone, line.fillCycle), lineAddress};
@@ -67,6 +71,7 @@ class L1CacheTiming {
  private:
   CacheArray array_;
   NextLevel next_;
+  uint64_t hitLatency_;  // in the caller's unit
 };
 
 }  // namespace rtu

@@ -11,28 +11,33 @@ LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, Sv
       next("next"),
       words_(words),
       time_(time),
-      timing_(config),
-      hitCycles_(config.hitLatency),
+      timing_(config, nullptr, time.periodPicoseconds()),
+      hitPicoseconds_(config.hitLatency * time.periodPicoseconds()),
       hitDelay_(time.cycles(config.hitLatency)),
       lineRead_(config.lineBytes) {
   socket.bind(*this);
 }
 
+// The tag store counts picoseconds since the start, the unit of the annotated delay, so that a
+// hit (the common case) converts nothing: it adds the hit latency to the delay.
 void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
   const uint32_t word = static_cast<uint32_t>(trans.get_address() / 4);
-  const uint64_t cycle = time_.cycleAt(delay);
-  const L1Lookup lookup = timing_.lookup(word, cycle);
-  if (lookup.hit && lookup.cycle == cycle + hitCycles_)
-    delay += hitDelay_;  // the common hit, without converting cycles to time
+  const uint64_t at = time_.nowPicoseconds() + delay.value();
+  const L1Lookup lookup = timing_.lookup(word, at);
+  if (!lookup.hit)
+    delay = fetch(word, lookup.lineAddress, delay + hitDelay_);
+  else if (lookup.cycle == at + hitPicoseconds_)
+    delay += hitDelay_;
   else
-    delay = time_.delayTo(lookup.hit ? lookup.cycle : fetch(word, lookup));
+    delay = time_.delayToPicoseconds(lookup.cycle);  // the line is still in flight
   serveWordRead(words_, trans);
 }
 
-uint64_t LtL1Cache::fetch(uint32_t word, const L1Lookup& miss) {
-  const uint64_t filled =
-      lineRead_(next, time_, miss.lineAddress, timing_.array().config().lineBytes, miss.cycle);
-  return timing_.fill(word, filled);
+sc_core::sc_time LtL1Cache::fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request) {
+  const sc_core::sc_time filled =
+      lineRead_(next, lineAddress, timing_.array().config().lineBytes, request);
+  timing_.fill(word, time_.nowPicoseconds() + filled.value());
+  return filled;
 }
 
 unsigned int LtL1Cache::transport_dbg(tlm::tlm_generic_payload& trans) {

@@ -3,7 +3,8 @@
 // annotates returns the word (from the read-only image: the cache holds tags, as cache_array.h
 // says) with the delay to the cycle the word is there. Timing: l1_cache_timing.h; a miss reads
 // the line from the L2 through `next`. One core reads it, in its own cycle order, so the L1 is
-// exact; only the shared L2 sees requests out of order.
+// exact; only the shared L2 sees requests out of order. Its tag store counts picoseconds since
+// the start (l1_cache_timing.h allows any unit), those of the delays it is given.
 // It is its socket's interface itself (lt_timing_target.h); its debug access reads the word.
 
 #include <tlm>
@@ -30,14 +31,14 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans) override;
 
  private:
-  // The line of a missing word from the L2, allocated; returns the cycle the word is there.
-  uint64_t fetch(uint32_t word, const L1Lookup& miss);
-
+  // The line of a missing word, requested from the L2 at the delay `request`, allocated; returns
+  // the delay to the cycle the word is there.
+  sc_core::sc_time fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request);
 
   SvoMemory words_;
   LtTime time_;
   L1CacheTiming timing_;
-  uint64_t hitCycles_;
+  uint64_t hitPicoseconds_;
   sc_core::sc_time hitDelay_;
   LineRead lineRead_;
 };

@@ -26,7 +26,9 @@ class LtTime {
   // reciprocal, rounded, gives the quotient exactly (below 2^53 ps) without a division per read.
   uint64_t cycleAt(const sc_core::sc_time& delay) const {
     if (delay.value() >= kExactPs) return clock_.now() + delay.value() / periodPs_;
-    return clock_.now() + static_cast<uint64_t>(static_cast<double>(delay.value()) * cyclesPerPs_ + 0.5);
+    // Through int64_t: x86-64 converts signed integers and doubles in one instruction each.
+    const double ps = static_cast<double>(static_cast<int64_t>(delay.value()));
+    return clock_.now() + static_cast<uint64_t>(static_cast<int64_t>(ps * cyclesPerPs_ + 0.5));
   }
   // The delay from simulated time to `cycle` (not before it). Scaled in line, exactly while the
   // picoseconds fit a double's 53 bits: the library's sc_time::from_value is a call per read.
@@ -42,6 +44,14 @@ class LtTime {
     return delay;
   }
   uint64_t now() const { return clock_.now(); }
+  // Picoseconds since the start: the time of `delay` as a target that counts in picoseconds sees
+  // it is now + delay.value(), with no conversion.
+  uint64_t nowPicoseconds() const { return clock_.nowPicoseconds(); }
+  // The delay from simulated time to `picoseconds` (a whole cycle, not before now).
+  sc_core::sc_time delayToPicoseconds(uint64_t picoseconds) const {
+    return cycles((picoseconds - clock_.nowPicoseconds()) / periodPs_);
+  }
+  uint64_t periodPicoseconds() const { return periodPs_; }
   // Whether simulated time has moved since `seen` was last set here (it moves only at the
   // initiator's quantum synchronisations): a target then forgets the bookings behind it.
   bool movedSince(uint64_t& seen) const {
@@ -71,15 +81,21 @@ class LineRead {
     payload_.set_data_ptr(buffer_.data());
   }
 
+  // Requested at `delay` after simulated time; returns the delay to the line's arrival.
   template <typename Socket>
-  uint64_t operator()(Socket& socket, const LtTime& time, uint64_t address, uint32_t bytes,
-                      uint64_t cycle) {
+  sc_core::sc_time operator()(Socket& socket, uint64_t address, uint32_t bytes,
+                              sc_core::sc_time delay) {
     payload_.set_address(address);
     payload_.set_data_length(bytes);
     payload_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    sc_core::sc_time delay = time.delayTo(cycle);
     socket->b_transport(payload_, delay);
-    return time.cycleAt(delay);
+    return delay;
+  }
+  // Requested in `cycle`; returns the cycle of the line's arrival.
+  template <typename Socket>
+  uint64_t operator()(Socket& socket, const LtTime& time, uint64_t address, uint32_t bytes,
+                      uint64_t cycle) {
+    return time.cycleAt((*this)(socket, address, bytes, time.delayTo(cycle)));
   }
 
  private:

@@ -40,6 +40,14 @@ CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
   return result;
 }
 
+inline uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& delay) {
+  read_.set_address(uint64_t{address} * 4);
+  read_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  memory->b_transport(read_, delay);
+  if (read_.is_response_error()) failRead();
+  return word_;
+}
+
 // The state's cycle is kept as a delay after simulated time: a cycle is an addition, and a read
 // returns the delay to the cycle its word is there. The cycles past one per state were blocked.
 uint32_t LtTraversalCore::stepThroughSocket(uint64_t initCycle) {
@@ -51,14 +59,9 @@ uint32_t LtTraversalCore::stepThroughSocket(uint64_t initCycle) {
   return static_cast<uint32_t>(time_.cycleAt(delay) - initCycle - core_.cost());
 }
 
-uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& delay) {
-  read_.set_address(uint64_t{address} * 4);
-  read_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  memory->b_transport(read_, delay);
-  if (read_.is_response_error())
-    throw std::runtime_error(std::string(name()) + ": memory read failed: " +
-                             read_.get_response_string());
-  return word_;
+void LtTraversalCore::failRead() const {
+  throw std::runtime_error(std::string(name()) + ": memory read failed: " +
+                           read_.get_response_string());
 }
 
 }  // namespace rtu

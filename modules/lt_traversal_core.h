@@ -36,6 +36,7 @@ class LtTraversalCore : public sc_core::sc_module {
   // The word at `address`, read at `delay` after simulated time; `delay` becomes the delay to
   // the cycle it is there.
   uint32_t readWord(uint32_t address, sc_core::sc_time& delay);
+  [[noreturn]] void failRead() const;  // out of the read's line: reports the failed read
 
   LtTime time_;
   sc_core::sc_time period_;
