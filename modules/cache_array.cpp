@@ -52,27 +52,25 @@ bool CacheArray::contains(uint64_t byteAddress) const {
   return find(lineOf(byteAddress)) != kAbsent;
 }
 
+// Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a new stamp,
+// so the way with the smallest stamp, the first of equals, is the first empty way if there is one
+// and else the LRU or FIFO victim: one pass, its minimum without a branch to mispredict.
 size_t CacheArray::wayFor(uint64_t line) {
   const size_t first = firstWayOf(line);
   const size_t end = first + waysPerSet_;
-  size_t empty = kAbsent, oldest = first;
-  uint64_t oldestStamp = UINT64_MAX;
+  size_t oldest = first;
+  bool resident = false;
   for (size_t i = first; i < end; ++i) {
-    const uint64_t resident = lines_[i];
-    if (resident == line)
-      throw std::logic_error("CacheArray::allocate: line of address " +
-                             std::to_string(line << lineShift_) + " is already resident");
-    if (resident == kEmpty) {
-      if (empty == kAbsent) empty = i;
-    } else if (ways_[i].stamp < oldestStamp) {
-      oldestStamp = ways_[i].stamp;
-      oldest = i;
-    }
+    resident |= lines_[i] == line;
+    oldest = ways_[i].stamp < ways_[oldest].stamp ? i : oldest;
   }
-  if (empty != kAbsent) return empty;
+  if (resident)
+    throw std::logic_error("CacheArray::allocate: line of address " +
+                           std::to_string(line << lineShift_) + " is already resident");
+  const bool empty = lines_[oldest] == kEmpty;
   // Modulo rather than std::uniform_int_distribution, whose output differs between standard
   // libraries: a seed then gives the same victims everywhere (the bias is below 2^-32).
-  if (config_.replacement == Replacement::Random) return first + random_() % config_.ways;
+  if (config_.replacement == Replacement::Random && !empty) return first + random_() % config_.ways;
   return oldest;
 }
 
