@@ -47,7 +47,7 @@ class Drains {
 
   // The buffer of `core` holds a result from cycle `from`.
   void add(int core, uint64_t from) {
-    byCycle_.push({firstSelect(from, core), core});
+    byCycle_.emplace(firstSelect(from, core), core);
     next_.reset();
   }
   bool empty() const { return byCycle_.empty() && competing_ == 0; }

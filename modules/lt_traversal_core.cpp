@@ -27,7 +27,8 @@ void LtTraversalCore::acquireDmi() {
                       static_cast<size_t>((dmi.get_end_address() + 1) / 4));
 }
 
-CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
+uint32_t LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle,
+                                   TraversalResult& result) {
   if (!dmiAsked_) acquireDmi();
   core_.start(job.t0, job.t1, job.a, job.root);
   uint32_t blocked = 0;
@@ -35,9 +36,9 @@ CoreResult LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle) {
     while (core_.busy()) core_.step([this](uint32_t address) { return direct_.read(address); });
   else
     blocked = stepThroughSocket(initCycle);
-  CoreResult result{job.ids, makeResult(job.idWord, core_), blocked};
+  result = makeResult(job.idWord, core_);
   core_.finish();
-  return result;
+  return blocked;
 }
 
 inline uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& delay) {

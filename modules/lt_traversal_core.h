@@ -26,8 +26,9 @@ class LtTraversalCore : public sc_core::sc_module {
   LtTraversalCore(sc_core::sc_module_name name, FixedFormat format, int stackFrames,
                   const LtTime& time);
 
-  // Runs `job` from INIT in `initCycle` to OUT; returns the result (its blocked cycles counted).
-  CoreResult traverse(const CoreJob& job, uint64_t initCycle);
+  // Runs `job` from INIT in `initCycle` to OUT into `result` (written in place: a returned struct
+  // was copied through a stall on its just-written fields); returns its blocked cycles.
+  uint32_t traverse(const CoreJob& job, uint64_t initCycle, TraversalResult& result);
 
  private:
   void acquireDmi();

@@ -71,10 +71,10 @@ uint64_t LtTop::traverse(size_t job, int core, uint64_t initCycle) {
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
   const CoreJob fixed = coreJobOf(PayloadIds::plain(job), current_, config_.jobManager);
-  const CoreResult result = cores_[static_cast<size_t>(core)]->traverse(fixed, initCycle);
-  results_.push_back(result.result);
-  blocked_.push_back(result.blockedCycles);
-  return result.result.cost + result.blockedCycles;
+  TraversalResult& result = results_.emplace_back();
+  const uint32_t blocked = cores_[static_cast<size_t>(core)]->traverse(fixed, initCycle, result);
+  blocked_.push_back(blocked);
+  return result.cost + blocked;
 }
 
 std::vector<CacheStats> LtTop::l1Statistics() const {

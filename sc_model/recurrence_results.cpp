@@ -40,23 +40,24 @@ void sortNearlySorted(std::vector<uint64_t>& values) {
 }
 
 // The most result buffers full at once, as the result manager counts them: a result counts from
-// the cycle it is buffered to the cycle after it drained. Drains come in host order, so their
-// ends are in order; the buffering cycles follow the dispatches, nearly in order.
-uint64_t maxBuffersFull(const RecurrenceRun& run) {
-  std::vector<uint64_t> starts(run.handoverCycles.size());
-  for (size_t j = 0; j < starts.size(); ++j) starts[j] = run.handoverCycles[j] + 1;
-  sortNearlySorted(starts);
+// the cycle after its handover to the cycle after it drained. Drains come in host order, so their
+// ends are in order; the handovers follow the dispatches, nearly in order. Sorts the handover
+// column in place (a frame's copy would be megabytes of fresh pages): nothing reads it after.
+uint64_t maxBuffersFull(RecurrenceRun& run) {
+  std::vector<uint64_t>& handovers = run.handoverCycles;
+  sortNearlySorted(handovers);
   uint64_t full = 0, most = 0;
   size_t ended = 0;
-  const auto end = [&run](size_t k) { return run.drainCycles[run.hostOrder[k]] + 2; };
-  for (uint64_t start : starts) {
-    for (; ended < run.hostOrder.size() && end(ended) <= start; ++ended) --full;
+  const auto end = [&run](size_t k) { return run.drainCycles[run.hostOrder[k]] + 1; };
+  for (uint64_t handover : handovers) {
+    for (; ended < run.hostOrder.size() && end(ended) <= handover; ++ended) --full;
     most = std::max(most, ++full);
   }
   return most;
 }
 
-RtuStatistics statisticsOf(const RecurrenceRun& run, const std::vector<TraversalResult>& results,
+// Sorts the run's handover column (maxBuffersFull).
+RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult>& results,
                            const std::vector<uint32_t>& blocked, const RtuConfig& config) {
   RtuStatistics stats;
   stats.rays = results.size();
