@@ -59,10 +59,14 @@ size_t CacheArray::wayFor(uint64_t line) {
   const size_t first = firstWayOf(line);
   const size_t end = first + waysPerSet_;
   size_t oldest = first;
+  uint64_t oldestStamp = UINT64_MAX;
   bool resident = false;
   for (size_t i = first; i < end; ++i) {
     resident |= lines_[i] == line;
-    oldest = ways_[i].stamp < ways_[oldest].stamp ? i : oldest;
+    const uint64_t stamp = ways_[i].stamp;
+    const bool older = stamp < oldestStamp;
+    oldestStamp = older ? stamp : oldestStamp;
+    oldest = older ? i : oldest;
   }
   if (resident)
     throw std::logic_error("CacheArray::allocate: line of address " +
