@@ -7,9 +7,9 @@
 
 namespace rtu {
 
-LtTraversalCore::LtTraversalCore(sc_core::sc_module_name name, FixedFormat format,
-                                 int stackFrames, const LtTime& time)
-    : sc_core::sc_module(name), memory("memory"), time_(time), period_(time.period()), core_(FixedArith{format}, stackFrames) {
+LtTraversalCore::LtTraversalCore(sc_core::sc_module_name name, TraversalCore<FixedArith>& core,
+                                 const LtTime& time)
+    : sc_core::sc_module(name), memory("memory"), time_(time), period_(time.period()), core_(core) {
   read_.set_read();
   read_.set_data_ptr(reinterpret_cast<unsigned char*>(&word_));
   read_.set_data_length(sizeof word_);
@@ -52,12 +52,13 @@ inline uint32_t LtTraversalCore::readWord(uint32_t address, sc_core::sc_time& de
 // The state's cycle is kept as a delay after simulated time: a cycle is an addition, and a read
 // returns the delay to the cycle its word is there. The cycles past one per state were blocked.
 uint32_t LtTraversalCore::stepThroughSocket(uint64_t initCycle) {
+  TraversalCore<FixedArith>& core = core_;  // in a register: the member is reloaded after a read
   sc_core::sc_time delay = time_.delayTo(initCycle);
-  while (core_.busy()) {
-    core_.step([this, &delay](uint32_t address) { return readWord(address, delay); });
+  while (core.busy()) {
+    core.step([this, &delay](uint32_t address) { return readWord(address, delay); });
     delay += period_;
   }
-  return static_cast<uint32_t>(time_.cycleAt(delay) - initCycle - core_.cost());
+  return static_cast<uint32_t>(time_.cycleAt(delay) - initCycle - core.cost());
 }
 
 void LtTraversalCore::failRead() const {

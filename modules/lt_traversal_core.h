@@ -8,6 +8,11 @@
 // Each word it reads is a b_transport on `memory`, the delay annotated to the state's cycle and
 // returned with the cycle the word is there; with DMI granted (the ideal ROM) it reads the image
 // directly and every word is there in its cycle. The caller (lt_top.h) keeps the quantum.
+//
+// The state machine is the caller's and may serve several cores: a job runs from start() to OUT
+// within one traverse() call, so no core's traversal state outlives its job. One state machine
+// for all the cores stays in the host's caches; one per core (5.8 KB each, its stack) did not,
+// and each dispatch to another core missed them.
 
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -23,7 +28,8 @@ class LtTraversalCore : public sc_core::sc_module {
  public:
   tlm_utils::simple_initiator_socket<LtTraversalCore> memory;
 
-  LtTraversalCore(sc_core::sc_module_name name, FixedFormat format, int stackFrames,
+  // `core` must outlive this and be idle between traverse() calls.
+  LtTraversalCore(sc_core::sc_module_name name, TraversalCore<FixedArith>& core,
                   const LtTime& time);
 
   // Runs `job` from INIT in `initCycle` to OUT into `result` (written in place: a returned struct
@@ -41,7 +47,7 @@ class LtTraversalCore : public sc_core::sc_module {
 
   LtTime time_;
   sc_core::sc_time period_;
-  TraversalCore<FixedArith> core_;
+  TraversalCore<FixedArith>& core_;
   tlm::tlm_generic_payload read_;
   uint32_t word_ = 0;  // the read's data
   SvoMemory direct_;   // the image through DMI, when granted

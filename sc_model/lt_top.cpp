@@ -14,13 +14,13 @@ LtTop::LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory me
       config_(config),
       records_(records),
       time_(CycleClock::atMegahertz(config.clockMhz)),
-      setup_(memory, config.jobManager) {
+      setup_(memory, config.jobManager),
+      stateMachine_(FixedArith{config.golden().format}, config.golden().stackFrames) {
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
                                                    static_cast<double>(config.ltQuantum));
-  const GoldenConfig golden = config.golden();
   for (int i = 0; i < config.cores; ++i)
     cores_.push_back(std::make_unique<LtTraversalCore>(("core_" + std::to_string(i)).c_str(),
-                                                       golden.format, golden.stackFrames, time_));
+                                                       stateMachine_, time_));
   if (config.memory.ideal) {
     rom_ = std::make_unique<LtRom>("rom", memory);
     for (auto& core : cores_) core->memory.bind(rom_->socket);

@@ -57,6 +57,8 @@ class LtTop : public sc_core::sc_module {
   LtTime time_;
   JobSetup setup_;
   tlm_utils::tlm_quantumkeeper quantum_;
+  // The cores' shared state machine: each runs a job to its end in one call (lt_traversal_core.h).
+  TraversalCore<FixedArith> stateMachine_;
   std::vector<std::unique_ptr<LtTraversalCore>> cores_;
   std::unique_ptr<LtRom> rom_;
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
