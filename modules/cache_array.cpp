@@ -26,8 +26,8 @@ void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
   const uint64_t line = lineOf(byteAddress);
   const size_t i = wayFor(line);
   Way& way = ways_[i];
-  if (way.valid) ++stats_.evictions;
-  way = {true, line, fillCycle, ++clock_};
+  if (way.valid()) ++stats_.evictions;
+  way = {line, fillCycle, ++clock_};
   lastUsed_ = i;
 }
 
@@ -39,7 +39,7 @@ bool CacheArray::touch(uint64_t byteAddress) {
     if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
   } else {
     i = wayFor(line);
-    ways_[i] = {true, line, 0, ++clock_};
+    ways_[i] = {line, 0, ++clock_};
   }
   lastUsed_ = i;
   return resident;
@@ -55,7 +55,7 @@ size_t CacheArray::wayFor(uint64_t line) {
   size_t empty = kAbsent, oldest = first;
   for (size_t i = first; i < end; ++i) {
     const Way& way = ways_[i];
-    if (!way.valid) {
+    if (!way.valid()) {
       if (empty == kAbsent) empty = i;
     } else if (way.line == line) {
       throw std::logic_error("CacheArray::allocate: line of address " +

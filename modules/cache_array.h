@@ -48,7 +48,7 @@ class CacheArray {
     size_t i = lastUsed_;
     // The way used last holds the newest stamp of its set; found there, it keeps that rank
     // without a new stamp (stamps are compared within a set only).
-    if (!ways_[i].valid || ways_[i].line != line) {
+    if (ways_[i].line != line) {
       i = find(line);
       if (i == kAbsent) {
         ++stats_.misses;
@@ -77,12 +77,17 @@ class CacheArray {
   const CacheStats& stats() const { return stats_; }
 
  private:
-  struct Way {
-    bool valid = false;
-    uint64_t line = 0;  // byte address / line size: the whole line number serves as tag
+  // No line has this number (byte addresses have 34 bits): an empty way's tag, so that a lookup
+  // compares tags only.
+  static constexpr uint64_t kNoLine = UINT64_MAX;
+
+  // 32 bytes (a power of two: a way's index is a shift).
+  struct alignas(32) Way {
+    uint64_t line = kNoLine;  // byte address / line size: the whole line number serves as tag
     uint64_t fillCycle = 0;
     // Order of the last use (LRU) or of the allocation (FIFO); the smallest is the victim.
     uint64_t stamp = 0;
+    bool valid() const { return line != kNoLine; }
   };
 
   static constexpr size_t kAbsent = SIZE_MAX;
@@ -93,7 +98,7 @@ class CacheArray {
   size_t find(uint64_t line) const {
     const size_t first = firstWayOf(line);
     for (size_t i = first; i < first + config_.ways; ++i)
-      if (ways_[i].valid && ways_[i].line == line) return i;
+      if (ways_[i].line == line) return i;
     return kAbsent;
   }
   // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
