@@ -86,14 +86,18 @@ void MemorySystem::heard(int) {
 }
 
 void MemorySystem::decide() {
-  if (calendar_.empty()) return;
-  const uint64_t cycle = cycleOf(calendar_.top());
-  if (!requestsKnownFor(cycle)) {
-    wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
-    return;
+  while (!calendar_.empty()) {
+    const uint64_t cycle = cycleOf(calendar_.top());
+    if (!requestsKnownFor(cycle)) {
+      wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
+      return;
+    }
+    serveCycle(cycle);
+    if (pump().othersQueued()) {
+      heard(0);  // the next cycle once the others have decided what the replies caused
+      return;
+    }
   }
-  serveCycle(cycle);
-  heard(0);  // the next cycle once the cores served have gone on
 }
 
 bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
