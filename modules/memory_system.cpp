@@ -107,11 +107,13 @@ bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
 // Round-robin: from the core after the one served last on (a core has one request at most).
 // `cores` come in increasing numbers.
 void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
-  if (cores.size() > 1)
-    std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
-                cores.end());
-  const int last = cores.back();
-  nextPriority_ = last + 1 == static_cast<int>(cores_.size()) ? 0 : last + 1;
+  std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
+              cores.end());
+  servedLast(cores.back());
+}
+
+void MemorySystem::servedLast(int core) {
+  nextPriority_ = core + 1 == static_cast<int>(cores_.size()) ? 0 : core + 1;
 }
 
 // The earliest cycle the scheduler can still dispatch a job in.
@@ -121,26 +123,39 @@ uint64_t MemorySystem::dispatchFloor() const {
 }
 
 void MemorySystem::serveCycle(uint64_t cycle) {
-  served_.clear();
-  while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle) {
-    served_.push_back(coreOf(calendar_.top()));  // in increasing core numbers
-    calendar_.pop();
-  }
   servedThrough_ = cycle;
-  inRoundRobinOrder(served_);
-  for (int core : served_) {
-    CorePort& port = cores_[static_cast<size_t>(core)];
-    const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
-    SharedReadListener& reader = *port.reader;
-    port.reader = nullptr;
-    // The core goes on at once, and either asks again (for a later cycle) or publishes a bound.
-    reader.sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, cycle)));
+  const int first = takeEarliest();
+  if (calendar_.empty() || cycleOf(calendar_.top()) != cycle) {
+    servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
+    serve(first, cycle);
+  } else {
+    served_.assign(1, first);
+    while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle)
+      served_.push_back(takeEarliest());  // in increasing core numbers
+    inRoundRobinOrder(served_);
+    for (int core : served_) serve(core, cycle);
   }
   if (trace_) {
     const L2Stats stats = l2_->stats();
     trace_->record(l2HitSignal_, cycle, stats.cache.hits + stats.cache.merged);
     trace_->record(l2MissSignal_, cycle, stats.cache.misses);
   }
+}
+
+// The core of the earliest request in the calendar, which it leaves.
+int MemorySystem::takeEarliest() {
+  const int core = coreOf(calendar_.top());
+  calendar_.pop();
+  return core;
+}
+
+void MemorySystem::serve(int core, uint64_t cycle) {
+  CorePort& port = cores_[static_cast<size_t>(core)];
+  const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
+  SharedReadListener& reader = *port.reader;
+  port.reader = nullptr;
+  // The core goes on at once, and either asks again (for a later cycle) or publishes a bound.
+  reader.sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, cycle)));
 }
 
 }  // namespace rtu

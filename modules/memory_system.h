@@ -90,7 +90,11 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   bool requestsKnownFor(uint64_t cycle) const;
   uint64_t dispatchFloor() const;
   void serveCycle(uint64_t cycle);
+  int takeEarliest();
+  void serve(int core, uint64_t cycle);
   void inRoundRobinOrder(std::vector<int>& cores);
+  // The next cycle's round-robin starts after `core`.
+  void servedLast(int core);
 
   const CycleClock& clock_;
   SvoMemory backing_;
