@@ -15,6 +15,7 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       backing_(backing),
       config_(config),
       cores_(static_cast<size_t>(cores)),
+      calendar_(static_cast<size_t>(cores), kNoBound),
       published_(static_cast<size_t>(cores), 2),  // ready from cycle 0, so EVAL in 2 at the earliest
       wake_(clock),
       trace_(trace) {
@@ -68,7 +69,7 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   port.pendingAddress = address;
   port.reader = &reader;
   published_.set(static_cast<size_t>(core), kNoBound);
-  calendar_.push(requestKey(cycle, core));
+  calendar_.set(static_cast<size_t>(core), requestKey(cycle, core));
   heard(0);
 }
 
@@ -82,12 +83,12 @@ void MemorySystem::coreOffering(int core, uint64_t outCycle) {
 // Decides after every other agent, so that each core's and the scheduler's bounds are settled;
 // only while a request waits.
 void MemorySystem::heard(int) {
-  if (!calendar_.empty()) pump().scheduleLast(*this);
+  if (requestsWait()) pump().scheduleLast(*this);
 }
 
 void MemorySystem::decide() {
-  while (!calendar_.empty()) {
-    const uint64_t cycle = cycleOf(calendar_.top());
+  while (requestsWait()) {
+    const uint64_t cycle = earliestRequestCycle();
     if (!requestsKnownFor(cycle)) {
       wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
       return;
@@ -125,12 +126,12 @@ uint64_t MemorySystem::dispatchFloor() const {
 void MemorySystem::serveCycle(uint64_t cycle) {
   servedThrough_ = cycle;
   const int first = takeEarliest();
-  if (calendar_.empty() || cycleOf(calendar_.top()) != cycle) {
+  if (!requestsWait() || earliestRequestCycle() != cycle) {
     servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
     serve(first, cycle);
   } else {
     served_.assign(1, first);
-    while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle)
+    while (requestsWait() && earliestRequestCycle() == cycle)
       served_.push_back(takeEarliest());  // in increasing core numbers
     inRoundRobinOrder(served_);
     for (int core : served_) serve(core, cycle);
@@ -144,8 +145,8 @@ void MemorySystem::serveCycle(uint64_t cycle) {
 
 // The core of the earliest request in the calendar, which it leaves.
 int MemorySystem::takeEarliest() {
-  const int core = coreOf(calendar_.top());
-  calendar_.pop();
+  const int core = coreOf(calendar_.lowest());
+  calendar_.set(static_cast<size_t>(core), kNoBound);
   return core;
 }
 

@@ -7,7 +7,8 @@
 // L1 lookups happen in the core's own (run-ahead) cycle, since only that core touches its L1.
 // Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
 // round-robin over the cores, starting after the core served last. Pending requests wait in a
-// calendar by cycle. The memory is an agent of the decision pump that decides last, when every
+// calendar by cycle: a tournament tree over the cores (a core has one request at most), so a
+// request and its service cost log2 N steps each. The memory is an agent of the decision pump that decides last, when every
 // other decision is made: it serves the earliest cycle's requests as soon as no core can still
 // make one for that cycle (the lowest cycle every core has published, below), which is usually
 // long before simulated time gets there, and tells their cores by a call. Only when a cycle's
@@ -23,7 +24,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <queue>
 #include <vector>
 
 #include <systemc>
@@ -78,7 +78,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
   // A request in the calendar: its cycle above the core's number, so that the calendar's order
-  // is by cycle, then core.
+  // is by cycle, then core; kNoBound for a core without one.
   uint64_t requestKey(uint64_t cycle, int core) const {
     return cycle << coreBits_ | static_cast<uint64_t>(core);
   }
@@ -88,6 +88,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   void end_of_elaboration() override;
   // Whether no core can still make a request for `cycle`.
   bool requestsKnownFor(uint64_t cycle) const;
+  bool requestsWait() const { return calendar_.lowest() != kNoBound; }
+  uint64_t earliestRequestCycle() const { return cycleOf(calendar_.lowest()); }
   uint64_t dispatchFloor() const;
   void serveCycle(uint64_t cycle);
   int takeEarliest();
@@ -102,7 +104,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;
   int coreBits_ = 0;  // bits of the largest core number
-  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> calendar_;
+  LowestOf calendar_;
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
