@@ -53,6 +53,7 @@ size_t CacheArray::wayFor(uint64_t line) {
   const size_t first = firstWayOf(line);
   const size_t end = first + config_.ways;
   size_t empty = kAbsent, oldest = first;
+  uint64_t oldestStamp = ways_[first].stamp;  // in a register, not loaded again for each way
   for (size_t i = first; i < end; ++i) {
     const Way& way = ways_[i];
     if (!way.valid()) {
@@ -60,8 +61,9 @@ size_t CacheArray::wayFor(uint64_t line) {
     } else if (way.line == line) {
       throw std::logic_error("CacheArray::allocate: line of address " +
                              std::to_string(line << lineShift_) + " is already resident");
-    } else if (way.stamp < ways_[oldest].stamp) {
+    } else if (way.stamp < oldestStamp) {
       oldest = i;
+      oldestStamp = way.stamp;
     }
   }
   if (empty != kAbsent) return empty;
