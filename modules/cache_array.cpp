@@ -49,6 +49,11 @@ bool CacheArray::contains(uint64_t byteAddress) const {
   return find(lineOf(byteAddress)) != kAbsent;
 }
 
+void CacheArray::failResident(uint64_t line) const {
+  throw std::logic_error("CacheArray::allocate: line of address " +
+                         std::to_string(line << lineShift_) + " is already resident");
+}
+
 size_t CacheArray::wayFor(uint64_t line) {
   const size_t first = firstWayOf(line);
   const size_t end = first + config_.ways;
@@ -59,8 +64,7 @@ size_t CacheArray::wayFor(uint64_t line) {
     if (!way.valid()) {
       if (empty == kAbsent) empty = i;
     } else if (way.line == line) {
-      throw std::logic_error("CacheArray::allocate: line of address " +
-                             std::to_string(line << lineShift_) + " is already resident");
+      failResident(line);
     } else if (way.stamp < oldestStamp) {
       oldest = i;
       oldestStamp = way.stamp;

@@ -104,6 +104,8 @@ class CacheArray {
   // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
   // resident (one pass over the set for both).
   size_t wayFor(uint64_t line);
+  // Out of line, so that wayFor() needs no stack frame for the message.
+  [[noreturn, gnu::noinline, gnu::cold]] void failResident(uint64_t line) const;
 
   CacheConfig config_;
   int lineShift_;
