@@ -61,16 +61,18 @@ void MemorySystem::tracePrivateLookup(int core, uint64_t cycle) {
 
 void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
                                  SharedReadListener& reader) {
-  if (cycle <= std::max(clock_.now(), servedThrough_))
-    throw std::logic_error("shared memory request of core " + std::to_string(core) +
-                           " for cycle " + std::to_string(cycle) +
-                           ", not after simulated time and the cycles served");
+  if (cycle <= std::max(clock_.now(), servedThrough_)) failBehind(core, cycle);
   CorePort& port = cores_[static_cast<size_t>(core)];
   port.pendingAddress = address;
   port.reader = &reader;
   published_.set(static_cast<size_t>(core), kNoBound);
   calendar_.set(static_cast<size_t>(core), requestKey(cycle, core));
   heard(0);
+}
+
+void MemorySystem::failBehind(int core, uint64_t cycle) const {
+  throw std::logic_error("shared memory request of core " + std::to_string(core) + " for cycle " +
+                         std::to_string(cycle) + ", not after simulated time and the cycles served");
 }
 
 // Handed over in outCycle at the earliest, then idle and dispatched from the cycle after: its

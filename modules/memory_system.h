@@ -86,6 +86,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   int coreOf(uint64_t key) const { return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1)); }
 
   void end_of_elaboration() override;
+  // Out of line, so that requestShared() needs no stack frame for the message.
+  [[noreturn, gnu::noinline, gnu::cold]] void failBehind(int core, uint64_t cycle) const;
   // Whether no core can still make a request for `cycle`.
   bool requestsKnownFor(uint64_t cycle) const;
   bool requestsWait() const { return calendar_.lowest() != kNoBound; }
