@@ -22,15 +22,6 @@ CacheArray::CacheArray(const CacheConfig& config)
       ways_(size_t{config.sets()} * config.ways),
       random_(config.seed) {}
 
-void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
-  const uint64_t line = lineOf(byteAddress);
-  const size_t i = wayFor(line);
-  Way& way = ways_[i];
-  if (way.valid()) ++stats_.evictions;
-  way = {line, fillCycle, ++clock_};
-  lastUsed_ = i;
-}
-
 bool CacheArray::touch(uint64_t byteAddress) {
   const uint64_t line = lineOf(byteAddress);
   size_t i = find(line);

@@ -62,7 +62,15 @@ class CacheArray {
     return {true, way.fillCycle};
   }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
-  void allocate(uint64_t byteAddress, uint64_t fillCycle);
+  // Inline, as access(): each L1 miss comes here.
+  void allocate(uint64_t byteAddress, uint64_t fillCycle) {
+    const uint64_t line = lineOf(byteAddress);
+    const size_t i = wayFor(line);
+    Way& way = ways_[i];
+    if (way.valid()) ++stats_.evictions;
+    way = {line, fillCycle, ++clock_};
+    lastUsed_ = i;
+  }
   // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
   // and most recently used, its data there from cycle 0; returns whether it already was.
   bool touch(uint64_t byteAddress);
