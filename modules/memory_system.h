@@ -8,12 +8,12 @@
 // Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
 // round-robin over the cores, starting after the core served last. Pending requests wait in a
 // calendar by cycle: a tournament tree over the cores (a core has one request at most), so a
-// request and its service cost log2 N steps each. The memory is an agent of the decision pump that decides last, when every
-// other decision is made: it serves the earliest cycle's requests as soon as no core can still
-// make one for that cycle (the lowest cycle every core has published, below), which is usually
-// long before simulated time gets there, and tells their cores by a call. Only when a cycle's
-// requests are not all known yet does it wait for simulated time to reach that cycle, by when
-// they are (docs/cycle-semantics.md, "Run-ahead").
+// request and its service cost log2 N steps each. The memory is an agent of the decision pump
+// that decides last, when every other decision is made: it serves the earliest cycle's requests
+// as soon as no core can still make one for that cycle (the lowest cycle every core has
+// published, below), which is usually long before simulated time gets there, and tells their
+// cores by a call. Only when a cycle's requests are not all known yet does it wait for simulated
+// time to reach that cycle, by when they are (docs/cycle-semantics.md, "Run-ahead").
 //
 // A core that waits for its word asks again only after the word is there, so after its request's
 // cycle. A core that offered a result from O is handed over in K >= O and dispatched in D > K
