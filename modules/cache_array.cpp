@@ -24,15 +24,6 @@ CacheArray::CacheArray(const CacheConfig& config)
       ways_(lines_.size()),
       random_(config.seed) {}
 
-void CacheArray::allocate(uint64_t byteAddress, uint64_t fillCycle) {
-  const uint64_t line = lineOf(byteAddress);
-  const size_t i = wayFor(line);
-  if (lines_[i] != kEmpty) ++stats_.evictions;
-  lines_[i] = line;
-  ways_[i] = {fillCycle, ++clock_};
-  lastUsed_ = i;
-}
-
 bool CacheArray::touch(uint64_t byteAddress) {
   const uint64_t line = lineOf(byteAddress);
   size_t i = find(line);
@@ -52,6 +43,11 @@ bool CacheArray::contains(uint64_t byteAddress) const {
   return find(lineOf(byteAddress)) != kAbsent;
 }
 
+void CacheArray::failResident(uint64_t line) const {
+  throw std::logic_error("CacheArray::allocate: line of address " +
+                         std::to_string(line << lineShift_) + " is already resident");
+}
+
 // Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a new stamp,
 // so the way with the smallest stamp, the first of equals, is the first empty way if there is one
 // and else the LRU or FIFO victim: one pass, its minimum without a branch to mispredict.
@@ -68,9 +64,7 @@ size_t CacheArray::wayFor(uint64_t line) {
     oldestStamp = older ? stamp : oldestStamp;
     oldest = older ? i : oldest;
   }
-  if (resident)
-    throw std::logic_error("CacheArray::allocate: line of address " +
-                           std::to_string(line << lineShift_) + " is already resident");
+  if (resident) failResident(line);
   const bool empty = lines_[oldest] == kEmpty;
   // Modulo rather than std::uniform_int_distribution, whose output differs between standard
   // libraries: a seed then gives the same victims everywhere (the bias is below 2^-32).

@@ -62,7 +62,15 @@ class CacheArray {
     return {true, fillCycle};
   }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
-  void allocate(uint64_t byteAddress, uint64_t fillCycle);
+  // Inline, as access(): each L1 miss comes here.
+  void allocate(uint64_t byteAddress, uint64_t fillCycle) {
+    const uint64_t line = lineOf(byteAddress);
+    const size_t i = wayFor(line);
+    if (lines_[i] != kEmpty) ++stats_.evictions;
+    lines_[i] = line;
+    ways_[i] = {fillCycle, ++clock_};
+    lastUsed_ = i;
+  }
   // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
   // and most recently used, its data there from cycle 0; returns whether it already was.
   bool touch(uint64_t byteAddress);
@@ -101,6 +109,8 @@ class CacheArray {
   // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
   // resident (one pass over the set for both).
   size_t wayFor(uint64_t line);
+  // Out of line, so that wayFor() needs no stack frame for the message.
+  [[noreturn, gnu::noinline, gnu::cold]] void failResident(uint64_t line) const;
 
   CacheConfig config_;
   int lineShift_;

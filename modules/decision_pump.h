@@ -83,6 +83,9 @@ class DecisionPump {
     schedule(agent);
     run();
   }
+  // Whether an agent waits to decide other than those deciding last: while none does, an agent
+  // deciding last may go on deciding, as the others' bounds hold.
+  bool othersQueued() const { return !queue_.empty(); }
 
  private:
   static void decideOne(Agent& agent) {

@@ -19,11 +19,6 @@ L1CacheTiming::L1CacheTiming(const CacheConfig& config, NextLevel next, uint64_t
       next_(std::move(next)),
       hitLatency_(uint64_t{config.hitLatency} * unitsPerCycle) {}
 
-uint64_t L1CacheTiming::fill(uint32_t wordAddress, uint64_t readyCycle) {
-  array_.allocate(byteAddress(wordAddress), readyCycle);
-  return readyCycle;
-}
-
 uint64_t L1CacheTiming::read(uint32_t wordAddress, uint64_t cycle) {
   const L1Lookup result = lookup(wordAddress, cycle);
   if (result.hit) return result.cycle;

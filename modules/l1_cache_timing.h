@@ -57,7 +57,11 @@ class L1CacheTiming {
     return {false, tagCheckDone, lineAddress};
   }
   // Allocates the missing line of `wordAddress`, its data arriving at readyCycle; returns it.
-  uint64_t fill(uint32_t wordAddress, uint64_t readyCycle);
+  // Inline: a cached run's shared requests each end here.
+  uint64_t fill(uint32_t wordAddress, uint64_t readyCycle) {
+    array_.allocate(byteAddress(wordAddress), readyCycle);
+    return readyCycle;
+  }
   // The cycle the word read at `cycle` is there.
   uint64_t read(uint32_t wordAddress, uint64_t cycle);
 

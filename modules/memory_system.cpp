@@ -15,6 +15,7 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       backing_(backing),
       config_(config),
       cores_(static_cast<size_t>(cores)),
+      calendar_(static_cast<size_t>(cores), kNoBound),
       published_(static_cast<size_t>(cores), 2),  // ready from cycle 0, so EVAL in 2 at the earliest
       wake_(clock),
       trace_(trace) {
@@ -60,16 +61,19 @@ void MemorySystem::tracePrivateLookup(int core, uint64_t cycle) {
 
 void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
                                  SharedReadListener& reader) {
-  if (cycle <= std::max(clock_.now(), servedThrough_))
-    throw std::logic_error("shared memory request of core " + std::to_string(core) +
-                           " for cycle " + std::to_string(cycle) +
-                           ", not after simulated time and the cycles served");
+  if (cycle <= std::max(clock_.now(), servedThrough_)) failBehind(core, cycle);
   CorePort& port = cores_[static_cast<size_t>(core)];
   port.pendingAddress = address;
   port.reader = &reader;
   published_.set(static_cast<size_t>(core), kNoBound);
-  calendar_.push(requestKey(cycle, core));
+  calendar_.set(static_cast<size_t>(core), requestKey(cycle, core));
   heard(0);
+}
+
+void MemorySystem::failBehind(int core, uint64_t cycle) const {
+  throw std::logic_error("shared memory request of core " + std::to_string(core) +
+                         " for cycle " + std::to_string(cycle) +
+                         ", not after simulated time and the cycles served");
 }
 
 // Handed over in outCycle at the earliest, then idle and dispatched from the cycle after: its
@@ -82,18 +86,22 @@ void MemorySystem::coreOffering(int core, uint64_t outCycle) {
 // Decides after every other agent, so that each core's and the scheduler's bounds are settled;
 // only while a request waits.
 void MemorySystem::heard(int) {
-  if (!calendar_.empty()) pump().scheduleLast(*this);
+  if (requestsWait()) pump().scheduleLast(*this);
 }
 
 void MemorySystem::decide() {
-  if (calendar_.empty()) return;
-  const uint64_t cycle = cycleOf(calendar_.top());
-  if (!requestsKnownFor(cycle)) {
-    wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
-    return;
+  while (requestsWait()) {
+    const uint64_t cycle = earliestRequestCycle();
+    if (!requestsKnownFor(cycle)) {
+      wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
+      return;
+    }
+    serveCycle(cycle);
+    if (pump().othersQueued()) {
+      heard(0);  // the next cycle once the others have decided what the replies caused
+      return;
+    }
   }
-  serveCycle(cycle);
-  heard(0);  // the next cycle once the cores served have gone on
 }
 
 bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
@@ -103,11 +111,13 @@ bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
 // Round-robin: from the core after the one served last on (a core has one request at most).
 // `cores` come in increasing numbers.
 void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
-  if (cores.size() > 1)
-    std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
-                cores.end());
-  const int last = cores.back();
-  nextPriority_ = last + 1 == static_cast<int>(cores_.size()) ? 0 : last + 1;
+  std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
+              cores.end());
+  servedLast(cores.back());
+}
+
+void MemorySystem::servedLast(int core) {
+  nextPriority_ = core + 1 == static_cast<int>(cores_.size()) ? 0 : core + 1;
 }
 
 // The earliest cycle the scheduler can still dispatch a job in.
@@ -117,26 +127,39 @@ uint64_t MemorySystem::dispatchFloor() const {
 }
 
 void MemorySystem::serveCycle(uint64_t cycle) {
-  served_.clear();
-  while (!calendar_.empty() && cycleOf(calendar_.top()) == cycle) {
-    served_.push_back(coreOf(calendar_.top()));  // in increasing core numbers
-    calendar_.pop();
-  }
   servedThrough_ = cycle;
-  inRoundRobinOrder(served_);
-  for (int core : served_) {
-    CorePort& port = cores_[static_cast<size_t>(core)];
-    const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
-    SharedReadListener& reader = *port.reader;
-    port.reader = nullptr;
-    // The core goes on at once, and either asks again (for a later cycle) or publishes a bound.
-    reader.sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, cycle)));
+  const int first = takeEarliest();
+  if (!requestsWait() || earliestRequestCycle() != cycle) {
+    servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
+    serve(first, cycle);
+  } else {
+    served_.assign(1, first);
+    while (requestsWait() && earliestRequestCycle() == cycle)
+      served_.push_back(takeEarliest());  // in increasing core numbers
+    inRoundRobinOrder(served_);
+    for (int core : served_) serve(core, cycle);
   }
   if (trace_) {
     const L2Stats stats = l2_->stats();
     trace_->record(l2HitSignal_, cycle, stats.cache.hits + stats.cache.merged);
     trace_->record(l2MissSignal_, cycle, stats.cache.misses);
   }
+}
+
+// The core of the earliest request in the calendar, which it leaves.
+int MemorySystem::takeEarliest() {
+  const int core = coreOf(calendar_.lowest());
+  calendar_.set(static_cast<size_t>(core), kNoBound);
+  return core;
+}
+
+void MemorySystem::serve(int core, uint64_t cycle) {
+  CorePort& port = cores_[static_cast<size_t>(core)];
+  const uint64_t line = L1CacheTiming::byteAddress(port.pendingAddress);
+  SharedReadListener& reader = *port.reader;
+  port.reader = nullptr;
+  // The core goes on at once, and either asks again (for a later cycle) or publishes a bound.
+  reader.sharedReplied(port.l1->fill(port.pendingAddress, l2_->read(line, cycle)));
 }
 
 }  // namespace rtu

@@ -7,12 +7,13 @@
 // L1 lookups happen in the core's own (run-ahead) cycle, since only that core touches its L1.
 // Misses reach the shared L2 in the cycle they are made; requests of one cycle are arbitrated
 // round-robin over the cores, starting after the core served last. Pending requests wait in a
-// calendar by cycle. The memory is an agent of the decision pump that decides last, when every
-// other decision is made: it serves the earliest cycle's requests as soon as no core can still
-// make one for that cycle (the lowest cycle every core has published, below), which is usually
-// long before simulated time gets there, and tells their cores by a call. Only when a cycle's
-// requests are not all known yet does it wait for simulated time to reach that cycle, by when
-// they are (docs/cycle-semantics.md, "Run-ahead").
+// calendar by cycle: a tournament tree over the cores (a core has one request at most), so a
+// request and its service cost log2 N steps each. The memory is an agent of the decision pump
+// that decides last, when every other decision is made: it serves the earliest cycle's requests
+// as soon as no core can still make one for that cycle (the lowest cycle every core has
+// published, below), which is usually long before simulated time gets there, and tells their
+// cores by a call. Only when a cycle's requests are not all known yet does it wait for simulated
+// time to reach that cycle, by when they are (docs/cycle-semantics.md, "Run-ahead").
 //
 // A core that waits for its word asks again only after the word is there, so after its request's
 // cycle. A core that offered a result from O is handed over in K >= O and dispatched in D > K
@@ -23,7 +24,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <queue>
 #include <vector>
 
 #include <systemc>
@@ -60,7 +60,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
   void coreOffering(int core, uint64_t outCycle) override;
-  // Serves the earliest cycle's requests if all are known, then decides again.
+  // Serves the earliest cycle's requests while all are known, cycle after cycle until a reply
+  // gives another agent something to decide.
   void decide() override;
   void heard(int port) override;
 
@@ -77,7 +78,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
   // A request in the calendar: its cycle above the core's number, so that the calendar's order
-  // is by cycle, then core.
+  // is by cycle, then core; kNoBound for a core without one.
   uint64_t requestKey(uint64_t cycle, int core) const {
     return cycle << coreBits_ | static_cast<uint64_t>(core);
   }
@@ -85,11 +86,19 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   int coreOf(uint64_t key) const { return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1)); }
 
   void end_of_elaboration() override;
+  // Out of line, so that requestShared() needs no stack frame for the message.
+  [[noreturn, gnu::noinline, gnu::cold]] void failBehind(int core, uint64_t cycle) const;
   // Whether no core can still make a request for `cycle`.
   bool requestsKnownFor(uint64_t cycle) const;
+  bool requestsWait() const { return calendar_.lowest() != kNoBound; }
+  uint64_t earliestRequestCycle() const { return cycleOf(calendar_.lowest()); }
   uint64_t dispatchFloor() const;
   void serveCycle(uint64_t cycle);
+  int takeEarliest();
+  void serve(int core, uint64_t cycle);
   void inRoundRobinOrder(std::vector<int>& cores);
+  // The next cycle's round-robin starts after `core`.
+  void servedLast(int core);
 
   const CycleClock& clock_;
   SvoMemory backing_;
@@ -97,7 +106,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;
   int coreBits_ = 0;  // bits of the largest core number
-  std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> calendar_;
+  LowestOf calendar_;
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)

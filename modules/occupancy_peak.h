@@ -18,15 +18,11 @@ class OccupancyPeak {
   void leave(uint64_t cycle) { at(cycle).exits += 1; }
   // Applies every change before `before`.
   void settle(uint64_t before) {
-    while (length_ > 0 && base_ < before) {
-      Changes& first = slot(base_);
-      current_ -= first.exits;
-      current_ += first.entries;
-      peak_ = std::max(peak_, current_);
-      first = Changes{};
-      --length_;
-      ++base_;
-    }
+    const uint64_t settled = before > base_ ? std::min(length_, before - base_) : 0;
+    const uint64_t end = base_ + settled;
+    for (uint64_t cycle = base_; cycle < end; ++cycle) apply(slot(cycle));
+    base_ = end;
+    length_ -= settled;
     if (length_ == 0) base_ = std::max(base_, before);
   }
   // The peak with every change applied.
@@ -48,6 +44,14 @@ class OccupancyPeak {
     return slot(cycle);
   }
   Changes& slot(uint64_t cycle) { return calendar_[cycle & (calendar_.size() - 1)]; }
+  // Most cycles change nothing (a run settles every cycle it simulates): those only pass.
+  void apply(Changes& changes) {
+    if (changes.entries == 0 && changes.exits == 0) return;
+    current_ -= changes.exits;
+    current_ += changes.entries;
+    peak_ = std::max(peak_, current_);
+    changes = Changes{};
+  }
   void grow(uint64_t needed) {
     size_t size = std::max<size_t>(calendar_.size(), 64);
     while (size < needed) size *= 2;

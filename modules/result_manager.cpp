@@ -11,6 +11,10 @@ ResultManager::ResultManager(sc_core::sc_module_name name, const CycleClock& clo
 
 void ResultManager::end_of_elaboration() {
   spawnReaction("drain", [this] { pump().runWith(*this); }, {&wake_.event()});
+  // The cores' offer bounds matter to drains in cycle order alone (a host that is not always
+  // ready).
+  if (out_->alwaysReady())
+    for (TransferChannel<CoreResult>* core : cores_) core->offerBoundsUnheard();
 }
 
 void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
@@ -23,9 +27,6 @@ void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
 }
 
 void ResultManager::heard(int port) {
-  // A core that offers nothing only bounded its next offer, which matters to drains in cycle
-  // order alone (a host that is not always ready): a cached run's cores do so at every miss.
-  if (port >= 0 && out_->alwaysReady() && !cores_[static_cast<size_t>(port)]->offering()) return;
   heard_.push_back(port);
   Agent::heard(port);
 }

@@ -19,6 +19,7 @@ void Scheduler::decide() {
   CoreQuery query{*this};
   const int core = choice_.choose(query, cycle);
   if (core == SchedulerChoice::kWait) {
+    awaited_ = query.awaited;
     searchFrom(cycle);  // the cycles before are settled: no dispatch there
     return;
   }
@@ -28,6 +29,7 @@ void Scheduler::decide() {
   if (wait > statistics_.maxWaitWithReadyCore) {
     const Idle readyAtPending = someCoreIdleIn(pending);
     if (readyAtPending == Idle::Unknown) {
+      awaited_ = kAnyCore;
       searchFrom(cycle);
       return;
     }
@@ -37,6 +39,11 @@ void Scheduler::decide() {
   countWait(wait);
   statistics_.maxWait = std::max(statistics_.maxWait, wait);
   dispatch(core, cycle);
+}
+
+void Scheduler::heard(int port) {
+  if (port != kJobsPort && awaited_ != kAnyCore && port != awaited_) return;
+  Agent::heard(port);
 }
 
 void Scheduler::countWait(uint64_t wait) {
@@ -60,9 +67,17 @@ Idle Scheduler::idleIn(int core, uint64_t cycle) const {
   return Idle::Unknown;
 }
 
-uint64_t Scheduler::CoreQuery::from(int core) const {
+Idle Scheduler::CoreQuery::in(int core, uint64_t cycle) {
+  const Idle idle = scheduler.idleIn(core, cycle);
+  if (idle == Idle::Unknown) await(core);
+  return idle;
+}
+
+uint64_t Scheduler::CoreQuery::from(int core) {
   const uint64_t ready = scheduler.cores_[static_cast<size_t>(core)]->readyCycle();
-  return ready == kNeverCycle ? kIdleUnknown : ready;
+  if (ready != kNeverCycle) return ready;
+  await(core);
+  return kIdleUnknown;
 }
 
 Idle Scheduler::someCoreIdleIn(uint64_t cycle) const {
@@ -79,6 +94,7 @@ void Scheduler::dispatch(int core, uint64_t cycle) {
   const CoreJob& job = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
+  awaited_ = kAnyCore;  // the next job's search has not started
   searchFrom(cycle + 1);
   choice_.dispatched(core);
 }

@@ -29,10 +29,14 @@ struct SchedulerStatistics {
 
 class Scheduler final : public Agent, public DispatchFloor {
  public:
+  // The port of the job manager's channel; core i's channel is port i.
+  static constexpr int kJobsPort = -1;
+
   Scheduler(DecisionPump& pump, SchedulerPolicy policy, int cores);
 
   void bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<CoreJob>*> cores);
   void decide() override;
+  void heard(int port) override;
 
   // Jobs are dispatched in increasing cycles, and none before the cycles searched.
   uint64_t noDispatchBefore() const override { return searchedFrom_; }
@@ -41,11 +45,17 @@ class Scheduler final : public Agent, public DispatchFloor {
   SchedulerStatistics statistics() const;
 
  private:
-  // What the cores' channels have declared, as the policy's query (scheduler_choice.h).
+  static constexpr int kAnyCore = -1;
+
+  // What the cores' channels have declared, as the policy's query (scheduler_choice.h). It
+  // notes the cores it could not answer for: the search waits for them.
   struct CoreQuery {
     const Scheduler& scheduler;
-    Idle in(int core, uint64_t cycle) const { return scheduler.idleIn(core, cycle); }
-    uint64_t from(int core) const;
+    int awaited = kNoCore;  // the core answered Unknown for, or kAnyCore for several
+    Idle in(int core, uint64_t cycle);
+    uint64_t from(int core);
+    void await(int core) { awaited = awaited == kNoCore || awaited == core ? core : kAnyCore; }
+    static constexpr int kNoCore = -2;
   };
 
   Idle idleIn(int core, uint64_t cycle) const;
@@ -59,6 +69,9 @@ class Scheduler final : public Agent, public DispatchFloor {
   TransferChannel<CoreJob>* in_ = nullptr;
   std::vector<TransferChannel<CoreJob>*> cores_;
   uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
+  // The one core whose declaration the pending job's search waits for, or kAnyCore: the others'
+  // news cannot move the search (a cached run's cores bound their readiness at every miss).
+  int awaited_ = kAnyCore;
   Agent* floorWatcher_ = nullptr;
   SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
   std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job

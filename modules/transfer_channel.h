@@ -109,7 +109,7 @@ class TransferChannel {
   // No offer before `cycle` (a core still traversing): lets the consumer decide earlier cycles.
   void noOfferBefore(uint64_t cycle) {
     offerBound_ = cycle;
-    consumer_->heard(consumerPort_);
+    if (offerBoundsHeard_) consumer_->heard(consumerPort_);
   }
 
   // ---- consumer side
@@ -132,6 +132,9 @@ class TransferChannel {
     record(readySignal_, cycle, 1);
     producer_->heard(producerPort_);
   }
+  // The consumer decides nothing from the producer's offer bounds: noOfferBefore() records them
+  // without waking it (a cached run's cores bound their next offer at every miss).
+  void offerBoundsUnheard() { offerBoundsHeard_ = false; }
   // Ready when `pattern` says (replaces readyFrom).
   void readyWhen(ReadyPattern pattern) { pattern_ = std::move(pattern); }
   // Ready in every cycle of the run (the host without pacing).
@@ -193,6 +196,7 @@ class TransferChannel {
   uint64_t readyCycle_ = kNeverCycle;
   ReadyPattern pattern_;
   bool always_ = false;
+  bool offerBoundsHeard_ = true;
   uint64_t lastTransfer_ = kNeverCycle;
   bool takenUnseen_ = false;
   std::vector<std::pair<uint64_t, Payload>> delivered_;  // not yet collected by the consumer

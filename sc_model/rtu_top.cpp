@@ -49,7 +49,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   } else {
     hostJobs_->connect(*source_, 0, *jobManager_, 0);
   }
-  pendingJobs_->connect(*jobManager_, 0, *scheduler_, 0);
+  pendingJobs_->connect(*jobManager_, 0, *scheduler_, Scheduler::kJobsPort);
 
   std::vector<Channel<CoreJob>*> jobsToCores;
   std::vector<Channel<CoreResult>*> resultsFromCores;
