@@ -58,7 +58,7 @@ class CacheArray {
       lastUsed_ = i;
     }
     const uint64_t fillCycle = ways_[i].fillCycle;
-    ++(fillCycle <= cycle ? stats_.hits : stats_.merged);
+    if (fillCycle > cycle) ++stats_.merged;  // hits are what is left: stats() counts them
     return {true, fillCycle};
   }
   // Installs the line of `byteAddress` after access() missed it; its data arrives at fillCycle.
@@ -82,7 +82,11 @@ class CacheArray {
   static uint64_t tagBytes(const CacheConfig& config) {
     return uint64_t{config.sizeBytes / config.lineBytes} * (sizeof(uint64_t) + sizeof(Way));
   }
-  const CacheStats& stats() const { return stats_; }
+  CacheStats stats() const {
+    CacheStats stats = stats_;
+    stats.hits = stats.accesses - stats.misses - stats.merged;
+    return stats;
+  }
 
  private:
   // What a resident line's way holds beside its line number.
@@ -120,7 +124,7 @@ class CacheArray {
   std::vector<Way> ways_;        // per way, as lines_
   uint64_t clock_ = 0;     // source of stamps
   size_t lastUsed_ = 0;    // the way accessed or allocated last
-  CacheStats stats_;
+  CacheStats stats_;        // all but the hits, which stats() derives
   std::mt19937_64 random_;  // 2.5 KB, last: the fields every access reads share host cache lines
 };
 

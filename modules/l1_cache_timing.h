@@ -65,7 +65,7 @@ class L1CacheTiming {
   // The cycle the word read at `cycle` is there.
   uint64_t read(uint32_t wordAddress, uint64_t cycle);
 
-  const CacheStats& stats() const { return array_.stats(); }
+  CacheStats stats() const { return array_.stats(); }
   const CacheArray& array() const { return array_; }
   // Starts from these lines (functional warming); `lines` has this cache's configuration.
   void startFrom(const CacheArray& lines) { array_ = lines; }

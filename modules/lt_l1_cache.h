@@ -25,7 +25,7 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
             const LtTime& time);
 
-  const CacheStats& statistics() const { return timing_.stats(); }
+  CacheStats statistics() const { return timing_.stats(); }
 
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) override;
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans) override;
