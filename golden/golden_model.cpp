@@ -9,21 +9,6 @@ std::array<int64_t, 3> convertToFixed(const std::array<uint32_t, 3>& floatBits,
           floatToFixed(floatBits[2], format, conversion)};
 }
 
-TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& core) {
-  TraversalResult result;
-  result.idWord = idWord;
-  result.cost = core.cost();
-  result.stackOverflow = core.stackOverflow();
-  result.tOverflow = core.tOverflow();
-  result.belowResolution = core.belowResolution();
-  result.hit = core.hit();
-  if (core.hit()) {
-    result.tHit = core.tHit();
-    result.normal[core.normalAxis()] = core.arith().one();
-  }
-  return result;
-}
-
 GoldenModel::GoldenModel(SvoMemory memory, GoldenConfig config)
     : memory_(memory), config_(config), core_(FixedArith{config.format}, config.stackFrames) {
   config_.format.validate();

@@ -42,7 +42,29 @@ class GoldenModel {
 std::array<int64_t, 3> convertToFixed(const std::array<uint32_t, 3>& floatBits,
                                       const FixedFormat& format, FloatConversion conversion);
 
-// The fixed-point result of a finished core, as the RTL's result_t holds it.
-TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& core);
+// The fixed-point result of a finished core, as the RTL's result_t holds it, written over
+// `result` field by field: a caller that keeps results in a column writes them there directly.
+// (Copying a returned temporary stalled the loosely-timed core: the host cannot forward the
+// fields just stored one by one to the wide loads of the copy.)
+inline void writeResult(uint32_t idWord, const TraversalCore<FixedArith>& core,
+                        TraversalResult& result) {
+  result = TraversalResult{};
+  result.idWord = idWord;
+  result.cost = core.cost();
+  result.stackOverflow = core.stackOverflow();
+  result.tOverflow = core.tOverflow();
+  result.belowResolution = core.belowResolution();
+  result.hit = core.hit();
+  if (core.hit()) {
+    result.tHit = core.tHit();
+    result.normal[core.normalAxis()] = core.arith().one();
+  }
+}
+
+inline TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& core) {
+  TraversalResult result;
+  writeResult(idWord, core, result);
+  return result;
+}
 
 }  // namespace rtu

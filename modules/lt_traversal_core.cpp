@@ -36,7 +36,7 @@ uint32_t LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle,
     while (core_.busy()) core_.step([this](uint32_t address) { return direct_.read(address); });
   else
     blocked = stepThroughSocket(initCycle);
-  result = makeResult(job.idWord, core_);
+  writeResult(job.idWord, core_, result);
   core_.finish();
   return blocked;
 }
