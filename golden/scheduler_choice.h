@@ -45,6 +45,20 @@ class SchedulerChoice {
   // The job went to `core`: round-robin's turn moves on.
   void dispatched(int core) { nextInLine_ = (core + 1) % cores_; }
 
+  // The longest a job can wait for its dispatch while some core was idle in its pending cycle.
+  // An idle core stays idle until a job is dispatched to it, and the pending job is the next one
+  // dispatched: cfa selects every core within N cycles, fa takes an idle core at once, rr may
+  // wait for its turn's core however long. (A timed shell asks whether a core was idle only for
+  // waits up to this: knowing it may mean waiting for every core to declare.)
+  uint64_t longestWaitWithIdleCore() const {
+    switch (policy_) {
+      case SchedulerPolicy::CyclicFirstAvailable: return static_cast<uint64_t>(cores_) - 1;
+      case SchedulerPolicy::FirstAvailable: return 0;
+      case SchedulerPolicy::RoundRobin: break;
+    }
+    return std::numeric_limits<uint64_t>::max();
+  }
+
  private:
   template <typename Query>
   int cyclicFirstAvailable(Query& query, uint64_t& cycle) const {

@@ -31,9 +31,10 @@ bool CacheArray::touch(uint64_t byteAddress) {
   if (resident) {
     if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
   } else {
-    i = wayFor(line);
+    i = victimFor(line);
     lines_[i] = line;
     ways_[i] = {0, ++clock_};
+    missedLine_ = kEmpty;
   }
   lastUsed_ = i;
   return resident;
@@ -48,28 +49,8 @@ void CacheArray::failResident(uint64_t line) const {
                          std::to_string(line << lineShift_) + " is already resident");
 }
 
-// Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a new stamp,
-// so the way with the smallest stamp, the first of equals, is the first empty way if there is one
-// and else the LRU or FIFO victim: one pass, its minimum without a branch to mispredict.
-size_t CacheArray::wayFor(uint64_t line) {
-  const size_t first = firstWayOf(line);
-  const size_t end = first + waysPerSet_;
-  size_t oldest = first;
-  uint64_t oldestStamp = UINT64_MAX;
-  bool resident = false;
-  for (size_t i = first; i < end; ++i) {
-    resident |= lines_[i] == line;
-    const uint64_t stamp = ways_[i].stamp;
-    const bool older = stamp < oldestStamp;
-    oldestStamp = older ? stamp : oldestStamp;
-    oldest = older ? i : oldest;
-  }
-  if (resident) failResident(line);
-  const bool empty = lines_[oldest] == kEmpty;
-  // Modulo rather than std::uniform_int_distribution, whose output differs between standard
-  // libraries: a seed then gives the same victims everywhere (the bias is below 2^-32).
-  if (config_.replacement == Replacement::Random && !empty) return first + random_() % config_.ways;
-  return oldest;
-}
+// Modulo rather than std::uniform_int_distribution, whose output differs between standard
+// libraries: a seed then gives the same victims everywhere (the bias is below 2^-32).
+size_t CacheArray::randomWay(size_t first) { return first + random_() % config_.ways; }
 
 }  // namespace rtu

@@ -51,15 +51,10 @@ uint64_t L2CacheTiming::mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) co
   return std::min(fillCycle, tagCheckDone + uncontendedMiss_);
 }
 
-uint64_t L2CacheTiming::acceptRequest(uint64_t requestCycle) {
-  if (order_ == RequestOrder::Cycle && requestCycle < lastRequestCycle_)
-    throw std::logic_error("L2 requests must come in cycle order: cycle " +
-                           std::to_string(requestCycle) + " after cycle " +
-                           std::to_string(lastRequestCycle_));
-  lastRequestCycle_ = std::max(lastRequestCycle_, requestCycle);
-  const uint64_t accept = port_.book(requestCycle, 1);
-  portQueueCycles_ += accept - requestCycle;
-  return accept;
+void L2CacheTiming::failOutOfOrder(uint64_t requestCycle) const {
+  throw std::logic_error("L2 requests must come in cycle order: cycle " +
+                         std::to_string(requestCycle) + " after cycle " +
+                         std::to_string(lastRequestCycle_));
 }
 
 // Returns the cycle the line is filled; it holds an MSHR until then.

@@ -28,6 +28,7 @@
 // The DRAM may instead be another component's (the loosely-timed model's DRAM target): a
 // DramRead given to the constructor then transfers the lines.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <queue>
@@ -68,7 +69,17 @@ class L2CacheTiming {
   void startFrom(const CacheArray& lines) { array_ = lines; }
 
  private:
-  uint64_t acceptRequest(uint64_t requestCycle);
+  // Inline: every request comes here.
+  uint64_t acceptRequest(uint64_t requestCycle) {
+    if (order_ == RequestOrder::Cycle && requestCycle < lastRequestCycle_)
+      failOutOfOrder(requestCycle);
+    lastRequestCycle_ = std::max(lastRequestCycle_, requestCycle);
+    const uint64_t accept = port_.book(requestCycle, 1);
+    portQueueCycles_ += accept - requestCycle;
+    return accept;
+  }
+  // Out of line, so that acceptRequest() needs no stack frame for the message.
+  [[noreturn, gnu::noinline, gnu::cold]] void failOutOfOrder(uint64_t requestCycle) const;
   uint64_t mergedFill(uint64_t fillCycle, uint64_t tagCheckDone) const;
   uint64_t fetchLine(uint64_t tagCheckDone);
   uint64_t claimMshr(uint64_t cycle);

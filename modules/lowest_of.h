@@ -27,6 +27,7 @@ class LowestOf {
     }
   }
   uint64_t lowest() const { return values_[1]; }
+  uint64_t value(size_t index) const { return values_[leaves_ + index]; }
 
  private:
   static size_t firstPowerOfTwo(size_t count) {

@@ -65,7 +65,9 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
   CorePort& port = cores_[static_cast<size_t>(core)];
   port.pendingAddress = address;
   port.reader = &reader;
-  published_.set(static_cast<size_t>(core), kNoBound);
+  // A core publishes no bound while it runs: its first request after its offer drops it.
+  if (published_.value(static_cast<size_t>(core)) != kNoBound)
+    published_.set(static_cast<size_t>(core), kNoBound);
   calendar_.set(static_cast<size_t>(core), requestKey(cycle, core));
   heard(0);
 }
@@ -108,14 +110,6 @@ bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
   return cycle <= clock_.now() || cycle < std::max(published_.lowest(), dispatchFloor() + 2);
 }
 
-// Round-robin: from the core after the one served last on (a core has one request at most).
-// `cores` come in increasing numbers.
-void MemorySystem::inRoundRobinOrder(std::vector<int>& cores) {
-  std::rotate(cores.begin(), std::lower_bound(cores.begin(), cores.end(), nextPriority_),
-              cores.end());
-  servedLast(cores.back());
-}
-
 void MemorySystem::servedLast(int core) {
   nextPriority_ = core + 1 == static_cast<int>(cores_.size()) ? 0 : core + 1;
 }
@@ -129,21 +123,34 @@ uint64_t MemorySystem::dispatchFloor() const {
 void MemorySystem::serveCycle(uint64_t cycle) {
   servedThrough_ = cycle;
   const int first = takeEarliest();
-  if (!requestsWait() || earliestRequestCycle() != cycle) {
+  if (requestsWait() && earliestRequestCycle() == cycle) {
+    serveArbitrated(first, cycle);
+  } else {
     servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
     serve(first, cycle);
-  } else {
-    served_.assign(1, first);
-    while (requestsWait() && earliestRequestCycle() == cycle)
-      served_.push_back(takeEarliest());  // in increasing core numbers
-    inRoundRobinOrder(served_);
-    for (int core : served_) serve(core, cycle);
   }
-  if (trace_) {
-    const L2Stats stats = l2_->stats();
-    trace_->record(l2HitSignal_, cycle, stats.cache.hits + stats.cache.merged);
-    trace_->record(l2MissSignal_, cycle, stats.cache.misses);
-  }
+  if (trace_) traceShared(cycle);
+}
+
+// Several requests of one cycle: `first` and those left in the calendar for it. Round-robin:
+// from the core after the one served last on (a core has one request at most).
+void MemorySystem::serveArbitrated(int first, uint64_t cycle) {
+  served_.clear();
+  served_.push_back(first);
+  while (requestsWait() && earliestRequestCycle() == cycle)
+    served_.push_back(takeEarliest());  // in increasing core numbers
+  const size_t count = served_.size();
+  size_t start = 0;  // the first at or after the core whose turn it is
+  while (start < count && served_[start] < nextPriority_) ++start;
+  servedLast(served_[(start + count - 1) % count]);
+  for (size_t i = start; i < count; ++i) serve(served_[i], cycle);
+  for (size_t i = 0; i < start; ++i) serve(served_[i], cycle);
+}
+
+void MemorySystem::traceShared(uint64_t cycle) {
+  const L2Stats stats = l2_->stats();
+  trace_->record(l2HitSignal_, cycle, stats.cache.hits + stats.cache.merged);
+  trace_->record(l2MissSignal_, cycle, stats.cache.misses);
 }
 
 // The core of the earliest request in the calendar, which it leaves.

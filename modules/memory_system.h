@@ -94,9 +94,12 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   uint64_t earliestRequestCycle() const { return cycleOf(calendar_.lowest()); }
   uint64_t dispatchFloor() const;
   void serveCycle(uint64_t cycle);
+  // Out of line, as most cycles have a single request and no trace: serveCycle() then needs no
+  // stack frame for the list of cores or the statistics.
+  [[gnu::noinline]] void serveArbitrated(int first, uint64_t cycle);
+  [[gnu::noinline]] void traceShared(uint64_t cycle);
   int takeEarliest();
   void serve(int core, uint64_t cycle);
-  void inRoundRobinOrder(std::vector<int>& cores);
   // The next cycle's round-robin starts after `core`.
   void servedLast(int core);
 

@@ -4,12 +4,8 @@
 
 namespace rtu {
 
-uint64_t ResourceBooking::book(uint64_t from, uint64_t cycles) {
+uint64_t ResourceBooking::bookAnyOrder(uint64_t from, uint64_t cycles) {
   const uint64_t start = firstFree(from, cycles);
-  if (order_ == RequestOrder::Cycle) {
-    free_ = start + cycles;
-    return start;
-  }
   if (start + cycles - base_ > ringCycles()) grow(start + cycles - base_);
   for (uint64_t cycle = start; cycle < start + cycles; ++cycle)
     word(cycle) |= uint64_t{1} << (cycle % 64);

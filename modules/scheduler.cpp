@@ -25,8 +25,9 @@ void Scheduler::decide() {
   }
   const uint64_t wait = cycle - pending;
   // Whether a core was ready at `pending` matters only to a wait that would raise the eq. 6.7
-  // maximum; asking every core for every job would make the cost follow the core count.
-  if (wait > statistics_.maxWaitWithReadyCore) {
+  // maximum and that the policy allows with a core idle; asking every core for every job would
+  // make the cost follow the core count, and wake the scheduler at every core's news.
+  if (wait > statistics_.maxWaitWithReadyCore && wait <= choice_.longestWaitWithIdleCore()) {
     const Idle readyAtPending = someCoreIdleIn(pending);
     if (readyAtPending == Idle::Unknown) {
       awaited_ = kAnyCore;
