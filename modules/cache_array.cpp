@@ -22,21 +22,24 @@ CacheArray::CacheArray(const CacheConfig& config)
       waysPerSet_(config.ways),
       lines_(size_t{config.sets()} * config.ways, kEmpty),
       ways_(lines_.size()),
+      mostRecent_(config.sets(), 0),
       random_(config.seed) {}
 
 bool CacheArray::touch(uint64_t byteAddress) {
   const uint64_t line = lineOf(byteAddress);
-  size_t i = find(line);
+  const size_t set = line & setMask_;
+  const size_t first = set * waysPerSet_;
+  size_t i = find(line, first);
   const bool resident = i != kAbsent;
   if (resident) {
     if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
   } else {
-    i = victimFor(line);
+    i = victimFor(first);
     lines_[i] = line;
     ways_[i] = {0, ++clock_};
     missedLine_ = kEmpty;
   }
-  lastUsed_ = i;
+  mostRecent_[set] = static_cast<uint32_t>(i - first);
   return resident;
 }
 

@@ -45,18 +45,20 @@ class CacheArray {
   CacheLookup access(uint64_t byteAddress, uint64_t cycle) {
     ++stats_.accesses;
     const uint64_t line = lineOf(byteAddress);
-    size_t i = lastUsed_;
-    // The way used last holds the newest stamp of its set; found there, it keeps that rank
-    // without a new stamp (stamps are compared within a set only).
+    const size_t set = line & setMask_;
+    const size_t first = set * waysPerSet_;
+    size_t i = first + mostRecent_[set];
+    // The set's most recently used way holds its newest stamp; found there, the line keeps that
+    // rank without a new stamp (stamps are compared within a set only).
     if (lines_[i] != line) {
-      i = find(line);
+      i = find(line, first);
       if (i == kAbsent) {
         ++stats_.misses;
         missedLine_ = line;
         return {};
       }
       if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
-      lastUsed_ = i;
+      mostRecent_[set] = static_cast<uint32_t>(i - first);
     }
     const uint64_t fillCycle = ways_[i].fillCycle;
     if (fillCycle > cycle) ++stats_.merged;  // hits are what is left: stats() counts them
@@ -66,13 +68,16 @@ class CacheArray {
   // Inline, as access(): each L1 miss comes here.
   void allocate(uint64_t byteAddress, uint64_t fillCycle) {
     const uint64_t line = lineOf(byteAddress);
+    const size_t set = line & setMask_;
+    const size_t first = set * waysPerSet_;
     // Right after access() missed it (nothing allocated since) the line is known to be absent.
-    const size_t i = line == missedLine_ ? victimFor(line) : wayFor(line);
+    if (line != missedLine_ && find(line, first) != kAbsent) failResident(line);
     missedLine_ = kEmpty;
+    const size_t i = victimFor(first);
     if (lines_[i] != kEmpty) ++stats_.evictions;
     lines_[i] = line;
     ways_[i] = {fillCycle, ++clock_};
-    lastUsed_ = i;
+    mostRecent_[set] = static_cast<uint32_t>(i - first);
   }
   // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
   // and most recently used, its data there from cycle 0; returns whether it already was.
@@ -83,7 +88,8 @@ class CacheArray {
   const CacheConfig& config() const { return config_; }
   // Memory the tag store of `config` takes; it is allocated whole when the cache is made.
   static uint64_t tagBytes(const CacheConfig& config) {
-    return uint64_t{config.sizeBytes / config.lineBytes} * (sizeof(uint64_t) + sizeof(Way));
+    return uint64_t{config.sizeBytes / config.lineBytes} * (sizeof(uint64_t) + sizeof(Way)) +
+           uint64_t{config.sets()} * sizeof(uint32_t);
   }
   CacheStats stats() const {
     CacheStats stats = stats_;
@@ -107,24 +113,19 @@ class CacheArray {
   size_t firstWayOf(uint64_t line) const { return (line & setMask_) * waysPerSet_; }
   // Index of the way holding `line`, or kAbsent. The line numbers are an array of their own, so
   // a set's search is one comparison a way within one or two host cache lines.
-  size_t find(uint64_t line) const {
-    const size_t first = firstWayOf(line);
+  size_t find(uint64_t line) const { return find(line, firstWayOf(line)); }
+  size_t find(uint64_t line, size_t first) const {
     for (size_t i = first; i < first + waysPerSet_; ++i)
       if (lines_[i] == line) return i;
     return kAbsent;
   }
-  // The way a missing line goes to: an empty one first, else by policy. Throws if `line` is
-  // resident.
-  size_t wayFor(uint64_t line) {
-    if (find(line) != kAbsent) failResident(line);
-    return victimFor(line);
-  }
-  // Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a new
-  // stamp, so the way with the smallest stamp, the first of equals, is the first empty way if
+
+  // The way a missing line goes to in the set from way `first` on: an empty one first, else by
+  // policy. Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a
+  // new stamp, so the way with the smallest stamp, the first of equals, is the first empty way if
   // there is one and else the LRU or FIFO victim: one pass, its minimum without a branch to
-  // mispredict. `line` must be absent.
-  size_t victimFor(uint64_t line) {
-    const size_t first = firstWayOf(line);
+  // mispredict.
+  size_t victimFor(size_t first) {
     size_t oldest = first;
     uint64_t oldestStamp = UINT64_MAX;
     for (size_t i = first; i < first + waysPerSet_; ++i) {
@@ -138,7 +139,7 @@ class CacheArray {
     return oldest;
   }
   size_t randomWay(size_t first);
-  // Out of line, so that wayFor() needs no stack frame for the message.
+  // Out of line, so that allocate() needs no stack frame for the message.
   [[noreturn, gnu::noinline, gnu::cold]] void failResident(uint64_t line) const;
 
   CacheConfig config_;
@@ -147,8 +148,8 @@ class CacheArray {
   size_t waysPerSet_;
   std::vector<uint64_t> lines_;  // per way, sets x ways, set-major: its line number or kEmpty
   std::vector<Way> ways_;        // per way, as lines_
+  std::vector<uint32_t> mostRecent_;  // per set, its most recently used way
   uint64_t clock_ = 0;     // source of stamps
-  size_t lastUsed_ = 0;    // the way accessed or allocated last
   uint64_t missedLine_ = kEmpty;  // the line access() missed last, until an allocation
   CacheStats stats_;        // all but the hits, which stats() derives
   std::mt19937_64 random_;  // 2.5 KB, last: the fields every access reads share host cache lines
