@@ -36,3 +36,30 @@ TEST_CASE("occupancy peak keeps changes far ahead and settles in cycle order", "
   for (int i = 0; i < 3; ++i) peak.enter(5000);  // far beyond everything settled
   CHECK(peak.peak() == 140);
 }
+
+TEST_CASE("occupancy peak settles only the cycles with changes, across words of marks",
+          "[occupancy]") {
+  OccupancyPeak peak;
+  peak.enter(63);   // the last slot of the first word of marks
+  peak.leave(64);   // the first of the next: one inside from 63 to 63
+  peak.enter(64);   // inside from 64 to 129
+  peak.leave(130);
+  peak.enter(129);  // two inside in cycle 129 only
+  peak.settle(60);
+  peak.settle(64);  // applies cycle 63 alone
+  peak.settle(65);
+  CHECK(peak.peak() == 2);
+  peak.settle(129);  // not yet cycle 129
+  peak.enter(129);   // three in cycle 129 now
+  peak.settle(100000);
+  CHECK(peak.peak() == 3);
+  // Far ahead of everything settled, after a long stretch of cycles without changes: two are
+  // inside from 130 on, a third from 200000 to 200000.
+  peak.enter(200000);
+  peak.leave(200001);
+  peak.settle(200001);
+  CHECK(peak.peak() == 3);
+  peak.enter(200001);  // two more in the cycle the third leaves: four inside
+  peak.enter(200001);
+  CHECK(peak.peak() == 4);
+}
