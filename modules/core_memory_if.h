@@ -18,14 +18,26 @@
 
 namespace rtu {
 
-// The scheduler as the memory sees it.
+// The scheduler as the memory sees it: the earliest cycle it can still dispatch a job in. A
+// value the scheduler raises rather than a virtual call, as the memory reads it for every cycle
+// it serves.
 class DispatchFloor {
  public:
-  virtual ~DispatchFloor() = default;
   // No job is dispatched before this cycle any more; it only rises.
-  virtual uint64_t noDispatchBefore() const = 0;
+  uint64_t noDispatchBefore() const { return floor_; }
   // `watcher` hears (Agent::heard) when noDispatchBefore() rises.
-  virtual void watchDispatchFloor(Agent& watcher) = 0;
+  void watchDispatchFloor(Agent& watcher) { watcher_ = &watcher; }
+
+ protected:
+  void raiseDispatchFloor(uint64_t cycle) {
+    if (cycle == floor_) return;
+    floor_ = cycle;
+    if (watcher_) watcher_->heard(0);
+  }
+
+ private:
+  uint64_t floor_ = 0;
+  Agent* watcher_ = nullptr;
 };
 
 class SharedReadListener {

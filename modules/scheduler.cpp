@@ -15,12 +15,12 @@ void Scheduler::bind(TransferChannel<CoreJob>& in, std::vector<TransferChannel<C
 void Scheduler::decide() {
   if (!in_->offering()) return;
   const uint64_t pending = in_->offerCycle();
-  uint64_t cycle = std::max(pending, searchedFrom_);
+  uint64_t cycle = std::max(pending, noDispatchBefore());
   CoreQuery query{*this};
   const int core = choice_.choose(query, cycle);
   if (core == SchedulerChoice::kWait) {
     awaited_ = query.awaited;
-    searchFrom(cycle);  // the cycles before are settled: no dispatch there
+    raiseDispatchFloor(cycle);  // the cycles before are settled: no dispatch there
     return;
   }
   const uint64_t wait = cycle - pending;
@@ -31,7 +31,7 @@ void Scheduler::decide() {
     const Idle readyAtPending = someCoreIdleIn(pending);
     if (readyAtPending == Idle::Unknown) {
       awaited_ = kAnyCore;
-      searchFrom(cycle);
+      raiseDispatchFloor(cycle);
       return;
     }
     if (readyAtPending == Idle::Yes) statistics_.maxWaitWithReadyCore = wait;
@@ -96,14 +96,8 @@ void Scheduler::dispatch(int core, uint64_t cycle) {
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
   awaited_ = kAnyCore;  // the next job's search has not started
-  searchFrom(cycle + 1);
+  raiseDispatchFloor(cycle + 1);  // jobs are dispatched in increasing cycles
   choice_.dispatched(core);
-}
-
-void Scheduler::searchFrom(uint64_t cycle) {
-  if (cycle == searchedFrom_) return;
-  searchedFrom_ = cycle;
-  if (floorWatcher_) floorWatcher_->heard(0);
 }
 
 }  // namespace rtu

@@ -38,10 +38,6 @@ class Scheduler final : public Agent, public DispatchFloor {
   void decide() override;
   void heard(int port) override;
 
-  // Jobs are dispatched in increasing cycles, and none before the cycles searched.
-  uint64_t noDispatchBefore() const override { return searchedFrom_; }
-  void watchDispatchFloor(Agent& watcher) override { floorWatcher_ = &watcher; }
-
   SchedulerStatistics statistics() const;
 
  private:
@@ -63,16 +59,13 @@ class Scheduler final : public Agent, public DispatchFloor {
   Idle someCoreIdleIn(uint64_t cycle) const;
   void dispatch(int core, uint64_t cycle);
   void countWait(uint64_t wait);
-  void searchFrom(uint64_t cycle);
 
   SchedulerChoice choice_;
   TransferChannel<CoreJob>* in_ = nullptr;
   std::vector<TransferChannel<CoreJob>*> cores_;
-  uint64_t searchedFrom_ = 0;  // cycles before it hold no dispatch for the pending job
   // The one core whose declaration the pending job's search waits for, or kAnyCore: the others'
   // news cannot move the search (a cached run's cores bound their readiness at every miss).
   int awaited_ = kAnyCore;
-  Agent* floorWatcher_ = nullptr;
   SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
   std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job
 };

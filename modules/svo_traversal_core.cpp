@@ -59,8 +59,9 @@ void SvoTraversalCore::sharedReplied(uint64_t dataCycle) {
 }
 
 void SvoTraversalCore::start(uint64_t dispatch, const CoreJob& job) {
-  job_ = job;
-  core_.start(job_.t0, job_.t1, job_.a, job_.root);
+  ids_ = job.ids;
+  idWord_ = job.idWord;
+  core_.start(job.t0, job.t1, job.a, job.root);
   localCycle_ = dispatch + 1;
   blocked_ = 0;
   ++statistics_.jobs;
@@ -127,7 +128,7 @@ void SvoTraversalCore::waitForWord(uint64_t dataCycle) {
 void SvoTraversalCore::offerResult() {
   outCycle_ = localCycle_;
   traceState(outCycle_, static_cast<uint64_t>(CoreState::Out));
-  CoreResult result{job_.ids, makeResult(job_.idWord, core_), static_cast<uint32_t>(blocked_)};
+  CoreResult result{ids_, makeResult(idWord_, core_), static_cast<uint32_t>(blocked_)};
   statistics_.busyCycles += core_.cost();
   statistics_.blockedCycles += blocked_;
   if (core_.stackOverflow()) ++statistics_.stackOverflows;

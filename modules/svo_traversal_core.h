@@ -94,7 +94,8 @@ class SvoTraversalCore final : public sc_core::sc_module, public Agent, private 
   TransferChannel<CoreJob>* in_ = nullptr;
   TransferChannel<CoreResult>* out_ = nullptr;
   Phase phase_ = Phase::Idle;
-  CoreJob job_;
+  PayloadIds ids_;  // of the current job, for its result
+  uint32_t idWord_ = 0;
   uint64_t localCycle_ = 0;  // the cycle the core's current state executes in
   uint64_t outCycle_ = 0;
   uint64_t blocked_ = 0;     // blocked cycles of the current job
