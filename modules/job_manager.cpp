@@ -28,8 +28,8 @@ void JobManager::decide() {
   if (out_->collectTaken()) takeDispatch();
   if (!pipeline_.empty() && !frontOffered_) {
     InFlight& front = pipeline_.front();
-    front.job.pendingSince = front.outputCycle;
-    out_->offer(front.job, front.outputCycle);
+    front.job.pendingSince = outputOf(front);
+    out_->offer(front.job, outputOf(front));
     frontOffered_ = true;
     retraceReady();
   }
@@ -39,12 +39,12 @@ void JobManager::decide() {
 // The scheduler took the job at the output in D: its stall [A, D) holds every job behind it.
 void JobManager::takeDispatch() {
   const uint64_t dispatch = out_->lastTransfer();
-  const uint64_t stall = dispatch - pipeline_.front().outputCycle;
+  const uint64_t stall = dispatch - outputOf(pipeline_.front());
   statistics_.stallCycles += stall;
-  if (stall > 0) stalls_.push_back({pipeline_.front().outputCycle, dispatch});
+  if (stall > 0) stalls_.push_back({outputOf(pipeline_.front()), dispatch});
   pipeline_.pop_front();
   lastDispatch_ = dispatch;
-  for (InFlight& job : pipeline_) job.outputCycle += stall;
+  stallShift_ += stall;  // every job behind it
   frontOffered_ = false;
   retraceReady();
 }
@@ -64,7 +64,7 @@ uint64_t JobManager::acceptanceCycle(uint64_t offered) const {
   for (const Window& fetch : fetches_) cycle = std::max(cycle, fetch.to);
   for (const Window& stall : stalls_)
     if (stall.from <= cycle && cycle < stall.to) cycle = stall.to;
-  if (frontOffered_ && pipeline_.front().outputCycle <= cycle) return kNeverCycle;
+  if (frontOffered_ && outputOf(pipeline_.front()) <= cycle) return kNeverCycle;
   return cycle;
 }
 
@@ -81,9 +81,9 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
     if (stall.from > cycle) outputCycle += stall.to - stall.from;
   // Behind the job ahead, which may have left already: its dispatch can be decided before this
   // acceptance (after a header fetch that outlasted a stall, the next ray is accepted late).
-  if (!pipeline_.empty()) outputCycle = std::max(outputCycle, pipeline_.back().outputCycle + 1);
+  if (!pipeline_.empty()) outputCycle = std::max(outputCycle, outputOf(pipeline_.back()) + 1);
   if (lastDispatch_) outputCycle = std::max(outputCycle, *lastDispatch_ + 1);
-  pipeline_.push_back(InFlight{coreJobOf(host.ids, set.job, config_), outputCycle});
+  pipeline_.push_back(InFlight{coreJobOf(host.ids, set.job, config_), outputCycle - stallShift_});
   traceReadyAt(cycle + 1);
   if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);
   // The new job may be the one at the output now.
@@ -107,7 +107,7 @@ bool JobManager::readyIn(uint64_t cycle) const {
     if (fetch.from <= cycle && cycle < fetch.to) return false;
   for (const Window& stall : stalls_)
     if (stall.from <= cycle && cycle < stall.to) return false;
-  return !(frontOffered_ && pipeline_.front().outputCycle <= cycle);
+  return !(frontOffered_ && outputOf(pipeline_.front()) <= cycle);
 }
 
 void JobManager::traceReadyAt(uint64_t cycle) {
@@ -131,7 +131,7 @@ void JobManager::retraceReady() {
     readyPoints_.push_back(stall.from);
     readyPoints_.push_back(stall.to);
   }
-  if (frontOffered_) readyPoints_.push_back(pipeline_.front().outputCycle);
+  if (frontOffered_) readyPoints_.push_back(outputOf(pipeline_.front()));
   std::sort(readyPoints_.begin(), readyPoints_.end());
   readyPoints_.erase(std::unique(readyPoints_.begin(), readyPoints_.end()), readyPoints_.end());
   for (uint64_t cycle : readyPoints_)

@@ -46,12 +46,16 @@ class JobManager final : public Agent {
  private:
   struct InFlight {
     CoreJob job;
-    uint64_t outputCycle;
+    uint64_t unstalledOutput;  // its output cycle less the stalls before it entered: outputOf()
   };
   struct Window {  // cycles [from, to) in which no record is accepted
     uint64_t from, to;
   };
 
+  // The cycle `job` reaches the output if nothing stalls from now on. A stall holds every job in
+  // flight, so their output cycles are kept less the stalls so far and the stall adds to all
+  // of them at once.
+  uint64_t outputOf(const InFlight& job) const { return job.unstalledOutput + stallShift_; }
   void takeDispatch();
   void acceptOffered();
   uint64_t acceptanceCycle(uint64_t offered) const;
@@ -67,6 +71,7 @@ class JobManager final : public Agent {
   TransferChannel<HostJob>* in_ = nullptr;
   TransferChannel<CoreJob>* out_ = nullptr;
   std::deque<InFlight> pipeline_;
+  uint64_t stallShift_ = 0;  // the stalls so far (modulo 2^64: only outputOf() is a cycle)
   bool frontOffered_ = false;
   std::optional<uint64_t> lastDispatch_;  // of the job that left the output last
   std::deque<Window> stalls_;   // decided stalls a later acceptance may fall into
