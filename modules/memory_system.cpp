@@ -106,8 +106,9 @@ void MemorySystem::decide() {
   }
 }
 
+// (A cycle simulated time has reached is below the floor's + 2.)
 bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
-  return cycle <= clock_.now() || cycle < std::max(published_.lowest(), dispatchFloor() + 2);
+  return cycle < std::max(published_.lowest(), dispatchFloor() + 2);
 }
 
 void MemorySystem::servedLast(int core) {
