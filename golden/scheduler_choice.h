@@ -43,7 +43,7 @@ class SchedulerChoice {
   }
 
   // The job went to `core`: round-robin's turn moves on.
-  void dispatched(int core) { nextInLine_ = (core + 1) % cores_; }
+  void dispatched(int core) { nextInLine_ = core + 1 == cores_ ? 0 : core + 1; }
 
   // The longest a job can wait for its dispatch while some core was idle in its pending cycle.
   // An idle core stays idle until a job is dispatched to it, and the pending job is the next one

@@ -21,7 +21,7 @@ void ResultManager::bind(std::vector<TransferChannel<CoreResult>*> cores,
                          TransferChannel<CoreResult>& out) {
   cores_ = std::move(cores);
   out_ = &out;
-  coreCount_ = cores_.size();
+  select_ = Modulo(cores_.size());
   buffers_.resize(cores_.size());
   for (TransferChannel<CoreResult>* core : cores_) core->traceReady(0, true);
 }
@@ -49,7 +49,7 @@ void ResultManager::publishDrainBounds() {
     TransferChannel<CoreResult>& channel = *cores_[core];
     if (!buffers_[core].full || !channel.offering()) continue;
     const uint64_t from = std::max(scan_, buffers_[core].fullFrom);
-    const uint64_t select = from + (core + coreCount_ - from % coreCount_) % coreCount_;
+    const uint64_t select = nextSelect(core, from);
     if (channel.readyBound() < select + 1) channel.notReadyBefore(select + 1);
   }
 }
@@ -72,7 +72,7 @@ void ResultManager::handOver(int core) {
 // The host takes every cycle: the first select from the buffer's first full cycle.
 void ResultManager::drainAtSelect(int core) {
   const uint64_t from = buffers_[static_cast<size_t>(core)].fullFrom;
-  drain(core, from + (static_cast<uint64_t>(core) + coreCount_ - from % coreCount_) % coreCount_);
+  drain(core, nextSelect(static_cast<size_t>(core), from));
 }
 
 // From the first undecided cycle on: the cycles whose select shows a full buffer, until one of
@@ -112,13 +112,19 @@ uint64_t ResultManager::nextFullSelect(int& core) const {
   for (size_t i = 0; i < buffers_.size(); ++i) {
     if (!buffers_[i].full) continue;
     const uint64_t from = std::max(scan_, buffers_[i].fullFrom);
-    const uint64_t select = from + (i + coreCount_ - from % coreCount_) % coreCount_;
+    const uint64_t select = nextSelect(i, from);
     if (select < best) {
       best = select;
       core = static_cast<int>(i);
     }
   }
   return best;
+}
+
+// The first cycle from `from` in which the select counter (cycle mod N) shows `core`.
+uint64_t ResultManager::nextSelect(size_t core, uint64_t from) const {
+  const uint64_t shown = select_.of(from);
+  return from + (core >= shown ? core - shown : core + cores_.size() - shown);
 }
 
 // The first cycle an empty buffer could be full: after a handover, which follows an offer.

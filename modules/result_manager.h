@@ -19,6 +19,7 @@
 #include <systemc>
 
 #include "cycle_clock.h"
+#include "modulo.h"
 #include "module_process.h"
 #include "occupancy_peak.h"
 #include "decision_pump.h"
@@ -55,6 +56,7 @@ class ResultManager final : public sc_core::sc_module, public Agent {
   void drainInCycleOrder();
   void publishDrainBounds();
   uint64_t nextFullSelect(int& core) const;
+  uint64_t nextSelect(size_t core, uint64_t from) const;
   // The earliest cycle a buffer now empty can fill.
   uint64_t fillHorizon() const;
   void rememberDrain(uint64_t cycle);
@@ -64,7 +66,7 @@ class ResultManager final : public sc_core::sc_module, public Agent {
   CycleWake wake_;
   std::vector<TransferChannel<CoreResult>*> cores_;
   TransferChannel<CoreResult>* out_ = nullptr;
-  uint64_t coreCount_ = 0;
+  Modulo select_{1};  // the select counter: cycle mod N, without a division for 2^k cores
   std::vector<Buffer> buffers_;
   std::vector<int> heard_;     // cores whose channel changed since the last decision
   std::vector<int> deciding_;  // those being decided now
