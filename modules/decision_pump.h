@@ -83,8 +83,8 @@ class DecisionPump {
     schedule(agent);
     run();
   }
-  // Whether an agent waits to decide other than those deciding last: while none does, an agent
-  // deciding last may go on deciding, as the others' bounds hold.
+  // Whether an agent waits to decide other than those deciding last: an agent deciding last that
+  // cannot go on lets them decide first, as they may raise the bounds it reads.
   bool othersQueued() const { return !queue_.empty(); }
 
  private:

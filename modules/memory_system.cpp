@@ -86,7 +86,9 @@ void MemorySystem::coreOffering(int core, uint64_t outCycle) {
 }
 
 // Decides after every other agent, so that each core's and the scheduler's bounds are settled;
-// only while a request waits.
+// only while a request waits. It goes on serving while the replies queue other agents: a reply
+// makes a core run and perhaps offer, which queues the result manager or the scheduler, but no
+// job is dispatched until the scheduler decides, so every bound still holds.
 void MemorySystem::heard(int) {
   if (requestsWait()) pump().scheduleLast(*this);
 }
@@ -95,14 +97,15 @@ void MemorySystem::decide() {
   while (requestsWait()) {
     const uint64_t cycle = earliestRequestCycle();
     if (!requestsKnownFor(cycle)) {
+      // What the replies woke may raise the bounds: decide again after it, without a kernel event.
+      if (pump().othersQueued()) {
+        heard(0);
+        return;
+      }
       wake_.at(cycle);  // by then they are: every decision about a cycle is made by its time
       return;
     }
     serveCycle(cycle);
-    if (pump().othersQueued()) {
-      heard(0);  // the next cycle once the others have decided what the replies caused
-      return;
-    }
   }
 }
 

@@ -60,8 +60,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
   void coreOffering(int core, uint64_t outCycle) override;
-  // Serves the earliest cycle's requests while all are known, cycle after cycle until a reply
-  // gives another agent something to decide.
+  // Serves the earliest cycle's requests while all are known, cycle after cycle.
   void decide() override;
   void heard(int port) override;
 
