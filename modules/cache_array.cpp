@@ -7,9 +7,10 @@ namespace rtu {
 
 namespace {
 
-int log2Exact(uint32_t powerOfTwo) {
+// The bits of ceil(log2(count)): log2 for a power of two, enough for the numbers below count.
+int bitsFor(uint32_t count) {
   int shift = 0;
-  while ((1u << shift) < powerOfTwo) ++shift;
+  while ((uint64_t{1} << shift) < count) ++shift;
   return shift;
 }
 
@@ -17,13 +18,17 @@ int log2Exact(uint32_t powerOfTwo) {
 
 CacheArray::CacheArray(const CacheConfig& config)
     : config_(config),
-      lineShift_(log2Exact(config.lineBytes)),
+      lineShift_(bitsFor(config.lineBytes)),
       setMask_(config.sets() - 1),
       waysPerSet_(config.ways),
+      wayBits_(bitsFor(config.ways)),
+      wayMask_((uint64_t{1} << wayBits_) - 1),
       lines_(size_t{config.sets()} * config.ways, kEmpty),
       ways_(lines_.size()),
       mostRecent_(config.sets(), 0),
-      random_(config.seed) {}
+      random_(config.seed) {
+  for (size_t i = 0; i < ways_.size(); ++i) ways_[i].stamp = i % waysPerSet_;  // order 0
+}
 
 bool CacheArray::touch(uint64_t byteAddress) {
   const uint64_t line = lineOf(byteAddress);
@@ -32,11 +37,11 @@ bool CacheArray::touch(uint64_t byteAddress) {
   size_t i = find(line, first);
   const bool resident = i != kAbsent;
   if (resident) {
-    if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
+    if (config_.replacement == Replacement::Lru) ways_[i].stamp = newStamp(i - first);
   } else {
     i = victimFor(first);
     lines_[i] = line;
-    ways_[i] = {0, ++clock_};
+    ways_[i] = {0, newStamp(i - first)};
     missedLine_ = kEmpty;
   }
   mostRecent_[set] = static_cast<uint32_t>(i - first);

@@ -14,6 +14,7 @@
 // nothing.
 
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -57,7 +58,7 @@ class CacheArray {
         missedLine_ = line;
         return {};
       }
-      if (config_.replacement == Replacement::Lru) ways_[i].stamp = ++clock_;
+      if (config_.replacement == Replacement::Lru) ways_[i].stamp = newStamp(i - first);
       mostRecent_[set] = static_cast<uint32_t>(i - first);
     }
     const uint64_t fillCycle = ways_[i].fillCycle;
@@ -76,7 +77,7 @@ class CacheArray {
     const size_t i = victimFor(first);
     if (lines_[i] != kEmpty) ++stats_.evictions;
     lines_[i] = line;
-    ways_[i] = {fillCycle, ++clock_};
+    ways_[i] = {fillCycle, newStamp(i - first)};
     mostRecent_[set] = static_cast<uint32_t>(i - first);
   }
   // Functional warming (no timing, nothing counted): makes the line of `byteAddress` resident
@@ -101,7 +102,8 @@ class CacheArray {
   // What a resident line's way holds beside its line number.
   struct Way {
     uint64_t fillCycle = 0;
-    // Order of the last use (LRU) or of the allocation (FIFO); the smallest is the victim.
+    // Order of the last use (LRU) or of the allocation (FIFO) above the way's number in its set
+    // (newStamp); the smallest is the victim.
     uint64_t stamp = 0;
   };
 
@@ -120,20 +122,20 @@ class CacheArray {
     return kAbsent;
   }
 
+  // A stamp for way `wayInSet`: the next order above the way's number, so that stamps are unique
+  // and the smallest names its way.
+  uint64_t newStamp(size_t wayInSet) { return ++clock_ << wayBits_ | wayInSet; }
+
   // The way a missing line goes to in the set from way `first` on: an empty one first, else by
-  // policy. Empty ways keep stamp 0 (lines are never invalidated) and every allocation takes a
-  // new stamp, so the way with the smallest stamp, the first of equals, is the first empty way if
-  // there is one and else the LRU or FIFO victim: one pass, its minimum without a branch to
-  // mispredict.
+  // policy. Empty ways keep their order 0 (lines are never invalidated) and every allocation
+  // takes a new stamp, so the smallest stamp is the first empty way's if there is one and else
+  // the LRU or FIFO victim's: one pass for the minimum, without a branch to mispredict, and its
+  // low bits name the way.
   size_t victimFor(size_t first) {
-    size_t oldest = first;
     uint64_t oldestStamp = UINT64_MAX;
-    for (size_t i = first; i < first + waysPerSet_; ++i) {
-      const uint64_t stamp = ways_[i].stamp;
-      const bool older = stamp < oldestStamp;
-      oldestStamp = older ? stamp : oldestStamp;
-      oldest = older ? i : oldest;
-    }
+    for (size_t i = first; i < first + waysPerSet_; ++i)
+      oldestStamp = std::min(oldestStamp, ways_[i].stamp);
+    const size_t oldest = first + (oldestStamp & wayMask_);
     if (config_.replacement == Replacement::Random && lines_[oldest] != kEmpty)
       return randomWay(first);
     return oldest;
@@ -146,6 +148,8 @@ class CacheArray {
   int lineShift_;
   uint64_t setMask_;
   size_t waysPerSet_;
+  int wayBits_;       // bits of the largest way number in a set
+  uint64_t wayMask_;  // those bits of a stamp
   std::vector<uint64_t> lines_;  // per way, sets x ways, set-major: its line number or kEmpty
   std::vector<Way> ways_;        // per way, as lines_
   std::vector<uint32_t> mostRecent_;  // per set, its most recently used way
