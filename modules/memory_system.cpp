@@ -146,7 +146,7 @@ void MemorySystem::serveArbitrated(int first, uint64_t cycle) {
   const size_t count = served_.size();
   size_t start = 0;  // the first at or after the core whose turn it is
   while (start < count && served_[start] < nextPriority_) ++start;
-  servedLast(served_[(start + count - 1) % count]);
+  servedLast(served_[start == 0 ? count - 1 : start - 1]);  // the last in this cycle's turn
   for (size_t i = start; i < count; ++i) serve(served_[i], cycle);
   for (size_t i = 0; i < start; ++i) serve(served_[i], cycle);
 }
