@@ -13,8 +13,8 @@
 // Lines in flight are not protected from eviction; an evicted line's fill still takes place, for
 // nothing.
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <random>
 #include <vector>

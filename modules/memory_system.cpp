@@ -86,13 +86,14 @@ void MemorySystem::coreOffering(int core, uint64_t outCycle) {
 }
 
 // Decides after every other agent, so that each core's and the scheduler's bounds are settled;
-// only while a request waits. It goes on serving while the replies queue other agents: a reply
-// makes a core run and perhaps offer, which queues the result manager or the scheduler, but no
-// job is dispatched until the scheduler decides, so every bound still holds.
+// only while a request waits.
 void MemorySystem::heard(int) {
   if (requestsWait()) pump().scheduleLast(*this);
 }
 
+// It goes on serving while the replies queue other agents: a reply makes a core run and perhaps
+// offer, which queues the result manager or the scheduler, but no job is dispatched until the
+// scheduler decides, so every bound still holds.
 void MemorySystem::decide() {
   while (requestsWait()) {
     const uint64_t cycle = earliestRequestCycle();
