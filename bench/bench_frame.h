@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "camera.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "rtu_simulation.h"
+#include "run/rtu_simulation.h"
 
 using namespace rtu;
 

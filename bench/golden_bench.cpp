@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "golden_model.h"
-#include "result_summary.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/result_summary.h"
 
 using namespace rtu;
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "golden_model.h"
-#include "host_buffers.h"
+#include "kinds/svo/golden_model.h"
+#include "inputs/host_buffers.h"
 
 using namespace rtu;
 

@@ -21,10 +21,10 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "configuration.h"
-#include "golden_model.h"
-#include "lt_simulation.h"
-#include "rtu_simulation.h"
+#include "config/configuration.h"
+#include "kinds/svo/golden_model.h"
+#include "run/lt_simulation.h"
+#include "run/rtu_simulation.h"
 
 using namespace rtu;
 

@@ -1,5 +1,5 @@
 // The exact answer without simulating (issue 9): the same 1280x720 frame of a procedural scene
-// at depth 6 timed by the recurrence (golden/rtu_recurrence.h) and by the SystemC model, with
+// at depth 6 timed by the recurrence (src/rtu/rtu_recurrence.h) and by the SystemC model, with
 // the golden traversal and the recurrence timed apart. Not a test: run it and record the figures
 // in docs/performance.md.
 //   build/bench/recurrence_bench [scene]
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "analytic_run.h"
+#include "run/analytic_run.h"
 #include "bench_frame.h"
-#include "golden_model.h"
-#include "rtu_recurrence.h"
+#include "kinds/svo/golden_model.h"
+#include "rtu/rtu_recurrence.h"
 
 using namespace rtu;
 

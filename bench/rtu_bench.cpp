@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "rtl_cycle_model.h"
-#include "rtu_simulation.h"
+#include "reference/rtl_cycle_model.h"
+#include "run/rtu_simulation.h"
 
 using namespace rtu;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# FST traces (--trace t.fst, modules/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
+# FST traces (--trace t.fst, src/trace/fst_writer.cpp), read back with GTKWave's own fst2vcd: the
 # same values in the same cycles as the VCD of the same run, for ideal and cached memory, an
 # enum table that names the core states, and ray ids that follow every ray through the run. --vcd stays an alias of --trace. A --trace-scope that
 # matches nothing is an error. Each trace comes with a GTKWave save file.

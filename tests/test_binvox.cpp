@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "binvox.h"
-#include "svo_builder.h"
+#include "kinds/svo/binvox.h"
+#include "kinds/svo/svo_builder.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;

@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cache_array.h"
-#include "l1_cache_timing.h"
-#include "l2_cache_timing.h"
-#include "memory_config.h"
-#include "timing_limits.h"
+#include "sim/memory/cache_array.h"
+#include "sim/memory/l1_cache_timing.h"
+#include "sim/memory/l2_cache_timing.h"
+#include "sim/memory/memory_config.h"
+#include "base/timing_limits.h"
 
 using namespace rtu;
 

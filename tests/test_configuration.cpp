@@ -3,8 +3,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "configuration.h"
-#include "sweep_spec.h"
+#include "config/configuration.h"
+#include "config/sweep_spec.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;

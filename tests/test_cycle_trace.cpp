@@ -1,4 +1,4 @@
-// The streaming trace recorder (modules/cycle_trace.h) on its own: records arrive ahead of the
+// The streaming trace recorder (src/trace/cycle_trace.h) on its own: records arrive ahead of the
 // flushed cycle and out of time order, and the file holds them in time order, each cycle's last
 // record winning, exactly as if the whole trace had been held until the end; a record for a cycle
 // already written is refused.
@@ -15,9 +15,9 @@
 
 #include <unistd.h>
 
-#include "cycle_trace.h"
-#include "gtkw_save_file.h"
-#include "instance_names.h"
+#include "trace/cycle_trace.h"
+#include "trace/gtkw_save_file.h"
+#include "trace/instance_names.h"
 
 namespace rtu {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "fixed_point.h"
-#include "ray_setup.h"
+#include "kinds/svo/fixed_point.h"
+#include "kinds/svo/ray_setup.h"
 
 using namespace rtu;
 

@@ -1,10 +1,10 @@
 // The fixed-point golden model against the float64 reference on every procedural scene.
 #include <catch2/catch.hpp>
 
-#include "accuracy.h"
-#include "camera.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "kinds/svo/accuracy.h"
+#include "inputs/camera.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 using namespace rtu;
 

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "binary_file.h"
-#include "camera.h"
-#include "host_buffers.h"
+#include "base/binary_file.h"
+#include "inputs/camera.h"
+#include "inputs/host_buffers.h"
 
 using namespace rtu;
 

@@ -1,13 +1,13 @@
-// The job manager's behaviour (golden/job_setup.h): latencies counted by hand from its
+// The job manager's behaviour (src/kinds/svo/job_setup.h): latencies counted by hand from its
 // configuration, the model header read once per model.
 
 #include <catch2/catch.hpp>
 
-#include "camera.h"
-#include "job_setup.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
-#include "svo_image.h"
+#include "inputs/camera.h"
+#include "kinds/svo/job_setup.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
+#include "kinds/svo/svo_image.h"
 
 namespace rtu {
 

@@ -1,4 +1,4 @@
-// The loosely-timed model (sc_model/lt_simulation.h): per-ray results equal the golden model's
+// The loosely-timed model (src/run/lt_simulation.h): per-ray results equal the golden model's
 // on every scene, core count, memory and policy; its cycles against the cycle-accurate model's on
 // small frames, within the bounds docs/fidelity.md states; refusals name the setting.
 #include <catch2/catch.hpp>
@@ -6,12 +6,12 @@
 #include <cmath>
 #include <string>
 
-#include "camera.h"
-#include "golden_model.h"
-#include "lt_simulation.h"
-#include "model_run.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/golden_model.h"
+#include "run/lt_simulation.h"
+#include "run/model_run.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "isolated_process.h"
-#include "triangle_mesh.h"
+#include "base/isolated_process.h"
+#include "geometry/triangle_mesh.h"
 
 using Catch::Matchers::Contains;
 using rtu::IsolatedProcessError;

@@ -16,9 +16,9 @@
 
 #include <glm/vector_relational.hpp>
 
-#include "mesh_voxelizer.h"
-#include "svo_builder.h"
-#include "triangle_mesh.h"
+#include "kinds/svo/mesh_voxelizer.h"
+#include "kinds/svo/svo_builder.h"
+#include "geometry/triangle_mesh.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;

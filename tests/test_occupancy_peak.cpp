@@ -1,9 +1,9 @@
-// The buffer occupancy peak from changes decided out of cycle order (modules/occupancy_peak.h).
+// The buffer occupancy peak from changes decided out of cycle order (src/base/occupancy_peak.h).
 // Expected peaks are counted by hand from the entries and exits listed in each case.
 
 #include <catch2/catch.hpp>
 
-#include "occupancy_peak.h"
+#include "base/occupancy_peak.h"
 
 using rtu::OccupancyPeak;
 

@@ -1,11 +1,11 @@
-// rtusim precision's measure (golden/precision.h): formats against float64.
+// rtusim precision's measure (src/kinds/svo/precision.h): formats against float64.
 
 #include <catch2/catch.hpp>
 
-#include "camera.h"
-#include "precision.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/precision.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

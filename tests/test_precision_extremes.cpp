@@ -9,14 +9,14 @@
 #include <functional>
 #include <limits>
 
-#include "golden_model.h"
-#include "host_buffers.h"
-#include "procedural_scenes.h"
-#include "ray_setup.h"
-#include "ray_transform.h"
-#include "reference_model.h"
-#include "result_summary.h"
-#include "svo_builder.h"
+#include "kinds/svo/golden_model.h"
+#include "inputs/host_buffers.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/ray_setup.h"
+#include "kinds/svo/ray_transform.h"
+#include "kinds/svo/reference_model.h"
+#include "kinds/svo/result_summary.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

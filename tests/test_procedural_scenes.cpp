@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

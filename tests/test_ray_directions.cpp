@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "golden_model.h"
-#include "ray_setup.h"
-#include "reference_model.h"
-#include "svo_builder.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/ray_setup.h"
+#include "kinds/svo/reference_model.h"
+#include "kinds/svo/svo_builder.h"
 
 using namespace rtu;
 

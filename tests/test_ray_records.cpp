@@ -10,11 +10,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "camera.h"
-#include "golden_model.h"
-#include "host_buffers.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/golden_model.h"
+#include "inputs/host_buffers.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 
 using namespace rtu;
 

@@ -1,12 +1,12 @@
-// Resource bookings in cycle order and out of it (modules/resource_booking.h), and the L2's
-// out-of-order form against its cycle-order form (modules/l2_cache_timing.h), cycles by hand.
+// Resource bookings in cycle order and out of it (src/sim/memory/resource_booking.h), and the L2's
+// out-of-order form against its cycle-order form (src/sim/memory/l2_cache_timing.h), cycles by hand.
 #include <catch2/catch.hpp>
 
 #include <random>
 #include <vector>
 
-#include "l2_cache_timing.h"
-#include "resource_booking.h"
+#include "sim/memory/l2_cache_timing.h"
+#include "sim/memory/resource_booking.h"
 
 using namespace rtu;
 

@@ -15,12 +15,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "camera.h"
-#include "golden_model.h"
-#include "procedural_scenes.h"
-#include "ray_setup.h"
-#include "rtl_cycle_model.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/ray_setup.h"
+#include "reference/rtl_cycle_model.h"
+#include "kinds/svo/svo_builder.h"
 #include "three_balls_scene.h"
 
 using namespace rtu;

@@ -1,4 +1,4 @@
-// The SystemC RTU model (sc_model/rtu_simulation.h) across its configuration space: core counts,
+// The SystemC RTU model (src/run/rtu_simulation.h) across its configuration space: core counts,
 // scheduling policies, memory hierarchies, host back-pressure, the reorder buffer and invalid
 // settings. The reference for every per-ray result is the untimed golden model; cycle counts are
 // only asserted where they follow from the thesis RTL (worked out by hand in comments, using the
@@ -28,16 +28,16 @@
 #include <string>
 #include <vector>
 
-#include "cache_array.h"
-#include "camera.h"
-#include "cycle_clock.h"
-#include "golden_model.h"
-#include "procedural_scenes.h"
-#include "ray_setup.h"
-#include "rtu_simulation.h"
-#include "svo_builder.h"
-#include "timing_limits.h"
-#include "traversal_core.h"
+#include "sim/memory/cache_array.h"
+#include "inputs/camera.h"
+#include "sim/kernel/cycle_clock.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/ray_setup.h"
+#include "run/rtu_simulation.h"
+#include "kinds/svo/svo_builder.h"
+#include "base/timing_limits.h"
+#include "kinds/svo/traversal_core.h"
 
 namespace rtu {
 namespace {
@@ -553,7 +553,7 @@ TEST_CASE("A job that waits for a busy core is not a case of eq. 6.7", "[rtu]") 
 // 3. Host back-pressure
 
 TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[rtu]") {
-  // Pacing of a link at R bytes per cycle (modules/host_link.cpp, docs/cycle-semantics.md):
+  // Pacing of a link at R bytes per cycle (src/rtu/host_link.cpp, docs/cycle-semantics.md):
   // after a record crosses in cycle c,
   //   e = max(e, c) + 32 / R,   the next record may cross from max(c + 1, ceil(e)) on.
   // Whatever the rounding, e grows by 32 / R per record and a record never crosses before its
@@ -932,7 +932,7 @@ TEST_CASE("Cache tag arrays that would not fit in memory are refused before the 
 
 TEST_CASE("An impossible cache is an error even with ideal memory", "[rtu]") {
   // MemoryConfig::ideal leaves the cache and DRAM settings unused, but an impossible one is
-  // still an error (modules/memory_config.h).
+  // still an error (src/sim/memory/memory_config.h).
   RtuConfig config;
   config.memory.l1.sizeBytes = 16;  // config.memory.ideal stays true
   REQUIRE(config.memory.ideal);

@@ -4,12 +4,12 @@
 
 #include <catch2/catch.hpp>
 
-#include "camera.h"
-#include "golden_model.h"
-#include "procedural_scenes.h"
-#include "rtl_cycle_model.h"
-#include "rtu_simulation.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "reference/rtl_cycle_model.h"
+#include "run/rtu_simulation.h"
+#include "kinds/svo/svo_builder.h"
 #include "three_balls_scene.h"
 
 namespace rtu {

@@ -1,16 +1,16 @@
-// The recurrence of golden/rtu_recurrence.h: on cases counted by hand, against the naive RTL
-// transcription, and (through sc_model/analytic_run.h) against the SystemC model in every
+// The recurrence of src/rtu/rtu_recurrence.h: on cases counted by hand, against the naive RTL
+// transcription, and (through src/run/analytic_run.h) against the SystemC model in every
 // configuration it claims to model, statistics included.
 
 #include <catch2/catch.hpp>
 
-#include "analytic_run.h"
-#include "camera.h"
-#include "procedural_scenes.h"
-#include "rtl_cycle_model.h"
-#include "rtu_recurrence.h"
-#include "svo_builder.h"
-#include "svo_image.h"
+#include "run/analytic_run.h"
+#include "inputs/camera.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "reference/rtl_cycle_model.h"
+#include "rtu/rtu_recurrence.h"
+#include "kinds/svo/svo_builder.h"
+#include "kinds/svo/svo_image.h"
 
 namespace rtu {
 namespace {

@@ -1,4 +1,4 @@
-// The VCD trace of the SystemC RTU model (RtuConfig::trace, modules/cycle_trace.h): the file is
+// The VCD trace of the SystemC RTU model (RtuConfig::trace, src/trace/cycle_trace.h): the file is
 // parsed back with a small reader and its signals are checked against the run's own results
 // and against the module contracts of docs/cycle-semantics.md and thesis appendix C:
 //   - a ready-valid transfer happens in a cycle whose final valid and ready levels are both 1;
@@ -29,11 +29,11 @@
 
 #include <unistd.h>
 
-#include "camera.h"
-#include "golden_model.h"
-#include "procedural_scenes.h"
-#include "rtu_simulation.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "run/rtu_simulation.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {
@@ -335,7 +335,7 @@ void checkTrace(const Traced& t, int cores) {
     CHECK(badStart == 0);
     CHECK(badLevel == 0);
 
-    // State sequence, cycle by cycle, as golden/traversal_core.h steps it: INIT .. POP last one
+    // State sequence, cycle by cycle, as src/kinds/svo/traversal_core.h steps it: INIT .. POP last one
     // cycle each; BLOCKED follows a memory read (EVAL, or PUSH through a far pointer) and ends
     // in the state after it; OUT waits for the result manager.
     const std::map<int64_t, std::set<int64_t>> successors = {

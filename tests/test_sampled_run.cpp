@@ -1,15 +1,15 @@
-// Sampled simulation (sc_model/sampled_run.h): the plan's blocks, the interval arithmetic, the
+// Sampled simulation (src/run/sampled_run.h): the plan's blocks, the interval arithmetic, the
 // statistics of a window, and the estimate against a full cycle-accurate run.
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "camera.h"
-#include "procedural_scenes.h"
-#include "sampled_run.h"
-#include "statistics_window.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "run/sampled_run.h"
+#include "run/statistics_window.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

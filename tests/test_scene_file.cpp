@@ -1,12 +1,12 @@
-// Scene files (stimuli/scene_file.h) and the model cache (stimuli/model_cache.h).
+// Scene files (src/scene/scene_file.h) and the model cache (src/scene/model_cache.h).
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
-#include "model_cache.h"
-#include "scene_file.h"
+#include "scene/model_cache.h"
+#include "scene/scene_file.h"
 
 namespace rtu {
 namespace {

@@ -1,5 +1,5 @@
-// The golden scene manager (golden/scene_manager.h), the hit buffer (golden/hit_buffer.h) and the
-// animation renderer (sc_model/animation_run.h) against answers derived without them.
+// The golden scene manager (src/scene/scene_manager.h), the hit buffer (src/scene/hit_buffer.h) and the
+// animation renderer (src/explore/animation_run.h) against answers derived without them.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -9,10 +9,10 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "animation_run.h"
-#include "camera.h"
-#include "scene_memory.h"
-#include "svo_builder.h"
+#include "explore/animation_run.h"
+#include "inputs/camera.h"
+#include "scene/scene_memory.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {

@@ -1,5 +1,5 @@
-// The cycle-accurate scene manager (modules/scene_manager_module.h, inside the SystemC RTU)
-// against its plain per-cycle reference (golden/scene_manager_cycles.h, above the per-cycle RTL
+// The cycle-accurate scene manager (src/sim/ca/scene_manager_module.h, inside the SystemC RTU)
+// against its plain per-cycle reference (src/reference/scene_manager_cycles.h, above the per-cycle RTL
 // transcription): every job entering the job manager in the same cycle, the same merged result
 // of every ray arriving in the same cycle, the same total cycles and statistics, for several core
 // counts and scene manager settings.
@@ -8,8 +8,8 @@
 #include <map>
 #include <tuple>
 
-#include "rtu_simulation.h"
-#include "scene_manager_cycles.h"
+#include "run/rtu_simulation.h"
+#include "reference/scene_manager_cycles.h"
 #include "three_balls_scene.h"
 
 namespace rtu {

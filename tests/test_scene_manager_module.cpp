@@ -1,11 +1,11 @@
-// The cycle-accurate scene manager (modules/scene_manager_module.h) inside the SystemC RTU,
+// The cycle-accurate scene manager (src/sim/ca/scene_manager_module.h) inside the SystemC RTU,
 // against the untimed golden scene manager: per ray the same nearest hit and summed cost, over
 // the frame the same jobs, culled instances and early terminations, for any queue sizes, core
 // count, latency and with or without a reorder buffer.
 #include <catch2/catch.hpp>
 
-#include "rtu_simulation.h"
-#include "scene_manager.h"
+#include "run/rtu_simulation.h"
+#include "scene/scene_manager.h"
 #include "three_balls_scene.h"
 
 namespace rtu {

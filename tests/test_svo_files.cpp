@@ -4,10 +4,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "golden_model.h"
-#include "procedural_scenes.h"
-#include "svo_builder.h"
-#include "svo_validator.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
+#include "kinds/svo/svo_validator.h"
 
 using namespace rtu;
 

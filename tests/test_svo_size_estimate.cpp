@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "procedural_scenes.h"
-#include "svo_builder.h"
-#include "svo_size_estimate.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
+#include "kinds/svo/svo_size_estimate.h"
 
 namespace rtu {
 

@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "procedural_scenes.h"
-#include "svo_builder.h"
-#include "svo_validator.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
+#include "kinds/svo/svo_validator.h"
 
 namespace rtu {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "golden_model.h"
-#include "ray_setup.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/ray_setup.h"
 
 using namespace rtu;
 

@@ -7,10 +7,10 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "camera.h"
-#include "scene_manager.h"
-#include "scene_memory.h"
-#include "svo_builder.h"
+#include "inputs/camera.h"
+#include "scene/scene_manager.h"
+#include "scene/scene_memory.h"
+#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The --timeline (modules/timeline_writer.h) against the run's statistics and the golden model's
+# The --timeline (src/trace/timeline_writer.h) against the run's statistics and the golden model's
 # costs (tests/timeline_check.py), for ideal and cached memory, with and without a reorder buffer;
-# the dry run's sizes (sc_model/trace_plan.h) equal the files written; --trace-max-mb refuses a
+# the dry run's sizes (src/run/trace_plan.h) equal the files written; --trace-max-mb refuses a
 # file before writing it, naming the options that narrow it; --trace-ray's window runs from the
 # ray's handshake into the job manager to its result's handshake with the host, checked in a full
 # trace and in the output buffer's arrival order.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A full trace streams to its file with bounded memory (modules/cycle_trace.h): a 320x180 frame
+# A full trace streams to its file with bounded memory (src/trace/cycle_trace.h): a 320x180 frame
 # at 16 cores with cached memory, every signal traced (a 38 MB VCD), peaks under 120 MB resident
 # (measured: 31 MB; untraced: 27 MB). Holding every record until the end, as rtusim did before,
 # took 314 MB for this frame, so the bound fails if the trace is no longer streamed.

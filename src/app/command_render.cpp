@@ -1,0 +1,140 @@
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "app/commands.h"
+#include "app/config_options.h"
+#include "app/frame_images.h"
+#include "kinds/svo/golden_model.h"
+#include "run/model_run.h"
+#include "app/output_paths.h"
+#include "kinds/svo/result_summary.h"
+#include "app/rtu_options.h"
+#include "run/rtu_simulation.h"
+#include "kinds/svo/stack_check.h"
+#include "explore/sweep_workers.h"
+
+namespace rtu {
+namespace {
+
+struct RenderOptions {
+  RunOutputs outputs;
+  std::string image, depthImage, costImage;
+
+  std::vector<NamedPath> imagePaths() const {
+    return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
+  }
+  std::vector<NamedPath> outputPaths() const {
+    std::vector<NamedPath> paths = outputs.paths();
+    const std::vector<NamedPath> images = imagePaths();
+    paths.insert(paths.end(), images.begin(), images.end());
+    return paths;
+  }
+  void checkImageFormats() const {
+    for (const NamedPath& file : imagePaths())
+      if (!file.path.empty()) checkImageFormat(file.option, file.path);
+  }
+};
+
+// The untimed golden model has no cores, memory, links, statistics or trace: settings of the
+// timed model are errors there rather than silently dropped. The loosely-timed model has
+// statistics but no trace or timeline.
+void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& request,
+                         const Configuration& configuration) {
+  const ModelKind model = configuration.values().model;
+  if (model == ModelKind::Golden) {
+    if (options.outputs.any())
+      throw std::invalid_argument("--stats, --trace and --timeline need --model ca or lt: the golden "
+                                  "model is untimed");
+    configuration.checkApplicable(request.uses & ~kUseModel, "render --model golden");
+  }
+  checkOutputsOfModel(options.outputs, model);
+}
+
+std::vector<TraversalResult> traceWithGolden(const Scene& scene,
+                                             const std::vector<TraversalJob>& jobs,
+                                             const Configuration& configuration) {
+  GoldenModel model(scene.image.memory(), configuration.values().golden());
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<TraversalResult> results = model.traceAll(jobs);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char host[128];
+  std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
+                results.size() / seconds / 1e6);
+  std::cout << ResultSummary::of(results).describe() << host;
+  return results;
+}
+
+std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
+                                              const std::vector<TraversalJob>& jobs,
+                                              const Configuration& configuration,
+                                              const RenderOptions& options) {
+  const RtuConfig config = options.outputs.traced(configuration.values().rtu);
+  checkStackDepth(scene.image, jobs, config.stackFrames, configuration.values().allowStackOverflow);
+  const std::vector<HostRecord> records(jobs.begin(), jobs.end());
+  const RtuConfig planned =
+      plannedTrace(scene.image.memory(), records, config, options.outputs, std::cout);
+  RunProgressLine progress("render", "rays");
+  const RtuRun run = runModel(configuration.values().model, scene.image.memory(), records, planned,
+                              progress.callback());
+  std::vector<TraversalResult> results = resultsInJobOrder(run);
+  std::cout << ResultSummary::of(results).describe();
+  reportRun(run, configuration, options.outputs, std::cout);
+  if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+  if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
+  return results;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = app.add_subcommand(
+      "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
+                "loosely-timed or golden model: --model) and report it");
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic |
+                                                kUseScene | kUseCamera);
+  addRunOutputOptions(*command, options->outputs);
+  command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
+  command->add_option("--depth-image", options->depthImage,
+                      "depth image: float t in EXR/TIFF, grey levels otherwise");
+  command->add_option("--cost-image", options->costImage,
+                      "cost heat map in the style of thesis figure 8.2");
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    checkOutputsOfModel(*options, *request, configuration);
+    const RunConfig& settings = configuration.values();
+    const bool untimed = settings.model == ModelKind::Golden;
+    settings.camera.validate();
+    if (!untimed) {
+      validate(options->outputs.traced(settings.rtu));
+      checkBuiltSceneFitsStack(settings.scene, settings.rtu.stackFrames,
+                               settings.allowStackOverflow);
+    }
+    checkOutputPaths(options->outputPaths(), inputPaths(settings));
+    options->checkImageFormats();
+    const GoldenConfig golden = settings.golden();
+    golden.format.validate();
+    const Scene scene = loadScene(settings.scene);
+    const std::vector<TraversalJob> jobs =
+        makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
+    std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
+              << "model       " << toString(settings.model) << ", " << golden.format.describe() << ", "
+              << toString(golden.conversion) << " conversion, " << golden.stackFrames
+              << " stack frames\n"
+              << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
+    const std::vector<TraversalResult> results =
+        untimed ? traceWithGolden(scene, jobs, configuration)
+                : traceWithTimedModel(scene, jobs, configuration, *options);
+    const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
+    if (!options->image.empty()) writeShadedImage(rendered, options->image);
+    if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
+    if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);
+    for (const std::string* path : {&options->image, &options->depthImage, &options->costImage})
+      if (!path->empty()) std::cout << "wrote       " << *path << "\n";
+  });
+}
+
+}  // namespace rtu

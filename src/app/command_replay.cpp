@@ -1,0 +1,71 @@
+#include <iostream>
+#include <memory>
+
+#include "app/commands.h"
+#include "app/config_options.h"
+#include "inputs/host_buffers.h"
+#include "app/host_inputs.h"
+#include "kinds/svo/result_summary.h"
+#include "app/output_paths.h"
+#include "app/rtu_options.h"
+#include "run/rtu_simulation.h"
+#include "explore/sweep_workers.h"
+#include "kinds/svo/svo_image.h"
+
+namespace rtu {
+
+void addReplayCommand(CLI::App& app) {
+  struct Options {
+    std::string out;
+    RunOutputs outputs;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "replay", "replay a host input buffer through the cycle-accurate SystemC model of the RTU "
+                "(or the loosely-timed or golden model: --model)");
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseBuffers);
+  command->add_option("--out", options->out, "host output buffer to write, in arrival order")
+      ->required();
+  addRunOutputOptions(*command, options->outputs);
+  command->callback([options, request] {
+    const Configuration configuration = request->resolve();
+    const RunConfig& settings = configuration.values();
+    checkOneInputBuffer(settings);
+    checkOutputsOfModel(options->outputs, settings.model);
+    const RtuConfig config = options->outputs.traced(settings.rtu);
+    validate(config);
+    const size_t recordWords = resultRecordWords(config.jobManager.format);
+    std::vector<NamedPath> outputs = options->outputs.paths();
+    outputs.insert(outputs.begin(), NamedPath{"--out", options->out});
+    checkOutputPaths(outputs, inputPaths(settings));
+    const SvoImage image = readSvoFile(settings.scene.svoFile);
+    std::vector<HostRecord> records;
+    std::vector<SkippedRecord> skipped;
+    if (!settings.rays.empty()) {
+      const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
+      // The job manager's own set-up, run ahead once to check every header and tree up front;
+      // only the checks read these jobs (the run reads the records), so they go at the block's end.
+      const std::vector<TraversalJob> jobs =
+          jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
+      records.assign(rays.begin(), rays.end());
+      warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
+      checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
+    } else {
+      records = readJobRecordsSkipping(settings.jobs, skipped);
+      warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
+      checkInputTrees(image, records, config.stackFrames, settings.allowStackOverflow, settings);
+    }
+    const RtuConfig planned =
+        plannedTrace(image.memory(), records, config, options->outputs, std::cout);
+    RunProgressLine progress("replay", "rays");
+    const RtuRun run = runModel(settings.model, image.memory(), records, planned, progress.callback());
+    writeResultBuffer(options->out, run.results, recordWords);
+    std::cout << ResultSummary::of(run.results).describe();
+    reportRun(run, configuration, options->outputs, std::cout);
+    std::cout << "wrote       " << options->out << "\n";
+    if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+    if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
+  });
+}
+
+}  // namespace rtu

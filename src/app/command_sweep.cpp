@@ -1,0 +1,185 @@
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "app/commands.h"
+#include "app/config_options.h"
+#include "explore/exploration_run.h"
+#include "app/plot_script.h"
+#include "explore/sweep_slurm.h"
+#include "config/sweep_spec.h"
+#include "explore/sweep_workers.h"
+
+namespace rtu {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string jsonLinesPath(const std::string& csvPath) {
+  return std::filesystem::path(csvPath).replace_extension(".jsonl").string();
+}
+
+std::vector<std::string> csvHeader() {
+  std::vector<std::string> header;
+  for (const Setting& setting : configSchema()) header.push_back(setting.key);
+  header.push_back("status");
+  header.push_back("error");
+  for (const std::string& column : statisticsColumns()) header.push_back(column);
+  return header;
+}
+
+std::vector<std::string> csvFields(const Json& row) {
+  std::vector<std::string> fields;
+  for (const Setting& setting : configSchema()) {
+    const Json& value = row["config"][setting.key];
+    fields.push_back(value.is_string() ? value.get<std::string>() : value.dump());
+  }
+  fields.push_back(row["status"].get<std::string>());
+  fields.push_back(row["error"].get<std::string>());
+  for (const std::string& value : statisticsValues(row)) fields.push_back(value);
+  return fields;
+}
+
+// The rows of an earlier run of the sweep, by configuration; a line cut short by an
+// interruption is dropped (its row runs again).
+std::map<std::string, Json> readFinishedRows(const std::string& path) {
+  std::map<std::string, Json> rows;
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    try {
+      Json row = Json::parse(line);
+      if (row.contains("config") && row.contains("status")) rows[row["config"].dump()] = row;
+    } catch (const nlohmann::json::exception&) {
+    }
+  }
+  return rows;
+}
+
+// Appends rows to the CSV and JSON-lines files as they finish, each flushed at once.
+class RowWriter {
+ public:
+  RowWriter(const std::string& csvPath, const std::vector<Json>& kept)
+      : csvPath_(csvPath),
+        csv_(csvPath, std::ios::trunc),
+        jsonLines_(jsonLinesPath(csvPath), std::ios::trunc) {
+    if (!csv_ || !jsonLines_) throw std::runtime_error("cannot write " + csvPath);
+    csv_ << csvLine(csvHeader());
+    for (const Json& row : kept) write(row);
+  }
+  void write(const Json& row) {
+    csv_ << csvLine(csvFields(row)) << std::flush;
+    jsonLines_ << row.dump() << "\n" << std::flush;
+    if (!csv_ || !jsonLines_) throw std::runtime_error("cannot write " + csvPath_);
+  }
+
+ private:
+  std::string csvPath_;
+  std::ofstream csv_, jsonLines_;
+};
+
+}  // namespace
+
+void addSweepCommand(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> grid;
+    std::string sweepFile;
+    std::string out = "sweep.csv";
+    std::string plotDir;
+    int jobs = defaultWorkerCount();
+    bool slurm = false;
+    SlurmOptions slurmOptions;
+    int slurmTask = -1;
+    std::string sweepDir;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "sweep", "run a grid and/or list of configurations on the cycle-accurate model in parallel "
+               "workers: one row per configuration in CSV and JSON lines, resumable");
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseSampling);
+  command->add_option("--grid", options->grid,
+                      "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
+  command->add_option("--sweep-file", options->sweepFile,
+                      "TOML sweep: [grid] key = [values], [[configs]] explicit configurations")
+      ->check(CLI::ExistingFile);
+  command->add_option("--out", options->out,
+                      "rows as CSV; JSON lines beside it (.jsonl). Rows already there are kept "
+                      "and not run again")
+      ->capture_default_str();
+  command->add_option("-j,--jobs", options->jobs, "configurations run in parallel (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--plot", options->plotDir, "write plots of the rows (PNG, SVG) into this folder");
+  command->add_flag("--slurm", options->slurm,
+                    "run the rows as a Slurm job array (sbatch --wait) instead of local workers");
+  command->add_option("--slurm-partition", options->slurmOptions.partition, "Slurm partition");
+  command->add_option("--slurm-tasks", options->slurmOptions.tasks,
+                      "array elements, each running every n-th row (default: a row each, at most 256)")
+      ->check(CLI::Range(1, 100000));
+  command->add_flag("--dry-run", options->slurmOptions.dryRun,
+                    "with --slurm: write the sweep directory and batch script, do not submit");
+  command->add_option("--sweep-dir", options->sweepDir,
+                      "with --slurm: the shared directory of the job array (default: OUT.slurm)");
+  command->add_option("--slurm-task", options->slurmTask,
+                      "internal: run one array element of the sweep in --sweep-dir");
+  command->callback([options, request] {
+    if (options->slurmTask >= 0) {
+      if (options->sweepDir.empty()) throw std::invalid_argument("--slurm-task needs --sweep-dir");
+      return runSlurmTask(options->sweepDir, options->slurmTask);
+    }
+    SweepSpec spec;
+    if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
+    for (const std::string& grid : options->grid) spec.addGrid(grid);
+    const std::vector<Configuration> configurations = spec.expand(request->resolve());
+
+    const std::map<std::string, Json> finished = readFinishedRows(jsonLinesPath(options->out));
+    std::vector<Json> kept;
+    std::vector<size_t> pending;
+    std::set<std::string> seen;
+    for (size_t i = 0; i < configurations.size(); ++i) {
+      const std::string key = configurations[i].toJson().dump();
+      if (!seen.insert(key).second) continue;  // the same configuration twice runs once
+      const auto found = finished.find(key);
+      if (found != finished.end()) kept.push_back(found->second);
+      else pending.push_back(i);
+    }
+    std::cout << "sweep: " << seen.size() << " configurations, " << kept.size()
+              << " already done, " << pending.size() << " to run with " << options->jobs
+              << " workers\n" << std::flush;
+    RowWriter writer(options->out, kept);
+    size_t written = 0, failed = 0;
+    const auto write = [&](const Json& row) {
+      if (row["status"] == "lost") {
+        std::cerr << "rtusim: sweep: row lost, it runs again next time: "
+                  << row["error"].get<std::string>() << "\n";
+        return;
+      }
+      writer.write(row);
+      ++written;
+      failed += row["status"] != "ok";
+    };
+    if (options->slurm) {
+      const std::string directory =
+          options->sweepDir.empty()
+              ? std::filesystem::path(options->out).replace_extension(".slurm").string()
+              : options->sweepDir;
+      const std::string script = runRowsOnSlurm(configurations, pending, directory,
+                                                options->slurmOptions, write);
+      if (options->slurmOptions.dryRun) {
+        std::cout << "sweep: wrote " << script << " (not submitted: sbatch " << script << ")\n";
+        return;
+      }
+    } else {
+      runRows(configurations, pending, options->jobs, "sweep",
+              [&](size_t, const Json& row) { write(row); });
+    }
+    std::cout << "sweep: " << written - failed << " rows done, " << failed << " failed, "
+              << pending.size() - written << " lost; wrote " << options->out << " and "
+              << jsonLinesPath(options->out) << "\n";
+    if (!options->plotDir.empty()) runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
+  });
+}
+
+}  // namespace rtu

@@ -1,0 +1,50 @@
+#pragma once
+// Images of a rendered frame, written through OpenImageIO (format from the file extension:
+// PNG, EXR, TIFF, ...). OpenImageIO is called in librtusim_images.so (image_plugin.cpp), loaded
+// on first use (src/base/plugin_loader.h): a missing module is a std::runtime_error naming it.
+
+#include <string>
+#include <vector>
+
+#include "inputs/camera.h"
+#include "kinds/svo/fixed_point.h"
+#include "kinds/svo/precision.h"
+#include "kinds/svo/traversal_job.h"
+
+namespace rtu {
+
+// Results indexed by job id (= pixel x + y * width); missing pixels are misses.
+struct RenderedFrame {
+  Camera camera;
+  FixedFormat format;
+  std::vector<TraversalResult> pixels;
+
+  static RenderedFrame fromResults(const Camera& camera, const FixedFormat& format,
+                           const std::vector<TraversalResult>& results);
+};
+
+// Throws std::invalid_argument naming `option` when no image format writes `path`'s extension;
+// for checking outputs before a run.
+void checkImageFormat(const std::string& option, const std::string& path);
+
+// Any RGB picture: `rgb` holds width x height pixels of three floats in [0, 1], rows from the top.
+void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
+
+// Lambert-shaded hits over a dark background; the face normal is turned toward the viewer.
+void writeShadedImage(const RenderedFrame& frame, const std::string& path);
+// t_hit per pixel: float t with misses 0 for EXR/TIFF/HDR files, otherwise grey levels from
+// near (white) to far (dark) over the frame's hit range, misses black.
+void writeDepthImage(const RenderedFrame& frame, const std::string& path);
+// Cost heat map after thesis figure 8.2: every pixel coloured by its cost in cycles on one
+// logarithmic scale from the frame's cheapest to its dearest ray; hits in viridis (dark blue
+// cheap, yellow dear), misses in red (pale pink cheap, dark red dear). Frames at least 96 pixels
+// wide get a 46-pixel strip below: both colour ramps, ticks and labels in cycles (the minimum,
+// round values, the maximum), and from 200 pixels a hit/miss/cycles legend. Labels use
+// DejaVu Sans through OpenImageIO, or a built-in 5x7 bitmap font when no font loads.
+void writeCostImage(const RenderedFrame& frame, const std::string& path);
+// One format against float64 per pixel (verdicts in pixel order): both miss near black, agreeing
+// hits grey, false hits blue, missed hits red, hits on a different first voxel yellow.
+void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,
+                         const std::string& path);
+
+}  // namespace rtu

@@ -1,0 +1,84 @@
+// librtusim_images.so: the OpenImageIO half of frame_images.cpp, loaded with dlopen on first use
+// so that only commands writing an image load OpenImageIO and its many dependencies. It sees
+// plain float pixel buffers only, no rtusim type.
+
+#include <filesystem>
+#include <string>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include "base/plugin_entry.h"
+
+namespace {
+
+// The font of the scale labels: DejaVu Sans (Debian fonts-dejavu-core) when installed, else
+// whatever OpenImageIO finds by default.
+std::string fontName() {
+  static const std::string dejavu = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  std::error_code error;
+  return std::filesystem::exists(dejavu, error) ? dejavu : std::string();
+}
+
+}  // namespace
+
+RTUSIM_PLUGIN_ABI_ENTRY
+
+// Writes `width` x `height` pixels of `channels` floats each (rows top to bottom) to `path`, in
+// the format its extension names: 32-bit float samples when `floatFile`, else 8-bit. Returns
+// nullptr, or the error message (valid until the thread's next call).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, int width, int height,
+                                                     int channels, const float* data,
+                                                     int floatFile) {
+  return rtu::pluginCall([&]() -> std::string {
+    auto output = OIIO::ImageOutput::create(path);
+    if (!output) return "OpenImageIO: " + OIIO::geterror();
+    const OIIO::ImageSpec spec(width, height, channels,
+                               floatFile ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!output->open(path, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, data) ||
+        !output->close())
+      return "OpenImageIO: " + output->geterror();
+    return {};
+  });
+}
+
+// Whether OpenImageIO can write the format `path`'s extension names, without creating the file.
+// Returns nullptr, or the error message (valid until the thread's next call).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_format_error(const char* path) {
+  return rtu::pluginCall([&]() -> std::string {
+    if (!OIIO::ImageOutput::create(path)) return "OpenImageIO: " + OIIO::geterror();
+    return {};
+  });
+}
+
+// Width in pixels of `text` at `fontSize` pixels, or -1 when no font can be loaded.
+RTUSIM_PLUGIN_EXPORT int rtusim_images_text_width(const char* text, int fontSize) {
+  try {
+    const OIIO::ROI size = OIIO::ImageBufAlgo::text_size(text, fontSize, fontName());
+    return size.defined() ? size.width() : -1;
+  } catch (...) {
+    return -1;
+  }
+}
+
+// Draws `text` (anti-aliased, in `colour`, one float per channel) into the RGB float buffer
+// `pixels` of `width` x `height`, its baseline at row `y`, starting at column `x` (align 0),
+// ending there (1) or centred on it (2). Returns 1, or 0 when the text could not be rendered.
+RTUSIM_PLUGIN_EXPORT int rtusim_images_draw_text(
+    float* pixels, int width, int height, int x, int y, const char* text, int fontSize,
+    const float* colour, int align) {
+  try {
+    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf image(spec, pixels);
+    const OIIO::ImageBufAlgo::TextAlignX alignX =
+        align == 1   ? OIIO::ImageBufAlgo::TextAlignX::Right
+        : align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Center
+                     : OIIO::ImageBufAlgo::TextAlignX::Left;
+    return OIIO::ImageBufAlgo::render_text(image, x, y, text, fontSize, fontName(),
+                                           {colour, 3}, alignX) ? 1 : 0;
+  } catch (...) {
+    return 0;
+  }
+}
+

@@ -1,0 +1,39 @@
+// rtusim: a model of the sparse voxel octree ray tracing unit of Espe (2019).
+
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "config/configuration.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rtusim: models of a ray tracing unit for sparse voxel octrees"};
+  app.set_version_flag("--version", rtu::rtusimVersion());
+  app.require_subcommand(1);
+  rtu::addBuildCommand(app);
+  rtu::addValidateCommand(app);
+  rtu::addJobsCommand(app);
+  rtu::addGoldenCommand(app);
+  rtu::addReplayCommand(app);
+  rtu::addRenderCommand(app);
+  rtu::addAnimateCommand(app);
+  rtu::addAccuracyCommand(app);
+  rtu::addPrecisionCommand(app);
+  rtu::addConfigCommand(app);
+  rtu::addFpsCommand(app);
+  rtu::addFidelityCommand(app);
+  rtu::addSweepCommand(app);
+  rtu::addPlotCommands(app);
+  rtu::addWaveCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const std::exception& error) {
+    std::cerr << "rtusim: error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,86 @@
+#include "base/binary_file.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace rtu {
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "file formats assume a little-endian host");
+
+namespace {
+constexpr size_t kReadChunkBytes = size_t{1} << 20;
+}
+
+RecordFileReader::RecordFileReader(const std::string& path, size_t recordBytes,
+                                   const std::string& what)
+    : in_(path, std::ios::binary | std::ios::ate), path_(path), what_(what) {
+  if (!in_) throw std::runtime_error("cannot open " + what + " '" + path + "'");
+  const std::streamoff size = in_.tellg();
+  if (size < 0) throw std::runtime_error("cannot read " + what + " '" + path + "'");
+  if (size % static_cast<std::streamoff>(recordBytes) != 0)
+    throw std::runtime_error(what + " '" + path + "' has " + std::to_string(size) +
+                             " bytes, not a multiple of its " + std::to_string(recordBytes) +
+                             "-byte records");
+  in_.seekg(0);
+  recordWords_ = recordBytes / sizeof(uint32_t);
+  records_ = recordsLeft_ = static_cast<size_t>(size) / recordBytes;
+  chunk_.resize(std::max<size_t>(1, kReadChunkBytes / recordBytes) * recordWords_);
+}
+
+const uint32_t* RecordFileReader::next(size_t& count) {
+  count = std::min(recordsLeft_, chunk_.size() / recordWords_);
+  if (count == 0) return nullptr;
+  const auto bytes = static_cast<std::streamsize>(count * recordWords_ * sizeof(uint32_t));
+  if (!in_.read(reinterpret_cast<char*>(chunk_.data()), bytes))
+    throw std::runtime_error("cannot read " + what_ + " '" + path_ + "'");
+  recordsLeft_ -= count;
+  return chunk_.data();
+}
+
+WordFileWriter::WordFileWriter(const std::string& path)
+    : out_(path, std::ios::binary | std::ios::trunc), path_(path), chunk_(kChunkWords) {
+  if (!out_) throw std::runtime_error("cannot create '" + path + "'");
+}
+
+uint32_t* WordFileWriter::append(size_t words) {
+  if (used_ + words > chunk_.size()) flush();
+  uint32_t* space = chunk_.data() + used_;
+  used_ += words;
+  return space;
+}
+
+void WordFileWriter::flush() {
+  out_.write(reinterpret_cast<const char*>(chunk_.data()),
+             static_cast<std::streamsize>(used_ * sizeof(uint32_t)));
+  used_ = 0;
+  if (!out_) throw std::runtime_error("cannot write '" + path_ + "'");
+}
+
+void WordFileWriter::close() {
+  flush();
+  out_.close();
+  if (!out_) throw std::runtime_error("cannot write '" + path_ + "'");
+}
+
+std::vector<uint32_t> readWordFile(const std::string& path, size_t recordBytes,
+                                   const std::string& what) {
+  RecordFileReader reader(path, recordBytes, what);
+  std::vector<uint32_t> words;
+  words.reserve(reader.records() * recordBytes / sizeof(uint32_t));
+  size_t count = 0;
+  while (const uint32_t* chunk = reader.next(count))
+    words.insert(words.end(), chunk, chunk + count * recordBytes / sizeof(uint32_t));
+  return words;
+}
+
+void writeWordFile(const std::string& path, const std::vector<uint32_t>& words) {
+  WordFileWriter writer(path);
+  for (size_t done = 0; done < words.size(); done += WordFileWriter::kChunkWords) {
+    const size_t n = std::min(WordFileWriter::kChunkWords, words.size() - done);
+    std::memcpy(writer.append(n), words.data() + done, n * sizeof(uint32_t));
+  }
+  writer.close();
+}
+
+}  // namespace rtu

@@ -1,0 +1,475 @@
+#include "config/config_schema.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+
+#include "kinds/svo/procedural_scenes.h"
+#include "base/timing_limits.h"
+
+namespace rtu {
+namespace {
+
+// A field is a callable that selects a member: RunConfig& -> T&.
+template <class F>
+using FieldType = std::remove_reference_t<std::invoke_result_t<F, RunConfig&>>;
+
+template <class F>
+const FieldType<F>& read(const F& field, const RunConfig& config) {
+  return field(const_cast<RunConfig&>(config));  // the field function only selects a member
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& message) {
+  throw std::invalid_argument(key + ": " + message);
+}
+
+std::string trim(const std::string& text) {
+  const size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+// The shortest decimal text that reads back as the same value of type T (float or double).
+template <class T = double>
+std::string formatReal(T value) {
+  char text[64];
+  for (int precision = 6; precision <= 17; ++precision) {
+    std::snprintf(text, sizeof text, "%.*g", precision, static_cast<double>(value));
+    if (static_cast<T>(std::strtod(text, nullptr)) == value) break;
+  }
+  return text;
+}
+
+double parseNumber(const std::string& text, const std::string& key, bool integer) {
+  const std::string value = trim(text);
+  size_t used = 0;
+  double number = 0;
+  try {
+    number = std::stod(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (value.empty() || used != value.size() || !std::isfinite(number))
+    fail(key, "'" + text + "' is not a number");
+  if (integer && number != std::floor(number)) fail(key, "'" + text + "' is not a whole number");
+  return number;
+}
+
+void checkRange(double value, const Setting& setting) {
+  if (value == 0 && setting.zeroAllowed) return;
+  if (value < setting.min || value > setting.max)
+    fail(setting.key, formatReal(value) + " is out of range " + setting.range());
+}
+
+Setting declare(std::string key, std::string flag, SettingKind kind, std::string unit,
+                unsigned uses, std::string doc) {
+  Setting setting;
+  setting.key = std::move(key);
+  setting.flag = std::move(flag);
+  setting.kind = kind;
+  setting.unit = std::move(unit);
+  setting.uses = uses;
+  setting.doc = std::move(doc);
+  return setting;
+}
+
+template <class F>
+Setting number(SettingKind kind, std::string key, std::string flag, std::string unit, double min,
+               double max, unsigned uses, std::string doc, F field, bool zeroAllowed = false) {
+  using T = FieldType<F>;
+  Setting s = declare(std::move(key), std::move(flag), kind, std::move(unit), uses, std::move(doc));
+  s.min = min;
+  s.max = max;
+  s.zeroAllowed = zeroAllowed;
+  s.get = [field, kind](const RunConfig& c) -> std::string {
+    const T value = read(field, c);
+    if (kind == SettingKind::Bytes) return formatBytes(static_cast<uint64_t>(value));
+    if (kind == SettingKind::Integer) return std::to_string(static_cast<long long>(value));
+    return formatReal<std::conditional_t<std::is_same_v<T, float>, float, double>>(value);
+  };
+  s.assign = [field, s](RunConfig& c, const std::string& text) {
+    const double value = s.kind == SettingKind::Bytes
+                             ? static_cast<double>(parseBytes(text, s.key))
+                             : parseNumber(text, s.key, s.kind == SettingKind::Integer);
+    checkRange(value, s);
+    field(c) = static_cast<T>(value);
+  };
+  return s;
+}
+
+template <class F>
+Setting integer(std::string key, std::string flag, std::string unit, double min, double max,
+                unsigned uses, std::string doc, F field) {
+  return number(SettingKind::Integer, std::move(key), std::move(flag), std::move(unit), min, max,
+                uses, std::move(doc), field);
+}
+
+template <class F>
+Setting real(std::string key, std::string flag, std::string unit, double min, double max,
+             unsigned uses, std::string doc, F field) {
+  return number(SettingKind::Real, std::move(key), std::move(flag), std::move(unit), min, max, uses,
+                std::move(doc), field);
+}
+
+// A rate where 0 means unlimited.
+template <class F>
+Setting realOrZero(std::string key, std::string flag, std::string unit, double min, double max,
+                   unsigned uses, std::string doc, F field) {
+  return number(SettingKind::Real, std::move(key), std::move(flag), std::move(unit), min, max, uses,
+                std::move(doc), field, /*zeroAllowed=*/true);
+}
+
+template <class F>
+Setting bytes(std::string key, std::string flag, double max, unsigned uses, std::string doc,
+              F field) {
+  return number(SettingKind::Bytes, std::move(key), std::move(flag), "bytes", 1, max, uses,
+                std::move(doc), field);
+}
+
+// An enumeration shown by name: `names` maps the stored value to text, `parse` back.
+template <class F, class T = FieldType<F>>
+Setting choice(std::string key, std::string flag, std::vector<std::string> choices, unsigned uses,
+               std::string doc, F field, std::string (*name)(const T&),
+               T (*parse)(const std::string&)) {
+  Setting s = declare(std::move(key), std::move(flag), SettingKind::Choice, "", uses, std::move(doc));
+  s.choices = std::move(choices);
+  s.get = [field, name](const RunConfig& c) { return name(read(field, c)); };
+  s.assign = [field, parse, s](RunConfig& c, const std::string& text) {
+    const std::string value = trim(text);
+    if (std::find(s.choices.begin(), s.choices.end(), value) == s.choices.end())
+      fail(s.key, "'" + text + "' is not one of " + s.range());
+    field(c) = parse(value);
+  };
+  return s;
+}
+
+template <class F>
+Setting text(SettingKind kind, std::string key, std::string flag, unsigned uses, std::string doc,
+             F field) {
+  Setting s = declare(std::move(key), std::move(flag), kind, "", uses, std::move(doc));
+  s.get = [field](const RunConfig& c) { return read(field, c); };
+  s.assign = [field](RunConfig& c, const std::string& value) { field(c) = value; };
+  return s;
+}
+
+template <class F>
+Setting flag(std::string key, std::string flagName, unsigned uses, std::string doc, F field) {
+  Setting s = declare(std::move(key), std::move(flagName), SettingKind::Flag, "", uses, std::move(doc));
+  s.get = [field](const RunConfig& c) { return std::string(read(field, c) ? "true" : "false"); };
+  s.assign = [field, key = s.key](RunConfig& c, const std::string& text) {
+    const std::string value = trim(text);
+    if (value == "true" || value == "1") field(c) = true;
+    else if (value == "false" || value == "0") field(c) = false;
+    else fail(key, "'" + text + "' is not true or false");
+  };
+  return s;
+}
+
+template <class F>
+Setting vector(std::string key, std::string flagName, unsigned uses, std::string doc, F field) {
+  Setting s = declare(std::move(key), std::move(flagName), SettingKind::Vector, "", uses, std::move(doc));
+  s.get = [field](const RunConfig& c) {
+    const glm::dvec3& v = read(field, c);
+    return formatReal(v.x) + "," + formatReal(v.y) + "," + formatReal(v.z);
+  };
+  s.assign = [field, key = s.key](RunConfig& c, const std::string& value) {
+    field(c) = parseVector(value, key);
+  };
+  return s;
+}
+
+// Enumerations by name.
+std::string schedulerName(const SchedulerPolicy& p) { return toString(p); }
+std::string replacementName(const Replacement& r) { return toString(r); }
+std::string conversionName(const FloatConversion& c) { return toString(c); }
+std::string memoryKindName(const bool& ideal) { return ideal ? "ideal" : "cached"; }
+bool parseMemoryKind(const std::string& name) { return name == "ideal"; }
+std::string sceneName(const std::string& name) { return name; }
+std::string parseSceneName(const std::string& name) { return name; }
+
+std::string ignoredWithIdealMemory(const RunConfig& c) {
+  return c.rtu.memory.ideal ? "memory.kind is ideal" : "";
+}
+std::string ignoredWithSceneFile(const RunConfig& c) {
+  if (!c.scene.svoFile.empty()) return "svo is given";
+  if (!c.scene.meshFile.empty()) return "mesh is given";
+  if (!c.scene.binvoxFile.empty()) return "binvox is given";
+  return "";
+}
+std::string ignoredWithoutBuiltTree(const RunConfig& c) {
+  if (!c.scene.svoFile.empty()) return "svo is given";
+  if (!c.scene.binvoxFile.empty()) return "binvox is given";
+  return "";
+}
+
+std::string modelKindName(const ModelKind& model) { return toString(model); }
+
+std::string ignoredUnlessLooselyTimed(const RunConfig& c) {
+  return c.model == ModelKind::LooselyTimed ? "" : std::string("model is ") + toString(c.model);
+}
+
+std::string ignoredWithoutSampling(const RunConfig& c) {
+  return c.sample.enabled() ? "" : "sample.fraction is 0 (every ray simulated)";
+}
+
+// The six settings of one cache level; `level` selects its configuration.
+void addCache(std::vector<Setting>& schema, const std::string& level,
+              CacheConfig& (*cache)(RunConfig&)) {
+  using C = RunConfig;
+  const std::string key = "memory." + level + ".";
+  const std::string flag = "--" + level + "-";
+  const std::string name = level == "l1" ? "L1" : "L2";
+  std::vector<Setting> added;
+  added.push_back(bytes(key + "size", flag + "size", 1u << 30, kUseModel, name + " size",
+                        [cache](C& c) -> uint32_t& { return cache(c).sizeBytes; }));
+  added.push_back(bytes(key + "line", flag + "line", 1u << 16, kUseModel, name + " line size",
+                        [cache](C& c) -> uint32_t& { return cache(c).lineBytes; }));
+  added.push_back(integer(key + "ways", flag + "ways", "", 1, 1024, kUseModel, name + " associativity",
+                          [cache](C& c) -> uint32_t& { return cache(c).ways; }));
+  added.push_back(choice(key + "replacement", flag + "replacement", {"lru", "fifo", "random"},
+                         kUseModel, name + " replacement policy",
+                         [cache](C& c) -> Replacement& { return cache(c).replacement; },
+                         replacementName, parseReplacement));
+  added.push_back(integer(key + "latency", flag + "latency", "cycles", 0, kMaxLatencyCycles, kUseModel,
+                          name + " hit latency", [cache](C& c) -> uint32_t& { return cache(c).hitLatency; }));
+  added.push_back(integer(key + "mshrs", flag + "mshrs", "", 1, 4096, kUseModel,
+                          name + " outstanding-miss limit",
+                          [cache](C& c) -> uint32_t& { return cache(c).maxOutstandingMisses; }));
+  for (Setting& s : added) {
+    s.ignoredBecause = ignoredWithIdealMemory;
+    schema.push_back(std::move(s));
+  }
+}
+
+std::vector<Setting> makeSchema() {
+  using C = RunConfig;
+  constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
+                     camera = kUseCamera, buffers = kUseBuffers, sampling = kUseSampling;
+  std::vector<Setting> s;
+  s.push_back(choice("model", "--model", {"golden", "lt", "ca"}, kUseModelChoice,
+                     "which model answers: ca (cycle-accurate SystemC, exact), lt (loosely-timed "
+                     "TLM-2.0, estimated cycles) or golden (untimed; cycles from golden costs)",
+                     [](C& c) -> ModelKind& { return c.model; }, modelKindName, parseModelKind));
+  s.push_back(integer("lt.quantum", "--lt-quantum", "cycles", 1, 1e9, kUseModelChoice,
+                      "loosely-timed model: global quantum of temporal decoupling",
+                      [](C& c) -> uint64_t& { return c.rtu.ltQuantum; }));
+  s.back().ignoredBecause = ignoredUnlessLooselyTimed;
+  s.push_back(integer("cores", "--cores", "", 1, kMaxCores, model, "number of traversal cores",
+                      [](C& c) -> int& { return c.rtu.cores; }));
+  s.push_back(choice("scheduler", "--scheduler", {"cfa", "rr", "fa"}, model,
+                     "cfa (cyclic first-available, the RTL), rr (round-robin) or fa (first-available)",
+                     [](C& c) -> SchedulerPolicy& { return c.rtu.scheduler; }, schedulerName,
+                     parseSchedulerPolicy));
+  s.push_back(real("clock_mhz", "--clock-mhz", "MHz", kMinClockMhz, kMaxClockMhz, model,
+                   "clock for rates and frame rates", [](C& c) -> double& { return c.rtu.clockMhz; }));
+  s.push_back(choice("memory.kind", "--memory", {"ideal", "cached"}, model,
+                     "ideal (thesis ROM, every word at once) or cached (L1, L2, DRAM)",
+                     [](C& c) -> bool& { return c.rtu.memory.ideal; }, memoryKindName,
+                     parseMemoryKind));
+  addCache(s, "l1", [](C& c) -> CacheConfig& { return c.rtu.memory.l1; });
+  addCache(s, "l2", [](C& c) -> CacheConfig& { return c.rtu.memory.l2; });
+  s.push_back(integer("memory.dram.latency", "--dram-latency", "cycles", 0, kMaxLatencyCycles, model,
+                      "cycles from issuing a read to the start of its data",
+                      [](C& c) -> uint32_t& { return c.rtu.memory.dram.latency; }));
+  s.back().ignoredBecause = ignoredWithIdealMemory;
+  s.push_back(real("memory.dram.bytes_per_cycle", "--dram-bytes-per-cycle", "bytes/cycle",
+                   kMinBytesPerCycle, kMaxBytesPerCycle, model, "DRAM bus bandwidth",
+                   [](C& c) -> double& { return c.rtu.memory.dram.bytesPerCycle; }));
+  s.back().ignoredBecause = ignoredWithIdealMemory;
+  s.push_back(realOrZero("host.in.bytes_per_cycle", "--host-in-bytes-per-cycle", "bytes/cycle",
+                         kMinBytesPerCycle, kMaxBytesPerCycle, model,
+                         "host input link rate, 32-byte records (0: one record a cycle)",
+                         [](C& c) -> double& { return c.rtu.hostInput.bytesPerCycle; }));
+  s.push_back(realOrZero("host.out.bytes_per_cycle", "--host-out-bytes-per-cycle", "bytes/cycle",
+                         kMinBytesPerCycle, kMaxBytesPerCycle, model,
+                         "host output link rate, 32-byte records (0: one record a cycle)",
+                         [](C& c) -> double& { return c.rtu.hostOutput.bytesPerCycle; }));
+  s.push_back(integer("reorder", "--reorder", "results", 0, 1 << 24, model,
+                      "reorder buffer capacity: results in submission order (0: none)",
+                      [](C& c) -> int& { return c.rtu.reorderCapacity; }));
+  s.push_back(integer("scene_manager.rays_in_flight", "--scene-rays-in-flight", "rays", 1, 1 << 16,
+                      model, "rays the scene manager holds at once (animate --model ca)",
+                      [](C& c) -> int& { return c.rtu.sceneManager.raysInFlight; }));
+  s.push_back(integer("scene_manager.jobs_outstanding", "--scene-jobs-outstanding", "jobs", 1,
+                      1 << 16, model, "jobs issued to the RTU and not yet returned, at most",
+                      [](C& c) -> int& { return c.rtu.sceneManager.jobsOutstanding; }));
+  s.push_back(integer("scene_manager.latency", "--scene-latency", "cycles", 0, kMaxLatencyCycles,
+                      model, "cycles from taking a ray to its first job (sphere tests, sort)",
+                      [](C& c) -> int& { return c.rtu.sceneManager.latency; }));
+  s.push_back(integer("job_manager.stages", "--jm-stages", "cycles", 1, 64, model,
+                      "job manager pipeline stages for t-value records (RTL: 6)",
+                      [](C& c) -> int& { return c.rtu.jobManager.stages; }));
+  s.push_back(integer("job_manager.ray_stages", "--jm-ray-stages", "cycles", 0, 64, model,
+                      "extra stages for ray records: transform and t-parameters",
+                      [](C& c) -> int& { return c.rtu.jobManager.rayStages; }));
+  s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0, kMaxLatencyCycles, model,
+                      "cycles to fetch a model header, once per model",
+                      [](C& c) -> int& { return c.rtu.jobManager.headerFetchCycles; }));
+  s.push_back(real("job_manager.epsilon", "--epsilon", "", 0, 1, buffers,
+                   "ray records: direction components below epsilon times the largest count as zero",
+                   [](C& c) -> float& { return c.rtu.jobManager.epsilon; }));
+  s.back().ignoredBecause = [](const C& c) {
+    return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();
+  };
+  s.push_back(integer("stack_frames", "--stack-frames", "frames", 1, kMaxStackFrames, arith,
+                      "traversal stack depth (RTL: 11)", [](C& c) -> int& { return c.rtu.stackFrames; }));
+  s.push_back(flag("allow_stack_overflow", "--allow-stack-overflow", arith,
+                   "run even when a tree is deeper than the stack (such rays are flagged)",
+                   [](C& c) -> bool& { return c.allowStackOverflow; }));
+  s.push_back(integer("format.total_bits", "--total-bits", "bits", 8, 48, arith,
+                      "fixed-point word width", [](C& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
+  s.push_back(integer("format.fraction_bits", "--fraction-bits", "bits", 1, 46, arith,
+                      "fixed-point fraction bits",
+                      [](C& c) -> int& { return c.rtu.jobManager.format.fractionBits; }));
+  s.push_back(choice("format.conversion", "--conversion", {"rtl", "exact"}, arith,
+                     "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
+                     [](C& c) -> FloatConversion& { return c.rtu.jobManager.conversion; },
+                     conversionName, parseFloatConversion));
+  // The workload.
+  s.push_back(choice("scene", "--scene", proceduralSceneNames(), scene,
+                     "procedural scene, used when no scene file is given",
+                     [](C& c) -> std::string& { return c.scene.procedural; }, sceneName, parseSceneName));
+  s.back().ignoredBecause = ignoredWithSceneFile;
+  s.push_back(integer("scene.depth", "--depth", "levels", 1, 16, scene,
+                      "octree depth of procedural scenes and meshes",
+                      [](C& c) -> int& { return c.scene.depth; }));
+  s.back().ignoredBecause = ignoredWithoutBuiltTree;
+  s.push_back(integer("scene.seed", "--seed", "", 0, 9007199254740992.0, scene,
+                      "seed of the random scenes (terrain, noise)",
+                      [](C& c) -> uint64_t& { return c.scene.seed; }));
+  s.back().ignoredBecause = ignoredWithSceneFile;
+  s.push_back(integer("scene.root", "--root", "word", 0, 4294967295.0, scene,
+                      "word address of the root descriptor", [](C& c) -> uint32_t& { return c.scene.root; }));
+  s.push_back(text(SettingKind::Path, "svo", "--svo", scene | buffers,
+                   "SVO memory image (.svo, little-endian u32 words)",
+                   [](C& c) -> std::string& { return c.scene.svoFile; }));
+  s.push_back(text(SettingKind::Path, "mesh", "--mesh", scene, "triangle mesh to voxelize (OBJ or PLY)",
+                   [](C& c) -> std::string& { return c.scene.meshFile; }));
+  s.push_back(text(SettingKind::Path, "binvox", "--binvox", scene, "voxel file to import (.binvox)",
+                   [](C& c) -> std::string& { return c.scene.binvoxFile; }));
+  s.push_back(text(SettingKind::Path, "jobs", "--jobs", buffers, "host input buffer (8 u32 per job record)",
+                   [](C& c) -> std::string& { return c.jobs; }));
+  s.push_back(text(SettingKind::Path, "rays", "--rays", buffers,
+                   "ray buffer (8 u32 per world-space ray record)",
+                   [](C& c) -> std::string& { return c.rays; }));
+  s.push_back(integer("width", "--width", "pixels", 1, 1 << 14, camera, "image width",
+                      [](C& c) -> int& { return c.camera.width; }));
+  s.push_back(integer("height", "--height", "pixels", 1, 1 << 14, camera, "image height",
+                      [](C& c) -> int& { return c.camera.height; }));
+  s.push_back(vector("camera.position", "--camera", camera, "camera position x,y,z",
+                     [](C& c) -> glm::dvec3& { return c.camera.position; }));
+  s.push_back(vector("camera.look_at", "--look-at", camera, "point the camera looks at x,y,z",
+                     [](C& c) -> glm::dvec3& { return c.camera.lookAt; }));
+  s.push_back(vector("camera.up", "--up", camera, "camera up vector x,y,z",
+                     [](C& c) -> glm::dvec3& { return c.camera.up; }));
+  s.push_back(real("camera.fov", "--fov", "degrees", 1e-3, 179.999, camera, "vertical field of view",
+                   [](C& c) -> double& { return c.camera.verticalFovDegrees; }));
+  s.push_back(real("camera.epsilon", "--epsilon", "", 1e-30, 1, camera,
+                   "replaces exact zero direction components (thesis driver: 0.0001)",
+                   [](C& c) -> double& { return c.epsilon; }));
+  // Sampled simulation (sampled_run.h).
+  s.push_back(realOrZero("sample.fraction", "--sample", "", 1e-6, 1, sampling,
+                         "simulate this fraction of the frame's rays as a stratified sample of "
+                         "blocks and estimate the rest (0: every ray)",
+                         [](C& c) -> double& { return c.sample.fraction; }));
+  s.push_back(integer("sample.seed", "--sample-seed", "", 0, 9007199254740992.0, sampling,
+                      "seed of the sampled blocks' places",
+                      [](C& c) -> uint64_t& { return c.sample.seed; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
+  s.push_back(integer("sample.block", "--sample-block", "rays", 0, 1 << 24, sampling,
+                      "rays counted per sampled block (0: chosen from the fraction)",
+                      [](C& c) -> uint64_t& { return c.sample.blockRays; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
+  s.push_back(integer("sample.warmup", "--sample-warmup", "rays", 0, 1 << 24, sampling,
+                      "rays simulated before each block and not counted (0: 512, or 32 a core)",
+                      [](C& c) -> uint64_t& { return c.sample.warmupRays; }));
+  s.back().ignoredBecause = ignoredWithoutSampling;
+  return s;
+}
+
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string Setting::range() const {
+  switch (kind) {
+    case SettingKind::Choice: {
+      std::string all;
+      for (const std::string& c : choices) all += (all.empty() ? "" : "|") + c;
+      return all;
+    }
+    case SettingKind::Bytes: return formatBytes(static_cast<uint64_t>(min)) + " .. " +
+                                    formatBytes(static_cast<uint64_t>(max));
+    case SettingKind::Integer:
+    case SettingKind::Real:
+      return (zeroAllowed ? "0 or " : "") + formatReal(min) + " .. " + formatReal(max);
+    case SettingKind::Flag: return "true|false";
+    case SettingKind::Vector: return "x,y,z";
+    default: return "file";
+  }
+}
+
+bool Setting::quotedInFiles() const {
+  return kind != SettingKind::Integer && kind != SettingKind::Real && kind != SettingKind::Flag;
+}
+
+const std::vector<Setting>& configSchema() {
+  static const std::vector<Setting> schema = makeSchema();
+  return schema;
+}
+
+const Setting& findSetting(const std::string& key) {
+  const std::vector<Setting>& schema = configSchema();
+  for (const Setting& s : schema)
+    if (s.key == key) return s;
+  const Setting* nearest = &schema.front();
+  for (const Setting& s : schema)
+    if (editDistance(key, s.key) < editDistance(key, nearest->key)) nearest = &s;
+  throw std::invalid_argument("unknown setting '" + key + "'; did you mean '" + nearest->key +
+                              "'? (rtusim config --list shows every key)");
+}
+
+uint64_t parseBytes(const std::string& text, const std::string& key) {
+  const std::string value = trim(text);
+  const size_t unitStart = value.find_first_not_of("0123456789.");
+  const std::string digits = trim(value.substr(0, unitStart));
+  const std::string unit = unitStart == std::string::npos ? "" : trim(value.substr(unitStart));
+  static const std::vector<std::pair<std::string, double>> units = {
+      {"", 1},           {"B", 1},         {"KiB", 1024.0},  {"MiB", 1048576.0},
+      {"GiB", 1073741824.0}, {"kB", 1e3}, {"KB", 1e3},      {"MB", 1e6}, {"GB", 1e9}};
+  const auto found = std::find_if(units.begin(), units.end(),
+                                  [&](const auto& u) { return u.first == unit; });
+  if (digits.empty() || found == units.end())
+    fail(key, "'" + text + "' is not a size (e.g. 4096, 4KiB, 1MiB)");
+  const double bytes = parseNumber(digits, key, false) * found->second;
+  if (bytes != std::floor(bytes) || bytes > 9e15)
+    fail(key, "'" + text + "' is not a whole number of bytes");
+  return static_cast<uint64_t>(bytes);
+}
+
+std::string formatBytes(uint64_t bytes) {
+  static const char* const units[] = {"GiB", "MiB", "KiB"};
+  for (int i = 0; i < 3; ++i) {
+    const uint64_t scale = uint64_t{1} << (10 * (3 - i));
+    if (bytes >= scale && bytes % scale == 0) return std::to_string(bytes / scale) + units[i];
+  }
+  return std::to_string(bytes);
+}
+
+}  // namespace rtu

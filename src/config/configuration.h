@@ -1,0 +1,61 @@
+#pragma once
+// One run's effective configuration, built in layers over the schema's defaults: a preset, then
+// configuration files (TOML or JSON), then the command line (`--set key=value` and each
+// setting's own flag). It remembers where each setting came from, so that a setting a user gave
+// and that has no effect is reported instead of silently dropped.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/config_schema.h"
+
+namespace rtu {
+
+enum class ConfigSource { Default, Preset, File, CommandLine };
+
+class Configuration {
+ public:
+  const RunConfig& values() const { return values_; }
+  RunConfig& values() { return values_; }
+
+  // Throws std::invalid_argument naming the key (and the nearest key when unknown).
+  void set(const std::string& key, const std::string& text, ConfigSource source);
+  // "key=value".
+  void setAssignment(const std::string& assignment, ConfigSource source);
+  void applyPreset(const std::string& name);
+  // .toml or .json, nested tables or dotted keys; errors name the file.
+  void loadFile(const std::string& path);
+  void loadText(const std::string& text, const std::string& format, const std::string& origin,
+                ConfigSource source);
+
+  ConfigSource source(const std::string& key) const;
+  // Settings given in a file or on the command line that the command (its `uses`) or this
+  // configuration ignores: errors for the command line and for scene sources given together,
+  // warnings on standard error for files. `commandSets`, if given, applies what the command
+  // sets itself (fidelity samples at its own fractions) before asking which settings are ignored.
+  void checkApplicable(unsigned uses, const std::string& command,
+                       const std::function<void(RunConfig&)>& commandSets = {}) const;
+
+  // The whole configuration, loadable again with --config.
+  std::string toToml() const;
+  // Flat: key -> typed value, in schema order.
+  nlohmann::ordered_json toJson() const;
+
+ private:
+  RunConfig values_;
+  std::map<std::string, ConfigSource> sources_;
+};
+
+// Shipped presets (presets/*.toml, embedded in the binary).
+std::vector<std::string> presetNames();
+// Throws std::invalid_argument naming the presets for an unknown name.
+const std::string& presetText(const std::string& name);
+
+// The rtusim version: project version and source revision.
+const char* rtusimVersion();
+
+}  // namespace rtu

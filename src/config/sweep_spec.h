@@ -1,0 +1,29 @@
+#pragma once
+// What a sweep runs: a grid (the cartesian product of value lists over schema keys) and/or an
+// explicit list of configurations, each on top of the base configuration (preset, files, flags).
+// With both, every listed configuration is combined with every grid point.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config/configuration.h"
+
+namespace rtu {
+
+struct SweepSpec {
+  using Assignments = std::vector<std::pair<std::string, std::string>>;
+  std::vector<std::pair<std::string, std::vector<std::string>>> grid;  // key, values
+  std::vector<Assignments> list;
+
+  // "key=v1,v2,v3" (--grid); the key is checked against the schema.
+  void addGrid(const std::string& argument);
+  // A TOML file with a [grid] table of arrays and [[configs]] tables; errors name the file.
+  void loadFile(const std::string& path);
+
+  // Every configuration of the sweep, in a stable order; throws std::invalid_argument naming
+  // the key for a value the schema rejects.
+  std::vector<Configuration> expand(const Configuration& base) const;
+};
+
+}  // namespace rtu

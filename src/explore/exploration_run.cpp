@@ -1,0 +1,251 @@
+#include "explore/exploration_run.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <fstream>
+#include <stdexcept>
+
+#include "run/analytic_run.h"
+#include "config/run_json.h"
+#include "run/rtu_simulation.h"
+#include "run/sampled_run.h"
+#include "kinds/svo/stack_check.h"
+#include "explore/sweep_workers.h"
+
+namespace rtu {
+namespace {
+
+// The settings that decide which scene is built, as text.
+std::string sceneKey(const SceneSpec& spec) {
+  return spec.procedural + "|" + spec.svoFile + "|" + spec.meshFile + "|" + spec.binvoxFile + "|" +
+         std::to_string(spec.depth) + "|" + std::to_string(spec.seed) + "|" +
+         std::to_string(spec.root) + "|" + std::to_string(spec.maxDepth);
+}
+
+}  // namespace
+
+void SceneCache::build(const std::vector<Configuration>& configurations) {
+  // A scene too deep for every stack that will run it is refused before it is built (a deep
+  // procedural scene takes minutes and gigabytes); each row still checks its own stack.
+  struct Use {
+    const SceneSpec* spec;
+    int stackFrames;
+    bool allowOverflow;
+  };
+  std::map<std::string, Use> uses;
+  for (const Configuration& configuration : configurations) {
+    const RunConfig& settings = configuration.values();
+    auto [use, added] = uses.emplace(sceneKey(settings.scene),
+                                     Use{&settings.scene, settings.rtu.stackFrames, settings.allowStackOverflow});
+    use->second.stackFrames = std::max(use->second.stackFrames, settings.rtu.stackFrames);
+    use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
+  }
+  for (const auto& [key, use] : uses) {
+    if (scenes_.count(key) || errors_.count(key)) continue;
+    try {
+      checkBuiltSceneFitsStack(*use.spec, use.stackFrames, use.allowOverflow);
+      scenes_.emplace(key, loadScene(*use.spec));
+    } catch (const std::exception& error) {
+      errors_.emplace(key, error.what());
+    }
+  }
+}
+
+const Scene& SceneCache::scene(const SceneSpec& spec) const {
+  const std::string key = sceneKey(spec);
+  const auto error = errors_.find(key);
+  if (error != errors_.end()) throw std::runtime_error("scene: " + error->second);
+  return scenes_.at(key);
+}
+
+void SceneCache::save(const std::string& directory) const {
+  nlohmann::json index = nlohmann::json::object();
+  size_t number = 0;
+  for (const auto& [key, scene] : scenes_) {
+    const std::string file = "scene_" + std::to_string(number++) + ".svo";
+    writeSvoFile(directory + "/" + file, scene.image);
+    index[key] = {{"file", file}, {"root", scene.image.root}, {"name", scene.name},
+                  {"summary", scene.summary}, {"depth", scene.depth}};
+  }
+  for (const auto& [key, error] : errors_) index[key] = {{"error", error}};
+  std::ofstream out(directory + "/scenes.json");
+  out << index.dump(2) << "\n";
+  if (!out) throw std::runtime_error("cannot write scenes into " + directory);
+}
+
+void SceneCache::load(const std::string& directory) {
+  std::ifstream in(directory + "/scenes.json");
+  if (!in) throw std::runtime_error("no scenes.json in sweep directory " + directory);
+  const nlohmann::json index = nlohmann::json::parse(in);
+  for (const auto& [key, entry] : index.items()) {
+    if (entry.contains("error")) {
+      errors_[key] = entry["error"].get<std::string>();
+      continue;
+    }
+    Scene scene;
+    scene.image = readSvoFile(directory + "/" + entry["file"].get<std::string>(),
+                              entry["root"].get<uint32_t>());
+    scene.name = entry["name"].get<std::string>();
+    scene.summary = entry["summary"].get<std::string>();
+    scene.depth = entry["depth"].get<int>();
+    scenes_[key] = std::move(scene);
+  }
+}
+
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+                                   RowModel model) {
+  const RunConfig& settings = configuration.values();
+  settings.camera.validate();
+  validate(settings.rtu);
+  const std::vector<TraversalJob> jobs =
+      makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
+  checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
+  if (settings.model != ModelKind::CycleAccurate) {
+    if (settings.sample.enabled())
+      throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
+                                              "not go with --model ") + toString(settings.model));
+    const RtuRun run = runModel(settings.model, scene.image.memory(), jobs, settings.rtu);
+    nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+    row.update(runJson(run.statistics, configuration));
+    return row;
+  }
+  const bool recurrence = model == RowModel::RecurrenceWhereExact && !whyNotAnalytic(settings.rtu);
+  if (!recurrence && settings.sample.enabled()) {
+    nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+    row.update(runJson(RtuStatistics{}, configuration));
+    row["statistics"] = sampledStatisticsJson(
+        runSampled(scene.image.memory(), jobs, settings.rtu, settings.sample));
+    return row;
+  }
+  const RtuRun run = recurrence ? runAnalytic(scene.image.memory(), jobs, settings.rtu)
+                                : simulateRtu(scene.image.memory(), jobs, settings.rtu);
+  nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+  row.update(runJson(run.statistics, configuration));
+  return row;
+}
+
+nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
+                                    RowModel model) {
+  try {
+    return runFrameRow(configuration, scenes.scene(configuration.values().scene), model);
+  } catch (const std::exception& error) {
+    return failedRow(configuration, error.what());
+  }
+}
+
+nlohmann::ordered_json failedRow(const Configuration& configuration, const std::string& error,
+                                 const std::string& status) {
+  return {{"status", status},
+          {"error", error},
+          {"rtusim", {{"version", rtusimVersion()}}},
+          {"config", configuration.toJson()}};
+}
+
+size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
+               int jobs, const std::string& label,
+               const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
+               RowModel model) {
+  SceneCache scenes;
+  std::vector<Configuration> used;
+  for (size_t row : rows) used.push_back(configurations[row]);
+  scenes.build(used);
+  Progress progress(label, rows.size());
+  size_t finished = 0, failures = 0;
+  const auto work = [&](size_t row) { return runRowSafely(configurations[row], scenes, model).dump(); };
+  runInWorkers(rows, jobs, work, [&](size_t row, const WorkerOutcome& outcome) {
+    nlohmann::ordered_json result;
+    try {
+      result = outcome.answered ? nlohmann::ordered_json::parse(outcome.line)
+                                : failedRow(configurations[row], outcome.failure, "lost");
+    } catch (const nlohmann::json::exception& error) {
+      result = failedRow(configurations[row], std::string("unreadable worker answer: ") + error.what());
+    }
+    failures += result["status"] != "ok";
+    done(row, result);
+    progress.update(++finished, failures);
+  });
+  progress.finish();
+  return failures;
+}
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Where each column's value is in the statistics JSON.
+const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() {
+  static const std::vector<std::pair<std::string, Json::json_pointer>> columns = {
+      {"rays", Json::json_pointer("/rays")},
+      {"total_cycles", Json::json_pointer("/total_cycles")},
+      {"cycles_per_ray", Json::json_pointer("/cycles_per_ray")},
+      {"frame_ms", Json::json_pointer("/frame_ms")},
+      {"fps", Json::json_pointer("/fps")},
+      {"limit", Json::json_pointer("/limit")},
+      {"cost_mean", Json::json_pointer("/cost/mean")},
+      {"blocked_mean", Json::json_pointer("/blocked_cycles/mean")},
+      {"core_busy", Json::json_pointer("/core_time/busy")},
+      {"core_blocked", Json::json_pointer("/core_time/blocked")},
+      {"core_handover", Json::json_pointer("/core_time/handover")},
+      {"core_idle", Json::json_pointer("/core_time/idle")},
+      {"max_wait", Json::json_pointer("/scheduler/max_wait")},
+      {"l1_hit_rate", Json::json_pointer("/memory/l1/hit_rate")},
+      {"l2_hit_rate", Json::json_pointer("/memory/l2/hit_rate")},
+      {"dram_bytes", Json::json_pointer("/memory/dram/bytes")},
+      {"dram_bytes_per_cycle", Json::json_pointer("/memory/dram/bytes_per_cycle")},
+      {"host_seconds", Json::json_pointer("/simulation/host_seconds")},
+      {"answered_by", Json::json_pointer("/simulation/model")},
+      {"total_cycles_ci_low", Json::json_pointer("/sample/total_cycles_ci95/0")},
+      {"total_cycles_ci_high", Json::json_pointer("/sample/total_cycles_ci95/1")},
+      {"simulated_fraction", Json::json_pointer("/sample/fraction_simulated")}};
+  return columns;
+}
+
+std::string valueText(const Json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.10g", value.get<double>());
+    return text;
+  }
+  return value.dump();
+}
+
+}  // namespace
+
+const std::vector<std::string>& statisticsColumns() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const auto& [name, pointer] : columnPointers()) all.push_back(name);
+    return all;
+  }();
+  return names;
+}
+
+std::vector<std::string> statisticsValues(const Json& row) {
+  std::vector<std::string> values;
+  const bool ok = row.contains("statistics");
+  for (const auto& [name, pointer] : columnPointers()) {
+    const Json* statistics = ok ? &row["statistics"] : nullptr;
+    values.push_back(statistics && statistics->contains(pointer) ? valueText((*statistics)[pointer]) : "");
+  }
+  return values;
+}
+
+std::string csvLine(const std::vector<std::string>& fields) {
+  std::string line;
+  for (size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    const std::string& field = fields[i];
+    if (field.find_first_of(",\"\n") == std::string::npos) {
+      line += field;
+      continue;
+    }
+    line += '"';
+    for (char c : field) line += c == '"' ? std::string("\"\"") : std::string(1, c);
+    line += '"';
+  }
+  return line + "\n";
+}
+
+}  // namespace rtu

@@ -1,0 +1,71 @@
+#pragma once
+// One row of an exploration (fps, sweep): the configured camera's frame of primary rays on a
+// scene, simulated on the cycle-accurate model; the row is the run's JSON (version, effective
+// configuration, statistics), the same a single `render --stats` writes.
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/configuration.h"
+#include "kinds/svo/scene_loader.h"
+
+namespace rtu {
+
+// Scenes built once and shared by the rows (workers fork after they are built).
+class SceneCache {
+ public:
+  // Builds every scene the configurations name; a scene that fails keeps its error for its rows.
+  void build(const std::vector<Configuration>& configurations);
+  // Throws std::runtime_error with the build error of a scene that failed.
+  const Scene& scene(const SceneSpec& spec) const;
+  // The built scenes as .svo files with an index in `directory` (for Slurm array tasks), and
+  // back; errors name the directory.
+  void save(const std::string& directory) const;
+  void load(const std::string& directory);
+
+ private:
+  std::map<std::string, Scene> scenes_;
+  std::map<std::string, std::string> errors_;
+};
+
+// Which model answers a row: always the SystemC simulation, or the recurrence of
+// src/rtu/rtu_recurrence.h where it is exact for the configuration (the same cycles and statistics,
+// tests/test_rtu_recurrence.cpp) and the SystemC simulation elsewhere. A simulated row with
+// sample.fraction > 0 simulates a sample of the frame (sampled_run.h) and estimates the rest.
+enum class RowModel { Simulation, RecurrenceWhereExact };
+
+// The run JSON with "status": "ok"; throws for an impossible configuration or a stalled run.
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+                                   RowModel model = RowModel::Simulation);
+// runFrameRow, or the failed row of a configuration that cannot run.
+nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
+                                    RowModel model = RowModel::Simulation);
+
+// The row of a configuration that failed ("failed": it cannot run) or whose worker died ("lost":
+// it may run another time), with the error.
+nlohmann::ordered_json failedRow(const Configuration& configuration, const std::string& error,
+                                 const std::string& status = "failed");
+
+// Runs configurations[i] for each i in `rows` in up to `jobs` worker processes, after building
+// their scenes once, with progress on standard error; `done(i, row)` gets each row as it
+// finishes (a failed configuration gives a failed row, a dead worker a lost one). Returns the
+// rows that are not "ok".
+size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
+               int jobs, const std::string& label,
+               const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
+               RowModel model = RowModel::Simulation);
+
+// The statistics columns of the CSV outputs: rays,total_cycles,cycles_per_ray,frame_ms,fps,limit
+// first, then hit rates, core time shares, scheduler waits, DRAM traffic, the model, and for
+// sampled rows the 95 % interval of total_cycles and the fraction of rays simulated.
+const std::vector<std::string>& statisticsColumns();
+// A row's values for those columns (empty strings for a failed row).
+std::vector<std::string> statisticsValues(const nlohmann::ordered_json& row);
+// One CSV line (RFC 4180 quoting) with its newline.
+std::string csvLine(const std::vector<std::string>& fields);
+
+}  // namespace rtu

@@ -1,0 +1,34 @@
+#pragma once
+// One place that turns "which scene" into an SVO image: a procedural scene, a triangle mesh
+// (OBJ/PLY), a .binvox voxel file or a ready .svo image (validated before use).
+
+#include <cstdint>
+#include <string>
+
+#include "kinds/svo/svo_image.h"
+
+namespace rtu {
+
+struct SceneSpec {
+  std::string procedural = "menger";  // used when no file is given
+  std::string svoFile;
+  std::string meshFile;
+  std::string binvoxFile;
+  int depth = 8;        // octree depth for procedural scenes and meshes
+  uint64_t seed = 1;
+  uint32_t root = 0;    // root descriptor address of an .svo file, or where to build the root
+  int maxDepth = 16;    // deepest octree an .svo file may have
+};
+
+struct Scene {
+  SvoImage image;
+  std::string name;     // e.g. "menger (depth 8)" or the file name
+  std::string summary;  // descriptors, leaves, far pointers, depth, bytes
+  int depth = 0;
+};
+
+// Throws std::invalid_argument when more than one source is given, std::runtime_error for
+// unreadable or malformed files.
+Scene loadScene(const SceneSpec& spec);
+
+}  // namespace rtu

@@ -1,0 +1,31 @@
+#pragma once
+// Whether the configured traversal stack can hold the trees a job stream uses.
+
+#include <cstdint>
+#include <vector>
+
+#include "kinds/svo/scene_loader.h"
+#include "kinds/svo/svo_image.h"
+#include "kinds/svo/traversal_job.h"
+
+namespace rtu {
+
+// Throws std::invalid_argument when a tree the jobs use is deeper than `stackFrames` can hold,
+// unless overflow is allowed (then it warns on standard error): the RTL's stack has no check, so
+// such rays would corrupt it; rtusim ends them as flagged misses.
+void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+                     bool allowOverflow);
+// The same on the roots the jobs start from, repeats allowed.
+void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
+                     bool allowOverflow);
+// Adds a job's root to those for checkRootDepths unless it repeats the last: a frame's jobs
+// mostly share one root, so the roots' sort stays short.
+inline void addRoot(std::vector<uint32_t>& roots, uint32_t root) {
+  if (roots.empty() || roots.back() != root) roots.push_back(root);
+}
+
+// The same check before a procedural scene or a mesh is built, from its --depth alone: a tree of
+// depth d has descriptors down to level d - 1. Scenes read from files are checked once loaded.
+void checkBuiltSceneFitsStack(const SceneSpec& scene, int stackFrames, bool allowOverflow);
+
+}  // namespace rtu

@@ -1,0 +1,22 @@
+#include "kinds/svo/svo_image.h"
+
+#include "base/binary_file.h"
+
+namespace rtu {
+
+uint32_t appendModelHeader(SvoImage& image, const ModelPlacement& placement) {
+  const ModelHeaderWords header = encodeModelHeader(makeModelHeader(placement, image.root));
+  const auto address = static_cast<uint32_t>(image.words.size());
+  image.words.insert(image.words.end(), header.begin(), header.end());
+  return address;
+}
+
+SvoImage readSvoFile(const std::string& path, uint32_t root) {
+  return SvoImage{readWordFile(path, sizeof(uint32_t), "SVO image"), root};
+}
+
+void writeSvoFile(const std::string& path, const SvoImage& image) {
+  writeWordFile(path, image.words);
+}
+
+}  // namespace rtu

@@ -1,0 +1,302 @@
+#include "reference/rtl_cycle_model.h"
+
+#include <algorithm>
+#include <array>
+#include <deque>
+#include <stdexcept>
+#include <string>
+
+#include "kinds/svo/traversal_core.h"
+
+namespace rtu {
+
+void RtlTopConfig::validate() const {
+  if (cores < 1 || cores > kMaxRtlCores)
+    throw std::invalid_argument("core count must be 1 to " + std::to_string(kMaxRtlCores) +
+                                ", got " + std::to_string(cores));
+  golden.format.validate();
+  if (golden.stackFrames < 1 || golden.stackFrames > kMaxStackFrames)
+    throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
+                                " frames, got " + std::to_string(golden.stackFrames));
+  if (rayStages < 0 || rayStages > 64 || headerFetchCycles < 0)
+    throw std::invalid_argument("ray stages must be 0 to 64 and header fetch cycles not negative, "
+                                "got " + std::to_string(rayStages) + " and " +
+                                std::to_string(headerFetchCycles));
+}
+
+namespace {
+
+constexpr int kJobManagerStages = 6;  // P_STAGES
+
+// job_t: what the job manager hands to the cores.
+struct Job {
+  uint64_t tag = 0;  // not an RTL signal: it names the job to the host
+  uint32_t idWord = 0;
+  uint8_t a = 0;
+  uint32_t root = 0;
+  std::array<int64_t, 3> t0{};
+  std::array<int64_t, 3> t1{};
+};
+
+// The combinational signals of one cycle, named after the RTL's wires.
+struct Wires {
+  // host -> job_manager
+  bool inValid = false;
+  const RtlOffer* inRay = nullptr;
+  bool pipelineEnable = false;
+  bool inReady = false;
+  // job_manager -> scheduler -> cores
+  bool schedValid = false;
+  bool schedReady = false;
+  Job pendingJob;
+  std::vector<bool> coreInReady;
+  std::vector<bool> coreInValid;
+  // cores -> result_manager -> host
+  std::vector<bool> coreOutValid;
+  std::vector<bool> coreOutReady;
+  std::vector<RtlCycle::Delivery> coreOutResult;
+  bool outValid = false;
+  bool outReady = true;
+  RtlCycle::Delivery outResult;
+};
+
+// C.2's valid_delay shift register and the job fields beside it, kept as the jobs in the pipeline
+// with the cycles each still has to go: a t-value record goes P_STAGES, a ray record more
+// (JobSetup). Every job moves one stage when pipeline_enable is high and none when it is low; a
+// job reaches the output no earlier than the cycle after the one ahead of it. For t-value
+// records alone this is exactly the shift register.
+struct PipelineJob {
+  Job job;
+  uint64_t remaining = 0;  // cycles to the output; 0: at the output (valid_delay[5])
+};
+
+struct JobManager {
+  std::deque<PipelineJob> pipeline;
+  uint64_t fetchRemaining = 0;  // cycles of a model header fetch still to come
+};
+
+struct Core {
+  TraversalCore<FixedArith> traversal;  // core_state, the frames and the result fields
+  uint32_t idWord = 0;                  // out_result.job_id
+  uint64_t tag = 0;
+};
+
+struct ResultManager {
+  std::vector<bool> resultValid;
+  std::vector<RtlCycle::Delivery> resultBuffer;
+  int resultSelect = 0;
+};
+
+// core_select and result_select: count 0 .. count - 1 and wrap, every cycle.
+int nextSelect(int select, int count) { return select < count - 1 ? select + 1 : 0; }
+
+void recordCycle(std::vector<uint64_t>& cycles, uint64_t tag, uint64_t cycle) {
+  if (cycles.size() <= tag) cycles.resize(tag + 1, 0);
+  cycles[tag] = cycle;
+}
+
+}  // namespace
+
+class RtlTop::Registers {
+ public:
+  Registers(const SvoMemory& memory, const RtlTopConfig& config);
+
+  RtlCycle step(const RtlOffer* offer);
+
+  uint64_t cycle = 0;
+  std::vector<uint64_t> acceptCycles;
+  std::vector<uint64_t> dispatchCycles;
+
+ private:
+  Wires evaluate(const RtlOffer* offer) const;
+  // Each clock function updates one module from the wires and its own registers only, so the
+  // order in which they run does not matter.
+  void clockJobManager(const Wires& wires);
+  void clockScheduler();
+  void clockCores(const Wires& wires);
+  void clockResultManager(const Wires& wires);
+  // The conversion is a pure function of the input, so converting on entry and carrying the
+  // result down the stages gives what float_to_fixed delivers at the end of them.
+  void accept(const RtlOffer& offer);
+
+  SvoMemory memory_;
+  RtlTopConfig config_;
+  JobSetup setup_;  // the ray transform, and the model headers read so far
+  JobManager jobManager_;
+  int coreSelect_ = 0;
+  std::vector<Core> cores_;
+  ResultManager resultManager_;
+};
+
+RtlTop::Registers::Registers(const SvoMemory& memory, const RtlTopConfig& config)
+    : memory_(memory),
+      config_(config),
+      setup_(memory, JobManagerConfig{config.golden.format, config.golden.conversion,
+                                      kJobManagerStages, config.rayStages,
+                                      config.headerFetchCycles}) {
+  config_.validate();
+  const size_t cores = static_cast<size_t>(config_.cores);
+  const Core idle{TraversalCore<FixedArith>(FixedArith{config_.golden.format},
+                                            config_.golden.stackFrames)};
+  cores_.assign(cores, idle);
+  resultManager_.resultValid.assign(cores, false);
+  resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
+}
+
+RtlCycle RtlTop::Registers::step(const RtlOffer* offer) {
+  const Wires wires = evaluate(offer);
+  RtlCycle handshakes{cycle, wires.inValid && wires.inReady, std::nullopt};
+  if (wires.outValid && wires.outReady) handshakes.delivered = wires.outResult;
+  if (handshakes.accepted) recordCycle(acceptCycles, offer->tag, cycle);
+  clockJobManager(wires);
+  clockScheduler();
+  clockCores(wires);
+  clockResultManager(wires);
+  ++cycle;
+  return handshakes;
+}
+
+Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
+  const size_t cores = cores_.size();
+  Wires w;
+  w.coreInReady.assign(cores, false);
+  w.coreInValid.assign(cores, false);
+  w.coreOutValid.assign(cores, false);
+  w.coreOutReady.assign(cores, false);
+  w.coreOutResult.assign(cores, RtlCycle::Delivery{});
+
+  // svo_trav_core
+  for (size_t i = 0; i < cores; ++i) {
+    const CoreState state = cores_[i].traversal.state();
+    w.coreInReady[i] = state == CoreState::Idle;
+    w.coreOutValid[i] = state == CoreState::Out;
+    if (w.coreOutValid[i])
+      w.coreOutResult[i] = {makeResult(cores_[i].idWord, cores_[i].traversal), cores_[i].tag};
+  }
+
+  // result_manager
+  const ResultManager& rm = resultManager_;
+  for (size_t i = 0; i < cores; ++i) w.coreOutReady[i] = !rm.resultValid[i];
+  w.outValid = rm.resultValid[rm.resultSelect];
+  w.outResult = rm.resultBuffer[rm.resultSelect];
+
+  // scheduler
+  const JobManager& jm = jobManager_;
+  w.schedReady = w.coreInReady[coreSelect_];
+  w.schedValid = !jm.pipeline.empty() && jm.pipeline.front().remaining == 0;
+  for (size_t i = 0; i < cores; ++i)
+    w.coreInValid[i] = w.schedValid && i == static_cast<size_t>(coreSelect_);
+
+  // job_manager
+  if (w.schedValid) w.pendingJob = jm.pipeline.front().job;
+  w.pipelineEnable = w.schedReady || !w.schedValid;
+  w.inReady = w.pipelineEnable && jm.fetchRemaining == 0;
+
+  // host
+  w.inValid = offer != nullptr;
+  w.inRay = offer;
+  w.outReady = true;
+  return w;
+}
+
+void RtlTop::Registers::clockJobManager(const Wires& w) {
+  JobManager& jm = jobManager_;
+  if (jm.fetchRemaining > 0) --jm.fetchRemaining;
+  if (!w.pipelineEnable) return;
+  if (w.schedValid) jm.pipeline.pop_front();  // enabled with a valid output: the core took it
+  for (PipelineJob& job : jm.pipeline) --job.remaining;
+  if (w.inValid && w.inReady) accept(*w.inRay);
+}
+
+void RtlTop::Registers::accept(const RtlOffer& offer) {
+  const JobSetup::SetUp set = setup_.setUp(offer.record);
+  const GoldenConfig& golden = config_.golden;
+  const Job job{offer.tag,
+                set.job.idWord(),
+                set.job.a,
+                set.job.root,
+                convertToFixed(set.job.t0Bits, golden.format, golden.conversion),
+                convertToFixed(set.job.t1Bits, golden.format, golden.conversion)};
+  // In the pipeline from the next cycle, at the output `latency` cycles after this one.
+  uint64_t remaining = set.latency - 1;
+  if (!jobManager_.pipeline.empty())
+    remaining = std::max(remaining, jobManager_.pipeline.back().remaining + 1);
+  jobManager_.pipeline.push_back({job, remaining});
+  jobManager_.fetchRemaining = set.headerFetch;
+}
+
+void RtlTop::Registers::clockScheduler() { coreSelect_ = nextSelect(coreSelect_, config_.cores); }
+
+void RtlTop::Registers::clockCores(const Wires& w) {
+  const auto read = [this](uint32_t address) { return memory_.read(address); };
+  for (size_t i = 0; i < cores_.size(); ++i) {
+    Core& core = cores_[i];
+    switch (core.traversal.state()) {
+      case CoreState::Idle:
+        if (w.coreInReady[i] && w.coreInValid[i]) {
+          const Job& job = w.pendingJob;
+          core.idWord = job.idWord;
+          core.tag = job.tag;
+          core.traversal.start(job.t0, job.t1, job.a, job.root);
+          recordCycle(dispatchCycles, job.tag, cycle);
+        }
+        break;
+      case CoreState::Out:
+        if (w.coreOutReady[i]) core.traversal.finish();
+        break;
+      default:
+        core.traversal.step(read);
+        break;
+    }
+  }
+}
+
+void RtlTop::Registers::clockResultManager(const Wires& w) {
+  ResultManager& rm = resultManager_;
+  for (size_t i = 0; i < rm.resultValid.size(); ++i) {
+    if (w.coreOutReady[i] && w.coreOutValid[i]) {
+      rm.resultValid[i] = true;
+      rm.resultBuffer[i] = w.coreOutResult[i];
+    }
+  }
+  if (w.outReady && w.outValid) rm.resultValid[rm.resultSelect] = false;
+  rm.resultSelect = nextSelect(rm.resultSelect, config_.cores);
+}
+
+RtlTop::RtlTop(const SvoMemory& memory, const RtlTopConfig& config)
+    : registers_(std::make_unique<Registers>(memory, config)) {}
+RtlTop::~RtlTop() = default;
+
+RtlCycle RtlTop::step(const RtlOffer* offer) { return registers_->step(offer); }
+uint64_t RtlTop::cycle() const { return registers_->cycle; }
+const std::vector<uint64_t>& RtlTop::acceptCycles() const { return registers_->acceptCycles; }
+const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_->dispatchCycles; }
+
+// The thesis' host: job i + 1 offered from the cycle after job i was taken.
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                    const RtlTopConfig& config) {
+  RtlTop top(memory, config);
+  RtlTopRun run;
+  size_t next = 0;
+  while (run.results.size() < records.size()) {
+    std::optional<RtlOffer> offer;
+    if (next < records.size()) offer = RtlOffer{records[next], next};
+    const RtlCycle cycle = top.step(offer ? &*offer : nullptr);
+    if (cycle.accepted) ++next;
+    if (cycle.delivered) {
+      run.results.push_back(cycle.delivered->result);
+      run.resultCycles.push_back(cycle.cycle);
+    }
+  }
+  run.acceptCycles = top.acceptCycles();
+  run.dispatchCycles = top.dispatchCycles();
+  run.totalCycles = top.cycle();
+  return run;
+}
+
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                    const RtlTopConfig& config) {
+  return runRtlTop(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
+}
+
+}  // namespace rtu

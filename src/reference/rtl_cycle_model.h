@@ -1,0 +1,94 @@
+#pragma once
+// A deliberately naive cycle model of the thesis RTL top level: appendix C.1 (rtu) with C.2
+// (job_manager), C.3 (scheduler), the handshakes of C.4 (svo_trav_core) and C.5
+// (result_manager). Every cycle first computes all combinational signals from the registers,
+// then updates every register of every module, as the clock edge does. Speed is no concern: it is
+// the reference the event-driven SystemC model is checked against, cycle count and result.
+//
+// The job manager also takes ray records (src/kinds/svo/job_setup.h), as the SystemC one does: a ray
+// passes `rayStages` more stages and, the first against a model, waits `headerFetchCycles` for its
+// header, in which no record is accepted (docs/cycle-semantics.md "Job manager").
+//
+// runRtlTop is the thesis' host: cycle 0 is the first cycle after reset. It offers job 0 from
+// cycle 0 and job i + 1 from the cycle after job i's handshake, and it is ready for a result in
+// every cycle. Another host (the scene manager's reference, src/reference/scene_manager_cycles.h) steps
+// RtlTop itself. Memory is ideal (data in the cycle of the address), as in the thesis.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/job_setup.h"
+#include "kinds/svo/svo_memory.h"
+#include "kinds/svo/traversal_job.h"
+
+namespace rtu {
+
+constexpr int kMaxRtlCores = 4096;
+
+struct RtlTopConfig {
+  int cores = 16;  // CORE_CNT
+  GoldenConfig golden;
+  int rayStages = 6;           // beyond P_STAGES, for ray records
+  int headerFetchCycles = 16;  // a model's first ray
+
+  // Throws std::invalid_argument unless 1 <= cores <= kMaxRtlCores, the golden configuration is
+  // valid, 0 <= rayStages <= 64 and headerFetchCycles >= 0.
+  void validate() const;
+};
+
+struct RtlTopRun {
+  std::vector<TraversalResult> results;  // in the order the host received them
+  std::vector<uint64_t> resultCycles;    // cycle of each result's handshake with the host
+  std::vector<uint64_t> acceptCycles;    // per job index: its host -> job manager handshake
+  std::vector<uint64_t> dispatchCycles;  // per job index: its scheduler -> core handshake
+  uint64_t totalCycles = 0;              // cycle in which the last result was taken, plus one
+};
+
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                    const RtlTopConfig& config);
+RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                    const RtlTopConfig& config);
+
+// What a host offers the job manager in one cycle; `tag` names the job to the host (no RTL
+// signal: the result comes back with it).
+struct RtlOffer {
+  HostRecord record;
+  uint64_t tag = 0;
+};
+
+// The handshakes of one cycle with a host that is ready for a result in every cycle.
+struct RtlCycle {
+  uint64_t cycle = 0;
+  bool accepted = false;  // the offer was taken
+  struct Delivery {
+    TraversalResult result;
+    uint64_t tag = 0;
+  };
+  std::optional<Delivery> delivered;  // the result the host took
+};
+
+class RtlTop {
+ public:
+  // Throws std::invalid_argument for an invalid configuration.
+  RtlTop(const SvoMemory& memory, const RtlTopConfig& config);
+  ~RtlTop();
+  RtlTop(const RtlTop&) = delete;
+  RtlTop& operator=(const RtlTop&) = delete;
+
+  // One cycle: the combinational signals with the host offering `offer` (null: in_valid low),
+  // then the clock edge. Throws std::runtime_error for a model header that is not valid.
+  RtlCycle step(const RtlOffer* offer);
+  uint64_t cycle() const;
+  // By tag: the cycle each job was taken by the job manager, and handed to a core.
+  const std::vector<uint64_t>& acceptCycles() const;
+  const std::vector<uint64_t>& dispatchCycles() const;
+
+ private:
+  class Registers;
+  std::unique_ptr<Registers> registers_;
+};
+
+}  // namespace rtu

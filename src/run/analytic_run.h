@@ -1,0 +1,25 @@
+#pragma once
+// The cycle-exact answer without simulating: for configurations the recurrence of
+// src/rtu/rtu_recurrence.h models (ideal memory, no reorder buffer, no trace, host links unlimited
+// or paced), the golden model gives each ray's result and cost and the recurrence every cycle.
+// The run, statistics included, equals simulateRtu's (tests/test_analytic_run.cpp); `rtusim fps`
+// takes this path where it applies.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "run/rtu_simulation.h"
+
+namespace rtu {
+
+// Why the recurrence cannot answer for this configuration, or nothing when it can.
+std::optional<std::string> whyNotAnalytic(const RtuConfig& config);
+
+// Throws std::invalid_argument when whyNotAnalytic says why, or for an impossible configuration.
+RtuRun runAnalytic(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                   const RtuConfig& config);
+RtuRun runAnalytic(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                   const RtuConfig& config);
+
+}  // namespace rtu

@@ -1,0 +1,51 @@
+#include "run/lt_simulation.h"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include "run/analytic_run.h"
+#include "sim/lt/lt_top.h"
+#include "run/recurrence_results.h"
+#include "sim/kernel/sc_kernel.h"
+
+namespace rtu {
+
+// The model is the recurrence with the memory's timing in the traversals: it runs what the
+// recurrence runs, with any memory.
+std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
+  RtuConfig anyMemory = config;
+  anyMemory.memory.ideal = true;
+  return whyNotAnalytic(anyMemory);
+}
+
+RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                       const RtuConfig& config, const RunProgress& progress) {
+  validate(config);
+  if (const auto why = whyNotLooselyTimed(config))
+    throw std::invalid_argument("--model lt does not apply: " + *why);
+  freshKernel();
+  const auto start = std::chrono::steady_clock::now();
+  auto top = std::make_unique<LtTop>("rtu", config, memory, records);
+  sc_core::sc_start();
+  RtuRun run = recurrenceResults(top->takeTiming(), top->takeResults(), top->takeBlocked(), config);
+  if (progress) progress(records.size(), records.size());
+  RtuStatistics& stats = run.statistics;
+  stats.model = "lt";
+  stats.idealMemory = top->idealMemory();
+  if (!stats.idealMemory) {
+    stats.l1 = top->l1Statistics();
+    stats.l2 = top->l2Statistics();
+  }
+  stats.hostSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                       const RtuConfig& config, const RunProgress& progress) {
+  const std::vector<HostRecord> records(jobs.begin(), jobs.end());
+  return runLooselyTimed(memory, records, config, progress);
+}
+
+}  // namespace rtu

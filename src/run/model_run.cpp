@@ -1,0 +1,54 @@
+#include "run/model_run.h"
+
+#include <stdexcept>
+
+#include "run/analytic_run.h"
+#include "run/lt_simulation.h"
+
+namespace rtu {
+
+ModelKind parseModelKind(const std::string& name) {
+  if (name == "golden") return ModelKind::Golden;
+  if (name == "lt") return ModelKind::LooselyTimed;
+  if (name == "ca") return ModelKind::CycleAccurate;
+  throw std::invalid_argument("unknown model '" + name + "' (golden, lt or ca)");
+}
+
+const char* toString(ModelKind model) {
+  switch (model) {
+    case ModelKind::Golden: return "golden";
+    case ModelKind::LooselyTimed: return "lt";
+    case ModelKind::CycleAccurate: return "ca";
+  }
+  return "?";
+}
+
+RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                      const RtuConfig& config) {
+  RtuConfig ideal = config;
+  ideal.memory.ideal = true;
+  if (const auto why = whyNotAnalytic(ideal))
+    throw std::invalid_argument("--model golden times rays by their golden costs in the "
+                                "recurrence, which does not apply: " + *why);
+  RtuRun run = runAnalytic(memory, records, ideal);
+  run.statistics.model = "golden";
+  return run;
+}
+
+RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<HostRecord>& records,
+                const RtuConfig& config, const RunProgress& progress) {
+  switch (model) {
+    case ModelKind::Golden: return runGoldenTimed(memory, records, config);
+    case ModelKind::LooselyTimed: return runLooselyTimed(memory, records, config, progress);
+    case ModelKind::CycleAccurate: break;
+  }
+  return simulateRtu(memory, records, config, progress);
+}
+
+RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                const RtuConfig& config, const RunProgress& progress) {
+  return runModel(model, memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config,
+                  progress);
+}
+
+}  // namespace rtu

@@ -1,0 +1,33 @@
+#pragma once
+// Which model answers a run (the `model` setting, `--model`): the golden model, the loosely-timed
+// TLM-2.0 model or the cycle-accurate SystemC model (docs/fidelity.md compares them).
+//   golden  results bit-exact and untimed; where cycles are asked for, each ray takes its golden
+//           cost and the recurrence (src/rtu/rtu_recurrence.h) times the RTU around it with the
+//           memory taken as ideal: memory stalls are not in it.
+//   lt      results bit-exact; cycles estimated (lt_simulation.h).
+//   ca      results bit-exact; cycles exact (the default).
+
+#include <string>
+#include <vector>
+
+#include "run/rtu_simulation.h"
+
+namespace rtu {
+
+enum class ModelKind { Golden, LooselyTimed, CycleAccurate };
+
+// "golden", "lt" or "ca"; throws std::invalid_argument naming the choices.
+ModelKind parseModelKind(const std::string& name);
+const char* toString(ModelKind model);
+
+// Throws std::invalid_argument when the model cannot run `config` (saying why).
+RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<HostRecord>& records,
+                const RtuConfig& config, const RunProgress& progress = {});
+RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+                const RtuConfig& config, const RunProgress& progress = {});
+
+// The golden model's timing: golden costs in the recurrence, memory as ideal.
+RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                      const RtuConfig& config);
+
+}  // namespace rtu

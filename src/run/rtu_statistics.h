@@ -1,0 +1,78 @@
+#pragma once
+// What a simulated run measured: the readable report and the JSON of `--stats`.
+
+#include <cstdint>
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/memory/l2_cache_timing.h"
+#include "sim/rtu_config.h"
+#include "sim/ca/svo_traversal_core.h"
+
+namespace rtu {
+
+class RtuTop;
+
+struct RtuStatistics {
+  uint64_t rays = 0;
+  uint64_t totalCycles = 0;
+  double clockMhz = 100.0;
+  int cores = 0;
+  std::string scheduler;
+  std::vector<CoreStatistics> coreTimes;
+  uint64_t jobManagerStallCycles = 0;
+  std::map<uint64_t, uint64_t> waitHistogram;
+  uint64_t maxWait = 0, maxWaitWithReadyCore = 0;
+  uint64_t resultBuffersMaxFull = 0;
+  uint64_t reorderMaxOccupancy = 0;
+  std::optional<SceneManagerStatistics> scene;  // a run through the scene manager
+  bool idealMemory = true;
+  std::vector<CacheStats> l1;
+  L2Stats l2;
+  uint64_t stackOverflows = 0;
+  uint64_t belowResolution = 0;  // rays flagged for nodes narrower than a step (result flag 4)
+  uint64_t totalCost = 0, maxCost = 0;  // traversal states per ray, as the golden model counts
+  uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
+  double hostInBytesPerCycle = 0.0, hostOutBytesPerCycle = 0.0;  // 0: a record a cycle
+  uint64_t hostOutRecordBytes = kHostRecordBytes;  // 48 for formats over 32 bits
+  double hostSeconds = 0.0;
+  std::string model = "systemc";  // what answered: the SystemC simulation or the "recurrence"
+
+  // Shares of the cores' time (cores x total cycles); they add up to 1.
+  struct CoreTimeShares {
+    double busy = 0, blocked = 0, handover = 0, idle = 0;
+  };
+  CoreTimeShares coreTimeShares() const;
+  // Utilisation of each resource that can bound the frame rate, and the one that does; the
+  // rule is in docs/exploration.md.
+  std::vector<std::pair<std::string, double>> utilisation() const;
+  std::string limit() const;
+  double frameMilliseconds() const;
+
+  double cyclesPerRay() const;
+  double raysPerSecond() const;    // at the simulated clock
+  double framesPerSecond() const;  // the run's rays as one frame
+  double dramBytesPerCycle() const;
+  double simulatedRaysPerHostSecond() const;
+  uint64_t idleCycles(const CoreStatistics& core) const;
+  std::vector<uint64_t> waitHistogramArray() const;  // index: wait in cycles
+  CoreStatistics allCores() const;  // the cores' times summed
+  CacheStats allL1() const;         // the L1s' counts summed
+  // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
+  int64_t waitBound() const;
+
+  nlohmann::ordered_json toJson() const;
+  void writeReport(std::ostream& out) const;
+};
+
+// Share of a cache's reads answered by a resident line (hits and merged); 0 without reads.
+double hitRate(const CacheStats& stats);
+
+RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles);
+
+}  // namespace rtu

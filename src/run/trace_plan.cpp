@@ -1,0 +1,124 @@
+#include "run/trace_plan.h"
+
+#include <cstdio>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+namespace rtu {
+namespace {
+
+// The cycle of the n-th transfer into the job manager (jobs enter in sequence order).
+class JobEntry : public TraceListener {
+ public:
+  explicit JobEntry(uint64_t job) : job_(job) {}
+  void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override {
+    if (scope.size() < 15 || scope.compare(scope.size() - 15, 15, ".job_manager.in") != 0) return;
+    if (variable.name == "valid") valid_ = static_cast<int64_t>(signal);
+    if (variable.name == "ready") ready_ = static_cast<int64_t>(signal);
+  }
+  void changed(uint64_t cycle, const std::vector<TraceChange>& changes) override {
+    if (validLevel_ && readyLevel_) {  // a transfer in every cycle since the last change
+      if (job_ >= transfers_ && job_ < transfers_ + (cycle - since_))
+        cycle_ = since_ + (job_ - transfers_);
+      transfers_ += cycle - since_;
+    }
+    for (const TraceChange& change : changes) {
+      if (static_cast<int64_t>(change.signal) == valid_) validLevel_ = change.value != 0;
+      if (static_cast<int64_t>(change.signal) == ready_) readyLevel_ = change.value != 0;
+    }
+    since_ = cycle;
+  }
+  int64_t cycle() const { return cycle_; }
+
+ private:
+  uint64_t job_;
+  int64_t valid_ = -1, ready_ = -1, cycle_ = -1;
+  bool validLevel_ = false, readyLevel_ = false;
+  uint64_t since_ = 0, transfers_ = 0;
+};
+
+std::string megabytes(uint64_t bytes) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f MB (%llu bytes)", static_cast<double>(bytes) / 1e6,
+                static_cast<unsigned long long>(bytes));
+  return text;
+}
+
+bool isFst(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".fst") == 0;
+}
+
+void refuseAbove(const std::string& what, const std::string& path, uint64_t bytes,
+                 uint64_t maxBytes, const std::string& narrowing) {
+  if (bytes <= maxBytes) return;
+  throw std::invalid_argument(what + " " + path + " would be about " + megabytes(bytes) +
+                              ", above --trace-max-mb " + std::to_string(maxBytes / 1000000) +
+                              ": narrow it with " + narrowing + ", or raise --trace-max-mb");
+}
+
+}  // namespace
+
+std::pair<uint64_t, uint64_t> rayWindow(const SvoMemory& memory,
+                                        const std::vector<HostRecord>& records,
+                                        const RtuConfig& config, uint64_t ray) {
+  if (ray >= records.size())
+    throw std::invalid_argument("--trace-ray " + std::to_string(ray) + ": the input has " +
+                                std::to_string(records.size()) + " rays (0 to " +
+                                std::to_string(records.size() - 1) + ")");
+  RtuConfig plain = config;
+  plain.trace.reset();
+  plain.timeline = {};
+  JobEntry entry(ray);
+  const RtuRun run = simulateRtu(memory, records, plain, {}, {&entry});
+  for (size_t i = 0; i < run.jobIndices.size(); ++i)
+    if (run.jobIndices[i] == ray && entry.cycle() >= 0)
+      return {static_cast<uint64_t>(entry.cycle()), run.arrivalCycles[i] + 1};
+  throw std::logic_error("--trace-ray: the run shows no entry or result of ray " +
+                         std::to_string(ray));
+}
+
+TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                        const RtuConfig& config, const RunProgress& progress) {
+  RtuConfig dry = config;
+  if (dry.trace) dry.trace->countOnly = true;
+  dry.timeline.countOnly = true;
+  const RtuRun run = simulateRtu(memory, records, dry, progress);
+  TraceSizes sizes{run.traceBytes, run.timelineBytes, run.traceBytes};
+  if (config.trace && isFst(config.trace->path))
+    sizes.trace = static_cast<uint64_t>(static_cast<double>(run.traceBytes) / kVcdBytesPerFstByte);
+  return sizes;
+}
+
+RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+                    RtuConfig config, const TraceLimits& limits, std::ostream& out,
+                    const RunProgress& progress) {
+  if (!config.trace && !config.timeline.wanted()) return config;
+  if (limits.ray >= 0) {
+    const auto [from, to] = rayWindow(memory, records, config, static_cast<uint64_t>(limits.ray));
+    out << "window      ray " << limits.ray << ": cycles " << from << " to " << to - 1 << "\n";
+    if (config.trace) {
+      config.trace->fromCycle = from;
+      config.trace->toCycle = to;
+    }
+    config.timeline.fromCycle = from;
+    config.timeline.toCycle = to;
+  }
+  const TraceSizes sizes = measureTrace(memory, records, config, progress);
+  if (config.trace) {
+    out << "trace size  " << config.trace->path << ": " << megabytes(sizes.trace)
+        << (isFst(config.trace->path) ? " (estimated from its VCD's " + megabytes(sizes.vcd) + ")"
+                                       : "")
+        << "\n";
+    refuseAbove("trace", config.trace->path, sizes.trace, limits.maxBytes,
+                "--trace-scope, --trace-from/--trace-to, --trace-ray, an .fst path");
+  }
+  if (config.timeline.wanted()) {
+    out << "timeline    " << config.timeline.path << ": " << megabytes(sizes.timeline) << "\n";
+    refuseAbove("timeline", config.timeline.path, sizes.timeline, limits.maxBytes,
+                "--trace-from/--trace-to or --trace-ray");
+  }
+  return config;
+}
+
+}  // namespace rtu

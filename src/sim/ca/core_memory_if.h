@@ -1,0 +1,70 @@
+#pragma once
+// How a traversal core reads SVO words. A core's private level (ideal ROM or its L1) answers at
+// once with the cycle the word is there, so the core can run ahead through cycles nobody else
+// sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
+// core registers its request for its cycle and stops; the memory serves the requests of a cycle
+// once no core can still make one for it, and tells each core the cycle its word is there. To
+// know that, the memory hears from each core the earliest cycle it can ask again (coreOffering; a
+// core waiting for its word asks again only after it) and from the scheduler the earliest cycle
+// it can still dispatch a job (DispatchFloor).
+
+#include <cstdint>
+
+#include <systemc>
+
+#include "sim/kernel/decision_pump.h"
+#include "sim/memory/l1_cache_timing.h"
+#include "kinds/svo/svo_memory.h"
+
+namespace rtu {
+
+// The scheduler as the memory sees it: the earliest cycle it can still dispatch a job in. A
+// value the scheduler raises rather than a virtual call, as the memory reads it for every cycle
+// it serves.
+class DispatchFloor {
+ public:
+  // No job is dispatched before this cycle any more; it only rises.
+  uint64_t noDispatchBefore() const { return floor_; }
+  // `watcher` hears (Agent::heard) when noDispatchBefore() rises.
+  void watchDispatchFloor(Agent& watcher) { watcher_ = &watcher; }
+
+ protected:
+  void raiseDispatchFloor(uint64_t cycle) {
+    if (cycle == floor_) return;
+    floor_ = cycle;
+    if (watcher_) watcher_->heard(0);
+  }
+
+ private:
+  uint64_t floor_ = 0;
+  Agent* watcher_ = nullptr;
+};
+
+class SharedReadListener {
+ public:
+  virtual ~SharedReadListener() = default;
+  // The word of the core's shared request is there in `dataCycle`.
+  virtual void sharedReplied(uint64_t dataCycle) = 0;
+};
+
+class CoreMemoryIf : public virtual sc_core::sc_interface {
+ public:
+  // The words themselves (timing is the other calls' business).
+  virtual const SvoMemory& backingStore() const = 0;
+  // True for the thesis' combinational ROM: every word is there in the cycle it is read, so a
+  // core need not look it up.
+  virtual bool combinational() const = 0;
+  // The core's L1 (null for the ROM). The core looks its reads up there itself, in its own
+  // (run-ahead) cycle, since no other core touches it; a miss goes to requestShared.
+  virtual L1CacheTiming* privateCache(int core) = 0;
+  // For the trace: the core looked a read up in its L1 in `cycle`.
+  virtual void tracePrivateLookup(int core, uint64_t cycle) = 0;
+  // The shared request of an L1 miss, in `cycle` (ahead of simulated time); `reader` hears
+  // the cycle the word is there once every request of `cycle` is known.
+  virtual void requestShared(int core, uint32_t address, uint64_t cycle,
+                             SharedReadListener& reader) = 0;
+  // The core offers its result from `outCycle`.
+  virtual void coreOffering(int core, uint64_t outCycle) = 0;
+};
+
+}  // namespace rtu

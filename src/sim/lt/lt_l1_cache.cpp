@@ -1,0 +1,48 @@
+#include "sim/lt/lt_l1_cache.h"
+
+#include "sim/lt/lt_rom.h"
+
+namespace rtu {
+
+LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
+                     const LtTime& time)
+    : sc_core::sc_module(name),
+      socket("socket"),
+      next("next"),
+      words_(words),
+      time_(time),
+      timing_(config, nullptr, time.periodPicoseconds()),
+      hitPicoseconds_(config.hitLatency * time.periodPicoseconds()),
+      hitDelay_(time.cycles(config.hitLatency)),
+      lineRead_(config.lineBytes) {
+  socket.bind(*this);
+}
+
+// The tag store counts picoseconds since the start, the unit of the annotated delay, so that a
+// hit (the common case) converts nothing: it adds the hit latency to the delay.
+void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  const uint32_t word = static_cast<uint32_t>(trans.get_address() / 4);
+  const uint64_t at = time_.nowPicoseconds() + delay.value();
+  const L1Lookup lookup = timing_.lookup(word, at);
+  if (!lookup.hit)
+    delay = fetch(word, lookup.lineAddress, delay + hitDelay_);
+  else if (lookup.cycle == at + hitPicoseconds_)
+    delay += hitDelay_;
+  else
+    delay = time_.delayToPicoseconds(lookup.cycle);  // the line is still in flight
+  serveWordRead(words_, trans);
+}
+
+sc_core::sc_time LtL1Cache::fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request) {
+  const sc_core::sc_time filled =
+      lineRead_(next, lineAddress, timing_.array().config().lineBytes, request);
+  timing_.fill(word, time_.nowPicoseconds() + filled.value());
+  return filled;
+}
+
+unsigned int LtL1Cache::transport_dbg(tlm::tlm_generic_payload& trans) {
+  serveWordRead(words_, trans);
+  return trans.is_response_ok() ? trans.get_data_length() : 0;
+}
+
+}  // namespace rtu

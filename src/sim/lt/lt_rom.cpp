@@ -1,0 +1,25 @@
+#include "sim/lt/lt_rom.h"
+
+namespace rtu {
+
+LtRom::LtRom(sc_core::sc_module_name name, SvoMemory words)
+    : sc_core::sc_module(name), socket("socket"), words_(words) {
+  socket.register_b_transport(this, &LtRom::b_transport);
+  socket.register_get_direct_mem_ptr(this, &LtRom::get_direct_mem_ptr);
+}
+
+void LtRom::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time&) {
+  serveWordRead(words_, trans);
+  trans.set_dmi_allowed(true);
+}
+
+bool LtRom::get_direct_mem_ptr(int, tlm::tlm_generic_payload&, tlm::tlm_dmi& dmi) {
+  dmi.allow_read();
+  dmi.set_dmi_ptr(reinterpret_cast<unsigned char*>(const_cast<uint32_t*>(words_.data())));
+  dmi.set_start_address(0);
+  dmi.set_end_address(words_.size() * 4 - 1);
+  dmi.set_read_latency(sc_core::SC_ZERO_TIME);
+  return words_.size() > 0;
+}
+
+}  // namespace rtu

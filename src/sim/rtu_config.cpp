@@ -1,0 +1,58 @@
+#include "sim/rtu_config.h"
+
+#include <algorithm>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "sim/memory/cache_array.h"
+#include "rtu/host_memory.h"
+#include "base/timing_limits.h"
+
+namespace rtu {
+namespace {
+
+// The tag arrays are allocated whole when the model is built: refuse what this machine cannot hold,
+// and cap them at 4 GiB whatever it holds (256MiB L1s of 4-byte lines at 4 cores took 8.5 GB and
+// 35 s to allocate for an 8x8 frame).
+constexpr uint64_t kMaxCacheTagBytes = uint64_t{4} << 30;
+
+void checkCacheTagsFit(const RtuConfig& config) {
+  if (config.memory.ideal) return;
+  const uint64_t l1 = CacheArray::tagBytes(config.memory.l1);
+  const uint64_t total = l1 * static_cast<uint64_t>(config.cores) +
+                         CacheArray::tagBytes(config.memory.l2);
+  const uint64_t available = std::min(physicalMemoryBytes(), kMaxCacheTagBytes);
+  if (total <= available) return;
+  throw std::invalid_argument(
+      "the cache tag arrays would need " + formatGiB(static_cast<double>(total)) + " (" +
+      std::to_string(config.cores) + " L1 caches of " + formatGiB(static_cast<double>(l1)) +
+      " and the L2), more than the " + formatGiB(static_cast<double>(available)) +
+      " allowed (at most 4 GiB, and this machine's memory): lower --l1-size, --l2-size or "
+      "--cores, or raise --l1-line or --l2-line");
+}
+
+}  // namespace
+
+void validate(const RtuConfig& config) {
+  if (config.cores < 1 || config.cores > kMaxCores)
+    throw std::invalid_argument("the RTU needs 1 to " + std::to_string(kMaxCores) +
+                                " cores, got " + std::to_string(config.cores));
+  if (config.stackFrames < 1 || config.stackFrames > kMaxStackFrames)
+    throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
+                                " frames, got " + std::to_string(config.stackFrames));
+  if (!(config.clockMhz >= kMinClockMhz && config.clockMhz <= kMaxClockMhz))  // NaN fails too
+    throw std::invalid_argument("clock must be 1 MHz to 1 THz (1 .. 1e6 MHz), got " +
+                                std::to_string(config.clockMhz) + " MHz");
+  config.sceneManager.validate();
+  if (config.reorderCapacity < 0)
+    throw std::invalid_argument("reorder buffer capacity must not be negative");
+  config.jobManager.format.validate();
+  validate(config.memory);  // settings are checked even when ideal memory ignores them
+  checkCacheTagsFit(config);
+  validate(config.hostInput, "host input");
+  validate(config.hostOutput, "host output");
+}
+
+}  // namespace rtu

@@ -1,0 +1,54 @@
+#pragma once
+// Everything that configures one simulated RTU. The defaults are the thesis configuration: 16
+// cores, cyclic first-available scheduling, ideal memory, Q16.16 with the RTL's conversion, an
+// 11-frame stack, unlimited host links, results in completion order, 100 MHz.
+
+#include <optional>
+
+#include "trace/cycle_trace.h"
+#include "kinds/svo/golden_model.h"
+#include "rtu/host_link.h"
+#include "kinds/svo/job_setup.h"
+#include "sim/memory/memory_config.h"
+#include "rtu/scheduling_policy.h"
+#include "scene/scene_manager_timing.h"
+#include "trace/timeline_writer.h"
+
+namespace rtu {
+
+struct RtuConfig {
+  int cores = 16;
+  SchedulerPolicy scheduler = SchedulerPolicy::CyclicFirstAvailable;
+  MemoryConfig memory = idealMemory();
+  JobManagerConfig jobManager;
+  int stackFrames = kRtlStackFrames;
+  HostLinkConfig hostInput, hostOutput;
+  int reorderCapacity = 0;  // 0: no reorder buffer
+  SceneManagerConfig sceneManager;  // used when the run traces a scene
+  double clockMhz = 100.0;
+  uint64_t ltQuantum = 1000;  // loosely-timed model: global quantum in cycles (lt.quantum)
+  std::optional<TraceOptions> trace;
+  TimelineOptions timeline;  // path empty: no timeline
+
+  static MemoryConfig idealMemory() {
+    MemoryConfig memory;
+    memory.ideal = true;
+    return memory;
+  }
+  GoldenConfig golden() const {
+    return GoldenConfig{jobManager.format, jobManager.conversion, stackFrames};
+  }
+  // The output link as results cross it: records of the format's width (48 bytes over 32 bits).
+  HostLinkConfig outputLink() const {
+    HostLinkConfig link = hostOutput;
+    link.recordBytes = resultRecordBytes(jobManager.format.totalBits);
+    return link;
+  }
+};
+
+// Throws std::invalid_argument with a message naming the setting for impossible configurations.
+void validate(const RtuConfig& config);
+
+constexpr int kMaxCores = 1024;
+
+}  // namespace rtu

@@ -1,0 +1,301 @@
+#include "trace/cycle_trace.h"
+
+#include "trace/gtkw_save_file.h"
+#include "trace/instance_names.h"
+#include "trace/trace_signal_classes.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+namespace rtu {
+namespace {
+
+std::vector<std::string> splitScope(const std::string& scope) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (start <= scope.size()) {
+    const size_t dot = scope.find('.', start);
+    const size_t end = dot == std::string::npos ? scope.size() : dot;
+    if (end > start) parts.push_back(scope.substr(start, end - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return parts;
+}
+
+}  // namespace
+
+CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listeners)
+    : options_(std::move(options)), listeners_(std::move(listeners)) {
+  if (options_.fromCycle >= options_.toCycle)
+    throw std::invalid_argument("trace window is empty: from cycle " +
+                                std::to_string(options_.fromCycle) + " is not before " +
+                                std::to_string(options_.toCycle));
+  if (options_.flushCycles == 0)
+    throw std::invalid_argument("trace flush interval must be at least one cycle");
+  if (options_.clock && options_.periodPs < 2)
+    throw std::invalid_argument("a traced clock needs a clock period of at least 2 ps (at most "
+                                "500,000 MHz)");
+  checkTraceSignalClasses(options_.signalClasses);
+  if (options_.countOnly)
+    writer_ = openVcdCounter(counter_);
+  else if (!options_.path.empty())
+    writer_ = openTraceWriter(options_.path);
+}
+
+bool CycleTrace::scopeKept(const std::string& scope) {
+  if (options_.scopes.empty()) return true;
+  scopeMatched_.resize(options_.scopes.size());
+  bool kept = false;
+  const std::string plain = unpaddedScope(scope);
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    const std::string prefix = unpaddedScope(options_.scopes[i]);
+    if (plain.compare(0, prefix.size(), prefix) == 0 &&
+        (plain.size() == prefix.size() || plain[prefix.size()] == '.'))
+      kept = scopeMatched_[i] = true;
+  }
+  return kept;
+}
+
+bool CycleTrace::classKept(const std::string& name) const {
+  const std::vector<std::string>& classes = options_.signalClasses;
+  return classes.empty() ||
+         std::find(classes.begin(), classes.end(), traceSignalClass(name)) != classes.end();
+}
+
+void CycleTrace::checkScopesMatched() const {
+  for (size_t i = 0; i < options_.scopes.size(); ++i) {
+    if (i < scopeMatched_.size() && scopeMatched_[i]) continue;
+    InstanceWidths widths;
+    for (const std::string& scope : declaredScopes_) widths.add(scope);
+    std::string existing;
+    for (const std::string& scope : declaredScopes_) existing += "\n  " + widths.padded(scope);
+    throw std::invalid_argument("trace scope '" + options_.scopes[i] +
+                                "' matches no module; the scopes are:" + existing);
+  }
+  if (writer_ && signals_.empty()) {
+    std::string scopes, classes;
+    for (const std::string& scope : options_.scopes) scopes += " " + scope;
+    for (const std::string& signalClass : options_.signalClasses) classes += " " + signalClass;
+    throw std::invalid_argument("the trace would hold no signal: the scopes" + scopes +
+                                " have none of the signal classes" + classes);
+  }
+}
+
+int CycleTrace::declare(const std::string& scope, const std::string& name, int width,
+                        std::vector<std::string> valueNames) {
+  if (width < 1 || width > 64) throw std::invalid_argument("trace signal width must be 1 to 64");
+  if (declared_)
+    throw std::logic_error("trace signal " + scope + "." + name +
+                           " declared after the first flush");
+  declaredScopes_.insert(scope);
+  const bool kept = scopeKept(scope) && classKept(name) && writer_;
+  if (!kept && listeners_.empty()) return kNoSignal;
+  TraceVariable variable{name, width, std::move(valueNames)};
+  for (TraceListener* listener : listeners_) listener->declared(fileIndex_.size(), scope, variable);
+  fileIndex_.push_back(kept ? static_cast<int>(signals_.size()) : kNoSignal);
+  if (kept) signals_.push_back(Signal{scope, std::move(variable)});
+  return static_cast<int>(fileIndex_.size() - 1);
+}
+
+void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
+  if (cycle < written_)
+    throw std::logic_error("trace record for cycle " + std::to_string(cycle) +
+                           " arrived after the cycles before " + std::to_string(written_) +
+                           " were written");
+  if (signal == kNoSignal) return;
+  const bool forFile =
+      fileIndex_[static_cast<size_t>(signal)] != kNoSignal && cycle < options_.toCycle;
+  if (forFile || !listeners_.empty()) changes_.push_back(Change{cycle, signal, value});
+}
+
+void CycleTrace::flush(uint64_t cycle) {
+  if (cycle <= written_) return;
+  written_ = cycle;
+  if (!declared_) writeDeclarations();
+  // Stable: within a cycle the records stay in arrival order, so the last one still wins.
+  std::stable_sort(changes_.begin(), changes_.end(),
+                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
+  const auto byCycle = [](const Change& change, uint64_t c) { return change.cycle < c; };
+  const auto end = std::lower_bound(changes_.begin(), changes_.end(), cycle, byCycle);
+  for (auto begin = changes_.cbegin(); begin != end;) {
+    auto next = begin;
+    while (next != end && next->cycle == begin->cycle) ++next;
+    const Settled settled = settle(begin, next);
+    notifyListeners(begin->cycle, settled);
+    if (writer_) fileCycle(begin->cycle, settled);
+    begin = next;
+  }
+  changes_.erase(changes_.begin(), end);
+  if (writer_ && !dumped_ && cycle > options_.fromCycle) {
+    initialValues();
+    writeInitialValues();
+  }
+}
+
+void CycleTrace::finish(uint64_t markerCycle) {
+  flush(std::numeric_limits<uint64_t>::max());
+  for (TraceListener* listener : listeners_) listener->finished();
+  if (!writer_) return;
+  writer_->close();
+  if (options_.countOnly) return;
+  std::vector<SaveFileSignal> shown;
+  for (const Signal& s : signals_)
+    shown.push_back({s.scope, s.variable.name, s.variable.width, s.variable.valueNames});
+  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs);
+}
+
+void CycleTrace::writeDeclarations() {
+  declared_ = true;
+  if (!writer_) return;
+  InstanceWidths widths;
+  for (const std::string& scope : declaredScopes_) widths.add(scope);
+  for (Signal& signal : signals_) signal.scope = widths.padded(signal.scope);
+  if (options_.clock) declareClock();
+  // Nested by scope path (std::map keeps scopes together and sorted).
+  std::map<std::string, std::vector<size_t>> byScope;
+  for (size_t i = 0; i < signals_.size(); ++i) byScope[signals_[i].scope].push_back(i);
+  std::vector<std::string> open;
+  for (const auto& [scope, members] : byScope) {
+    const std::vector<std::string> path = splitScope(scope);
+    size_t common = 0;
+    while (common < open.size() && common < path.size() && open[common] == path[common]) ++common;
+    for (size_t i = open.size(); i > common; --i) writer_->leaveScope();
+    open.resize(common);
+    for (size_t i = common; i < path.size(); ++i) {
+      writer_->enterScope(path[i]);
+      open.push_back(path[i]);
+    }
+    for (size_t index : members) writer_->variable(index, signals_[index].variable);
+  }
+  for (size_t i = open.size(); i > 0; --i) writer_->leaveScope();
+  writer_->endDeclarations();
+}
+
+// The clock lives in the top scope of the traced modules (rtu.clk), whatever the scope filter.
+void CycleTrace::declareClock() {
+  const std::string& first = signals_.empty() ? std::string("rtu") : signals_.front().scope;
+  clockIndex_ = signals_.size();
+  signals_.push_back(Signal{first.substr(0, first.find('.')), TraceVariable{"clk", 1, {}}});
+}
+
+void CycleTrace::clockUpTo(uint64_t end) {
+  for (; clockNext_ < end; ++clockNext_) {
+    writer_->time(clockNext_ * options_.periodPs);
+    writer_->value(clockIndex_, true, 1);
+    fallingEdge(clockNext_);
+  }
+}
+
+void CycleTrace::fallingEdge(uint64_t cycle) {
+  writer_->time(cycle * options_.periodPs + options_.periodPs / 2);
+  writer_->value(clockIndex_, true, 0);
+  current_[clockIndex_] = 0;
+}
+
+CycleTrace::Settled CycleTrace::settle(std::vector<Change>::const_iterator begin,
+                                      std::vector<Change>::const_iterator end) {
+  std::map<int, uint64_t> last;
+  for (auto change = begin; change != end; ++change) last[change->signal] = change->value;
+  Settled settled;
+  for (const auto& [signal, value] : last) settled.push_back({static_cast<size_t>(signal), value});
+  return settled;
+}
+
+void CycleTrace::notifyListeners(uint64_t cycle, const Settled& settled) {
+  if (listeners_.empty()) return;
+  heard_.resize(fileIndex_.size());
+  heardValue_.resize(fileIndex_.size());
+  Settled changed;
+  for (const TraceChange& change : settled) {
+    if (heard_[change.signal] && heardValue_[change.signal] == change.value) continue;
+    heard_[change.signal] = true;
+    heardValue_[change.signal] = change.value;
+    changed.push_back(change);
+  }
+  if (changed.empty()) return;
+  for (TraceListener* listener : listeners_) listener->changed(cycle, changed);
+}
+
+// Before the window a cycle only sets the values the window starts from; the window's first
+// cycle goes into the initial dump, so no time stamp appears twice.
+void CycleTrace::fileCycle(uint64_t cycle, const Settled& settled) {
+  if (cycle >= options_.toCycle) return;
+  if (cycle < options_.fromCycle) {
+    for (const TraceChange& change : settled) {
+      const int index = fileIndex_[change.signal];
+      if (index == kNoSignal) continue;
+      signals_[static_cast<size_t>(index)].hasInitial = true;
+      signals_[static_cast<size_t>(index)].initialValue = change.value;
+    }
+    return;
+  }
+  if (!dumped_) {
+    initialValues();
+    if (cycle == options_.fromCycle) {
+      for (const TraceChange& change : settled) {
+        const int index = fileIndex_[change.signal];
+        if (index == kNoSignal) continue;
+        known_[static_cast<size_t>(index)] = true;
+        current_[static_cast<size_t>(index)] = change.value;
+      }
+      writeInitialValues();
+      return;
+    }
+    writeInitialValues();
+  }
+  writeCycle(cycle, settled);
+}
+
+// The values before the window, final once the simulation has passed its first cycle.
+void CycleTrace::initialValues() {
+  known_.resize(signals_.size());
+  current_.resize(signals_.size());
+  for (size_t i = 0; i < signals_.size(); ++i) {
+    known_[i] = signals_[i].hasInitial;
+    current_[i] = signals_[i].initialValue;
+  }
+}
+
+void CycleTrace::writeInitialValues() {
+  dumped_ = true;
+  if (options_.clock) {
+    known_[clockIndex_] = true;
+    current_[clockIndex_] = 1;
+  }
+  writer_->beginInitial(options_.fromCycle * options_.periodPs);
+  for (size_t i = 0; i < signals_.size(); ++i) writer_->value(i, known_[i], current_[i]);
+  writer_->endInitial();
+  if (!options_.clock) return;
+  fallingEdge(options_.fromCycle);
+  clockNext_ = options_.fromCycle + 1;
+}
+
+// A signal is written when its value changed; with a clock, every cycle up to this one is.
+void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
+  bool stamped = false;
+  if (options_.clock) {
+    clockUpTo(cycle);
+    writer_->time(cycle * options_.periodPs);
+    writer_->value(clockIndex_, true, 1);
+    stamped = true;
+  }
+  for (const TraceChange& change : settled) {
+    const int signal = fileIndex_[change.signal];
+    if (signal == kNoSignal) continue;
+    const auto index = static_cast<size_t>(signal);
+    if (known_[index] && current_[index] == change.value) continue;
+    if (!stamped) writer_->time(cycle * options_.periodPs);
+    stamped = true;
+    known_[index] = true;
+    current_[index] = change.value;
+    writer_->value(index, true, change.value);
+  }
+  if (!options_.clock) return;
+  fallingEdge(cycle);
+  clockNext_ = cycle + 1;
+}
+
+}  // namespace rtu

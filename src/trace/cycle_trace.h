@@ -1,0 +1,120 @@
+#pragma once
+// A trace recorder in clock cycles, for GTKWave: FST or VCD (src/trace/trace_writer.h). Modules
+// record a value with the cycle it takes effect, which may lie ahead of simulated time (a core
+// that runs ahead through cycles nothing else can observe still records each state in its own
+// cycle) but never behind it.
+// So every cycle before the current simulated one is final: the simulation calls flush() with
+// that cycle now and then, which writes those cycles in time order and frees them; only the
+// records ahead of simulated time stay in memory, whatever the length of the run. Only a cycle
+// window and the module scopes asked for go to the file (instances numbered core_03 when there
+// are ten or more: src/trace/instance_names.h); listeners (src/trace/trace_listener.h) see
+// every signal and every cycle.
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "base/counting_stream.h"
+#include "trace/trace_listener.h"
+#include "trace/trace_writer.h"
+
+namespace rtu {
+
+struct TraceOptions {
+  std::string path;  // empty: no file, only the listeners
+  uint64_t fromCycle = 0;
+  uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
+  std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
+  std::vector<std::string> signalClasses;  // src/trace/trace_signal_classes.h; empty keeps all
+  uint64_t periodPs = 10000;                                // trace time of one cycle
+  uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
+  bool countOnly = false;       // write nothing: count the bytes of the VCD the file would be
+  // A clock `clk` in the top scope, high in the first half of every cycle from the window's first
+  // cycle to its last change (two changes per cycle: a trace of every cycle).
+  bool clock = false;
+};
+
+class CycleTrace {
+ public:
+  static constexpr int kNoSignal = -1;
+
+  // Opens the file; throws std::runtime_error when it cannot be written. The listeners must
+  // outlive the trace.
+  explicit CycleTrace(TraceOptions options, std::vector<TraceListener*> listeners = {});
+
+  // A signal of `width` bits (1 to 64) in the dot-separated module path `scope`; kNoSignal when
+  // the scope filter leaves it out. `valueNames` name the values 0, 1, ... (FST shows them). All
+  // signals are declared before the first flush.
+  int declare(const std::string& scope, const std::string& name, int width,
+              std::vector<std::string> valueNames = {});
+  // The value `signal` holds from `cycle` on. Within one cycle the last record wins. Throws
+  // std::logic_error for a cycle already written.
+  void record(int signal, uint64_t cycle, uint64_t value);
+
+  // Throws std::invalid_argument, listing the scopes declared, when a scope of the filter matched
+  // none of them (a typo, or core_7 of 4 cores), or when the scopes and signal classes together
+  // keep no signal for the file. Called once every signal is declared.
+  void checkScopesMatched() const;
+
+  // Writes every cycle before `cycle`: no record for them can arrive any more.
+  void flush(uint64_t cycle);
+  // Writes the rest, and a GTKWave save file next to the trace (src/trace/gtkw_save_file.h) with a
+  // marker at `markerCycle`; throws std::runtime_error when a file could not be written.
+  void finish(uint64_t markerCycle);
+
+  // Records held in memory, waiting for their cycle to become final.
+  size_t pendingRecords() const { return changes_.size(); }
+  // With TraceOptions::countOnly: the bytes the VCD file would have, so far.
+  uint64_t countedBytes() const { return writer_ ? writer_->bytes() : 0; }
+
+ private:
+  struct Signal {
+    std::string scope;
+    TraceVariable variable;
+    bool hasInitial = false;
+    uint64_t initialCycle = 0, initialValue = 0;
+  };
+  struct Change {
+    uint64_t cycle;
+    int signal;
+    uint64_t value;
+  };
+  using Settled = std::vector<TraceChange>;  // a cycle's last record of each signal
+  bool scopeKept(const std::string& scope);
+  bool classKept(const std::string& name) const;
+  void writeDeclarations();
+  static Settled settle(std::vector<Change>::const_iterator begin,
+                        std::vector<Change>::const_iterator end);
+  void notifyListeners(uint64_t cycle, const Settled& settled);
+  void fileCycle(uint64_t cycle, const Settled& settled);
+  void initialValues();
+  void writeInitialValues();
+  void writeCycle(uint64_t cycle, const Settled& settled);
+  void declareClock();
+  // The clock's edges of the cycles from clockNext_ up to `end`.
+  void clockUpTo(uint64_t end);
+  void fallingEdge(uint64_t cycle);
+
+  TraceOptions options_;
+  std::vector<TraceListener*> listeners_;
+  CountingStream counter_;
+  std::unique_ptr<TraceWriter> writer_;
+  std::vector<int> fileIndex_;  // per signal id: its index in signals_, or kNoSignal
+  std::vector<Signal> signals_;  // the signals the file keeps
+  std::set<std::string> declaredScopes_;  // kept or not
+  std::vector<bool> scopeMatched_;        // per scope of the filter
+  std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
+  uint64_t written_ = 0;         // every cycle before it is written
+  bool declared_ = false, dumped_ = false;
+  std::vector<bool> known_;  // per signal of the file
+  std::vector<uint64_t> current_;
+  size_t clockIndex_ = 0;    // the clock's index among the file's signals, with options_.clock
+  uint64_t clockNext_ = 0;   // the first cycle whose clock edges are not written
+  std::vector<bool> heard_;  // per signal id: the listeners' last values
+  std::vector<uint64_t> heardValue_;
+};
+
+}  // namespace rtu

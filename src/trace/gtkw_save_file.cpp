@@ -1,0 +1,129 @@
+#include "trace/gtkw_save_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+#include "trace/trace_writer.h"
+
+namespace rtu {
+namespace {
+
+// GTKWave's display flags (gtkwave analyzer.h): right-justified binary or decimal values, the
+// names of the trace's enum table (TR_ENUM, bit 32) or of a translate filter file
+// (TR_FTRANSLATED, bit 13) over binary, as GTKWave itself saves them, and the comment lines that
+// open and close a group.
+constexpr const char* kBinary = "@28";
+constexpr const char* kDecimal = "@24";
+constexpr const char* kEnum = "@100000028";
+constexpr const char* kTranslated = "@2028";
+constexpr const char* kGroupBegin = "@800200";
+constexpr const char* kGroupEnd = "@1000200";
+
+// The module: the scope's second part (rtu.core_3.in -> core_3).
+std::string moduleOf(const std::string& scope) {
+  const size_t first = scope.find('.');
+  if (first == std::string::npos) return scope;
+  const size_t second = scope.find('.', first + 1);
+  const size_t length = second == std::string::npos ? std::string::npos : second - first - 1;
+  return scope.substr(first + 1, length);
+}
+
+// Pipeline position of a module, then its instance number (core_10 after core_9).
+std::tuple<int, long, std::string> pipelineKey(const std::string& module) {
+  static const std::vector<std::string> order{"job_manager", "scheduler",      "core_",
+                                              "memory",      "result_manager", "reorder_buffer"};
+  for (size_t i = 0; i < order.size(); ++i)
+    if (module.rfind(order[i], 0) == 0) {
+      const std::string suffix = module.substr(order[i].size());
+      const bool numbered = !suffix.empty() && std::all_of(suffix.begin(), suffix.end(), ::isdigit);
+      return {static_cast<int>(i), numbered ? std::stol(suffix) : 0, module};
+    }
+  return {static_cast<int>(order.size()), 0, module};
+}
+
+std::string displayName(const SaveFileSignal& signal) {
+  const std::string name = signal.scope + "." + signal.name;
+  return signal.width == 1 ? name : name + "[" + std::to_string(signal.width - 1) + ":0]";
+}
+
+// What the signal is called inside its module's group: the scope below the module and the name,
+// apart by spaces ("in valid" for rtu.core_03.in.valid). GTKWave shows a name up to its last
+// dot only (hier_max_level), so twenty rows of "valid" and "ready" without an alias.
+std::string alias(const SaveFileSignal& signal) {
+  std::string path = signal.scope + "." + signal.name;
+  for (int dots = 0; dots < 2 && !path.empty();) {  // drop "rtu." and the module
+    const size_t dot = path.find('.');
+    if (dot == std::string::npos) break;
+    path.erase(0, dot + 1);
+    ++dots;
+  }
+  std::replace(path.begin(), path.end(), '.', ' ');
+  return path;
+}
+
+bool isFst(const std::string& tracePath) {
+  return std::filesystem::path(tracePath).extension() == ".fst";
+}
+
+// A GTKWave translate filter for a VCD signal's named values ("010 EVAL"), next to the trace:
+// t.vcd's core states go to t.state.txt. Returns its absolute path.
+std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSignal& signal) {
+  std::filesystem::path path(tracePath);
+  path.replace_extension("." + signal.name + ".txt");
+  std::ofstream out(path);
+  for (size_t value = 0; value < signal.valueNames.size(); ++value)
+    out << bitString(value, signal.width) << ' ' << signal.valueNames[value] << '\n';
+  if (!out) throw std::runtime_error("cannot write GTKWave translate filter " + path.string());
+  return std::filesystem::absolute(path).string();
+}
+
+}  // namespace
+
+std::string saveFilePath(const std::string& tracePath) {
+  return std::filesystem::path(tracePath).replace_extension(".gtkw").string();
+}
+
+void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
+                   uint64_t markerPs) {
+  const std::string path = saveFilePath(tracePath);
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write GTKWave save file " + path);
+  out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
+  out << "*-20.000000 " << markerPs;
+  for (int i = 0; i < 26; ++i) out << " -1";  // no named markers
+  out << "\n[sst_expanded] 1\n[signals_width] 240\n";  // room for "stack_depth =BLOCKED"
+
+  std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;
+  std::map<std::string, std::string> translateFilters;  // by signal name, for a VCD
+  // Signals of the top scope itself (the clock) come first, outside the groups.
+  for (const SaveFileSignal& signal : signals)
+    if (signal.scope.find('.') == std::string::npos)
+      out << kBinary << "\n+{" << signal.name << "} " << displayName(signal) << '\n';
+  for (const SaveFileSignal& signal : signals) {
+    if (signal.scope.find('.') == std::string::npos) continue;
+    byModule[pipelineKey(moduleOf(signal.scope))].push_back(&signal);
+    if (!signal.valueNames.empty() && !isFst(tracePath) && !translateFilters.count(signal.name))
+      translateFilters[signal.name] = writeTranslateFilter(tracePath, signal);
+  }
+  for (const auto& [key, members] : byModule) {
+    const std::string& module = std::get<2>(key);
+    out << kGroupBegin << "\n-" << module << '\n';
+    for (const SaveFileSignal* signal : members) {
+      if (signal->valueNames.empty())
+        out << (signal->width == 1 ? kBinary : kDecimal) << '\n';
+      else if (isFst(tracePath))
+        out << kEnum << '\n';
+      else
+        out << kTranslated << "\n^1 " << translateFilters[signal->name] << '\n';
+      out << "+{" << alias(*signal) << "} " << displayName(*signal) << '\n';
+    }
+    out << kGroupEnd << "\n-" << module << '\n';
+  }
+  if (!out) throw std::runtime_error("error writing GTKWave save file " + path);
+}
+
+}  // namespace rtu

@@ -1,0 +1,82 @@
+// Value change dump (IEEE 1364), the text format every waveform viewer reads. Named values are
+// written as numbers; the save file names them through a translate filter (gtkw_save_file.h).
+
+#include <fstream>
+#include <stdexcept>
+
+#include "base/counting_stream.h"
+#include "trace/trace_writer.h"
+
+namespace rtu {
+namespace {
+
+// VCD identifier codes: base-94 numbers in the printable characters '!' to '~'.
+std::string identifierCode(size_t index) {
+  std::string code;
+  do {
+    code += static_cast<char>('!' + index % 94);
+    index /= 94;
+  } while (index > 0);
+  return code;
+}
+
+class VcdWriter : public TraceWriter {
+ public:
+  // `counter` non-null: writes into it instead of the file at `path`, to count the bytes.
+  VcdWriter(const std::string& path, CountingStream* counter) : path_(path), counter_(counter) {
+    if (!counter_) file_.open(path);
+    if (!out()) throw std::runtime_error("cannot write trace file " + path);
+    out() << "$timescale 1ps $end\n";
+  }
+  uint64_t bytes() const override { return counter_ ? counter_->count() : 0; }
+  void enterScope(const std::string& name) override {
+    out() << "$scope module " << name << " $end\n";
+  }
+  void leaveScope() override { out() << "$upscope $end\n"; }
+  void variable(size_t index, const TraceVariable& variable) override {
+    if (variables_.size() <= index) variables_.resize(index + 1);
+    variables_[index] = {variable.width, identifierCode(index)};
+    out() << "$var wire " << variable.width << ' ' << variables_[index].code << ' ' << variable.name
+         << " $end\n";
+  }
+  void endDeclarations() override { out() << "$enddefinitions $end\n"; }
+  void beginInitial(uint64_t timePs) override { out() << '#' << timePs << "\n$dumpvars\n"; }
+  void endInitial() override { out() << "$end\n"; }
+  void time(uint64_t timePs) override { out() << '#' << timePs << '\n'; }
+  void value(size_t index, bool known, uint64_t value) override {
+    const auto& [width, code] = variables_[index];
+    if (width == 1)
+      out() << (known ? (value ? '1' : '0') : 'x') << code << '\n';
+    else
+      out() << 'b' << (known ? bitString(value, width) : std::string("x")) << ' ' << code << '\n';
+  }
+  void close() override {
+    if (counter_) return;
+    file_.close();
+    if (!file_) throw std::runtime_error("error writing trace file " + path_);
+  }
+
+ private:
+  std::ostream& out() { return counter_ ? static_cast<std::ostream&>(*counter_) : file_; }
+
+  std::string path_;
+  CountingStream* counter_;
+  std::ofstream file_;
+  struct Variable {
+    int width;
+    std::string code;
+  };
+  std::vector<Variable> variables_;
+};
+
+}  // namespace
+
+std::unique_ptr<TraceWriter> openVcdWriter(const std::string& path) {
+  return std::make_unique<VcdWriter>(path, nullptr);
+}
+
+std::unique_ptr<TraceWriter> openVcdCounter(CountingStream& counter) {
+  return std::make_unique<VcdWriter>("(counted)", &counter);
+}
+
+}  // namespace rtu
