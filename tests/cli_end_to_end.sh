@@ -132,4 +132,40 @@ expect_error "stack frames" "$rtusim" replay --svo sphere.svo --jobs jobs.bin --
   --allow-stack-overflow 2>/dev/null | grep -q "stack overflows" || fail "overflows not reported"
 expect_error "clock_mhz: 0 is out of range" "$rtusim" render --scene sphere --depth 4 --clock-mhz 0
 expect_error "give the input" "$rtusim" replay --svo sphere.svo --out x.bin
+# One flag, one meaning (issue 26): --ray-epsilon is job_manager.epsilon, --camera-epsilon is
+# camera.epsilon. --epsilon still spells the one a command has; in `config`, which has both, it is
+# deprecated and sets job_manager.epsilon as before, with a warning naming the new flags.
+"$rtusim" config --list >list.txt
+grep -Eq '^job_manager\.epsilon +--ray-epsilon ' list.txt || fail "config --list: --ray-epsilon"
+grep -Eq '^camera\.epsilon +--camera-epsilon ' list.txt || fail "config --list: --camera-epsilon"
+dump_epsilons() {  # dump_epsilons FLAGS...: "job_manager camera" epsilons of config --dump
+  "$rtusim" config --dump --json "$@" 2>err.txt | python3 -c \
+    'import json,sys; d=json.load(sys.stdin); print(d["job_manager.epsilon"], d["camera.epsilon"])'
+}
+[[ $(dump_epsilons --ray-epsilon 0.002) == "0.002 0.0001" ]] || fail "--ray-epsilon"
+! grep -q deprecated err.txt || fail "--ray-epsilon warned"
+[[ $(dump_epsilons --camera-epsilon 0.003) == "0.0001 0.003" ]] || fail "--camera-epsilon"
+[[ $(dump_epsilons --epsilon 0.004) == "0.004 0.0001" ]] || fail "config --epsilon changed meaning"
+grep -q -- "--epsilon is ambiguous in rtusim config and deprecated: it sets job_manager.epsilon" \
+  err.txt && grep -q -- "--ray-epsilon (job_manager.epsilon) or --camera-epsilon (camera.epsilon)" \
+  err.txt || fail "config --epsilon without the deprecation warning"
+# Where a command has one of the two, --epsilon is that one, silently; the other is refused.
+for flag in --epsilon --ray-epsilon; do
+  "$rtusim" golden --svo moved.svo --rays rays.bin --out "eps$flag.bin" "$flag" 0.5 >/dev/null 2>err.txt
+  ! grep -q deprecated err.txt || fail "golden $flag warned"
+done
+cmp -s eps--epsilon.bin eps--ray-epsilon.bin || fail "golden --epsilon is not --ray-epsilon"
+! cmp -s eps--epsilon.bin golden_rays.bin || fail "golden --ray-epsilon 0.5 had no effect"
+# A 9x9 frame looking down the z axis: its middle row and column have exactly zero components.
+for flag in --epsilon --camera-epsilon; do
+  "$rtusim" jobs --width 9 --height 9 --camera 0,0,-3 --out "eps$flag.bin" "$flag" 0.25 \
+    >/dev/null 2>err.txt
+  ! grep -q deprecated err.txt || fail "jobs $flag warned"
+done
+"$rtusim" jobs --width 9 --height 9 --camera 0,0,-3 --out eps_default.bin >/dev/null
+cmp -s eps--epsilon.bin eps--camera-epsilon.bin || fail "jobs --epsilon is not --camera-epsilon"
+! cmp -s eps--epsilon.bin eps_default.bin || fail "jobs --camera-epsilon 0.25 had no effect"
+expect_error "camera-epsilon" "$rtusim" golden --svo moved.svo --rays rays.bin --out x.bin \
+  --camera-epsilon 0.5
+expect_error "ray-epsilon" "$rtusim" jobs --width 8 --height 8 --out x.bin --ray-epsilon 0.5
 echo "cli end-to-end: ok"

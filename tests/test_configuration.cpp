@@ -1,6 +1,9 @@
 // The configuration schema: parsing, files, presets, errors that name the key, the round trip of
 // config --dump, and sweep expansion.
 
+#include <algorithm>
+#include <set>
+
 #include <catch2/catch.hpp>
 
 #include "config/configuration.h"
@@ -90,6 +93,24 @@ TEST_CASE("config --dump loads again to the same configuration", "[config]") {
   Configuration fromJson;
   fromJson.loadText(original.toJson().dump(), "json", "dump", ConfigSource::File);
   CHECK(fromJson.toJson() == original.toJson());
+}
+
+TEST_CASE("Each flag names one setting; the two epsilons have their own (issue 26)", "[config]") {
+  std::set<std::string> flags;
+  for (const Setting& s : configSchema())
+    if (!s.flag.empty()) CHECK(flags.insert(s.flag).second);
+  for (const Setting& s : configSchema())
+    if (!s.formerFlag.empty()) CHECK(flags.count(s.formerFlag) == 0);  // never today's flag
+  CHECK(findSetting("job_manager.epsilon").flag == "--ray-epsilon");
+  CHECK(findSetting("camera.epsilon").flag == "--camera-epsilon");
+  CHECK(findSetting("job_manager.epsilon").formerFlag == "--epsilon");
+  CHECK(findSetting("camera.epsilon").formerFlag == "--epsilon");
+  // The ambiguous --epsilon keeps the first declared setting's meaning (config_options.cpp).
+  const auto& schema = configSchema();
+  const auto at = [&](const std::string& key) {
+    return std::find_if(schema.begin(), schema.end(), [&](const Setting& s) { return s.key == key; });
+  };
+  CHECK(at("job_manager.epsilon") < at("camera.epsilon"));
 }
 
 TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]") {

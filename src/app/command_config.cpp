@@ -19,7 +19,8 @@ void listSettings(std::ostream& out) {
     const std::string value = s.get(defaults);
     out << std::setw(28) << s.key << std::setw(28) << (s.flag.empty() ? "-" : s.flag)
         << std::setw(12) << (value.empty() ? "\"\"" : value) << std::setw(22) << s.range()
-        << (s.unit.empty() ? "" : s.unit + ": ") << s.doc << "\n";
+        << (s.unit.empty() ? "" : s.unit + ": ") << s.doc
+        << (s.formerFlag.empty() ? "" : " (old spelling " + s.formerFlag + ")") << "\n";
   }
 }
 

@@ -1,6 +1,35 @@
 #include "app/config_options.h"
 
+#include <iostream>
+
 namespace rtu {
+namespace {
+
+// The option `names` ("--ray-epsilon,--epsilon") for `setting`; `warning`, if any, goes to
+// standard error when it is given.
+CLI::Option* addSettingOption(CLI::App& command, const std::shared_ptr<ConfigRequest>& request,
+                              const Setting& setting, const std::string& names,
+                              const std::string& help, const std::string& warning = "") {
+  const std::string key = setting.key;
+  if (setting.kind == SettingKind::Flag) {
+    return command.add_flag_callback(
+        names,
+        [request, key, warning] {
+          if (!warning.empty()) std::cerr << warning << "\n";
+          request->flags.emplace_back(key, "true");
+        },
+        help);
+  }
+  return command.add_option_function<std::string>(
+      names,
+      [request, key, warning](const std::string& text) {
+        if (!warning.empty()) std::cerr << warning << "\n";
+        request->flags.emplace_back(key, text);
+      },
+      help);
+}
+
+}  // namespace
 
 Configuration ConfigRequest::resolve() const {
   Configuration configuration;
@@ -30,24 +59,35 @@ std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses
                      "key=value for any setting (rtusim config --list), applied last")
       ->group("Configuration");
   const RunConfig defaults;
-  for (const Setting& setting : configSchema()) {
-    if (!(setting.uses & uses) || setting.flag.empty() || skipFlags.count(setting.flag)) continue;
-    // Two settings share a spelling only where no command but `config` uses both (--epsilon
-    // of ray records and of the camera): the first one declared keeps it.
-    if (command.get_option_no_throw(setting.flag)) continue;
+  const std::vector<Setting>& schema = configSchema();
+  const auto takes = [&](const Setting& s) {
+    return (s.uses & uses) && !s.flag.empty() && !skipFlags.count(s.flag);
+  };
+  for (const Setting& setting : schema) {
+    if (!takes(setting)) continue;
     std::string help = setting.doc + " [" + setting.key;
     if (!setting.unit.empty()) help += ", " + setting.unit;
     const std::string value = setting.get(defaults);
     if (!value.empty()) help += ", default " + value;
     help += "]";
-    const std::string key = setting.key;
-    if (setting.kind == SettingKind::Flag) {
-      command.add_flag_callback(setting.flag, [request, key] { request->flags.emplace_back(key, "true"); },
-                                help);
-    } else {
-      command.add_option_function<std::string>(
-          setting.flag, [request, key](const std::string& text) { request->flags.emplace_back(key, text); },
-          help);
+    // A former spelling (--epsilon) is an alias where this is the command's only setting of that
+    // spelling; where several share it, it keeps the first one's meaning, with a warning.
+    std::vector<const Setting*> sharing;
+    if (!setting.formerFlag.empty())
+      for (const Setting& other : schema)
+        if (takes(other) && other.formerFlag == setting.formerFlag) sharing.push_back(&other);
+    addSettingOption(command, request, setting,
+                     sharing.size() == 1 ? setting.flag + "," + setting.formerFlag : setting.flag, help);
+    if (sharing.size() > 1 && sharing.front() == &setting) {
+      std::string instead;
+      for (const Setting* other : sharing)
+        instead += (instead.empty() ? "" : " or ") + other->flag + " (" + other->key + ")";
+      const std::string warning = "rtusim: warning: " + setting.formerFlag + " is ambiguous in rtusim " +
+                                  request->command + " and deprecated: it sets " + setting.key +
+                                  ", as " + setting.flag + " does; use " + instead;
+      addSettingOption(command, request, setting, setting.formerFlag,
+                       "deprecated: as " + setting.flag + "; use " + instead, warning)
+          ->group("Deprecated");
     }
   }
   return request;

@@ -308,9 +308,10 @@ std::vector<Setting> makeSchema() {
   s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0, kMaxLatencyCycles, model,
                       "cycles to fetch a model header, once per model",
                       [](C& c) -> int& { return c.rtu.jobManager.headerFetchCycles; }));
-  s.push_back(real("job_manager.epsilon", "--epsilon", "", 0, 1, buffers,
+  s.push_back(real("job_manager.epsilon", "--ray-epsilon", "", 0, 1, buffers,
                    "ray records: direction components below epsilon times the largest count as zero",
                    [](C& c) -> float& { return c.rtu.jobManager.epsilon; }));
+  s.back().formerFlag = "--epsilon";
   s.back().ignoredBecause = [](const C& c) {
     return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();
   };
@@ -367,9 +368,10 @@ std::vector<Setting> makeSchema() {
                      [](C& c) -> glm::dvec3& { return c.camera.up; }));
   s.push_back(real("camera.fov", "--fov", "degrees", 1e-3, 179.999, camera, "vertical field of view",
                    [](C& c) -> double& { return c.camera.verticalFovDegrees; }));
-  s.push_back(real("camera.epsilon", "--epsilon", "", 1e-30, 1, camera,
-                   "replaces exact zero direction components (thesis driver: 0.0001)",
+  s.push_back(real("camera.epsilon", "--camera-epsilon", "", 1e-30, 1, camera,
+                   "camera rays: replaces exact zero direction components (thesis driver: 0.0001)",
                    [](C& c) -> double& { return c.epsilon; }));
+  s.back().formerFlag = "--epsilon";
   // Sampled simulation (sampled_run.h).
   s.push_back(realOrZero("sample.fraction", "--sample", "", 1e-6, 1, sampling,
                          "simulate this fraction of the frame's rays as a stratified sample of "

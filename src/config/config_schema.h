@@ -28,6 +28,9 @@ enum SettingUse : unsigned {
 struct Setting {
   std::string key;   // "memory.l1.size"
   std::string flag;  // its short command-line spelling, "--l1-size"; may be empty
+  // An older spelling still accepted: an alias where the command has no other setting of that
+  // spelling, else deprecated, with the first such setting's meaning (config_options.cpp).
+  std::string formerFlag;
   SettingKind kind = SettingKind::Integer;
   std::string unit;  // "bytes", "cycles", "MHz", ...
   std::string doc;
