@@ -63,12 +63,10 @@ uint64_t L2CacheTiming::fetchLine(uint64_t tagCheckDone) {
   mshrQueueCycles_ += issue - tagCheckDone;
   const uint32_t bytes = array_.config().lineBytes;
   const uint64_t fill = externalDram_ ? externalDram_(bytes, issue) : dram_.read(bytes, issue);
-  if (order_ == RequestOrder::Cycle) {
+  if (order_ == RequestOrder::Cycle)
     mshrReleases_.push(fill);
-  } else if (issue < fill) {  // (an external DRAM's empty use is busy at no cycle)
-    mshrBusy_.add(issue, fill, 1);
-    mshrUses_.push({issue, fill});
-  }
+  else
+    mshrUses_.push_back({issue, fill});
   return fill;
 }
 
@@ -88,114 +86,25 @@ uint64_t L2CacheTiming::claimMshrInOrder(uint64_t cycle) {
 }
 
 // Out of order a use may have been issued after `cycle`: the busy ones at a cycle are those
-// issued by it and released after it. While all are busy, the count stays at least the limit
-// until the first release among them, so waiting for that release, as long as all are busy,
-// finds the first cycle from `cycle` on with fewer busy: what mshrBusy_ finds at once.
+// issued by it and released after it.
 uint64_t L2CacheTiming::claimMshrAnyOrder(uint64_t cycle) {
-  return mshrBusy_.firstBelow(cycle, array_.config().maxOutstandingMisses);
+  for (;;) {
+    uint32_t busy = 0;
+    uint64_t firstRelease = UINT64_MAX;
+    for (const MshrUse& use : mshrUses_) {
+      if (use.issue > cycle || use.release <= cycle) continue;
+      ++busy;
+      firstRelease = std::min(firstRelease, use.release);
+    }
+    if (busy < array_.config().maxOutstandingMisses) return cycle;
+    cycle = firstRelease;
+  }
 }
 
 void L2CacheTiming::forgetMshrsBefore(uint64_t cycle) {
-  while (!mshrUses_.empty() && mshrUses_.top().release <= cycle) {
-    mshrBusy_.add(mshrUses_.top().issue, mshrUses_.top().release, -1);
-    mshrUses_.pop();
-  }
-}
-
-void L2CacheTiming::BusyCount::add(uint64_t issue, uint64_t release, int64_t uses) {
-  change(issue, uses);
-  change(release, -uses);
-}
-
-// The changes at cycles up to `cycle` sum to the count busy at it. From there it changes only at
-// the later cycles with a change: the first of them at which the sum of the changes so far is
-// below `limit`. There is one, as all the changes sum to 0.
-uint64_t L2CacheTiming::BusyCount::firstBelow(uint64_t cycle, int64_t limit) {
-  const auto [upTo, after] = split(root_, cycle, true);
-  int64_t busy = nodes_[upTo].sum;
-  uint64_t first = cycle;
-  for (Index node = after; busy >= limit;) {  // busy + minPrefix of `node` < limit
-    const Node& n = nodes_[node];
-    if (n.left != 0 && busy + nodes_[n.left].minPrefix < limit) {
-      node = n.left;
-      continue;
-    }
-    busy += nodes_[n.left].sum + n.change;
-    first = n.cycle;
-    node = n.right;
-  }
-  root_ = merge(upTo, after);
-  return first;
-}
-
-// Adds `by` to the change at `cycle`: a node while it is not 0.
-void L2CacheTiming::BusyCount::change(uint64_t cycle, int64_t by) {
-  const auto [before, rest] = split(root_, cycle, false);
-  auto [at, later] = split(rest, cycle, true);
-  if (at == 0) {
-    if (unused_.empty()) {
-      at = static_cast<Index>(nodes_.size());
-      nodes_.emplace_back();
-    } else {
-      at = unused_.back();
-      unused_.pop_back();
-    }
-    random_ ^= random_ << 13;
-    random_ ^= random_ >> 7;
-    random_ ^= random_ << 17;
-    nodes_[at] = Node{cycle, random_, by, 0, 0, 0, 0};
-    update(at);
-  } else if ((nodes_[at].change += by) == 0) {
-    unused_.push_back(at);
-    at = 0;
-  } else {
-    update(at);
-  }
-  root_ = merge(merge(before, at), later);
-}
-
-// The cycles before `cycle` (with `withCycle`: up to it) and the others.
-std::pair<L2CacheTiming::BusyCount::Index, L2CacheTiming::BusyCount::Index>
-L2CacheTiming::BusyCount::split(Index node, uint64_t cycle, bool withCycle) {
-  if (node == 0) return {0, 0};
-  const uint64_t key = nodes_[node].cycle;
-  if (key < cycle || (withCycle && key == cycle)) {
-    const auto [earlier, later] = split(nodes_[node].right, cycle, withCycle);
-    nodes_[node].right = earlier;
-    update(node);
-    return {node, later};
-  }
-  const auto [earlier, later] = split(nodes_[node].left, cycle, withCycle);
-  nodes_[node].left = later;
-  update(node);
-  return {earlier, node};
-}
-
-// Every cycle of `earlier` is before every cycle of `later`.
-L2CacheTiming::BusyCount::Index L2CacheTiming::BusyCount::merge(Index earlier, Index later) {
-  if (earlier == 0) return later;
-  if (later == 0) return earlier;
-  if (nodes_[earlier].priority >= nodes_[later].priority) {
-    const Index right = merge(nodes_[earlier].right, later);
-    nodes_[earlier].right = right;
-    update(earlier);
-    return earlier;
-  }
-  const Index left = merge(earlier, nodes_[later].left);
-  nodes_[later].left = left;
-  update(later);
-  return later;
-}
-
-void L2CacheTiming::BusyCount::update(Index node) {
-  Node& n = nodes_[node];
-  const Node& left = nodes_[n.left];
-  const Node& right = nodes_[n.right];
-  const int64_t throughThis = left.sum + n.change;
-  n.sum = throughThis + right.sum;
-  n.minPrefix = throughThis;
-  if (n.left != 0) n.minPrefix = std::min(n.minPrefix, left.minPrefix);
-  if (n.right != 0) n.minPrefix = std::min(n.minPrefix, throughThis + right.minPrefix);
+  mshrUses_.erase(std::remove_if(mshrUses_.begin(), mshrUses_.end(),
+                                 [cycle](const MshrUse& use) { return use.release <= cycle; }),
+                  mshrUses_.end());
 }
 
 void L2CacheTiming::forgetBefore(uint64_t cycle) {

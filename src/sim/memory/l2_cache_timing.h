@@ -32,7 +32,6 @@
 #include <cstdint>
 #include <functional>
 #include <queue>
-#include <utility>
 #include <vector>
 
 #include "sim/memory/cache_array.h"
@@ -97,45 +96,11 @@ class L2CacheTiming {
   uint64_t uncontendedMiss_;  // DRAM latency and one line's transfer
   // RequestOrder::Cycle: release cycles of the busy MSHRs, earliest on top.
   std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> mshrReleases_;
-  // RequestOrder::Any: how many MSHRs are busy at each cycle. A use [issue, release) adds 1 at
-  // its issue and -1 at its release, so the count at T is the sum of the changes at cycles up to
-  // T. The cycles with a change are the keys of a treap (a search tree balanced by random
-  // priorities), each subtree knowing the sum of its changes and the least sum of a prefix of
-  // them: the count at T and the first cycle from T on with fewer than n busy are each one
-  // descent, O(log uses) where a scan of the uses, repeated at each release, was cubic.
-  class BusyCount {
-   public:
-    // Adds `uses` (1, or -1 to remove one) busy from `issue` until `release` (issue < release).
-    void add(uint64_t issue, uint64_t release, int64_t uses);
-    // The first cycle from `cycle` on in which fewer than `limit` (at least 1) are busy.
-    uint64_t firstBelow(uint64_t cycle, int64_t limit);
-
-   private:
-    using Index = uint32_t;  // into nodes_; 0 is no node
-    struct Node {
-      uint64_t cycle;
-      uint64_t priority;  // a parent's is at least its children's
-      int64_t change;     // at this cycle, never 0
-      int64_t sum;        // of the subtree's changes
-      int64_t minPrefix;  // the least sum of its changes up to one of its cycles, in cycle order
-      Index left, right;  // earlier and later cycles
-    };
-    void change(uint64_t cycle, int64_t by);
-    std::pair<Index, Index> split(Index node, uint64_t cycle, bool withCycle);
-    Index merge(Index earlier, Index later);
-    void update(Index node);
-    Index root_ = 0;
-    std::vector<Node> nodes_ = std::vector<Node>(1);
-    std::vector<Index> unused_;  // nodes_ free for reuse
-    uint64_t random_ = 0x9E3779B97F4A7C15u;  // xorshift state of the priorities
-  };
-  BusyCount mshrBusy_;
-  // The uses in mshrBusy_, earliest release on top, for forgetMshrsBefore.
+  // RequestOrder::Any: the MSHRs' uses, [issue, release), that may still be busy for a request.
   struct MshrUse {
     uint64_t issue, release;
-    bool operator>(const MshrUse& other) const { return release > other.release; }
   };
-  std::priority_queue<MshrUse, std::vector<MshrUse>, std::greater<MshrUse>> mshrUses_;
+  std::vector<MshrUse> mshrUses_;
   uint64_t portQueueCycles_ = 0;
   uint64_t mshrQueueCycles_ = 0;
 };
