@@ -172,7 +172,7 @@ TEST_CASE("A sweep is the product of its grids times its explicit list", "[confi
   CHECK(both[0].values().rtu.scheduler == SchedulerPolicy::RoundRobin);
   CHECK(both[11].values().rtu.scheduler == SchedulerPolicy::FirstAvailable);
   CHECK(both[11].values().rtu.reorderCapacity == 4);
-  CHECK_THROWS_WITH(spec.addGrid("cors=1,2"), Contains("did you mean 'cores'"));
+  CHECK_THROWS_WITH(spec.addGrid("coress=1,2"), Contains("did you mean 'cores'"));
   SweepSpec bad;
   bad.addGrid("cores=1,0");
   CHECK_THROWS_WITH(bad.expand(base), Contains("cores: 0 is out of range"));

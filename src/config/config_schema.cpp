@@ -187,8 +187,8 @@ std::string replacementName(const Replacement& r) { return toString(r); }
 std::string conversionName(const FloatConversion& c) { return toString(c); }
 std::string memoryKindName(const bool& ideal) { return ideal ? "ideal" : "cached"; }
 bool parseMemoryKind(const std::string& name) { return name == "ideal"; }
-std::string sceneName(const std::string& name) { return name; }
-std::string parseSceneName(const std::string& name) { return name; }
+// Choices stored as their own text (scene names, core kinds).
+std::string sameText(const std::string& text) { return text; }
 
 std::string ignoredWithIdealMemory(const RunConfig& c) {
   return c.rtu.memory.ideal ? "memory.kind is ideal" : "";
@@ -240,6 +240,33 @@ void addCache(std::vector<Setting>& schema, const std::string& level,
                           [cache](C& c) -> uint32_t& { return cache(c).maxOutstandingMisses; }));
   for (Setting& s : added) {
     s.ignoredBecause = ignoredWithIdealMemory;
+    schema.push_back(std::move(s));
+  }
+}
+
+// The SVO kind's settings (kinds/svo): its stack and number format. With another kind of core
+// they have no effect.
+void addSvoSettings(std::vector<Setting>& schema) {
+  constexpr unsigned arith = kUseArithmetic;
+  std::vector<Setting> added;
+  added.push_back(integer("stack_frames", "--stack-frames", "frames", 1, kMaxStackFrames, arith,
+                      "traversal stack depth (RTL: 11)", [](RunConfig& c) -> int& { return c.rtu.stackFrames; }));
+  added.push_back(flag("allow_stack_overflow", "--allow-stack-overflow", arith,
+                   "run even when a tree is deeper than the stack (such rays are flagged)",
+                   [](RunConfig& c) -> bool& { return c.allowStackOverflow; }));
+  added.push_back(integer("format.total_bits", "--total-bits", "bits", 8, 48, arith,
+                      "fixed-point word width", [](RunConfig& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
+  added.push_back(integer("format.fraction_bits", "--fraction-bits", "bits", 1, 46, arith,
+                      "fixed-point fraction bits",
+                      [](RunConfig& c) -> int& { return c.rtu.jobManager.format.fractionBits; }));
+  added.push_back(choice("format.conversion", "--conversion", {"rtl", "exact"}, arith,
+                     "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
+                     [](RunConfig& c) -> FloatConversion& { return c.rtu.jobManager.conversion; },
+                     conversionName, parseFloatConversion));
+  for (Setting& s : added) {
+    s.ignoredBecause = [](const RunConfig& c) {
+      return c.rtu.core == SvoKind::kName ? std::string() : "the core kind is " + c.rtu.core;
+    };
     schema.push_back(std::move(s));
   }
 }
@@ -315,24 +342,15 @@ std::vector<Setting> makeSchema() {
   s.back().ignoredBecause = [](const C& c) {
     return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();
   };
-  s.push_back(integer("stack_frames", "--stack-frames", "frames", 1, kMaxStackFrames, arith,
-                      "traversal stack depth (RTL: 11)", [](C& c) -> int& { return c.rtu.stackFrames; }));
-  s.push_back(flag("allow_stack_overflow", "--allow-stack-overflow", arith,
-                   "run even when a tree is deeper than the stack (such rays are flagged)",
-                   [](C& c) -> bool& { return c.allowStackOverflow; }));
-  s.push_back(integer("format.total_bits", "--total-bits", "bits", 8, 48, arith,
-                      "fixed-point word width", [](C& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
-  s.push_back(integer("format.fraction_bits", "--fraction-bits", "bits", 1, 46, arith,
-                      "fixed-point fraction bits",
-                      [](C& c) -> int& { return c.rtu.jobManager.format.fractionBits; }));
-  s.push_back(choice("format.conversion", "--conversion", {"rtl", "exact"}, arith,
-                     "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
-                     [](C& c) -> FloatConversion& { return c.rtu.jobManager.conversion; },
-                     conversionName, parseFloatConversion));
+  // The kind of core, then each kind's own settings.
+  s.push_back(choice("core", "--core", CoreKinds::names(), model | arith,
+                     "the kind of traversal core: svo (the thesis' sparse voxel octree core)",
+                     [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
+  addSvoSettings(s);
   // The workload.
   s.push_back(choice("scene", "--scene", proceduralSceneNames(), scene,
                      "procedural scene, used when no scene file is given",
-                     [](C& c) -> std::string& { return c.scene.procedural; }, sceneName, parseSceneName));
+                     [](C& c) -> std::string& { return c.scene.procedural; }, sameText, sameText));
   s.back().ignoredBecause = ignoredWithSceneFile;
   s.push_back(integer("scene.depth", "--depth", "levels", 1, 16, scene,
                       "octree depth of procedural scenes and meshes",

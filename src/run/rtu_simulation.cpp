@@ -91,7 +91,8 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   std::unique_ptr<TimelineWriter> timeline;
   if (config.timeline.wanted()) {
     timeline = std::make_unique<TimelineWriter>(
-        config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value());
+        config.timeline, CycleClock::atMegahertz(config.clockMhz).period().value(),
+        withCoreKind(config.core, [](auto kind) { return decltype(kind)::vocabulary(); }));
     listeners.push_back(timeline.get());
   }
   std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));

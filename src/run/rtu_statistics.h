@@ -12,7 +12,8 @@
 
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"
-#include "sim/ca/svo_traversal_core.h"
+#include "rtu/core_statistics.h"
+#include "scene/scene_manager_timing.h"
 
 namespace rtu {
 

@@ -4,8 +4,10 @@
 // 11-frame stack, unlimited host links, results in completion order, 100 MHz.
 
 #include <optional>
+#include <string>
 
 #include "trace/cycle_trace.h"
+#include "kinds/registry.h"
 #include "kinds/svo/golden_model.h"
 #include "rtu/host_link.h"
 #include "kinds/svo/job_setup.h"
@@ -17,6 +19,7 @@
 namespace rtu {
 
 struct RtuConfig {
+  std::string core = SvoKind::kName;  // the kind of traversal core (kinds/registry.h)
   int cores = 16;
   SchedulerPolicy scheduler = SchedulerPolicy::CyclicFirstAvailable;
   MemoryConfig memory = idealMemory();
@@ -38,6 +41,9 @@ struct RtuConfig {
   GoldenConfig golden() const {
     return GoldenConfig{jobManager.format, jobManager.conversion, stackFrames};
   }
+  // The configuration of a core of `Kind`, from the kind's settings (specialised per kind).
+  template <class Kind>
+  typename Kind::Config coreConfig() const;
   // The output link as results cross it: records of the format's width (48 bytes over 32 bits).
   HostLinkConfig outputLink() const {
     HostLinkConfig link = hostOutput;
@@ -45,6 +51,11 @@ struct RtuConfig {
     return link;
   }
 };
+
+template <>
+inline SvoKind::Config RtuConfig::coreConfig<SvoKind>() const {
+  return golden();
+}
 
 // Throws std::invalid_argument with a message naming the setting for impossible configurations.
 void validate(const RtuConfig& config);

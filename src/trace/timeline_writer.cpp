@@ -3,14 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "kinds/svo/state_vocabulary.h"
 
 namespace rtu {
 namespace {
-
-constexpr uint64_t kIdle = static_cast<uint64_t>(CoreState::Idle);
-constexpr uint64_t kInit = static_cast<uint64_t>(CoreState::Init);
-constexpr uint64_t kOut = static_cast<uint64_t>(CoreState::Out);
 
 bool startsWith(const std::string& s, const std::string& prefix) {
   return s.compare(0, prefix.size(), prefix) == 0;
@@ -31,8 +26,8 @@ size_t coreIndex(const std::string& name) {
 
 }  // namespace
 
-TimelineWriter::TimelineWriter(TimelineOptions options, uint64_t periodPs)
-    : options_(std::move(options)), periodPs_(periodPs) {
+TimelineWriter::TimelineWriter(TimelineOptions options, uint64_t periodPs, StateVocabulary states)
+    : options_(std::move(options)), periodPs_(periodPs), states_(std::move(states)) {
   if (options_.fromCycle >= options_.toCycle)
     throw std::invalid_argument("timeline window is empty");
   if (options_.countOnly) return;
@@ -47,7 +42,7 @@ void TimelineWriter::declared(size_t signal, const std::string& scope,
   const std::string key = dot == std::string::npos ? "" : scope.substr(dot + 1);  // below the top
   const size_t core = coreIndex(key);
   if (core != std::string::npos && variable.name == "state") {
-    if (cores_.size() <= core) cores_.resize(core + 1);
+    if (cores_.size() <= core) cores_.resize(core + 1, Core{states_.idle});
     roles_[signal] = {Role::CoreState, core};
   } else if (variable.name == "valid" || variable.name == "ready") {
     roles_[signal] = {variable.name == "valid" ? Role::Valid : Role::Ready, channel(key)};
@@ -88,15 +83,15 @@ void TimelineWriter::advanceTo(uint64_t cycle) {
 
 void TimelineWriter::coreState(size_t core, uint64_t cycle, uint64_t state) {
   Core& c = cores_[core];
-  if (c.state == kBlockedStateCode) slice(core, "BLOCKED", c.blockedStart, cycle);
-  if (state == kInit && c.state == kIdle) {
+  if (c.state == states_.blocked) slice(core, states_.names[states_.blocked], c.blockedStart, cycle);
+  if (state != states_.idle && c.state == states_.idle) {
     c.ray = nextRay_++;
     c.start = cycle;
   }
-  if (state == kBlockedStateCode) c.blockedStart = cycle;
-  if (state == kOut) c.outStart = cycle;
-  if (state == kIdle && c.state == kOut) {
-    slice(core, "OUT", c.outStart, cycle);
+  if (state == states_.blocked) c.blockedStart = cycle;
+  if (state == states_.out) c.outStart = cycle;
+  if (state == states_.idle && c.state == states_.out) {
+    slice(core, states_.names[states_.out], c.outStart, cycle);
     slice(core, "ray " + std::to_string(c.ray), c.start, cycle);
   }
   c.state = state;

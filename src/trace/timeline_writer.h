@@ -2,7 +2,8 @@
 // A per-core timeline of a run in the Chrome trace-event JSON that Perfetto (ui.perfetto.dev) and
 // chrome://tracing open: the picture for runs too long for a waveform. Built from the trace's
 // records (a TraceListener of src/trace/cycle_trace.h), so it needs no hook in the modules:
-// - each core a track; each ray a slice from its INIT to the cycle its result is handed over,
+// - each core a track; each ray a slice from the cycle its core leaves IDLE (SVO: its INIT) to
+//   the cycle its result is handed over,
 //   named after its job sequence number, with nested BLOCKED slices (waiting for memory) and an
 //   OUT slice (the result waiting for the result manager);
 // - counters: jobs inside the job manager, a pending job the scheduler cannot place, results
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "rtu/core_kind.h"
 #include "trace/trace_listener.h"
 
 namespace rtu {
@@ -34,7 +36,8 @@ struct TimelineOptions {
 class TimelineWriter : public TraceListener {
  public:
   // Throws std::runtime_error when the file cannot be created.
-  TimelineWriter(TimelineOptions options, uint64_t periodPs);
+  // `states` names the cores' trace codes (their kind's vocabulary).
+  TimelineWriter(TimelineOptions options, uint64_t periodPs, StateVocabulary states);
 
   void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override;
   void changed(uint64_t cycle, const std::vector<TraceChange>& changes) override;
@@ -81,6 +84,7 @@ class TimelineWriter : public TraceListener {
 
   TimelineOptions options_;
   uint64_t periodPs_;
+  StateVocabulary states_;
   std::ofstream file_;
   uint64_t bytes_ = 0;
   std::vector<SignalRole> roles_;

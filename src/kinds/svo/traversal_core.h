@@ -138,9 +138,11 @@ class TraversalCore {
   }
 
   // One clock cycle in INIT, EVAL, NEXT, PUSH or POP. `readWord(address)` supplies the word
-  // at memoryAddress(); it is called only when readsMemory().
+  // at memoryAddress(); it is called only when readsMemory(). Forced inline: every model calls it
+  // in its stepping loop, and whether the compiler inlines it otherwise depends on the size of
+  // the caller's translation unit (a call costs a fifth of a state).
   template <class ReadWord>
-  void step(ReadWord&& readWord) {
+  [[gnu::always_inline]] inline void step(ReadWord&& readWord) {
     ++cost_;
     switch (state_) {
       case CoreState::Init:

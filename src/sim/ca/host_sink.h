@@ -17,6 +17,8 @@ namespace rtu {
 
 class HostSink final : public Agent {
  public:
+  static constexpr int kInPort = 0;  // its port on the transfer channel
+
   // The results received, a column per field, so a run takes them over without a copy.
   struct Arrivals {
     std::vector<uint64_t> cycles;

@@ -21,6 +21,8 @@ namespace rtu {
 
 class HostSource final : public sc_core::sc_module, public Agent {
  public:
+  static constexpr int kOutPort = 0;  // its port on the transfer channel
+
   HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
              const std::vector<HostRecord>& records, HostLinkConfig link, uint64_t lookAhead);
 

@@ -90,17 +90,6 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   if (pipeline_.size() == 1) decide();
 }
 
-CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config) {
-  CoreJob job;
-  job.ids = ids;
-  job.idWord = host.idWord();
-  job.a = host.a;
-  job.t0 = convertToFixed(host.t0Bits, config.format, config.conversion);
-  job.t1 = convertToFixed(host.t1Bits, config.format, config.conversion);
-  job.root = host.root;
-  return job;
-}
-
 // in_ready = pipeline_enable and no header fetch under way.
 bool JobManager::readyIn(uint64_t cycle) const {
   for (const Window& fetch : fetches_)

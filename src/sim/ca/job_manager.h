@@ -36,6 +36,9 @@ struct JobManagerStatistics {
 
 class JobManager final : public Agent {
  public:
+  // Its ports on the transfer channels (TransferChannel::connect).
+  static constexpr int kInPort = 0, kOutPort = 0;
+
   JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config, SvoMemory memory);
 
   void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
@@ -83,7 +86,14 @@ class JobManager final : public Agent {
 };
 
 // The job the core receives: the host job's float32 t-values converted to fixed point (appendix
-// C.2.1), as the pipeline's last stage converts them.
-CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config);
+// C.2.1), as the pipeline's last stage converts them. Inline: it runs once per job.
+inline CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config) {
+  CoreJob job;
+  job.ids = ids;
+  job.idWord = host.idWord();
+  // Host records are the SVO kind's until a triangle kind brings its own.
+  job.job = SvoKind::setUp(host, config.format, config.conversion);
+  return job;
+}
 
 }  // namespace rtu

@@ -8,7 +8,8 @@ namespace rtu {
 
 MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock,
                            DecisionPump& pump, SvoMemory backing, MemoryConfig config, int cores,
-                           CycleTrace* trace, const CacheContents* start)
+                           uint64_t firstReadAfterDispatch, CycleTrace* trace,
+                           const CacheContents* start)
     : sc_core::sc_module(name),
       Agent(pump),
       clock_(clock),
@@ -16,7 +17,8 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       config_(config),
       cores_(static_cast<size_t>(cores)),
       calendar_(static_cast<size_t>(cores), kNoBound),
-      published_(static_cast<size_t>(cores), 2),  // ready from cycle 0, so EVAL in 2 at the earliest
+      firstRead_(firstReadAfterDispatch),
+      published_(static_cast<size_t>(cores), firstRead_),  // ready from cycle 0
       wake_(clock),
       trace_(trace) {
   if (config_.ideal) return;
@@ -79,9 +81,10 @@ void MemorySystem::failBehind(int core, uint64_t cycle) const {
 }
 
 // Handed over in outCycle at the earliest, then idle and dispatched from the cycle after: its
-// EVAL reads two cycles later. The bound holds until the dispatch, however long it waits.
+// first read follows firstRead_ cycles later. The bound holds until the dispatch, however long
+// it waits.
 void MemorySystem::coreOffering(int core, uint64_t outCycle) {
-  published_.set(static_cast<size_t>(core), outCycle + 3);
+  published_.set(static_cast<size_t>(core), outCycle + 1 + firstRead_);
   heard(0);
 }
 
@@ -110,9 +113,9 @@ void MemorySystem::decide() {
   }
 }
 
-// (A cycle simulated time has reached is below the floor's + 2.)
+// (A cycle simulated time has reached is below the floor's + firstRead_.)
 bool MemorySystem::requestsKnownFor(uint64_t cycle) const {
-  return cycle < std::max(published_.lowest(), dispatchFloor() + 2);
+  return cycle < std::max(published_.lowest(), dispatchFloor() + firstRead_);
 }
 
 void MemorySystem::servedLast(int core) {

@@ -17,8 +17,9 @@
 //
 // A core that waits for its word asks again only after the word is there, so after its request's
 // cycle. A core that offered a result from O is handed over in K >= O and dispatched in D > K
-// with D >= F, F the scheduler's floor, and reads first in its EVAL in D + 2: so no earlier
-// than O + 3 nor F + 2 (a core not yet used, no earlier than 2). A dispatch not yet decided is
+// with D >= F, F the scheduler's floor, and reads first in D + R, R its kind's first read after
+// dispatch (2 for SVO: INIT in D + 1, EVAL reads in D + 2): so no earlier than O + 1 + R nor
+// F + R (a core not yet used, no earlier than R). A dispatch not yet decided is
 // at or after simulated time, so F is at least that.
 
 #include <cstdint>
@@ -45,7 +46,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-               SvoMemory backing, MemoryConfig config, int cores, CycleTrace* trace,
+               SvoMemory backing, MemoryConfig config, int cores,
+               uint64_t firstReadAfterDispatch, CycleTrace* trace,
                const CacheContents* start = nullptr);
 
   // The scheduler whose dispatches bound the idle cores' next requests.
@@ -112,7 +114,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
-  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + 2: a core
+  uint64_t firstRead_;  // the cores' kind's first read after dispatch (rtu/core_kind.h)
+  // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + R: a core
   // offering (or handed over and not dispatched yet); kNoBound for a core whose request waits
   // (it asks again after its cycle) or that runs.
   LowestOf published_;

@@ -24,6 +24,8 @@ struct ReorderBufferStatistics {
 
 class ReorderBuffer : public Agent {
  public:
+  static constexpr int kInPort = 0, kOutPort = 1;  // its ports on the transfer channels
+
   ReorderBuffer(DecisionPump& pump, const CycleClock& clock, int capacity);
 
   void bind(TransferChannel<CoreResult>& in, TransferChannel<CoreResult>& out);

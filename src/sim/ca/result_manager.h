@@ -34,6 +34,9 @@ struct ResultManagerStatistics {
 
 class ResultManager final : public sc_core::sc_module, public Agent {
  public:
+  // Its ports: core i's results come in on port i.
+  static constexpr int kOutPort = -1;
+
   ResultManager(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump);
 
   void bind(std::vector<TransferChannel<CoreResult>*> cores, TransferChannel<CoreResult>& out);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <variant>
 
+#include "kinds/registry.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/traversal_job.h"
@@ -27,13 +28,12 @@ struct HostJob {
   uint64_t id() const { return ids.job; }
 };
 
-// The RTL's job_t: t-values converted to fixed point by the job manager.
+// The RTL's job_t: the id word the result carries back, and the job of the cores' kind as the
+// job manager set it up (for SVO: t-values converted to fixed point). Only the core looks inside.
 struct CoreJob {
   PayloadIds ids;
   uint32_t idWord = 0;
-  uint8_t a = 0;
-  std::array<int64_t, 3> t0{}, t1{};
-  uint32_t root = 0;
+  CoreKindJob job;
   uint64_t pendingSince = 0;  // cycle the job reached the job manager's output
   uint64_t id() const { return ids.job; }
 };

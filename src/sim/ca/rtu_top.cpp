@@ -34,8 +34,11 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
                                          config.hostInput, kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler, config.cores);
+  // The cores' kind decides when an idle core reads first; the cores are made by makeTimedCore.
+  const uint64_t firstRead = withCoreKind(
+      config.core, [](auto kind) { return decltype(kind)::kFirstReadAfterDispatch; });
   memory_ = std::make_unique<MemorySystem>("memory", clock_, pump_, memory, config.memory,
-                                           config.cores, trace, caches);
+                                           config.cores, firstRead, trace, caches);
   memory_->followDispatches(*scheduler_);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
   if (scene) {
@@ -44,12 +47,14 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
     sceneManager_ = std::make_unique<SceneManagerModule>("scene_manager", clock_, pump_, *scene,
                                                          config.sceneManager,
                                                          config.jobManager.format);
-    sceneRays_->connect(*source_, 0, *sceneManager_, 0);
-    hostJobs_->connect(*sceneManager_, 1, *jobManager_, 0);
+    sceneRays_->connect(*source_, HostSource::kOutPort, *sceneManager_,
+                        SceneManagerModule::kRaysInPort);
+    hostJobs_->connect(*sceneManager_, SceneManagerModule::kJobsOutPort, *jobManager_,
+                       JobManager::kInPort);
   } else {
-    hostJobs_->connect(*source_, 0, *jobManager_, 0);
+    hostJobs_->connect(*source_, HostSource::kOutPort, *jobManager_, JobManager::kInPort);
   }
-  pendingJobs_->connect(*jobManager_, 0, *scheduler_, Scheduler::kJobsPort);
+  pendingJobs_->connect(*jobManager_, JobManager::kOutPort, *scheduler_, Scheduler::kJobsPort);
 
   std::vector<Channel<CoreJob>*> jobsToCores;
   std::vector<Channel<CoreResult>*> resultsFromCores;
@@ -58,12 +63,11 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
     coreJobs_.push_back(channel<CoreJob>(indexed("core_jobs_", i), clock_, trace, top + "." + coreName + ".in"));
     coreResults_.push_back(
         channel<CoreResult>(indexed("core_results_", i), clock_, trace, top + "." + coreName + ".out"));
-    cores_.push_back(std::make_unique<SvoTraversalCore>(coreName.c_str(), pump_,
-                                                        static_cast<int>(i), config.jobManager.format,
-                                                        config.stackFrames, trace));
+    cores_.push_back(makeTimedCore(config, coreName.c_str(), pump_, static_cast<int>(i), trace));
     cores_[i]->memory(*memory_);
-    coreJobs_[i]->connect(*scheduler_, static_cast<int>(i), *cores_[i], 0);
-    coreResults_[i]->connect(*cores_[i], 1, *resultManager_, static_cast<int>(i));
+    coreJobs_[i]->connect(*scheduler_, static_cast<int>(i), *cores_[i], TimedCoreBase::kJobsPort);
+    coreResults_[i]->connect(*cores_[i], TimedCoreBase::kResultsPort, *resultManager_,
+                             static_cast<int>(i));
     jobsToCores.push_back(coreJobs_[i].get());
     resultsFromCores.push_back(coreResults_[i].get());
   }
@@ -73,18 +77,20 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   if (config.reorderCapacity > 0) {
     orderedResults_ = channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
     reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, clock_, config.reorderCapacity);
-    managedResults_->connect(*resultManager_, -1, *reorderBuffer_, 0);
+    managedResults_->connect(*resultManager_, ResultManager::kOutPort, *reorderBuffer_,
+                             ReorderBuffer::kInPort);
     toHost = orderedResults_.get();
   }
   // The RTU's results go to the host, or through the scene manager, which merges them per ray.
   Agent& resultsConsumer = sceneManager_ ? static_cast<Agent&>(*sceneManager_) : *sink_;
-  const int resultsPort = sceneManager_ ? 2 : 0;
+  const int resultsPort = sceneManager_ ? SceneManagerModule::kResultsInPort : HostSink::kInPort;
   if (reorderBuffer_)
-    orderedResults_->connect(*reorderBuffer_, 1, resultsConsumer, resultsPort);
+    orderedResults_->connect(*reorderBuffer_, ReorderBuffer::kOutPort, resultsConsumer, resultsPort);
   else
-    managedResults_->connect(*resultManager_, -1, resultsConsumer, resultsPort);
+    managedResults_->connect(*resultManager_, ResultManager::kOutPort, resultsConsumer, resultsPort);
   if (sceneManager_) {
-    rayResults_->connect(*sceneManager_, 3, *sink_, 0);
+    rayResults_->connect(*sceneManager_, SceneManagerModule::kRaysOutPort, *sink_,
+                         HostSink::kInPort);
     sceneManager_->bind(*sceneRays_, *hostJobs_, *toHost, *rayResults_);
     toHost = rayResults_.get();
   }

@@ -24,7 +24,7 @@
 #include "sim/ca/scene_manager_module.h"
 #include "sim/rtu_config.h"
 #include "sim/ca/scheduler.h"
-#include "sim/ca/svo_traversal_core.h"
+#include "sim/ca/timed_core.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -46,7 +46,7 @@ class RtuTop : public sc_core::sc_module {
   const JobManager& jobManager() const { return *jobManager_; }
   const Scheduler& scheduler() const { return *scheduler_; }
   const MemorySystem& memory() const { return *memory_; }
-  const std::vector<std::unique_ptr<SvoTraversalCore>>& cores() const { return cores_; }
+  const std::vector<std::unique_ptr<TimedCoreBase>>& cores() const { return cores_; }
   const ResultManager& resultManager() const { return *resultManager_; }
   const ReorderBuffer* reorderBuffer() const { return reorderBuffer_.get(); }
   const SceneManagerModule* sceneManager() const { return sceneManager_.get(); }
@@ -69,7 +69,7 @@ class RtuTop : public sc_core::sc_module {
   std::unique_ptr<JobManager> jobManager_;
   std::unique_ptr<Scheduler> scheduler_;
   std::unique_ptr<MemorySystem> memory_;
-  std::vector<std::unique_ptr<SvoTraversalCore>> cores_;
+  std::vector<std::unique_ptr<TimedCoreBase>> cores_;
   std::unique_ptr<ResultManager> resultManager_;
   std::unique_ptr<ReorderBuffer> reorderBuffer_;
   std::unique_ptr<SceneManagerModule> sceneManager_;

@@ -47,6 +47,10 @@ namespace rtu {
 
 class SceneManagerModule : public sc_core::sc_module, public Agent {
  public:
+  // Its ports on the transfer channels: rays from the host, jobs to the job manager, the RTU's
+  // results, merged results to the host.
+  static constexpr int kRaysInPort = 0, kJobsOutPort = 1, kResultsInPort = 2, kRaysOutPort = 3;
+
   SceneManagerModule(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
                      std::vector<SceneInstance> instances, SceneManagerConfig config,
                      FixedFormat format);

@@ -30,7 +30,7 @@ void LtTraversalCore::acquireDmi() {
 uint32_t LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle,
                                    TraversalResult& result) {
   if (!dmiAsked_) acquireDmi();
-  core_.start(job.t0, job.t1, job.a, job.root);
+  SvoKind::start(core_, *std::get_if<SvoJob>(&job.job));
   uint32_t blocked = 0;
   if (dmi_)
     while (core_.busy()) core_.step([this](uint32_t address) { return direct_.read(address); });

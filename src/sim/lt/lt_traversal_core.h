@@ -1,7 +1,7 @@
 #pragma once
 // A traversal core of the loosely-timed model: a TLM-2.0 initiator. traverse() steps the shared
 // state machine (src/kinds/svo/traversal_core.h) through a whole job at once, ahead of simulated time,
-// with the cycle accounting of the cycle-accurate core (svo_traversal_core.h): INIT in the cycle
+// with the cycle accounting of the cycle-accurate core (sim/ca/timed_core.h): INIT in the cycle
 // after dispatch, one cycle per state, and a read issued in c whose word is there in d > c costs
 // BLOCKED in c + 1 .. d.
 //

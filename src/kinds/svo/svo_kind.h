@@ -1,0 +1,76 @@
+#pragma once
+// The sparse voxel octree core of the thesis as a core kind (rtu/core_kind.h): what every timing
+// shell and the shared machinery need to know of it, in one place.
+
+#include <array>
+#include <cstdint>
+
+#include "kinds/svo/fixed_point.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/state_vocabulary.h"
+#include "kinds/svo/svo_memory.h"
+#include "kinds/svo/traversal_core.h"
+#include "kinds/svo/traversal_job.h"
+#include "rtu/core_kind.h"
+#include "rtu/core_statistics.h"
+
+namespace rtu {
+
+// What the job manager hands an SVO core (the RTL's job_t less the id word): the t-values in
+// fixed point, the direction coefficient and the root's address.
+struct SvoJob {
+  uint8_t a = 0;
+  std::array<int64_t, 3> t0{}, t1{};
+  uint32_t root = 0;
+};
+
+struct SvoKind {
+  static constexpr const char* kName = "svo";
+  static constexpr const char* kDescription =
+      "sparse voxel octree core of the thesis (Espe 2019), Q-format fixed point";
+
+  using HostRecord = TraversalJob;  // the thesis driver's t-value record
+  using Job = SvoJob;
+  using Result = TraversalResult;
+  using Behaviour = TraversalCore<FixedArith>;
+  using Memory = SvoMemory;
+  using Config = GoldenConfig;
+
+  // Memory accesses: each reading state reads one 32-bit word (a descriptor in EVAL, a far word
+  // in PUSH), and every state takes one cycle.
+  static constexpr int kWordsPerRead = 1;
+  // Dispatched in D, INIT in D + 1, the first read in EVAL in D + 2: the memory arbiter's bound
+  // on an idle core's next request (docs/cycle-semantics.md, "Run-ahead").
+  static constexpr uint64_t kFirstReadAfterDispatch = 2;
+
+  // Trace codes: CoreState's values, and one more for BLOCKED. Constants, since a timed core
+  // records them on its hot path.
+  static constexpr uint64_t kIdleState = static_cast<uint64_t>(CoreState::Idle);
+  static constexpr uint64_t kOutState = static_cast<uint64_t>(CoreState::Out);
+  static constexpr uint64_t kBlockedState = kBlockedStateCode;
+  static StateVocabulary vocabulary() {
+    return StateVocabulary{kCoreStateNames, 3, kIdleState, kOutState, kBlockedState};
+  }
+
+  static Behaviour behaviour(const Config& config) {
+    return Behaviour(FixedArith{config.format}, config.stackFrames);
+  }
+  // The job manager's set-up of a t-value record (appendix C.2.1: float32 to fixed point).
+  static Job setUp(const HostRecord& record, const FixedFormat& format,
+                   FloatConversion conversion) {
+    return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
+               convertToFixed(record.t1Bits, format, conversion), record.root};
+  }
+  static void start(Behaviour& core, const Job& job) { core.start(job.t0, job.t1, job.a, job.root); }
+  static void writeResult(uint32_t idWord, const Behaviour& core, Result& result) {
+    rtu::writeResult(idWord, core, result);
+  }
+
+  // The kind's own counters, counted per job when its result is offered.
+  static void count(const Behaviour& core, CoreStatistics& statistics) {
+    statistics.stackOverflows += core.stackOverflow();
+    statistics.tOverflows += core.tOverflow();
+  }
+};
+
+}  // namespace rtu

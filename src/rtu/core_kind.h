@@ -1,0 +1,26 @@
+#pragma once
+// The seam between the RTU and a kind of traversal core. The RTU's job manager timing, scheduler,
+// result manager, reorder buffer, host links, recurrence and scene manager never look inside a
+// job; the timing shells (the cycle-accurate core, the loosely-timed core, the golden model, the
+// cache warmer) are templates over a kind. A kind is a struct of types and static members, chosen
+// once at the top (kinds/registry.h) so that nothing below branches on it and no virtual call
+// lies on the per-cycle path. kinds/svo/svo_kind.h is the worked example; docs/architecture.md,
+// "The core-kind seam", lists what a kind declares.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtu {
+
+// How a kind's states appear in traces and timelines: a name per trace code, the code's width,
+// and which codes are idle (ready for a job), out (result offered) and blocked (waiting for a
+// word). A ray's timeline slice runs from the cycle its core leaves idle to the cycle its core is
+// idle again.
+struct StateVocabulary {
+  std::vector<std::string> names;  // by code
+  int bits = 0;
+  uint64_t idle = 0, out = 0, blocked = 0;
+};
+
+}  // namespace rtu
