@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rtu/core_statistics.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"
-#include "sim/ca/svo_traversal_core.h"
 
 namespace rtu {
 

@@ -31,17 +31,9 @@
 #include "sim/kernel/transfer_channel.h"
 #include "kinds/svo/state_vocabulary.h"
 #include "kinds/svo/traversal_core.h"
+#include "rtu/core_statistics.h"
 
 namespace rtu {
-
-struct CoreStatistics {
-  uint64_t jobs = 0;
-  uint64_t busyCycles = 0;     // INIT, EVAL, NEXT, PUSH, POP
-  uint64_t blockedCycles = 0;  // BLOCKED
-  uint64_t outCycles = 0;      // OUT: result waiting for the result manager
-  uint64_t stackOverflows = 0;
-  uint64_t tOverflows = 0;
-};
 
 class SvoTraversalCore final : public sc_core::sc_module, public Agent, private SharedReadListener {
  public:

@@ -1,0 +1,19 @@
+#pragma once
+// What a traversal core counts, in any model (the SystemC core, the recurrence's cores): per core
+// its jobs and the cycles it spent busy, blocked on memory and handing over its result, and the
+// rays whose traversal overflowed. No SystemC: statistics compile without it.
+
+#include <cstdint>
+
+namespace rtu {
+
+struct CoreStatistics {
+  uint64_t jobs = 0;
+  uint64_t busyCycles = 0;     // INIT, EVAL, NEXT, PUSH, POP
+  uint64_t blockedCycles = 0;  // BLOCKED
+  uint64_t outCycles = 0;      // OUT: result waiting for the result manager
+  uint64_t stackOverflows = 0;
+  uint64_t tOverflows = 0;
+};
+
+}  // namespace rtu
