@@ -1,9 +1,11 @@
 #pragma once
-// What a traversal core counts, in any model (the SystemC core, the recurrence's cores): per core
-// its jobs and the cycles it spent busy, blocked on memory and handing over its result, and the
-// rays whose traversal overflowed. No SystemC: statistics compile without it.
+// What a traversal core counts, in any model (the SystemC core, the recurrence's cores), and the
+// declaration of it (base/statistics.h): per core its jobs and the cycles it spent busy, blocked
+// on memory and handing over its result; for the run the rays whose traversal overflowed.
 
 #include <cstdint>
+
+#include "base/statistics.h"
 
 namespace rtu {
 
@@ -14,6 +16,8 @@ struct CoreStatistics {
   uint64_t outCycles = 0;      // OUT: result waiting for the result manager
   uint64_t stackOverflows = 0;
   uint64_t tOverflows = 0;
+
+  static const StatisticGroup<CoreStatistics>& declaration();
 };
 
 }  // namespace rtu
