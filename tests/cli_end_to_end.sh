@@ -3,7 +3,8 @@
 # with a non-zero exit for malformed inputs. Usage: cli_end_to_end.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
-source "$(dirname "${BASH_SOURCE[0]}")/shell_test_helpers.sh"
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+source "$here/shell_test_helpers.sh"
 
 "$rtusim" build --scene sphere --depth 6 --out sphere.svo | grep -q "descriptors" || fail "build report"
 "$rtusim" validate sphere.svo | grep -q "valid" || fail "validate"
@@ -69,6 +70,13 @@ for memory in ideal cached; do
   grep -q 'enddefinitions' trace.vcd && grep -q 'core_1' trace.vcd && ! grep -q 'core_0' trace.vcd \
     || fail "VCD scope filter"
 done
+# `rtusim stats --list` names every key of the statistics JSON (here with cached memory), with
+# its unit, combination and doc (issue 26).
+"$rtusim" stats --list >stats_list.txt
+unlisted=$(LC_ALL=C comm -23 <(python3 "$here/statistics_keys.py" stats.json) \
+  <(awk '!/^#/ && NF >= 4 {print $1}' stats_list.txt | LC_ALL=C sort -u))
+[[ -z $unlisted ]] || fail "stats --list does not list: $unlisted"
+expect_error "give --list" "$rtusim" stats
 "$rtusim" golden --svo moved.svo --rays rays.bin --out golden_rays.bin >/dev/null
 "$rtusim" replay --svo moved.svo --rays rays.bin --out replay_rays.bin --scheduler fa >/dev/null
 [[ $(sorted_records replay_rays.bin) == $(sorted_records golden_rays.bin) ]] \

@@ -281,7 +281,7 @@ void checkResults(const RtuRun& run, const std::vector<TraversalResult>& expecte
   CHECK(busy == goldenCost);  // INIT .. POP cycles, blocked ones excluded
   CHECK(jobs == expected.size());
   CHECK(overflows == goldenOverflows);
-  CHECK(run.statistics.stackOverflows == goldenOverflows);
+  CHECK(run.statistics.allCores().stackOverflows == goldenOverflows);
   // Each core's busy, blocked and OUT cycles fit in the run (idle is the rest).
   uint64_t overfull = 0;
   for (const CoreStatistics& core : run.statistics.coreTimes)
@@ -976,12 +976,12 @@ TEST_CASE("A two-frame stack overflows on a deep scene", "[rtu]") {
         CHECK_FALSE(r.hit);
       }
       CHECK(flagged == overflows);
-      CHECK(run.statistics.stackOverflows == overflows);
+      CHECK(run.statistics.allCores().stackOverflows == overflows);
     }
   }
   // With the RTL's eleven frames nothing overflows on this scene.
   RtuConfig thesis;
-  CHECK(simulateRtu(scene.memory(), scene.jobs, thesis).statistics.stackOverflows == 0);
+  CHECK(simulateRtu(scene.memory(), scene.jobs, thesis).statistics.allCores().stackOverflows == 0);
 }
 
 }  // namespace rtu

@@ -15,6 +15,7 @@
 #include "explore/exploration_run.h"
 #include "app/frame_images.h"
 #include "run/lt_simulation.h"
+#include "run/statistics_output.h"
 #include "scene/model_cache.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
@@ -78,35 +79,14 @@ std::vector<SceneModel> loadModels(const SceneDescription& scene, const std::str
   return models;
 }
 
-std::vector<std::string> csvHeader() {
-  return {"frame", "time_s", "pixels", "rays_traced", "rays_saved", "hits", "jobs",
-          "jobs_per_ray", "culled", "early_terminations", "skipped", "traversal_cycles",
-          "cycles", "frame_ms", "fps", "host_s"};
-}
-
-std::vector<std::string> csvRow(const FrameStatistics& s, double clockMhz) {
-  const auto real = [](double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return std::string(text);
-  };
-  return {std::to_string(s.frame), real(s.time), std::to_string(s.pixels),
-          std::to_string(s.raysTraced), std::to_string(s.raysSaved), std::to_string(s.hits),
-          std::to_string(s.jobs), real(s.jobsPerRay()), std::to_string(s.culled),
-          std::to_string(s.earlyTerminations), std::to_string(s.skipped),
-          std::to_string(s.traversalCycles), std::to_string(s.cycles), real(s.frameMs(clockMhz)),
-          real(s.framesPerSecond(clockMhz)), real(s.hostSeconds)};
-}
-
 // `seconds`: the frames' wall-clock time, in `workers` workers.
 void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz,
                   const std::string& model, double seconds, int workers) {
-  uint64_t pixels = 0, traced = 0, saved = 0, jobs = 0, cycles = 0, culled = 0, early = 0;
-  double host = 0.0;
-  for (const FrameStatistics& s : frames) {
-    pixels += s.pixels, traced += s.raysTraced, saved += s.raysSaved, jobs += s.jobs;
-    cycles += s.cycles, culled += s.culled, early += s.earlyTerminations, host += s.hostSeconds;
-  }
+  const FrameStatistics all = sumOf(frames);
+  const uint64_t pixels = all.pixels, traced = all.raysTraced, saved = all.raysSaved,
+                 jobs = all.jobs;
+  const uint64_t cycles = all.cycles, culled = all.culled, early = all.earlyTerminations;
+  const double host = all.hostSeconds;
   const double meanCycles = static_cast<double>(cycles) / frames.size();
   std::printf("frames      %zu, %.2f ms mean frame time at %.0f MHz (%.1f frames/s)\n",
               frames.size(), meanCycles / (clockMhz * 1e3), clockMhz,
@@ -157,7 +137,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
                        options.threads, rtu.cores, rtu.clockMhz,
                        parseModelKind(options.model), options.model == "golden" ? nullptr : &rtu};
   std::ofstream csv(options.csvPath());
-  csv << csvLine(csvHeader()) << std::flush;
+  csv << csvLine(statisticsHeader<FrameStatistics>()) << std::flush;
   std::vector<FrameStatistics> statistics;
   std::vector<std::string> framePaths;
   const auto writeFrame = [&options, &scene](const SceneFrame& rendered) {
@@ -170,7 +150,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
                         [&](const FrameStatistics& frame) {
                           framePaths.push_back(options.framePath(frame.frame));
                           statistics.push_back(frame);
-                          csv << csvLine(csvRow(frame, rtu.clockMhz)) << std::flush;
+                          csv << csvLine(statisticsFields(frame, "%.6g")) << std::flush;
                         });
   if (!csv) throw std::runtime_error("cannot write " + options.csvPath());
   const double seconds =

@@ -14,6 +14,7 @@ void addReplayCommand(CLI::App& app);
 void addAccuracyCommand(CLI::App& app);
 void addPrecisionCommand(CLI::App& app);
 void addConfigCommand(CLI::App& app);
+void addStatsCommand(CLI::App& app);
 void addFidelityCommand(CLI::App& app);
 void addFpsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);

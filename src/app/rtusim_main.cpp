@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   rtu::addAccuracyCommand(app);
   rtu::addPrecisionCommand(app);
   rtu::addConfigCommand(app);
+  rtu::addStatsCommand(app);
   rtu::addFpsCommand(app);
   rtu::addFidelityCommand(app);
   rtu::addSweepCommand(app);

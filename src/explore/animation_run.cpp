@@ -24,17 +24,6 @@ bool sameCamera(const Camera& a, const Camera& b) {
          a.height == b.height;
 }
 
-void add(FrameStatistics& total, const FrameStatistics& part) {
-  total.raysTraced += part.raysTraced;
-  total.raysSaved += part.raysSaved;
-  total.hits += part.hits;
-  total.jobs += part.jobs;
-  total.culled += part.culled;
-  total.earlyTerminations += part.earlyTerminations;
-  total.skipped += part.skipped;
-  total.traversalCycles += part.traversalCycles;
-}
-
 void count(FrameStatistics& statistics, const SceneHit& hit) {
   ++statistics.raysTraced;
   statistics.jobs += hit.jobs;
@@ -45,6 +34,41 @@ void count(FrameStatistics& statistics, const SceneHit& hit) {
 }
 
 }  // namespace
+
+const StatisticGroup<FrameStatistics>& FrameStatistics::declaration() {
+  using F = FrameStatistics;
+  static const StatisticGroup<FrameStatistics> group =
+      StatisticGroup<FrameStatistics>("a frame of an animation: the columns of animate's CSV")
+          .setting(Statistic("frame", "", "the frame's number"), &F::frame)
+          .setting(Statistic("time_s", "s", "the frame's time in the animation"), &F::time)
+          .count(Statistic("pixels", "pixels", "the frame's pixels"), &F::pixels)
+          .count(Statistic("rays_traced", "rays", "pixels the scene manager traced"),
+                 &F::raysTraced)
+          .count(Statistic("rays_saved", "rays", "pixels the hit buffer answered"), &F::raysSaved)
+          .count(Statistic("hits", "rays", "pixels whose ray hit an instance"), &F::hits)
+          .count(
+              Statistic("jobs", "jobs", "jobs issued: one per instance a ray was traced against"),
+              &F::jobs)
+          .derived(Statistic("jobs_per_ray", "jobs", "jobs per traced ray"), &F::jobsPerRay)
+          .count(Statistic("culled", "instances", "instance tests that missed the bounding sphere"),
+                 &F::culled)
+          .count(Statistic("early_terminations", "rays", "rays ended with instances left untraced"),
+                 &F::earlyTerminations)
+          .count(Statistic("skipped", "instances", "instances left untraced by those rays"),
+                 &F::skipped)
+          .count(Statistic("traversal_cycles", "cycles", "the traced jobs' golden costs summed"),
+                 &F::traversalCycles)
+          .count(Statistic("cycles", "cycles",
+                           "the frame's total on the RTU (recurrence or simulated)"),
+                 &F::cycles)
+          .derived(Statistic("frame_ms", "ms", "the frame's time at the clock"), &F::frameMs)
+          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
+                   &F::framesPerSecond)
+          .real(Statistic("host_s", "s", "host time the frame took"), &F::hostSeconds)
+          .setting(Statistic("clock_mhz", "MHz", "the clock of frame_ms and fps").notAColumn(),
+                   &F::clockMhz);
+  return group;
+}
 
 // One frame's shared state; each thread writes only its own rows and its own statistics.
 struct AnimationRenderer::Work {
@@ -148,7 +172,7 @@ SceneFrame AnimationRenderer::render(int frame) {
   SceneFrame result;
   Work work = trace(frame, result);
   FrameStatistics& statistics = result.statistics;
-  for (const FrameStatistics& part : work.perThread) add(statistics, part);
+  for (const FrameStatistics& part : work.perThread) addStatisticsOf(statistics, part);
   if (options_.model == ModelKind::LooselyTimed) {
     statistics.cycles = looselyTimedCycles(work);
   } else if (options_.model == ModelKind::CycleAccurate) {
@@ -162,6 +186,7 @@ SceneFrame AnimationRenderer::render(int frame) {
   remember(result, work);
   statistics.frame = frame;
   statistics.time = scene_.timeOf(frame);
+  statistics.clockMhz = options_.clockMhz;
   statistics.pixels = work.pixels.size();
   result.pixels = std::move(work.pixels);
   statistics.hostSeconds =

@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/statistics.h"
 #include "scene/hit_buffer.h"
 #include "run/model_run.h"
 #include "sim/rtu_config.h"
@@ -37,6 +38,8 @@ struct AnimationOptions {
   const RtuConfig* rtu = nullptr;
 };
 
+// A frame's statistics, declared (base/statistics.h) in the order of the per-frame CSV's columns;
+// frames sum with sumOf().
 struct FrameStatistics {
   int frame = 0;
   double time = 0.0;  // seconds into the animation
@@ -51,10 +54,13 @@ struct FrameStatistics {
   uint64_t traversalCycles = 0;    // sum of the traced jobs' golden costs
   uint64_t cycles = 0;             // the frame's total on the RTU (recurrence or simulated)
   double hostSeconds = 0.0;
+  double clockMhz = 100.0;  // of frameMs() and framesPerSecond()
 
   double jobsPerRay() const { return raysTraced ? static_cast<double>(jobs) / raysTraced : 0.0; }
-  double frameMs(double clockMhz) const { return cycles / (clockMhz * 1e3); }
-  double framesPerSecond(double clockMhz) const { return cycles ? clockMhz * 1e6 / cycles : 0.0; }
+  double frameMs() const { return cycles / (clockMhz * 1e3); }
+  double framesPerSecond() const { return cycles ? clockMhz * 1e6 / cycles : 0.0; }
+
+  static const StatisticGroup<FrameStatistics>& declaration();
 };
 
 struct SceneFrame {

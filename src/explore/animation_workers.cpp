@@ -8,18 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "explore/sweep_workers.h"
+#include "run/statistics_output.h"
 
 namespace rtu {
-
-// A frame's statistics on one line from worker to parent (doubles survive the JSON exactly).
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FrameStatistics, frame, time, pixels, raysTraced, raysSaved,
-                                   hits, jobs, culled, earlyTerminations, skipped,
-                                   traversalCycles, cycles, hostSeconds)
-
 namespace {
 
+// A frame's statistics on one line from worker to parent (doubles survive the JSON exactly).
 std::string statisticsLine(const FrameStatistics& statistics) {
-  return nlohmann::json(statistics).dump() + "\n";
+  return statisticsJson(statistics).dump() + "\n";
 }
 
 std::string rangeText(const FrameRange& range) {
@@ -51,9 +47,10 @@ class FrameCollector {
 
   void heard(const FrameRange& range, const std::string& text) {
     try {
-      const nlohmann::json line = nlohmann::json::parse(text);
+      const nlohmann::ordered_json line = nlohmann::ordered_json::parse(text);
       if (line.contains("error")) return fail(range, line["error"].get<std::string>());
-      const FrameStatistics statistics = line.get<FrameStatistics>();
+      FrameStatistics statistics;
+      readStatistics(statistics, line);
       waiting_.emplace(statistics.frame, statistics);
     } catch (const nlohmann::json::exception& error) {
       return fail(range, std::string("unreadable worker answer: ") + error.what());

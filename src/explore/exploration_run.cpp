@@ -175,29 +175,12 @@ using Json = nlohmann::ordered_json;
 
 // Where each column's value is in the statistics JSON.
 const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() {
-  static const std::vector<std::pair<std::string, Json::json_pointer>> columns = {
-      {"rays", Json::json_pointer("/rays")},
-      {"total_cycles", Json::json_pointer("/total_cycles")},
-      {"cycles_per_ray", Json::json_pointer("/cycles_per_ray")},
-      {"frame_ms", Json::json_pointer("/frame_ms")},
-      {"fps", Json::json_pointer("/fps")},
-      {"limit", Json::json_pointer("/limit")},
-      {"cost_mean", Json::json_pointer("/cost/mean")},
-      {"blocked_mean", Json::json_pointer("/blocked_cycles/mean")},
-      {"core_busy", Json::json_pointer("/core_time/busy")},
-      {"core_blocked", Json::json_pointer("/core_time/blocked")},
-      {"core_handover", Json::json_pointer("/core_time/handover")},
-      {"core_idle", Json::json_pointer("/core_time/idle")},
-      {"max_wait", Json::json_pointer("/scheduler/max_wait")},
-      {"l1_hit_rate", Json::json_pointer("/memory/l1/hit_rate")},
-      {"l2_hit_rate", Json::json_pointer("/memory/l2/hit_rate")},
-      {"dram_bytes", Json::json_pointer("/memory/dram/bytes")},
-      {"dram_bytes_per_cycle", Json::json_pointer("/memory/dram/bytes_per_cycle")},
-      {"host_seconds", Json::json_pointer("/simulation/host_seconds")},
-      {"answered_by", Json::json_pointer("/simulation/model")},
-      {"total_cycles_ci_low", Json::json_pointer("/sample/total_cycles_ci95/0")},
-      {"total_cycles_ci_high", Json::json_pointer("/sample/total_cycles_ci95/1")},
-      {"simulated_fraction", Json::json_pointer("/sample/fraction_simulated")}};
+  static const std::vector<std::pair<std::string, Json::json_pointer>> columns = [] {
+    std::vector<std::pair<std::string, Json::json_pointer>> all;
+    for (const auto& [name, key] : statisticsColumnKeys())
+      all.emplace_back(name, Json::json_pointer("/" + key));
+    return all;
+  }();
   return columns;
 }
 
@@ -212,6 +195,33 @@ std::string valueText(const Json& value) {
 }
 
 }  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys() {
+  static const std::vector<std::pair<std::string, std::string>> columns = {
+      {"rays", "rays"},
+      {"total_cycles", "total_cycles"},
+      {"cycles_per_ray", "cycles_per_ray"},
+      {"frame_ms", "frame_ms"},
+      {"fps", "fps"},
+      {"limit", "limit"},
+      {"cost_mean", "cost/mean"},
+      {"blocked_mean", "blocked_cycles/mean"},
+      {"core_busy", "core_time/busy"},
+      {"core_blocked", "core_time/blocked"},
+      {"core_handover", "core_time/handover"},
+      {"core_idle", "core_time/idle"},
+      {"max_wait", "scheduler/max_wait"},
+      {"l1_hit_rate", "memory/l1/hit_rate"},
+      {"l2_hit_rate", "memory/l2/hit_rate"},
+      {"dram_bytes", "memory/dram/bytes"},
+      {"dram_bytes_per_cycle", "memory/dram/bytes_per_cycle"},
+      {"host_seconds", "simulation/host_seconds"},
+      {"answered_by", "simulation/model"},
+      {"total_cycles_ci_low", "sample/total_cycles_ci95/0"},
+      {"total_cycles_ci_high", "sample/total_cycles_ci95/1"},
+      {"simulated_fraction", "sample/fraction_simulated"}};
+  return columns;
+}
 
 const std::vector<std::string>& statisticsColumns() {
   static const std::vector<std::string> names = [] {

@@ -63,6 +63,9 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
 // first, then hit rates, core time shares, scheduler waits, DRAM traffic, the model, and for
 // sampled rows the 95 % interval of total_cycles and the fraction of rays simulated.
 const std::vector<std::string>& statisticsColumns();
+// Each column with the key of the statistic it holds ("cost/mean"; an interval's end as
+// "sample/total_cycles_ci95/0").
+const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys();
 // A row's values for those columns (empty strings for a failed row).
 std::vector<std::string> statisticsValues(const nlohmann::ordered_json& row);
 // One CSV line (RFC 4180 quoting) with its newline.

@@ -1,8 +1,13 @@
 #pragma once
-// What a traversal core of any kind counts over a run: its jobs and where its cycles went. The
-// cost of a job is its cycles outside IDLE, OUT and BLOCKED.
+// What a traversal core of any kind counts, in any model (the SystemC core, the recurrence's
+// cores), and the declaration of it (base/statistics.h): per core its jobs and the cycles it spent
+// busy, blocked on memory and handing over its result; for the run the rays whose traversal
+// overflowed (the SVO kind's own counters, counted by SvoKind::count). A job's cost is its cycles
+// outside IDLE, OUT and BLOCKED.
 
 #include <cstdint>
+
+#include "base/statistics.h"
 
 namespace rtu {
 
@@ -13,6 +18,8 @@ struct CoreStatistics {
   uint64_t outCycles = 0;      // OUT: result waiting for the result manager
   uint64_t stackOverflows = 0;
   uint64_t tOverflows = 0;
+
+  static const StatisticGroup<CoreStatistics>& declaration();
 };
 
 }  // namespace rtu

@@ -59,16 +59,10 @@ uint64_t maxBuffersFull(RecurrenceRun& run) {
 // Sorts the run's handover column (maxBuffersFull).
 RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult>& results,
                            const std::vector<uint32_t>& blocked, const RtuConfig& config) {
-  RtuStatistics stats;
+  RtuStatistics stats = RtuStatistics::of(config);
   stats.rays = results.size();
   stats.totalCycles = run.totalCycles;
-  stats.clockMhz = config.clockMhz;
-  stats.cores = config.cores;
-  stats.scheduler = toString(config.scheduler);
   stats.coreTimes.resize(static_cast<size_t>(config.cores));
-  stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
-  stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
-  stats.hostOutRecordBytes = config.outputLink().recordBytes;
   IdleCores idleCores(config.cores);
   std::array<uint64_t, 256> shortWaits{};  // jobs by wait: no map look-up per job
   for (size_t j = 0; j < results.size(); ++j) {
@@ -80,13 +74,9 @@ RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult
     core.blockedCycles += blockedCycles;
     core.outCycles +=
         run.handoverCycles[j] + 1 - (run.dispatchCycles[j] + 1 + result.cost + blockedCycles);
-    stats.totalBlocked += blockedCycles;
-    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, blockedCycles);
     core.stackOverflows += result.stackOverflow;
     core.tOverflows += result.tOverflow;
-    stats.belowResolution += result.belowResolution;
-    stats.totalCost += result.cost;
-    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.cost);
+    stats.count(result, blockedCycles);
     const uint64_t wait = run.dispatchCycles[j] - run.pendingCycles[j];
     stats.jobManagerStallCycles += wait;
     if (wait < shortWaits.size())
@@ -101,7 +91,6 @@ RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult
   }
   for (uint64_t wait = 0; wait < shortWaits.size(); ++wait)
     if (shortWaits[wait] > 0) stats.waitHistogram[wait] += shortWaits[wait];
-  stats.stackOverflows = stats.allCores().stackOverflows;
   stats.resultBuffersMaxFull = maxBuffersFull(run);
   return stats;
 }

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "run/statistics_output.h"
 #include "sim/ca/rtu_top.h"
 
 namespace rtu {
@@ -13,13 +14,34 @@ double ratio(uint64_t part, uint64_t whole) {
   return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
 }
 
-nlohmann::ordered_json cacheJson(const CacheStats& stats) {
-  return {{"accesses", stats.accesses}, {"hits", stats.hits},       {"merged", stats.merged},
-          {"misses", stats.misses},     {"evictions", stats.evictions},
-          {"hit_rate", hitRate(stats)}};
+// Share of the run a host link spends moving records; an unlimited link moves one a cycle.
+double linkUtilisation(uint64_t records, uint64_t recordBytes, double bytesPerCycle,
+                       uint64_t cycles) {
+  const double cyclesPerRecord =
+      bytesPerCycle > 0 ? static_cast<double>(recordBytes) / bytesPerCycle : 1.0;
+  return cycles == 0 ? 0.0 : std::min(1.0, records * cyclesPerRecord / cycles);
 }
 
 }  // namespace
+
+RtuStatistics RtuStatistics::of(const RtuConfig& config) {
+  RtuStatistics stats;
+  stats.clockMhz = config.clockMhz;
+  stats.cores = config.cores;
+  stats.scheduler = toString(config.scheduler);
+  stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
+  stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
+  stats.hostOutRecordBytes = config.outputLink().recordBytes;
+  return stats;
+}
+
+void RtuStatistics::count(const TraversalResult& result, uint64_t blocked) {
+  totalCost += result.cost;
+  maxCost = std::max<uint64_t>(maxCost, result.cost);
+  belowResolution += result.belowResolution;
+  totalBlocked += blocked;
+  maxBlocked = std::max(maxBlocked, blocked);
+}
 
 double RtuStatistics::cyclesPerRay() const { return rays == 0 ? 0.0 : ratio(totalCycles, rays); }
 double RtuStatistics::raysPerSecond() const {
@@ -35,43 +57,14 @@ double RtuStatistics::simulatedRaysPerHostSecond() const {
 uint64_t RtuStatistics::idleCycles(const CoreStatistics& core) const {
   return totalCycles - std::min(totalCycles, core.busyCycles + core.blockedCycles + core.outCycles);
 }
-double hitRate(const CacheStats& stats) { return ratio(stats.hits + stats.merged, stats.accesses); }
 
-CacheStats RtuStatistics::allL1() const {
-  CacheStats total;
-  for (const CacheStats& s : l1) {
-    total.accesses += s.accesses;
-    total.hits += s.hits;
-    total.merged += s.merged;
-    total.misses += s.misses;
-    total.evictions += s.evictions;
-  }
-  return total;
-}
-
-CoreStatistics RtuStatistics::allCores() const {
-  CoreStatistics total;
-  for (const CoreStatistics& c : coreTimes) {
-    total.jobs += c.jobs;
-    total.busyCycles += c.busyCycles;
-    total.blockedCycles += c.blockedCycles;
-    total.outCycles += c.outCycles;
-    total.stackOverflows += c.stackOverflows;
-    total.tOverflows += c.tOverflows;
-  }
-  return total;
-}
+CacheStats RtuStatistics::allL1() const { return sumOf(l1); }
+CoreStatistics RtuStatistics::allCores() const { return sumOf(coreTimes); }
 
 int64_t RtuStatistics::waitBound() const {
   if (scheduler == "cfa") return cores - 1;
   if (scheduler == "fa") return 0;
   return -1;
-}
-
-std::vector<uint64_t> RtuStatistics::waitHistogramArray() const {
-  std::vector<uint64_t> histogram(waitHistogram.empty() ? 0 : waitHistogram.rbegin()->first + 1);
-  for (const auto& [wait, jobs] : waitHistogram) histogram[wait] = jobs;
-  return histogram;
 }
 
 RtuStatistics::CoreTimeShares RtuStatistics::coreTimeShares() const {
@@ -86,110 +79,167 @@ double RtuStatistics::frameMilliseconds() const {
   return static_cast<double>(totalCycles) / (clockMhz * 1e3);
 }
 
-namespace {
-
-nlohmann::ordered_json sceneJson(const SceneManagerStatistics& scene) {
-  nlohmann::ordered_json perRay = nlohmann::ordered_json::object();
-  for (const auto& [jobs, rays] : scene.jobsPerRay) perRay[std::to_string(jobs)] = rays;
-  return {{"rays", scene.rays},
-          {"jobs", scene.jobs},
-          {"jobs_per_ray", scene.rays == 0 ? 0.0 : static_cast<double>(scene.jobs) / scene.rays},
-          {"jobs_per_ray_histogram", perRay},
-          {"instances_culled", scene.culled},
-          {"early_terminations", scene.earlyTerminations},
-          {"instances_skipped", scene.skipped}};
-}
-
-// Share of the run a host link spends moving records; an unlimited link moves one a cycle.
-double linkUtilisation(uint64_t records, uint64_t recordBytes, double bytesPerCycle,
-                       uint64_t cycles) {
-  const double cyclesPerRecord =
-      bytesPerCycle > 0 ? static_cast<double>(recordBytes) / bytesPerCycle : 1.0;
-  return cycles == 0 ? 0.0 : std::min(1.0, records * cyclesPerRecord / cycles);
-}
-
-}  // namespace
-
-std::vector<std::pair<std::string, double>> RtuStatistics::utilisation() const {
+RtuStatistics::Utilisation RtuStatistics::utilisation() const {
   const CoreTimeShares shares = coreTimeShares();
   // The job manager and scheduler issue at most one job a cycle.
   const double issue = totalCycles == 0 ? 0.0 : ratio(rays, totalCycles);
   const double hostIn = linkUtilisation(rays, kHostRecordBytes, hostInBytesPerCycle, totalCycles);
   const double hostOut = linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
-  return {{"cores", shares.busy},
-          {"memory", shares.blocked},
-          {"host_in", hostInBytesPerCycle > 0 ? hostIn : 0.0},
-          {"host_out", hostOutBytesPerCycle > 0 ? hostOut : 0.0},
-          {"job_manager", issue}};
+  return {shares.busy, shares.blocked, hostInBytesPerCycle > 0 ? hostIn : 0.0,
+          hostOutBytesPerCycle > 0 ? hostOut : 0.0, issue};
 }
 
 std::string RtuStatistics::limit() const {
-  const auto all = utilisation();
+  const auto all = statisticValues(utilisation());
   return std::max_element(all.begin(), all.end(),
-                          [](const auto& a, const auto& b) { return a.second < b.second; })
+                          [](const auto& a, const auto& b) {
+                            return std::get<double>(a.second) < std::get<double>(b.second);
+                          })
       ->first;
 }
 
-nlohmann::ordered_json RtuStatistics::toJson() const {
-  using json = nlohmann::ordered_json;
-  json coresJson = json::array();
-  for (size_t i = 0; i < coreTimes.size(); ++i) {
-    const CoreStatistics& c = coreTimes[i];
-    json core = {{"core", i},           {"jobs", c.jobs},
-                 {"busy", c.busyCycles}, {"blocked", c.blockedCycles},
-                 {"handover", c.outCycles}, {"idle", idleCycles(c)}};
-    if (!idealMemory) core["l1"] = cacheJson(l1[i]);
-    coresJson.push_back(core);
-  }
-  const CoreTimeShares shares = coreTimeShares();
-  json utilisationJson = json::object();
-  for (const auto& [resource, value] : utilisation()) utilisationJson[resource] = value;
-  json result = {
-      {"rays", rays},
-      {"total_cycles", totalCycles},
-      {"cycles_per_ray", cyclesPerRay()},
-      {"clock_mhz", clockMhz},
-      {"frame_ms", frameMilliseconds()},
-      {"fps", framesPerSecond()},
-      {"rays_per_second", raysPerSecond()},
-      {"limit", limit()},
-      {"utilisation", utilisationJson},
-      {"cost", {{"mean", ratio(totalCost, rays)}, {"max", maxCost}, {"total", totalCost}}},
-      {"blocked_cycles", {{"mean", ratio(totalBlocked, rays)}, {"max", maxBlocked}, {"total", totalBlocked}}},
-      {"core_time",
-       {{"busy", shares.busy}, {"blocked", shares.blocked}, {"handover", shares.handover},
-        {"idle", shares.idle}}},
-      {"cores", coresJson},
-      {"stack_overflows", stackOverflows},
-      {"t_overflows", allCores().tOverflows},
-      {"below_resolution", belowResolution},
-      {"job_manager", {{"stall_cycles", jobManagerStallCycles}}},
-      {"scheduler",
-       {{"policy", scheduler},
-        {"wait_histogram", waitHistogramArray()},
-        {"max_wait", maxWait},
-        {"max_wait_with_ready_core", maxWaitWithReadyCore},
-        {"eq_6_7_bound", waitBound() < 0 ? json("W_J") : json(waitBound())}}},
-      {"result_manager", {{"max_buffers_full", resultBuffersMaxFull}}},
-      {"memory", {{"kind", idealMemory ? "ideal" : "cached"}}},
-      {"simulation", {{"model", model},
-                      {"host_seconds", hostSeconds},
-                      {"rays_per_host_second", simulatedRaysPerHostSecond()}}}};
-  if (reorderMaxOccupancy > 0) result["reorder_buffer"] = {{"max_occupancy", reorderMaxOccupancy}};
-  if (scene) result["scene_manager"] = sceneJson(*scene);
-  if (!idealMemory) {
-    result["memory"]["l1"] = cacheJson(allL1());
-    result["memory"]["l2"] = cacheJson(l2.cache);
-    result["memory"]["l2"]["port_queue_cycles"] = l2.portQueueCycles;
-    result["memory"]["l2"]["mshr_queue_cycles"] = l2.mshrQueueCycles;
-    result["memory"]["dram"] = {{"reads", l2.dram.reads},
-                                {"bytes", l2.dram.bytes},
-                                {"busy_cycles", l2.dram.busyCycles},
-                                {"bytes_per_cycle", dramBytesPerCycle()},
-                                {"bandwidth_mb_per_second", dramBytesPerCycle() * clockMhz}};
-  }
-  return result;
+const StatisticGroup<RtuStatistics::CoreTimeShares>& RtuStatistics::CoreTimeShares::declaration() {
+  static const StatisticGroup<CoreTimeShares> group =
+      StatisticGroup<CoreTimeShares>("shares of the cores' time")
+          .derived(Statistic("busy", "", "share of the cores' cycles busy"), &CoreTimeShares::busy)
+          .derived(Statistic("blocked", "", "share BLOCKED on memory"), &CoreTimeShares::blocked)
+          .derived(Statistic("handover", "", "share in OUT"), &CoreTimeShares::handover)
+          .derived(Statistic("idle", "", "share in IDLE"), &CoreTimeShares::idle);
+  return group;
 }
+
+const StatisticGroup<RtuStatistics::Utilisation>& RtuStatistics::Utilisation::declaration() {
+  static const StatisticGroup<Utilisation> group =
+      StatisticGroup<Utilisation>("utilisation of what can bound the frame rate")
+          .derived(Statistic("cores", "", "share of the cores' time busy"), &Utilisation::cores)
+          .derived(Statistic("memory", "", "share of the cores' time BLOCKED on memory"),
+                   &Utilisation::memory)
+          .derived(Statistic("host_in", "",
+                             "share of the run the input link moves records (0: unlimited link)"),
+                   &Utilisation::hostIn)
+          .derived(Statistic("host_out", "",
+                             "share of the run the output link moves records (0: unlimited link)"),
+                   &Utilisation::hostOut)
+          .derived(
+              Statistic(
+                  "job_manager", "",
+                  "jobs issued per cycle: the job manager and scheduler issue one a cycle at most"),
+              &Utilisation::jobManager);
+  return group;
+}
+
+const StatisticGroup<RtuStatistics>& RtuStatistics::declaration() {
+  using S = RtuStatistics;
+  using Core = PartOf<S, CoreStatistics>;
+  static const StatisticGroup<Core> coreLayout =
+      StatisticGroup<Core>("a core of the run")
+          .derived(Statistic("core", "", "the core's number"),
+                   [](const Core& c) { return c.index; })
+          .own<S, CoreStatistics>()
+          .derived(Statistic("idle", "cycles",
+                             "cycles in IDLE: the run's cycles less busy, blocked and handover"),
+                   [](const Core& c) { return c.whole.idleCycles(c.values); })
+          .computed<CacheStats>(Statistic("l1", "", "the core's L1 (cached memory)"),
+                                [](const Core& c) { return c.whole.l1[c.index]; })
+          .writtenWhen(
+              [](const Core& c) { return !c.whole.idealMemory && c.index < c.whole.l1.size(); });
+  const auto cached = [](const S& s) { return !s.idealMemory; };
+  static const StatisticGroup<S> group =
+      StatisticGroup<S>("a run: --stats files, \"statistics\" of fps and sweep rows")
+          .count(Statistic("rays", "rays", "results the host received"), &S::rays)
+          .count(
+              Statistic("total_cycles", "cycles",
+                        "from the first cycle after reset to the cycle the last result is taken"),
+              &S::totalCycles)
+          .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"), &S::cyclesPerRay)
+          .setting(Statistic("clock_mhz", "MHz", "the clock of rates and frame times"),
+                   &S::clockMhz)
+          .derived(
+              Statistic("frame_ms", "ms", "total_cycles at the clock: the run's rays as one frame"),
+              &S::frameMilliseconds)
+          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
+                   &S::framesPerSecond)
+          .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
+                   &S::raysPerSecond)
+          .derived(Statistic("limit", "",
+                             "the first utilisation of the highest: what bounds the frame rate "
+                             "(docs/exploration.md)"),
+                   &S::limit)
+          .computed<Utilisation>(Statistic("utilisation", "", ""), &S::utilisation)
+          .derived(Statistic("cost/mean", "cycles",
+                             "per ray: cycles a core spends on it outside IDLE, OUT and BLOCKED "
+                             "(its traversal's states)"),
+                   [](const S& s) { return ratio(s.totalCost, s.rays); })
+          .maximum(Statistic("cost/max", "cycles", "the costliest ray's cost"), &S::maxCost)
+          .count(Statistic("cost/total", "cycles", "the rays' costs summed"), &S::totalCost)
+          .derived(Statistic("blocked_cycles/mean", "cycles",
+                             "per ray: cycles BLOCKED on memory, beside the cost"),
+                   [](const S& s) { return ratio(s.totalBlocked, s.rays); })
+          .maximum(Statistic("blocked_cycles/max", "cycles", "the most a ray was blocked"),
+                   &S::maxBlocked)
+          .count(Statistic("blocked_cycles/total", "cycles", "the rays' blocked cycles summed"),
+                 &S::totalBlocked)
+          .computed<CoreTimeShares>(Statistic("core_time", "", ""), &S::coreTimeShares)
+          .list(Statistic("cores", "", "per core"), &S::coreTimes, &coreLayout)
+          .combinedOnly(&S::l1)
+          .count(Statistic(
+                     "below_resolution", "rays",
+                     "rays that reached nodes narrower than a step of the format (result flag 4)")
+                     .reportedWhenNotZero("nodes narrower than a step; flag 4"),
+                 &S::belowResolution)
+          .count(Statistic("job_manager/stall_cycles", "cycles",
+                           "cycles the job manager's output was valid and not taken"),
+                 &S::jobManagerStallCycles)
+          .setting(Statistic("scheduler/policy", "", "cfa, fa or rr"), &S::scheduler)
+          .histogram(Statistic("scheduler/wait_histogram", "jobs",
+                               "jobs by their wait from pending to dispatch (index: cycles)"),
+                     &S::waitHistogram)
+          .maximum(Statistic("scheduler/max_wait", "cycles",
+                             "the longest wait from pending to dispatch"),
+                   &S::maxWait)
+          .maximum(Statistic("scheduler/max_wait_with_ready_core", "cycles",
+                             "the longest wait of a job that found a core ready (eq. 6.7's case)"),
+                   &S::maxWaitWithReadyCore)
+          .derived(Statistic("scheduler/eq_6_7_bound", "cycles",
+                             "the thesis' worst-case wait (eq. 6.7) for the policy; W_J for rr"),
+                   [](const S& s) {
+                     return s.waitBound() < 0 ? StatisticValue("W_J")
+                                              : StatisticValue(s.waitBound());
+                   })
+          .maximum(Statistic("result_manager/max_buffers_full", "buffers",
+                             "the most result buffers full at once"),
+                   &S::resultBuffersMaxFull)
+          .setting(Statistic("memory/kind", "", "ideal or cached"),
+                   [](const S& s) { return s.idealMemory ? "ideal" : "cached"; })
+          .computed<CacheStats>(Statistic("memory/l1", "", "the L1s summed"), &S::allL1)
+          .writtenWhen(cached)
+          .group(Statistic("memory", "", ""), &S::l2)
+          .writtenWhen(cached)
+          .derived(Statistic("memory/dram/bytes_per_cycle", "bytes/cycle",
+                             "DRAM bytes per cycle of the run"),
+                   &S::dramBytesPerCycle)
+          .writtenWhen(cached)
+          .derived(Statistic("memory/dram/bandwidth_mb_per_second", "MB/s",
+                             "DRAM bytes per second at the clock"),
+                   [](const S& s) { return s.dramBytesPerCycle() * s.clockMhz; })
+          .writtenWhen(cached)
+          .setting(Statistic("simulation/model", "",
+                             "what answered: systemc, recurrence, lt, golden or sampled"),
+                   &S::model)
+          .real(Statistic("simulation/host_seconds", "s",
+                          "host time of the run (differs run to run)"),
+                &S::hostSeconds)
+          .derived(Statistic("simulation/rays_per_host_second", "rays/s", "rays per host second"),
+                   &S::simulatedRaysPerHostSecond)
+          .maximum(Statistic("reorder_buffer/max_occupancy", "results",
+                             "the most results the reorder buffer held (written when not 0)"),
+                   &S::reorderMaxOccupancy)
+          .writtenWhen([](const S& s) { return s.reorderMaxOccupancy > 0; })
+          .group(Statistic("scene_manager", "", "a run through the scene manager"), &S::scene);
+  return group;
+}
+
+nlohmann::ordered_json RtuStatistics::toJson() const { return statisticsJson(*this); }
 
 namespace {
 
@@ -230,37 +280,19 @@ void RtuStatistics::writeReport(std::ostream& out) const {
     out << "scene manager: " << ratio(scene->jobs, scene->rays) << " jobs per ray, "
         << scene->culled << " instances culled, " << scene->earlyTerminations
         << " early terminations (" << scene->skipped << " instances skipped)\n";
-  if (stackOverflows > 0) out << "stack overflows: " << stackOverflows << " rays\n";
-  if (const uint64_t wrapped = allCores().tOverflows)
-    out << "t overflows: " << wrapped << " rays (t-values beyond the fixed-point range; flag 2)\n";
-  if (belowResolution > 0)
-    out << "below resolution: " << belowResolution << " rays (nodes narrower than a step; flag 4)\n";
+  writeReportedLines(out, *this);
   out << answeredBy(model) << hostSeconds << " s (" << simulatedRaysPerHostSecond() / 1e6
       << " M rays per host second)\n";
 }
 
 RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles) {
-  RtuStatistics stats;
+  RtuStatistics stats = RtuStatistics::of(config);
   stats.rays = top.sink().arrivals().size();
   stats.totalCycles = totalCycles;
-  stats.clockMhz = config.clockMhz;
-  stats.cores = config.cores;
-  stats.scheduler = toString(config.scheduler);
   for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
-  stats.stackOverflows = stats.allCores().stackOverflows;
   const HostSink::Arrivals& arrivals = top.sink().arrivals();
-  for (const TraversalResult& result : arrivals.results) {
-    stats.totalCost += result.cost;
-    stats.maxCost = std::max<uint64_t>(stats.maxCost, result.cost);
-    stats.belowResolution += result.belowResolution;
-  }
-  for (uint32_t blocked : arrivals.blockedCycles) {
-    stats.totalBlocked += blocked;
-    stats.maxBlocked = std::max<uint64_t>(stats.maxBlocked, blocked);
-  }
-  stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
-  stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
-  stats.hostOutRecordBytes = config.outputLink().recordBytes;
+  for (size_t i = 0; i < arrivals.results.size(); ++i)
+    stats.count(arrivals.results[i], arrivals.blockedCycles[i]);
   stats.jobManagerStallCycles = top.jobManager().statistics().stallCycles;
   const SchedulerStatistics scheduler = top.scheduler().statistics();
   stats.waitHistogram = scheduler.waitHistogram;

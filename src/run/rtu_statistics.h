@@ -1,5 +1,7 @@
 #pragma once
-// What a simulated run measured: the readable report and the JSON of `--stats`.
+// What a simulated run measured: the readable report and the JSON of `--stats`. Every statistic
+// is declared once (declaration(), base/statistics.h): the JSON, the report's lines for flagged
+// rays, sums over parts and windows (statistics_window.h) and `rtusim stats --list` come from it.
 
 #include <cstdint>
 #include <iosfwd>
@@ -10,14 +12,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/statistics.h"
+#include "rtu/core_statistics.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"
-#include "rtu/core_statistics.h"
 #include "scene/scene_manager_timing.h"
 
 namespace rtu {
 
 class RtuTop;
+struct TraversalResult;
 
 struct RtuStatistics {
   uint64_t rays = 0;
@@ -35,7 +39,6 @@ struct RtuStatistics {
   bool idealMemory = true;
   std::vector<CacheStats> l1;
   L2Stats l2;
-  uint64_t stackOverflows = 0;
   uint64_t belowResolution = 0;  // rays flagged for nodes narrower than a step (result flag 4)
   uint64_t totalCost = 0, maxCost = 0;  // traversal states per ray, as the golden model counts
   uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
@@ -44,14 +47,24 @@ struct RtuStatistics {
   double hostSeconds = 0.0;
   std::string model = "systemc";  // what answered: the SystemC simulation or the "recurrence"
 
+  // The settings of a run of `config` (clock, cores, policy, host links), nothing counted yet.
+  static RtuStatistics of(const RtuConfig& config);
+  // Counts one result: its cost, cycles blocked on memory and flags.
+  void count(const TraversalResult& result, uint64_t blocked);
+
   // Shares of the cores' time (cores x total cycles); they add up to 1.
   struct CoreTimeShares {
     double busy = 0, blocked = 0, handover = 0, idle = 0;
+    static const StatisticGroup<CoreTimeShares>& declaration();
   };
   CoreTimeShares coreTimeShares() const;
-  // Utilisation of each resource that can bound the frame rate, and the one that does; the
-  // rule is in docs/exploration.md.
-  std::vector<std::pair<std::string, double>> utilisation() const;
+  // Utilisation of each resource that can bound the frame rate, and the one that does (the
+  // first of the highest); the rule is in docs/exploration.md.
+  struct Utilisation {
+    double cores = 0, memory = 0, hostIn = 0, hostOut = 0, jobManager = 0;
+    static const StatisticGroup<Utilisation>& declaration();
+  };
+  Utilisation utilisation() const;
   std::string limit() const;
   double frameMilliseconds() const;
 
@@ -61,7 +74,6 @@ struct RtuStatistics {
   double dramBytesPerCycle() const;
   double simulatedRaysPerHostSecond() const;
   uint64_t idleCycles(const CoreStatistics& core) const;
-  std::vector<uint64_t> waitHistogramArray() const;  // index: wait in cycles
   CoreStatistics allCores() const;  // the cores' times summed
   CacheStats allL1() const;         // the L1s' counts summed
   // The thesis' worst-case wait of eq. 6.7 for the policy, or -1 when it depends on the jobs (rr).
@@ -69,10 +81,9 @@ struct RtuStatistics {
 
   nlohmann::ordered_json toJson() const;
   void writeReport(std::ostream& out) const;
-};
 
-// Share of a cache's reads answered by a resident line (hits and merged); 0 without reads.
-double hitRate(const CacheStats& stats);
+  static const StatisticGroup<RtuStatistics>& declaration();
+};
 
 RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles);
 

@@ -11,6 +11,7 @@
 
 #include "run/cache_warmer.h"
 #include "kinds/svo/golden_model.h"
+#include "run/statistics_output.h"
 #include "run/statistics_window.h"
 
 namespace rtu {
@@ -286,6 +287,50 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
   return run;
 }
 
+const StatisticGroup<SampledRun>& SampledRun::declaration() {
+  using R = SampledRun;
+  const auto interval = [](const Interval& i, double scale) {
+    return std::vector<double>{i.low / scale, i.high / scale};
+  };
+  const auto rays = [](const R& r) { return static_cast<double>(r.plan.rays); };
+  static const StatisticGroup<SampledRun> group =
+      StatisticGroup<SampledRun>("a sampled run")
+          .derived(
+              Statistic("fraction_simulated", "",
+                        "share of the frame's rays simulated, warm-ups included"),
+              [rays](const R& r) { return static_cast<double>(r.plan.simulatedRays()) / rays(r); })
+          .derived(Statistic("simulated_rays", "rays", "rays simulated"),
+                   [](const R& r) { return r.plan.simulatedRays(); })
+          .derived(Statistic("block_rays", "rays", "rays counted per block"),
+                   [](const R& r) { return r.plan.blockRays; })
+          .derived(
+              Statistic("warmup_rays", "rays", "rays simulated before each block, not counted"),
+              [](const R& r) { return r.plan.warmupRays; })
+          .derived(Statistic("strata", "", "strata of the frame, two blocks each"),
+                   [](const R& r) { return r.plan.strata.size(); })
+          .derived(Statistic("blocks", "", "blocks simulated: two per stratum, head and tail"),
+                   [](const R& r) { return 2 * r.plan.strata.size() + 2; })
+          .derived(Statistic("counted_rays", "rays", "rays of the counted blocks"),
+                   [](const R& r) { return r.counted.rays; })
+          .derived(Statistic("counted_cycles", "cycles", "cycles of the counted blocks"),
+                   [](const R& r) { return r.counted.totalCycles; })
+          .derived(
+              Statistic("total_cycles_ci95", "cycles", "95 % interval of the frame's total cycles"),
+              [interval](const R& r) { return interval(r.totalCycles, 1.0); })
+          .derived(
+              Statistic("cycles_per_ray_ci95", "cycles", "95 % interval of the cycles per ray"),
+              [interval, rays](const R& r) { return interval(r.totalCycles, rays(r)); })
+          .derived(
+              Statistic("l1_hit_rate_ci95", "", "95 % interval of the L1 hit rate (cached memory)"),
+              [interval](const R& r) { return interval(r.l1HitRate, 1.0); })
+          .writtenWhen([](const R& r) { return !r.counted.idealMemory; })
+          .derived(
+              Statistic("l2_hit_rate_ci95", "", "95 % interval of the L2 hit rate (cached memory)"),
+              [interval](const R& r) { return interval(r.l2HitRate, 1.0); })
+          .writtenWhen([](const R& r) { return !r.counted.idealMemory; });
+  return group;
+}
+
 nlohmann::ordered_json sampledStatisticsJson(const SampledRun& run) {
   using Json = nlohmann::ordered_json;
   RtuStatistics frame = run.counted;
@@ -297,25 +342,13 @@ nlohmann::ordered_json sampledStatisticsJson(const SampledRun& run) {
   for (const char* key : {"rays", "total_cycles", "cycles_per_ray", "frame_ms", "fps", "rays_per_second"})
     json[key] = frameJson[key];
   const double rays = static_cast<double>(run.plan.rays);
-  Json sample = {{"fraction_simulated", static_cast<double>(run.plan.simulatedRays()) / rays},
-                 {"simulated_rays", run.plan.simulatedRays()},
-                 {"block_rays", run.plan.blockRays},
-                 {"warmup_rays", run.plan.warmupRays},
-                 {"strata", run.plan.strata.size()},
-                 {"blocks", 2 * run.plan.strata.size() + 2},
-                 {"counted_rays", run.counted.rays},
-                 {"counted_cycles", run.counted.totalCycles},
-                 {"total_cycles_ci95", {run.totalCycles.low, run.totalCycles.high}},
-                 {"cycles_per_ray_ci95", {run.totalCycles.low / rays, run.totalCycles.high / rays}}};
   if (json["memory"]["kind"] == "cached") {
     json["memory"]["l1"]["hit_rate"] = run.l1HitRate.estimate;
     json["memory"]["l2"]["hit_rate"] = run.l2HitRate.estimate;
     json["memory"]["dram"]["bytes"] = std::llround(run.counted.dramBytesPerCycle() *
                                                    static_cast<double>(frame.totalCycles));
-    sample["l1_hit_rate_ci95"] = {run.l1HitRate.low, run.l1HitRate.high};
-    sample["l2_hit_rate_ci95"] = {run.l2HitRate.low, run.l2HitRate.high};
   }
-  json["sample"] = sample;
+  json["sample"] = statisticsJson(run);
   json["simulation"] = {{"model", "sampled"},
                         {"host_seconds", run.hostSeconds},
                         {"rays_per_host_second", run.hostSeconds > 0 ? rays / run.hostSeconds : 0.0}};

@@ -74,6 +74,9 @@ struct SampledRun {
   // ratios (cycles per ray, time shares, hit rates) estimated from the sample.
   RtuStatistics counted;
   double hostSeconds = 0;
+
+  // The "sample" object of the statistics JSON: the plan and the 95 % intervals.
+  static const StatisticGroup<SampledRun>& declaration();
 };
 
 // The statistics JSON of a run (RtuStatistics::toJson) for the frame: rays, total cycles and

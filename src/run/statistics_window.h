@@ -4,8 +4,9 @@
 // simulation (sampled_run.h) counts its blocks this way, after a warm-up that is simulated but
 // not counted.
 //
-// Counters (cycles per core, cache and DRAM counts, costs, scheduler waits) are subtracted and
-// added; maxima are those of the whole run, as a part has no maximum of its own to subtract.
+// Each statistic combines as RtuStatistics::declaration() says (base/statistics.h): counters
+// (cycles per core, cache and DRAM counts, costs, scheduler waits) are subtracted and added;
+// maxima are those of the whole run, as a part has no maximum of its own to subtract.
 
 #include <cstdint>
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 
+#include "base/statistics.h"
 #include "scene/scene_manager.h"
 
 namespace rtu {
@@ -33,6 +34,7 @@ struct SceneManagerStatistics {
            earlyTerminations == other.earlyTerminations && skipped == other.skipped &&
            jobsPerRay == other.jobsPerRay;
   }
+  static const StatisticGroup<SceneManagerStatistics>& declaration();
 };
 
 }  // namespace rtu

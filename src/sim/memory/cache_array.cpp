@@ -16,6 +16,31 @@ int bitsFor(uint32_t count) {
 
 }  // namespace
 
+const StatisticGroup<CacheStats>& CacheStats::declaration() {
+  static const StatisticGroup<CacheStats> group =
+      StatisticGroup<CacheStats>("a cache")
+          .count(Statistic("accesses", "reads", "lines looked up: hits + merged + misses"),
+                 &CacheStats::accesses)
+          .count(Statistic("hits", "reads", "the line resident and filled"), &CacheStats::hits)
+          .count(
+              Statistic("merged", "reads", "the line resident but still in flight: a merged miss"),
+              &CacheStats::merged)
+          .count(Statistic("misses", "reads", "the line not resident: a fill"), &CacheStats::misses)
+          .count(Statistic("evictions", "lines", "allocations that replaced a valid line"),
+                 &CacheStats::evictions)
+          .derived(Statistic("hit_rate", "",
+                             "share of reads answered by a resident line: (hits + merged) / "
+                             "accesses, 0 without reads"),
+                   hitRate);
+  return group;
+}
+
+double hitRate(const CacheStats& stats) {
+  return stats.accesses == 0
+             ? 0.0
+             : static_cast<double>(stats.hits + stats.merged) / static_cast<double>(stats.accesses);
+}
+
 CacheArray::CacheArray(const CacheConfig& config)
     : config_(config),
       lineShift_(bitsFor(config.lineBytes)),

@@ -19,6 +19,7 @@
 #include <random>
 #include <vector>
 
+#include "base/statistics.h"
 #include "sim/memory/memory_config.h"
 
 namespace rtu {
@@ -29,7 +30,12 @@ struct CacheStats {
   uint64_t merged = 0;    // line resident but still in flight
   uint64_t misses = 0;
   uint64_t evictions = 0;  // allocations that replaced a valid line
+
+  static const StatisticGroup<CacheStats>& declaration();
 };
+
+// Share of a cache's reads answered by a resident line (hits and merged); 0 without reads.
+double hitRate(const CacheStats& stats);
 
 struct CacheLookup {
   bool present = false;    // resident, filled or in flight

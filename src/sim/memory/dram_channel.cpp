@@ -4,6 +4,16 @@
 
 namespace rtu {
 
+const StatisticGroup<DramStats>& DramStats::declaration() {
+  static const StatisticGroup<DramStats> group =
+      StatisticGroup<DramStats>("the DRAM channel")
+          .count(Statistic("reads", "reads", "line reads from the L2"), &DramStats::reads)
+          .count(Statistic("bytes", "bytes", "bytes read"), &DramStats::bytes)
+          .count(Statistic("busy_cycles", "cycles", "cycles the data bus spent transferring"),
+                 &DramStats::busyCycles);
+  return group;
+}
+
 uint64_t DramChannel::transferCycles(uint32_t bytes) const {
   return static_cast<uint64_t>(std::ceil(bytes / config_.bytesPerCycle));
 }

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "base/statistics.h"
 #include "sim/memory/memory_config.h"
 #include "sim/memory/resource_booking.h"
 
@@ -18,6 +19,8 @@ struct DramStats {
   uint64_t reads = 0;
   uint64_t bytes = 0;
   uint64_t busyCycles = 0;  // cycles the data bus spent transferring
+
+  static const StatisticGroup<DramStats>& declaration();
 };
 
 class DramChannel {

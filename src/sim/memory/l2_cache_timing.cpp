@@ -113,6 +113,20 @@ void L2CacheTiming::forgetBefore(uint64_t cycle) {
   forgetMshrsBefore(cycle);
 }
 
+const StatisticGroup<L2Stats>& L2Stats::declaration() {
+  static const StatisticGroup<L2Stats> group =
+      StatisticGroup<L2Stats>("the L2 and the DRAM behind it")
+          .group(Statistic("l2", "", "the shared L2: requests from the L1s"), &L2Stats::cache)
+          .count(Statistic("l2/port_queue_cycles", "cycles",
+                           "cycles requests waited for the L2's port: sum of accept - request"),
+                 &L2Stats::portQueueCycles)
+          .count(Statistic("l2/mshr_queue_cycles", "cycles",
+                           "cycles misses waited for an MSHR: sum of issue - tag check"),
+                 &L2Stats::mshrQueueCycles)
+          .group(Statistic("dram", "", "the DRAM channel behind the L2"), &L2Stats::dram);
+  return group;
+}
+
 L2Stats L2CacheTiming::stats() const {
   L2Stats stats;
   stats.cache = array_.stats();

@@ -46,6 +46,9 @@ struct L2Stats {
   DramStats dram;    // bytes read, bus busy cycles
   uint64_t portQueueCycles = 0;  // sum of accept - R
   uint64_t mshrQueueCycles = 0;  // sum of issue - T over misses
+
+  // The L2's counts under "l2" and the DRAM's beside them under "dram".
+  static const StatisticGroup<L2Stats>& declaration();
 };
 
 class L2CacheTiming {
