@@ -468,6 +468,98 @@ TEST_CASE("L2 timing: requests must come in cycle order", "[cache]") {
   CHECK_THROWS_AS(l2.read(0, 9), std::logic_error);
 }
 
+// RequestOrder::Any (the loosely-timed L2): a miss counts the MSHRs busy at its tag check's end
+// T, those issued by T and released after it, whenever they were requested. The DRAM here is a
+// function of the issue cycle, so that only the port and the MSHRs shape the cycles.
+
+TEST_CASE("L2 out of order: a miss waits until fewer than all MSHRs are busy, cycles by hand",
+          "[cache]") {
+  CacheConfig config = CacheConfig::l2();  // hit latency 8
+  config.maxOutstandingMisses = 2;
+  // The DRAM delivers the n-th read latencies[n] cycles after its issue, and notes the issue.
+  const std::vector<uint64_t> latencies{100, 30, 132, 10, 10, 20};
+  std::vector<uint64_t> issues;
+  L2CacheTiming l2(config, DramConfig{}, RequestOrder::Any, [&](uint32_t, uint64_t issue) {
+    issues.push_back(issue);
+    return issue + latencies.at(issues.size() - 1);
+  });
+  // A at 200: tag check to 208, none busy: issue 208, fill 308.              A uses [208, 308)
+  CHECK(l2.read(0 * 64, 200) == 308);
+  // B at 220: tag check to 228, A busy, one of two: issue 228, fill 258.     B uses [228, 258)
+  CHECK(l2.read(1 * 64, 220) == 258);
+  // C at 100, before both: tag check to 108, A and B are issued later, none busy: issue 108,
+  // fill 240, although three are then busy in 228..240 (the documented approximation).
+  //                                                                          C uses [108, 240)
+  CHECK(l2.read(2 * 64, 100) == 240);
+  // D at 222: tag check to 230, A, B and C busy. C's release at 240 leaves two (A, B) busy,
+  // B's at 258 one: issue 258, fill 268.                                     D uses [258, 268)
+  CHECK(l2.read(3 * 64, 222) == 268);
+  // E at 150: tag check to 158, only C busy: issue 158, fill 168.            E uses [158, 168)
+  CHECK(l2.read(4 * 64, 150) == 168);
+  // F at 240: tag check to 248, A and B busy (C released at 240, D issues at 258). At 258 B's
+  // release and D's issue keep two busy (A, D); D's release at 268 leaves one: issue 268, fill
+  // 288.
+  CHECK(l2.read(5 * 64, 240) == 288);
+  CHECK(issues == std::vector<uint64_t>{208, 228, 108, 258, 158, 268});
+  const L2Stats stats = l2.stats();
+  CHECK(stats.cache.misses == 6);
+  CHECK(stats.portQueueCycles == 0);
+  CHECK(stats.mshrQueueCycles == (258 - 230) + (268 - 248));
+}
+
+TEST_CASE("L2 out of order: 4096 misses behind full MSHRs take them in arrival order", "[cache]") {
+  // 8 MSHRs (the default); the DRAM answers a read kLatency cycles after its issue.
+  constexpr uint64_t kLatency = 1000000, kMshrs = 8, kCount = 4096;
+  L2CacheTiming l2(CacheConfig::l2(), DramConfig{}, RequestOrder::Any,
+                   [](uint32_t, uint64_t issue) { return issue + kLatency; });
+  // 8 misses at cycle 1000: accepted at 1000..1007, issued at 1008..1015, so all 8 MSHRs are
+  // busy from 1015 until they are released at X .. X + 7, X = 1008 + kLatency.
+  const uint64_t x = 1008 + kLatency;
+  for (uint64_t i = 0; i < kMshrs; ++i) REQUIRE(l2.read(i * 64, 1000) == x + i);
+  // Then 4096 misses at cycles 1100 + 4095 down to 1100, the latest first, each accepted at
+  // once. Every tag check ends in 1108..5203, while those 8 hold all the MSHRs and the misses
+  // that came before it are not issued yet (they are from X on). So the misses queue in the
+  // order they come: the k-th takes the MSHR released at X + k for k < 8, and the one the
+  // (k - 8)-th releases kLatency after its issue for the others, which all happen later still:
+  // issue X + k % 8 + (k / 8) * kLatency. Each of these waits counts the MSHRs at many cycles
+  // (X, X + 1, ...), ever more of them: the case a claim scanning the uses at each release made
+  // cubic.
+  uint64_t mshrQueue = 0;
+  for (uint64_t k = 0; k < kCount; ++k) {
+    const uint64_t request = 1100 + (kCount - 1 - k);
+    const uint64_t issue = x + k % kMshrs + (k / kMshrs) * kLatency;
+    mshrQueue += issue - (request + 8);
+    INFO("miss " << k << " requested at " << request);
+    REQUIRE(l2.read((kMshrs + k) * 64, request) == issue + kLatency);
+  }
+  const L2Stats stats = l2.stats();
+  CHECK(stats.cache.misses == kMshrs + kCount);
+  CHECK(stats.portQueueCycles == 0 + 1 + 2 + 3 + 4 + 5 + 6 + 7);
+  CHECK(stats.mshrQueueCycles == mshrQueue);
+}
+
+TEST_CASE("L2 out of order: forgetting the cycles no request comes for changes no answer",
+          "[cache]") {
+  CacheConfig config = CacheConfig::l2();
+  config.sizeBytes = 4096;
+  config.maxOutstandingMisses = 2;
+  L2CacheTiming forgetting(config, DramConfig{}, RequestOrder::Any),
+      keeping(config, DramConfig{}, RequestOrder::Any);
+  std::mt19937_64 random(11);
+  uint64_t floor = 0;  // no request comes for a cycle before it
+  for (int i = 0; i < 3000; ++i) {
+    floor += random() % 3;
+    forgetting.forgetBefore(floor);
+    const uint64_t cycle = floor + random() % 200;  // out of cycle order
+    const uint64_t address = (random() % 256) * 64;
+    REQUIRE(forgetting.read(address, cycle) == keeping.read(address, cycle));
+  }
+  CHECK(forgetting.stats().cache.misses == keeping.stats().cache.misses);
+  CHECK(forgetting.stats().mshrQueueCycles == keeping.stats().mshrQueueCycles);
+  CHECK(forgetting.stats().mshrQueueCycles > 0);  // the MSHRs were a limit
+  CHECK(forgetting.stats().portQueueCycles == keeping.stats().portQueueCycles);
+}
+
 // ---------------------------------------------------------------------------------------------
 // L1 timing. Defaults: 32-byte lines (8 words), hit latency 1.
 

@@ -32,6 +32,7 @@
 #include <cstdint>
 #include <functional>
 #include <queue>
+#include <utility>
 #include <vector>
 
 #include "sim/memory/cache_array.h"
@@ -88,6 +89,7 @@ class L2CacheTiming {
   uint64_t claimMshr(uint64_t cycle);
   uint64_t claimMshrInOrder(uint64_t cycle);
   uint64_t claimMshrAnyOrder(uint64_t cycle);
+  void keepMshrUse(uint64_t issue, uint64_t release);
   void forgetMshrsBefore(uint64_t cycle);
 
   CacheArray array_;
@@ -99,11 +101,52 @@ class L2CacheTiming {
   uint64_t uncontendedMiss_;  // DRAM latency and one line's transfer
   // RequestOrder::Cycle: release cycles of the busy MSHRs, earliest on top.
   std::priority_queue<uint64_t, std::vector<uint64_t>, std::greater<uint64_t>> mshrReleases_;
+  // RequestOrder::Any: how many MSHRs are busy at each cycle. A use [issue, release) adds 1 at
+  // its issue and -1 at its release, so the count at T is the sum of the changes at cycles up to
+  // T. The cycles with a change are the keys of a treap (a search tree balanced by random
+  // priorities), each subtree knowing the sum of its changes and the least sum of a prefix of
+  // them: the count at T and the first cycle from T on with fewer than n busy are each one
+  // descent, O(log uses).
+  class BusyCount {
+   public:
+    // Adds `uses` (1, or -1 to remove one) busy from `issue` until `release` (issue < release).
+    void add(uint64_t issue, uint64_t release, int64_t uses);
+    // The first cycle from `cycle` on in which fewer than `limit` (at least 1) are busy.
+    uint64_t firstBelow(uint64_t cycle, int64_t limit);
+    void clear();
+
+   private:
+    using Index = uint32_t;  // into nodes_; 0 is no node
+    struct Node {
+      uint64_t cycle;
+      uint64_t priority;  // a parent's is at least its children's
+      int64_t change;     // at this cycle, never 0
+      int64_t sum;        // of the subtree's changes
+      int64_t minPrefix;  // the least sum of its changes up to one of its cycles, in cycle order
+      Index left, right;  // earlier and later cycles
+    };
+    void change(uint64_t cycle, int64_t by);
+    std::pair<Index, Index> split(Index node, uint64_t cycle, bool withCycle);
+    Index merge(Index earlier, Index later);
+    void update(Index node);
+    Index root_ = 0;
+    std::vector<Node> nodes_ = std::vector<Node>(1);
+    std::vector<Index> unused_;  // nodes_ free for reuse
+    uint64_t random_ = 0x9E3779B97F4A7C15u;  // xorshift state of the priorities
+  };
   // RequestOrder::Any: the MSHRs' uses, [issue, release), that may still be busy for a request.
+  // In real frames at most a few hundred are (a quantum's misses), and a scan of them is the
+  // cheapest claim; past that (requests queued far ahead of the forgotten cycles) the uses are
+  // also in mshrBusy_ and mshrUses_ is a heap by release (earliest on top) for forgetMshrsBefore,
+  // until forgetting leaves few again (kManyMshrUses, kFewMshrUses). Both give the same answers.
   struct MshrUse {
     uint64_t issue, release;
+    // The heap's order: the earliest release on top.
+    bool operator<(const MshrUse& other) const { return release > other.release; }
   };
   std::vector<MshrUse> mshrUses_;
+  bool mshrUsesCounted_ = false;  // in mshrBusy_, and a heap
+  BusyCount mshrBusy_;
   uint64_t portQueueCycles_ = 0;
   uint64_t mshrQueueCycles_ = 0;
 };
