@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Checks that every tracked C/C++ source follows .clang-format (not yet a test: the tree is
-# reformatted in one commit first, issue 26). Exits 0
-# when all do, 1 naming the files that differ, 2 when clang-format itself fails (e.g. a broken
-# .clang-format), and 77 (CTest's SKIP_RETURN_CODE) without clang-format or outside a git
-# checkout. CLANG_FORMAT picks the binary (default: clang-format). .clang-format was written for
-# clang-format 14 (Debian 12); other versions may format a few constructs differently.
+# reformatted in one commit first, issue 26). Exits 0 when all do, 1 naming the files that
+# differ, 2 when clang-format itself fails (e.g. a broken .clang-format), and 77 (CTest's
+# SKIP_RETURN_CODE) without clang-format or outside a git checkout. CLANG_FORMAT picks the binary
+# (default: clang-format). .clang-format was written for clang-format 14 (Debian 12); other
+# versions may format a few constructs differently.
 # To fix the files it names: clang-format -i FILE...
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
