@@ -25,7 +25,8 @@ double bestSecondsToTrace(GoldenModel& model, const std::vector<TraversalJob>& j
   for (int i = 0; i < kRepetitions; ++i) {
     const auto start = std::chrono::steady_clock::now();
     results = model.traceAll(jobs);
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
 }

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "bench_frame.h"
-#include "kinds/svo/golden_model.h"
 #include "inputs/host_buffers.h"
+#include "kinds/svo/golden_model.h"
 
 using namespace rtu;
 
@@ -24,7 +24,8 @@ double bestSecondsOf(Work&& work) {
   for (int run = 0; run < 5; ++run) {
     const auto start = std::chrono::steady_clock::now();
     work();
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   return best;
 }
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
   const double readJobs = bestSecondsOf([&] { jobsRead = readJobBuffer(jobPath).size(); });
   const double writeResults = bestSecondsOf([&] { writeResultBuffer(resultPath, results); });
   size_t resultsRead = 0;
-  const double readResults = bestSecondsOf([&] { resultsRead = readResultBuffer(resultPath).size(); });
+  const double readResults =
+      bestSecondsOf([&] { resultsRead = readResultBuffer(resultPath).size(); });
   std::remove(jobPath.c_str());
   std::remove(resultPath.c_str());
   const double megabytes = static_cast<double>(frame.jobs.size() * kRecordBytes) / 1e6;

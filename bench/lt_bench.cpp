@@ -12,9 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
   ideal.memory = RtuConfig::idealMemory();
   const std::vector<Memory> memories{{"cached", cached, 0.05}, {"ideal", ideal, 0.02}};
 
-  std::printf("LT against cycle-accurate, 1280x720, depth-8 scenes, 16 cores, cfa, cached preset\n");
+  std::printf(
+      "LT against cycle-accurate, 1280x720, depth-8 scenes, 16 cores, cfa, cached preset\n");
   std::printf("%-8s %-6s %-9s %8s %8s %9s %9s %14s %9s %7s %7s %s\n", "scene", "memory", "model",
               "seconds", "cpu s", "Mrays/s", "x golden", "total cycles", "error", "L1 hit",
               "L2 hit", "targets");
@@ -99,11 +100,12 @@ int main(int argc, char** argv) {
     const SvoMemory memory = frame.build.image.memory();
     const std::vector<HostRecord> records(frame.jobs.begin(), frame.jobs.end());
     const double rays = static_cast<double>(frame.jobs.size());
-    const double goldenCpu =
-        fastestOf(repeat, [&] { return GoldenModel(memory, cached.golden()).traceAll(frame.jobs); })
-            .first;
+    const double goldenCpu = fastestOf(repeat, [&] {
+                               return GoldenModel(memory, cached.golden()).traceAll(frame.jobs);
+                             }).first;
     for (const Memory& mem : memories) {
-      const auto [caCpu, ca] = fastestOf(1, [&] { return simulateRtu(memory, frame.jobs, mem.config); });
+      const auto [caCpu, ca] =
+          fastestOf(1, [&] { return simulateRtu(memory, frame.jobs, mem.config); });
       const auto row = [&](const char* model, double cpu, const RtuRun& run,
                            const std::string& targets) {
         const RtuStatistics& s = run.statistics;
@@ -111,8 +113,8 @@ int main(int argc, char** argv) {
             static_cast<double>(run.totalCycles) / static_cast<double>(ca.totalCycles) - 1;
         std::printf("%-8s %-6s %-9s %8.3f %8.3f %9.2f %9.2f %14llu %+8.2f%% %7.4f %7.4f %s\n",
                     name.c_str(), mem.name, model, s.hostSeconds, cpu, rays / cpu / 1e6,
-                    goldenCpu / cpu, static_cast<unsigned long long>(run.totalCycles),
-                    100 * error, hitRate(s.allL1()), hitRate(s.l2.cache), targets.c_str());
+                    goldenCpu / cpu, static_cast<unsigned long long>(run.totalCycles), 100 * error,
+                    hitRate(s.allL1()), hitRate(s.l2.cache), targets.c_str());
       };
       row("ca", caCpu, ca, "");
       for (uint64_t quantum : quanta) {

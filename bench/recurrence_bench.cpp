@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "run/analytic_run.h"
 #include "bench_frame.h"
 #include "kinds/svo/golden_model.h"
 #include "rtu/rtu_recurrence.h"
+#include "run/analytic_run.h"
 
 using namespace rtu;
 
@@ -34,11 +34,13 @@ int main(int argc, char** argv) {
   std::vector<RecurrenceJob> timing;
   const double golden = secondsOf([&] {
     GoldenModel model(memory, GoldenConfig{});
-    for (const TraversalJob& job : frame.jobs) timing.push_back(RecurrenceJob{model.trace(job).cost, 6, 0});
+    for (const TraversalJob& job : frame.jobs)
+      timing.push_back(RecurrenceJob{model.trace(job).cost, 6, 0});
   });
-  std::printf("%s depth 6, %zu rays; golden traversal %.3f s\n", scene.c_str(), frame.jobs.size(), golden);
-  std::printf("%6s %12s %11s %11s %11s %9s\n", "cores", "cycles", "recurrence", "analytic", "systemc",
-              "equal");
+  std::printf("%s depth 6, %zu rays; golden traversal %.3f s\n", scene.c_str(), frame.jobs.size(),
+              golden);
+  std::printf("%6s %12s %11s %11s %11s %9s\n", "cores", "cycles", "recurrence", "analytic",
+              "systemc", "equal");
   bool equal = true;
   for (const int cores : {1, 16, 1024}) {
     RecurrenceConfig recurrenceConfig;

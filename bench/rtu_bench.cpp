@@ -46,9 +46,8 @@ int main(int argc, char** argv) {
       const double raysPerSecond = s.simulatedRaysPerHostSecond();
       allMet &= raysPerSecond >= mode.target;
       std::printf("%-10s %-7s %12llu %10.2f %10.3f %12.3f %8s\n", name.c_str(), mode.name,
-                  static_cast<unsigned long long>(run.totalCycles), s.cyclesPerRay(),
-                  s.hostSeconds, raysPerSecond / 1e6,
-                  raysPerSecond >= mode.target ? "met" : "MISSED");
+                  static_cast<unsigned long long>(run.totalCycles), s.cyclesPerRay(), s.hostSeconds,
+                  raysPerSecond / 1e6, raysPerSecond >= mode.target ? "met" : "MISSED");
     }
     const auto start = std::chrono::steady_clock::now();
     const RtlTopRun rtl = runRtlTop(build.image.memory(), jobs, RtlTopConfig{});

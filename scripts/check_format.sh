@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# Checks that every tracked C/C++ source follows .clang-format (not yet a test: the tree is
-# reformatted in one commit first, issue 26). Exits 0 when all do, 1 naming the files that
+# Checks that every tracked C/C++ source follows .clang-format (CTest's format_check). Exits 0 when all do, 1 naming the files that
 # differ, 2 when clang-format itself fails (e.g. a broken .clang-format), and 77 (CTest's
 # SKIP_RETURN_CODE) without clang-format or outside a git checkout. CLANG_FORMAT picks the binary
 # (default: clang-format). .clang-format was written for clang-format 14 (Debian 12); other
@@ -25,8 +24,8 @@ fi
 
 # Sources not ours to format, as git pathspecs, each with its reason. None today: the only
 # third-party C code, GTKWave's fstapi.c and its compressors, is compiled from Debian's verilator
-# package (modules/CMakeLists.txt) and is not in the tree; modules/fst_writer.cpp is our own
-# code calling it.
+# package (src/trace/CMakeLists.txt) and is not in the tree; src/trace/fst_writer.cpp is our
+# own code calling it.
 exclusions=(
 )
 

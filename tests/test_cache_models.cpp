@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/timing_limits.h"
 #include "sim/memory/cache_array.h"
 #include "sim/memory/l1_cache_timing.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/memory/memory_config.h"
-#include "base/timing_limits.h"
 
 using namespace rtu;
 
@@ -275,9 +275,9 @@ TEST_CASE("Cache array: hand-made sequences match the reference", "[cache]") {
 
 TEST_CASE("Cache array: random sequences match the reference", "[cache]") {
   for (Replacement policy : {Replacement::Lru, Replacement::Fifo}) {
-    for (const CacheConfig& geometry : {cacheConfig(256, 16, 4, policy),    // 4 sets x 4 ways
-                                        cacheConfig(512, 32, 1, policy),    // direct-mapped
-                                        cacheConfig(256, 16, 16, policy),   // fully associative
+    for (const CacheConfig& geometry : {cacheConfig(256, 16, 4, policy),     // 4 sets x 4 ways
+                                        cacheConfig(512, 32, 1, policy),     // direct-mapped
+                                        cacheConfig(256, 16, 16, policy),    // fully associative
                                         cacheConfig(384, 32, 3, policy)}) {  // 4 sets x 3 ways
       INFO(toString(policy) << ", " << geometry.ways << " ways");
       // Addresses over three times the capacity: plenty of hits and of evictions.

@@ -1,10 +1,10 @@
 // The configuration schema: parsing, files, presets, errors that name the key, the round trip of
 // config --dump, and sweep expansion.
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <set>
-
-#include <catch2/catch.hpp>
 
 #include "config/configuration.h"
 #include "config/sweep_spec.h"
@@ -46,7 +46,8 @@ TEST_CASE("Settings reach the run configuration by hierarchical name", "[config]
   CHECK(c.source("width") == ConfigSource::Default);
 }
 
-TEST_CASE("An unknown key names the nearest known key; a bad value names key and range", "[config]") {
+TEST_CASE("An unknown key names the nearest known key; a bad value names key and range",
+          "[config]") {
   Configuration c;
   CHECK_THROWS_WITH(c.set("memory.l1.sise", "4KiB", ConfigSource::CommandLine),
                     Contains("did you mean 'memory.l1.size'"));
@@ -56,8 +57,7 @@ TEST_CASE("An unknown key names the nearest known key; a bad value names key and
                     Contains("cores: 0 is out of range 1 .. 1024"));
   CHECK_THROWS_WITH(c.set("cores", "2.5", ConfigSource::CommandLine),
                     Contains("not a whole number"));
-  CHECK_THROWS_WITH(c.set("scheduler", "lifo", ConfigSource::CommandLine),
-                    Contains("cfa|rr|fa"));
+  CHECK_THROWS_WITH(c.set("scheduler", "lifo", ConfigSource::CommandLine), Contains("cfa|rr|fa"));
   CHECK_THROWS_WITH(c.setAssignment("cores", ConfigSource::CommandLine), Contains("key=value"));
   CHECK_THROWS_WITH(c.loadText("cores = 4\n[memory.l1]\nsise = 3\n", "toml", "'x.toml'",
                                ConfigSource::File),
@@ -72,8 +72,9 @@ TEST_CASE("TOML and JSON files, nested or dotted, give the same configuration", 
                 "toml", "t", ConfigSource::File);
   json.loadText(R"({"cores": 8, "memory": {"kind": "cached", "l1": {"size": "8KiB", "ways": 2}}})",
                 "json", "j", ConfigSource::File);
-  dotted.loadText(R"({"cores": 8, "memory.kind": "cached", "memory.l1.size": 8192, "memory.l1.ways": 2})",
-                  "json", "d", ConfigSource::File);
+  dotted.loadText(
+      R"({"cores": 8, "memory.kind": "cached", "memory.l1.size": 8192, "memory.l1.ways": 2})",
+      "json", "d", ConfigSource::File);
   CHECK(toml.toJson() == json.toJson());
   CHECK(toml.toJson() == dotted.toJson());
   CHECK(toml.values().rtu.memory.l1.ways == 2);
@@ -108,7 +109,8 @@ TEST_CASE("Each flag names one setting; the two epsilons have their own (issue 2
   // The ambiguous --epsilon keeps the first declared setting's meaning (config_options.cpp).
   const auto& schema = configSchema();
   const auto at = [&](const std::string& key) {
-    return std::find_if(schema.begin(), schema.end(), [&](const Setting& s) { return s.key == key; });
+    return std::find_if(schema.begin(), schema.end(),
+                        [&](const Setting& s) { return s.key == key; });
   };
   CHECK(at("job_manager.epsilon") < at("camera.epsilon"));
 }

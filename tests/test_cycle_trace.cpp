@@ -3,6 +3,8 @@
 // record winning, exactly as if the whole trace had been held until the end; a record for a cycle
 // already written is refused.
 
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -12,8 +14,6 @@
 #include <string>
 #include <tuple>
 #include <vector>
-
-#include <unistd.h>
 
 #include "trace/cycle_trace.h"
 #include "trace/gtkw_save_file.h"
@@ -116,7 +116,8 @@ struct Heard : TraceListener {
     scopes.push_back(scope);
   }
   void changed(uint64_t cycle, const std::vector<TraceChange>& values) override {
-    for (const TraceChange& change : values) changes.emplace_back(cycle, change.signal, change.value);
+    for (const TraceChange& change : values)
+      changes.emplace_back(cycle, change.signal, change.value);
   }
   void finished() override { finishedCalled = true; }
 };

@@ -1,8 +1,8 @@
 // The fixed-point golden model against the float64 reference on every procedural scene.
 #include <catch2/catch.hpp>
 
-#include "kinds/svo/accuracy.h"
 #include "inputs/camera.h"
+#include "kinds/svo/accuracy.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 
@@ -19,7 +19,8 @@ double requiredAgreement(const std::string& scene, FloatConversion conversion) {
 
 }  // namespace
 
-TEST_CASE("Golden agrees with float64 on at least 99.9 % of a 256x256 frame", "[golden][accuracy]") {
+TEST_CASE("Golden agrees with float64 on at least 99.9 % of a 256x256 frame",
+          "[golden][accuracy]") {
   Camera camera;
   camera.width = 256;
   camera.height = 256;

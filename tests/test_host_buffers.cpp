@@ -48,12 +48,12 @@ TEST_CASE("Job buffers round-trip through files in the driver's layout", "[buffe
 TEST_CASE("Malformed job buffers are rejected with the record and the reason", "[buffers]") {
   std::vector<uint32_t> words = jobWords();
   words[8 * 2] |= 0x80000000u;
-  REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("record 2") &&
-                                                   Catch::Contains("bit 31"));
+  REQUIRE_THROWS_WITH(decodeJobRecords(words),
+                      Catch::Contains("record 2") && Catch::Contains("bit 31"));
   words = jobWords();
   words[8 * 1 + 5] = 0x7FC00000u;  // NaN t1y
-  REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("record 1") &&
-                                                   Catch::Contains("NaN"));
+  REQUIRE_THROWS_WITH(decodeJobRecords(words),
+                      Catch::Contains("record 1") && Catch::Contains("NaN"));
   words = jobWords();
   std::swap(words[8 * 4 + 3], words[8 * 4 + 6]);  // t0z <-> t1z
   REQUIRE_THROWS_WITH(decodeJobRecords(words), Catch::Contains("t0z > t1z"));
@@ -64,9 +64,10 @@ TEST_CASE("Malformed job buffers are rejected with the record and the reason", "
   REQUIRE_THROWS_WITH(readJobBuffer(tempPath("does_not_exist")), Catch::Contains("cannot open"));
 }
 
-TEST_CASE("Impossible records are skipped and named, and the rest of the buffer is read", "[buffers]") {
-  std::vector<uint32_t> words = jobWords();  // 12 jobs
-  words[8 * 4 + 2] = 0x7FC00000u;            // NaN t0y in record 4
+TEST_CASE("Impossible records are skipped and named, and the rest of the buffer is read",
+          "[buffers]") {
+  std::vector<uint32_t> words = jobWords();       // 12 jobs
+  words[8 * 4 + 2] = 0x7FC00000u;                 // NaN t0y in record 4
   std::swap(words[8 * 9 + 1], words[8 * 9 + 4]);  // t0x <-> t1x in record 9
   const std::string path = tempPath("jobs_with_nan.bin");
   writeWordFile(path, words);
@@ -133,16 +134,16 @@ TEST_CASE("Result buffers round-trip and reject impossible records", "[buffers]"
   miss.cost = 5;
   miss.stackOverflow = true;
   const std::vector<uint32_t> words = encodeResultRecords({hit, miss});
-  REQUIRE(words == std::vector<uint32_t>{7 | 3u << 28, 1, 0xFFFE8000u, 0, 0x10000, 0, 31, 0,
-                                         8, 0, 0, 0, 0, 0, 5, 1});
+  REQUIRE(words == std::vector<uint32_t>{7 | 3u << 28, 1, 0xFFFE8000u, 0, 0x10000, 0, 31, 0, 8, 0,
+                                         0, 0, 0, 0, 5, 1});
   const std::vector<TraversalResult> back = decodeResultRecords(words);
   REQUIRE(back[0] == hit);
   REQUIRE(back[1] == miss);
 
   std::vector<uint32_t> bad = words;
   bad[9] = 2;
-  REQUIRE_THROWS_WITH(decodeResultRecords(bad), Catch::Contains("record 1") &&
-                                                   Catch::Contains("hit word"));
+  REQUIRE_THROWS_WITH(decodeResultRecords(bad),
+                      Catch::Contains("record 1") && Catch::Contains("hit word"));
   bad = words;
   bad[12] = 0x10000;
   REQUIRE_THROWS_WITH(decodeResultRecords(bad), Catch::Contains("miss with a non-zero normal"));
@@ -164,7 +165,8 @@ TEST_CASE("Buffers larger than a read chunk keep record numbers across chunks", 
   std::vector<uint32_t> words = encodeJobRecords(jobs);
   words[8 * 39000] |= 0x80000000u;  // in the second chunk (a chunk holds 32,768 records)
   writeWordFile(path, words);
-  REQUIRE_THROWS_WITH(readJobBuffer(path), Catch::Contains(path) && Catch::Contains("record 39000:"));
+  REQUIRE_THROWS_WITH(readJobBuffer(path),
+                      Catch::Contains(path) && Catch::Contains("record 39000:"));
   std::filesystem::remove(path);
 }
 
@@ -177,7 +179,8 @@ TEST_CASE("A result that does not fit leaves no result buffer behind", "[buffers
   CHECK_FALSE(std::filesystem::exists(path));
 }
 
-TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow, bit 2 below resolution", "[buffers]") {
+TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow, bit 2 below resolution",
+          "[buffers]") {
   TraversalResult wrapped;
   wrapped.tOverflow = true;
   TraversalResult both = wrapped;

@@ -8,10 +8,10 @@
 
 #include "inputs/camera.h"
 #include "kinds/svo/golden_model.h"
-#include "run/lt_simulation.h"
-#include "run/model_run.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
+#include "run/lt_simulation.h"
+#include "run/model_run.h"
 
 namespace rtu {
 namespace {
@@ -51,8 +51,9 @@ TEST_CASE("LT: per-ray results equal the golden model's", "[lt]") {
         GoldenModel(f.build.image.memory(), RtuConfig{}.golden()).traceAll(f.jobs);
     for (int cores : {1, 4, 16, 64})
       for (bool cached : {false, true})
-        for (SchedulerPolicy policy : {SchedulerPolicy::CyclicFirstAvailable,
-                                       SchedulerPolicy::FirstAvailable, SchedulerPolicy::RoundRobin}) {
+        for (SchedulerPolicy policy :
+             {SchedulerPolicy::CyclicFirstAvailable, SchedulerPolicy::FirstAvailable,
+              SchedulerPolicy::RoundRobin}) {
           INFO(scene << ", " << cores << " cores, " << (cached ? "cached" : "ideal") << ", "
                      << toString(policy));
           RtuConfig config = configWith(cores, cached, policy);

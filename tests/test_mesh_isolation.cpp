@@ -1,8 +1,8 @@
 // Mesh loading survives files that crash, hang or exhaust assimp (issue 12): the child process
 // of isolated_process.h, the PLY header check and the reproducers of the issue.
-#include <catch2/catch.hpp>
-
 #include <unistd.h>
+
+#include <catch2/catch.hpp>
 
 #include <chrono>
 #include <csignal>
@@ -56,8 +56,12 @@ TEST_CASE("runIsolated turns the child's failures into errors", "[mesh]") {
   SECTION("a crash names the signal") {
     CHECK_THROWS_MATCHES(runIsolated([]() -> std::string { std::abort(); }, smallLimits()),
                          IsolatedProcessError, Catch::Message("crashed (SIGABRT)"));
-    CHECK_THROWS_MATCHES(runIsolated([]() -> std::string { std::raise(SIGSEGV); return {}; },
-                                     smallLimits()),
+    CHECK_THROWS_MATCHES(runIsolated(
+                             []() -> std::string {
+                               std::raise(SIGSEGV);
+                               return {};
+                             },
+                             smallLimits()),
                          IsolatedProcessError, Catch::Message("crashed (SIGSEGV)"));
   }
   SECTION("a hang is killed at the time limit") {
@@ -86,8 +90,7 @@ TEST_CASE("runIsolated turns the child's failures into errors", "[mesh]") {
   }
 }
 
-TEST_CASE("Meshes that crashed, hung or exhausted rtusim now give an error naming them",
-          "[mesh]") {
+TEST_CASE("Meshes that crashed, hung or exhausted rtusim now give an error naming them", "[mesh]") {
   const auto expectError = [](const std::string& name, const std::string& problem) {
     const std::string path = kMalformed + "ply/" + name;
     CHECK_THROWS_WITH(rtu::loadTriangleMesh(path), Contains("'" + path + "'") && Contains(problem));

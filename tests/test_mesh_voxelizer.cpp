@@ -16,9 +16,9 @@
 
 #include <glm/vector_relational.hpp>
 
+#include "geometry/triangle_mesh.h"
 #include "kinds/svo/mesh_voxelizer.h"
 #include "kinds/svo/svo_builder.h"
-#include "geometry/triangle_mesh.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;
@@ -220,8 +220,8 @@ TEST_CASE("loadTriangleMesh rejects bad files with the file and the problem", "[
   }
   SECTION("non-finite coordinate") {
     const TempFile file("nan.ply", binaryTetrahedronPly(std::nanf("")));
-    CHECK_THROWS_WITH(loadTriangleMesh(file.path()), Contains("non-finite coordinate") &&
-                                                         Contains(file.path()));
+    CHECK_THROWS_WITH(loadTriangleMesh(file.path()),
+                      Contains("non-finite coordinate") && Contains(file.path()));
   }
 }
 
@@ -245,14 +245,12 @@ TEST_CASE("triangleOverlapsBox finds the separating axes", "[mesh]") {
   SECTION("edge cross axes") {
     // In the plane z = 0.5, which cuts the box, with bounding boxes overlapping: only the axis
     // across the edge from (2.2,0) to (0,2.2) separates the triangle from the corner (1,1).
-    CHECK_FALSE(
-        triangleOverlapsBox({{{2.2, 0, 0.5}, {0, 2.2, 0.5}, {3, 3, 0.5}}}, centre, half));
+    CHECK_FALSE(triangleOverlapsBox({{{2.2, 0, 0.5}, {0, 2.2, 0.5}, {3, 3, 0.5}}}, centre, half));
     CHECK(triangleOverlapsBox({{{1.9, 0, 0.5}, {0, 1.9, 0.5}, {3, 3, 0.5}}}, centre, half));
   }
   SECTION("degenerate triangles act as segments and points") {
     CHECK(triangleOverlapsBox({{{-1, 0.5, 0.5}, {2, 0.5, 0.5}, {2, 0.5, 0.5}}}, centre, half));
-    CHECK_FALSE(
-        triangleOverlapsBox({{{2.2, 0, 0.5}, {0, 2.2, 0.5}, {0, 2.2, 0.5}}}, centre, half));
+    CHECK_FALSE(triangleOverlapsBox({{{2.2, 0, 0.5}, {0, 2.2, 0.5}, {0, 2.2, 0.5}}}, centre, half));
     CHECK(triangleOverlapsBox({{{0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}, {0.3, 0.3, 0.3}}}, centre, half));
   }
 }
@@ -284,8 +282,8 @@ TEST_CASE("A voxelized axis-aligned cube is the shell of voxels touching its fac
     const glm::dvec3 hi = voxel.upper();
     const bool meetsCube = glm::all(glm::lessThanEqual(lo, glm::dvec3(b))) &&
                            glm::all(glm::greaterThanEqual(hi, glm::dvec3(a)));
-    const bool insideOpenCube = glm::all(glm::greaterThan(lo, glm::dvec3(a))) &&
-                                glm::all(glm::lessThan(hi, glm::dvec3(b)));
+    const bool insideOpenCube =
+        glm::all(glm::greaterThan(lo, glm::dvec3(a))) && glm::all(glm::lessThan(hi, glm::dvec3(b)));
     return meetsCube && !insideOpenCube;
   });
   // The faces lie on grid planes, so the shell is two voxels thick: 16^3 - 12^3.

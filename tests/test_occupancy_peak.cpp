@@ -40,9 +40,9 @@ TEST_CASE("occupancy peak keeps changes far ahead and settles in cycle order", "
 TEST_CASE("occupancy peak settles only the cycles with changes, across words of marks",
           "[occupancy]") {
   OccupancyPeak peak;
-  peak.enter(63);   // the last slot of the first word of marks
-  peak.leave(64);   // the first of the next: one inside from 63 to 63
-  peak.enter(64);   // inside from 64 to 129
+  peak.enter(63);  // the last slot of the first word of marks
+  peak.leave(64);  // the first of the next: one inside from 63 to 63
+  peak.enter(64);  // inside from 64 to 129
   peak.leave(130);
   peak.enter(129);  // two inside in cycle 129 only
   peak.settle(60);

@@ -37,7 +37,8 @@ TEST_CASE("Formats are written TOTAL.FRACTION or QI.F", "[precision]") {
   CHECK(parseFixedFormat("Q12.20").totalBits == 32);
   CHECK(parseFixedFormat("Q12.20").fractionBits == 20);
   CHECK(parseFixedFormat("48.32").totalBits == 48);
-  CHECK_THROWS_WITH(parseFixedFormat("32"), Catch::Contains("format '32'") && Catch::Contains("32.16"));
+  CHECK_THROWS_WITH(parseFixedFormat("32"),
+                    Catch::Contains("format '32'") && Catch::Contains("32.16"));
   CHECK_THROWS_WITH(parseFixedFormat("32.x"), Catch::Contains("format '32.x'"));
   CHECK_THROWS_WITH(parseFixedFormat("64.16"), Catch::Contains("format '64.16'"));
   CHECK_THROWS_WITH(parseFixedFormat("1.2.3"), Catch::Contains("format '1.2.3'"));
@@ -45,7 +46,8 @@ TEST_CASE("Formats are written TOTAL.FRACTION or QI.F", "[precision]") {
 
 TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precision]") {
   const Study s = sphereStudy(6, 48);
-  const auto results = measurePrecision(s.build.image.memory(), s.study, {FixedFormat{16, 8}, FixedFormat{32, 16}});
+  const auto results =
+      measurePrecision(s.build.image.memory(), s.study, {FixedFormat{16, 8}, FixedFormat{32, 16}});
   for (const FormatPrecision& p : results) {
     REQUIRE(p.verdicts.size() == s.study.rays.size());
     CHECK(count(p, PrecisionVerdict::FalseHit) == p.falseHits);
@@ -57,12 +59,14 @@ TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precis
   }
 }
 
-TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth-8 leaves", "[precision]") {
+TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth-8 leaves",
+          "[precision]") {
   // A depth-8 leaf spans 2^-7 of the cube: with 8 fraction bits a child's t-interval is a few
   // steps wide, and truncated midpoints put hits into neighbouring leaves.
   const Study s = sphereStudy(8, 64);
-  const auto results = measurePrecision(s.build.image.memory(), s.study,
-                                        {FixedFormat{16, 8}, FixedFormat{32, 16}, FixedFormat{48, 24}});
+  const auto results =
+      measurePrecision(s.build.image.memory(), s.study,
+                       {FixedFormat{16, 8}, FixedFormat{32, 16}, FixedFormat{48, 24}});
   const FormatPrecision& narrow = results[0];
   const FormatPrecision& thesis = results[1];
   const FormatPrecision& wide = results[2];
@@ -76,7 +80,8 @@ TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth
 
 TEST_CASE("An invalid format is refused before tracing", "[precision]") {
   const Study s = sphereStudy(4, 4);
-  CHECK_THROWS_AS(measurePrecision(s.build.image.memory(), s.study, {FixedFormat{32, 16}, FixedFormat{64, 16}}),
+  CHECK_THROWS_AS(measurePrecision(s.build.image.memory(), s.study,
+                                   {FixedFormat{32, 16}, FixedFormat{64, 16}}),
                   std::invalid_argument);
 }
 
@@ -84,19 +89,22 @@ TEST_CASE("An invalid format is refused before tracing", "[precision]") {
 
 namespace rtu {
 
-TEST_CASE("t-values beyond the range are flagged where a sum wraps, and only there", "[precision]") {
+TEST_CASE("t-values beyond the range are flagged where a sum wraps, and only there",
+          "[precision]") {
   const Study s = sphereStudy(8, 96);
   // The default camera's t-values reach about 5 inside the cube, but a slanted axis leaves its
   // slab much later, and midpoints add two t-values: Q4.12 (range +-8) wraps for most rays, Q7.12
   // (+-64) for none (docs/precision.md).
-  const auto results = measurePrecision(s.build.image.memory(), s.study,
-                                        {FixedFormat{16, 12}, FixedFormat{19, 12}, FixedFormat{32, 16}});
+  const auto results =
+      measurePrecision(s.build.image.memory(), s.study,
+                       {FixedFormat{16, 12}, FixedFormat{19, 12}, FixedFormat{32, 16}});
   const FormatPrecision& tooFewIntegerBits = results[0];
   CHECK(tooFewIntegerBits.wrongHitMissRate() > 0.2);
-  CHECK(tooFewIntegerBits.tOverflowRays > tooFewIntegerBits.falseHits + tooFewIntegerBits.missedHits);
+  CHECK(tooFewIntegerBits.tOverflowRays >
+        tooFewIntegerBits.falseHits + tooFewIntegerBits.missedHits);
   // What the flag leaves is ordinary 12-fraction-bit imprecision, as Q7.12 has.
-  CHECK(tooFewIntegerBits.wrongUnflagged <= results[1].differentVoxels + results[1].falseHits +
-                                                 results[1].missedHits + 5);
+  CHECK(tooFewIntegerBits.wrongUnflagged <=
+        results[1].differentVoxels + results[1].falseHits + results[1].missedHits + 5);
   CHECK(results[1].tOverflowRays == 0);
   CHECK(results[2].tOverflowRays == 0);
 }
@@ -110,7 +118,8 @@ TEST_CASE("A camera far outside the volume is flagged, not silently wrong", "[pr
   far.position = glm::dvec3(0.0, 0.0, -20000.0);
   far.verticalFovDegrees = 0.004;
   s.study.rays = frameRays(far);
-  const FormatPrecision thesis = measurePrecision(s.build.image.memory(), s.study, {FixedFormat{32, 16}})[0];
+  const FormatPrecision thesis =
+      measurePrecision(s.build.image.memory(), s.study, {FixedFormat{32, 16}})[0];
   CHECK(thesis.referenceHits > 0);
   CHECK(thesis.tOverflowRays >= thesis.referenceHits);
   CHECK(thesis.wrongUnflagged == 0);

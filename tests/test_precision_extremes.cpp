@@ -9,8 +9,8 @@
 #include <functional>
 #include <limits>
 
-#include "kinds/svo/golden_model.h"
 #include "inputs/host_buffers.h"
+#include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/ray_transform.h"
@@ -26,7 +26,8 @@ const FixedFormat kThesis{32, 16};
 // Solid where the voxel centre satisfies `solid`, on a 2^depth grid.
 class Cells : public VoxelSource {
  public:
-  Cells(int depth, std::function<bool(const glm::dvec3&)> solid) : depth_(depth), solid_(std::move(solid)) {}
+  Cells(int depth, std::function<bool(const glm::dvec3&)> solid)
+      : depth_(depth), solid_(std::move(solid)) {}
   int depth() const override { return depth_; }
   Occupancy classify(const OctreeNode& node) const override {
     if (node.level < depth_) return Occupancy::Mixed;
@@ -54,9 +55,11 @@ struct Outcome {
 };
 
 Outcome trace(const SvoBuild& build, const Ray& ray, FixedFormat format = kThesis) {
-  GoldenModel golden(build.image.memory(), GoldenConfig{format, FloatConversion::Rtl, kMaxStackFrames});
+  GoldenModel golden(build.image.memory(),
+                     GoldenConfig{format, FloatConversion::Rtl, kMaxStackFrames});
   ReferenceModel reference(build.image.memory());
-  return {golden.trace(makeTraversalJob(0, ray, build.image.root)), reference.trace(ray, build.image.root)};
+  return {golden.trace(makeTraversalJob(0, ray, build.image.root)),
+          reference.trace(ray, build.image.root)};
 }
 
 // A ray along +-`axis` (direction component `sign`) from 3 units outside the cube, at (0.6, 0.1) on
@@ -144,7 +147,8 @@ TEST_CASE("A direction component too small for the range loses the ray's positio
   }
 }
 
-TEST_CASE("Ray records count components below epsilon times the largest as zero", "[precision][extremes]") {
+TEST_CASE("Ray records count components below epsilon times the largest as zero",
+          "[precision][extremes]") {
   // The job manager's set-up (ray_transform.h) replaces a one-step component by tau = 1e-4, so
   // the record of a nearly axis-parallel ray gives the job of an exactly parallel one.
   ModelHeader identity;
@@ -160,7 +164,8 @@ TEST_CASE("Ray records count components below epsilon times the largest as zero"
   CHECK(bitsToFloat(b.t0Bits[0]) == Approx(-1.6f / 1e-4f));
 }
 
-TEST_CASE("All direction components tiny or huge: the same ray as a unit direction", "[precision][extremes]") {
+TEST_CASE("All direction components tiny or huge: the same ray as a unit direction",
+          "[precision][extremes]") {
   // From (-3,-3,-3) towards the centre of the radius-0.8 sphere: it meets the surface after
   // 3 sqrt(3) - 0.8 = 4.396 units, within a voxel diagonal (sqrt(3) 2/64) on the voxel grid.
   // Before the set-up scaled the direction, 1e-30 underflowed (every ray missed, leaky) and 1e30
@@ -184,11 +189,14 @@ TEST_CASE("All direction components tiny or huge: the same ray as a unit directi
   }
 }
 
-TEST_CASE("NaN, infinite and zero directions are errors, never an answer", "[precision][extremes]") {
+TEST_CASE("NaN, infinite and zero directions are errors, never an answer",
+          "[precision][extremes]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {nan, 0, 1}}, 0), Catch::Contains("finite"));
-  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{inf, 0, -3}, {0, 0, 1}}, 0), Catch::Contains("finite"));
+  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {nan, 0, 1}}, 0),
+                    Catch::Contains("finite"));
+  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{inf, 0, -3}, {0, 0, 1}}, 0),
+                    Catch::Contains("finite"));
   CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {0, 0, 0}}, 0), Catch::Contains("zero"));
   // Job records may carry infinite t-values (a parallel ray from a driver without epsilon):
   // t0 = -inf, t1 = +inf on x saturate, the ray's x is lost, and the result is flagged.
@@ -197,7 +205,8 @@ TEST_CASE("NaN, infinite and zero directions are errors, never an answer", "[pre
   job.t1Bits[0] = floatBits(std::numeric_limits<float>::infinity());
   const std::vector<TraversalJob> decoded = decodeJobRecords(encodeJobRecords({job}));
   const SvoBuild build = column(2, {0.625, 0.125});
-  const TraversalResult result = GoldenModel(build.image.memory(), GoldenConfig{}).trace(decoded[0]);
+  const TraversalResult result =
+      GoldenModel(build.image.memory(), GoldenConfig{}).trace(decoded[0]);
   CHECK(result.tOverflow);
   CHECK_FALSE(result.hit);  // the column at x = 0.6 is missed: the ray runs at x = 0+
 }
@@ -342,7 +351,8 @@ TEST_CASE("Rays in shared faces and in the root cube's faces take the side epsil
     CHECK_FALSE(lower.fixed.hit);
     CHECK_FALSE(lower.exact.hit);
   }
-  const Outcome lowFace = trace(column(2, {-0.875, 0.125}), Ray{{-1.0, 0.1, -3.0}, {0.0, 0.0, 1.0}});
+  const Outcome lowFace =
+      trace(column(2, {-0.875, 0.125}), Ray{{-1.0, 0.1, -3.0}, {0.0, 0.0, 1.0}});
   CHECK(lowFace.fixed.hit);
   CHECK(lowFace.exact.hit);
   const Outcome highFace = trace(column(2, {0.875, 0.125}), Ray{{1.0, 0.1, -3.0}, {0.0, 0.0, 1.0}});
@@ -350,7 +360,8 @@ TEST_CASE("Rays in shared faces and in the root cube's faces take the side epsil
   CHECK_FALSE(highFace.exact.hit);
 }
 
-TEST_CASE("Three planes tied: the corner is crossed x first, then y, then z", "[precision][extremes]") {
+TEST_CASE("Three planes tied: the corner is crossed x first, then y, then z",
+          "[precision][extremes]") {
   // From (-3,-3,-3) along (1,1,1) the ray meets the root's three centre planes at the same t,
   // 3 sqrt(3), at the cube's centre, where all eight depth-1 cells touch. Both models break the
   // tie as the RTL's comparisons do (x before y before z) and walk cells 0, 1 (x), 3 (x y),
@@ -360,7 +371,8 @@ TEST_CASE("Three planes tied: the corner is crossed x first, then y, then z", "[
   for (int slot = 0; slot < 8; ++slot) {
     INFO("solid cell " << slot);
     const SvoBuild build = buildSvo(Cells(1, [slot](const glm::dvec3& c) {
-      return (c.x > 0) == (slot & 1) && (c.y > 0) == ((slot & 2) != 0) && (c.z > 0) == ((slot & 4) != 0);
+      return (c.x > 0) == (slot & 1) && (c.y > 0) == ((slot & 2) != 0) &&
+             (c.z > 0) == ((slot & 4) != 0);
     }));
     const Outcome o = trace(build, Ray{glm::dvec3(-3.0), glm::dvec3(1.0)});
     const bool visited = slot == 0 || slot == 1 || slot == 3 || slot == 7;
@@ -387,7 +399,8 @@ TEST_CASE("Three planes tied: the corner is crossed x first, then y, then z", "[
   }
 }
 
-TEST_CASE("Translation: the same model and rays near the origin and far away", "[precision][extremes]") {
+TEST_CASE("Translation: the same model and rays near the origin and far away",
+          "[precision][extremes]") {
   // Ray records are float32 in world space. A model moved by T = 2^20 with a camera moved alike:
   // the record's origin T + o is rounded to 2^-3, so only offsets o on that grid give the same
   // jobs; others move the ray by up to 1/16 and hit other voxels, silently (the record cannot

@@ -1,5 +1,6 @@
-#include <array>
 #include <catch2/catch.hpp>
+
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -68,9 +69,9 @@ TEST_CASE("scenes: the five scenes by name; bad names and depths are refused", "
     CHECK_THROWS_AS(makeProceduralScene(name, 0), std::invalid_argument);
     CHECK_THROWS_AS(makeProceduralScene(name, 17), std::invalid_argument);
   }
-  CHECK_THROWS_WITH(
-      makeProceduralScene("cube", 4),
-      Catch::Contains("'cube'") && Catch::Contains("sphere, shell, menger, terrain, noise"));
+  CHECK_THROWS_WITH(makeProceduralScene("cube", 4),
+                    Catch::Contains("'cube'") &&
+                        Catch::Contains("sphere, shell, menger, terrain, noise"));
 }
 
 TEST_CASE("scenes: never Mixed for a voxel, never wrong for a node", "[scenes]") {

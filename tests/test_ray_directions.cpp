@@ -22,7 +22,7 @@ class CentredSphere : public VoxelSource {
     if (node.level < depth_) return Occupancy::Mixed;
     const glm::dvec3 c = node.centre();
     return c.x * c.x + c.y * c.y + c.z * c.z <= radius_ * radius_ ? Occupancy::Full
-                                                                   : Occupancy::Empty;
+                                                                  : Occupancy::Empty;
   }
 
  private:

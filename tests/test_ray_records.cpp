@@ -11,8 +11,8 @@
 #include <glm/geometric.hpp>
 
 #include "inputs/camera.h"
-#include "kinds/svo/golden_model.h"
 #include "inputs/host_buffers.h"
+#include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 
@@ -214,9 +214,9 @@ TEST_CASE("Malformed model headers are rejected with the address and the field",
   auto readFrom = [&](const std::vector<uint32_t>& words) {
     return readModelHeader(SvoMemory(words), address);
   };
-  REQUIRE_THROWS_WITH(
-      readFrom(corrupted(1, 0x7FC00000u)),
-      Catch::Contains("word 20") && Catch::Contains("translation y is not a finite"));
+  REQUIRE_THROWS_WITH(readFrom(corrupted(1, 0x7FC00000u)),
+                      Catch::Contains("word 20") &&
+                          Catch::Contains("translation y is not a finite"));
   REQUIRE_THROWS_WITH(readFrom(corrupted(2, floatBits(-0x1p70f))),
                       Catch::Contains("translation z is beyond 2^64"));
   REQUIRE_THROWS_WITH(readFrom(corrupted(12, 0)), Catch::Contains("inverse scale x is 0"));
@@ -282,8 +282,8 @@ TEST_CASE("The set-up follows eq. 6.6 step by step", "[rays]") {
 TEST_CASE("Extreme valid records and headers never give NaN or t0 > t1", "[rays]") {
   const float big = kMaxModelCoordinate;
   const float tiny = std::numeric_limits<float>::denorm_min();
-  const std::vector<std::array<float, 3>> origins = {{big, -big, 0.0f}, {0.0f, 0.0f, 0.0f},
-                                                     {-big, big, big}, {1.0f, -1.0f, 1.0f}};
+  const std::vector<std::array<float, 3>> origins = {
+      {big, -big, 0.0f}, {0.0f, 0.0f, 0.0f}, {-big, big, big}, {1.0f, -1.0f, 1.0f}};
   const std::vector<std::array<float, 3>> directions = {
       {tiny, 0.0f, -tiny}, {big, -big, tiny}, {0.0f, -1.0f, 0.0f}, {-tiny, big, 0.0f}};
   std::vector<ModelHeader> headers(3);
@@ -436,9 +436,9 @@ TEST_CASE("A non-uniformly scaled model gives the hits of the rays mapped into i
   }
   GoldenModel referenceModel(identity.image.memory(), GoldenConfig{});
   GoldenModel movedModel(moved.image.memory(), GoldenConfig{});
-  const FrameComparison comparison = compareFrames(
-      referenceModel.traceRays(reference, 1e-4f), movedModel.traceRays(world, 1e-4f),
-      movedModel.config().format, [&](size_t i, double t) { return stretch[i] * t; });
+  const FrameComparison comparison =
+      compareFrames(referenceModel.traceRays(reference, 1e-4f), movedModel.traceRays(world, 1e-4f),
+                    movedModel.config().format, [&](size_t i, double t) { return stretch[i] * t; });
   INFO(comparison.sameHit << " of " << comparison.rays << " agree, max |dt| "
                           << comparison.maxTError);
   CHECK(comparison.bothHit > comparison.rays / 10);

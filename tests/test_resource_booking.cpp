@@ -1,5 +1,6 @@
 // Resource bookings in cycle order and out of it (src/sim/memory/resource_booking.h), and the L2's
-// out-of-order form against its cycle-order form (src/sim/memory/l2_cache_timing.h), cycles by hand.
+// out-of-order form against its cycle-order form (src/sim/memory/l2_cache_timing.h), cycles by
+// hand.
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -30,7 +31,7 @@ TEST_CASE("Booking out of order: a request fills the first gap it fits in", "[bo
   bus.forgetBefore(25);               // nothing starts before 25 any more
   CHECK(bus.firstFree(0, 2) == 28);   // from 25 on: [24, 28) still stands
   CHECK(bus.book(25, 1) == 28);
-  CHECK(bus.book(1000, 3) == 1000);   // far ahead: the ring grows and keeps what it held
+  CHECK(bus.book(1000, 3) == 1000);  // far ahead: the ring grows and keeps what it held
   CHECK(bus.firstFree(26, 1) == 29);
 }
 

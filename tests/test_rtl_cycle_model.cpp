@@ -19,8 +19,8 @@
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
-#include "reference/rtl_cycle_model.h"
 #include "kinds/svo/svo_builder.h"
+#include "reference/rtl_cycle_model.h"
 #include "three_balls_scene.h"
 
 using namespace rtu;
@@ -37,20 +37,19 @@ struct Tree {
   uint32_t root;
   uint32_t cost;  // of the centre-line job, by hand in test_traversal_costs.cpp
 };
-constexpr Tree kFullRoot{0, 2};    // INIT EVAL(hit)
-constexpr Tree kEmptyRoot{1, 5};   // INIT EVAL NEXT EVAL NEXT
-constexpr Tree kOnePush{2, 7};     // INIT EVAL NEXT EVAL PUSH INIT EVAL
-constexpr Tree kPopBack{4, 14};    // pops back to the root once, then descends into child 7
+constexpr Tree kFullRoot{0, 2};     // INIT EVAL(hit)
+constexpr Tree kEmptyRoot{1, 5};    // INIT EVAL NEXT EVAL NEXT
+constexpr Tree kOnePush{2, 7};      // INIT EVAL NEXT EVAL PUSH INIT EVAL
+constexpr Tree kPopBack{4, 14};     // pops back to the root once, then descends into child 7
 constexpr Tree kFiveLevels{7, 17};  // INIT EVAL, then PUSH INIT EVAL for each of five levels
 
 std::vector<uint32_t> treeImage() {
   std::vector<uint32_t> image = {
-      descriptor(false, 0, 0xFF, 0xFF),                                    // kFullRoot
-      descriptor(false, 0, 0x00, 0x00),                                    // kEmptyRoot
-      descriptor(false, 1, 0x80, 0x00), descriptor(false, 0, 0x01, 0x01),  // kOnePush
-      descriptor(false, 1, 0x88, 0x00), descriptor(false, 0, 0x02, 0x02),  // kPopBack
-      descriptor(false, 0, 0x01, 0x01),
-      descriptor(false, 1, 0xFF, 0x00)};                                   // kFiveLevels
+      descriptor(false, 0, 0xFF, 0xFF),                                     // kFullRoot
+      descriptor(false, 0, 0x00, 0x00),                                     // kEmptyRoot
+      descriptor(false, 1, 0x80, 0x00), descriptor(false, 0, 0x01, 0x01),   // kOnePush
+      descriptor(false, 1, 0x88, 0x00), descriptor(false, 0, 0x02, 0x02),   // kPopBack
+      descriptor(false, 0, 0x01, 0x01), descriptor(false, 1, 0xFF, 0x00)};  // kFiveLevels
   for (int level = 1; level <= 5; ++level)
     for (uint32_t slot = 0; slot < 8; ++slot)
       image.push_back(level < 5 ? descriptor(false, 8 - slot, 0xFF, 0x00)
@@ -201,8 +200,8 @@ TEST_CASE("Every ray's result equals the golden model's, whatever the core count
       const std::vector<TraversalResult> expected =
           GoldenModel(build.image.memory(), golden).traceAll(jobs);
       for (int cores : {1, 2, 4, 16}) {
-        INFO(scene << ", " << golden.format.describe() << ", " << golden.stackFrames
-                   << " frames, " << cores << " cores");
+        INFO(scene << ", " << golden.format.describe() << ", " << golden.stackFrames << " frames, "
+                   << cores << " cores");
         const RtlTopRun run = runRtlTop(build.image.memory(), jobs, RtlTopConfig{cores, golden});
         REQUIRE(run.results.size() == jobs.size());
         REQUIRE(run.resultCycles.size() == jobs.size());
@@ -233,9 +232,10 @@ TEST_CASE("Every ray's result equals the golden model's, whatever the core count
         if (cores == 1) {
           // The pipeline is full while the core works, so each job holds the core for its cost
           // + 2 cycles back to back, starting in 6, and the last result leaves one cycle later.
-          const uint64_t busy = std::accumulate(
-              expected.begin(), expected.end(), uint64_t{0},
-              [](uint64_t sum, const TraversalResult& r) { return sum + r.cost + 2; });
+          const uint64_t busy = std::accumulate(expected.begin(), expected.end(), uint64_t{0},
+                                                [](uint64_t sum, const TraversalResult& r) {
+                                                  return sum + r.cost + 2;
+                                                });
           REQUIRE(run.totalCycles == 6 + busy + 1);
         }
       }

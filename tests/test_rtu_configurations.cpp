@@ -28,16 +28,16 @@
 #include <string>
 #include <vector>
 
-#include "sim/memory/cache_array.h"
+#include "base/timing_limits.h"
 #include "inputs/camera.h"
-#include "sim/kernel/cycle_clock.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
-#include "run/rtu_simulation.h"
 #include "kinds/svo/svo_builder.h"
-#include "base/timing_limits.h"
 #include "kinds/svo/traversal_core.h"
+#include "run/rtu_simulation.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/memory/cache_array.h"
 
 namespace rtu {
 namespace {
@@ -96,12 +96,11 @@ constexpr Tree kFiveLevels{7, 17};  // INIT EVAL, then PUSH INIT EVAL for each o
 const std::vector<uint32_t>& treeImage() {
   static const std::vector<uint32_t> image = [] {
     std::vector<uint32_t> words = {
-        descriptor(false, 0, 0xFF, 0xFF),                                    // kFullRoot
-        descriptor(false, 0, 0x00, 0x00),                                    // kEmptyRoot
-        descriptor(false, 1, 0x80, 0x00), descriptor(false, 0, 0x01, 0x01),  // kOnePush
-        descriptor(false, 1, 0x88, 0x00), descriptor(false, 0, 0x02, 0x02),  // (kPopBack)
-        descriptor(false, 0, 0x01, 0x01),
-        descriptor(false, 1, 0xFF, 0x00)};                                   // kFiveLevels
+        descriptor(false, 0, 0xFF, 0xFF),                                     // kFullRoot
+        descriptor(false, 0, 0x00, 0x00),                                     // kEmptyRoot
+        descriptor(false, 1, 0x80, 0x00), descriptor(false, 0, 0x01, 0x01),   // kOnePush
+        descriptor(false, 1, 0x88, 0x00), descriptor(false, 0, 0x02, 0x02),   // (kPopBack)
+        descriptor(false, 0, 0x01, 0x01), descriptor(false, 1, 0xFF, 0x00)};  // kFiveLevels
     for (int level = 1; level <= 5; ++level)
       for (uint32_t slot = 0; slot < 8; ++slot)
         words.push_back(level < 5 ? descriptor(false, 8 - slot, 0xFF, 0x00)
@@ -242,7 +241,8 @@ void checkResults(const RtuRun& run, const std::vector<TraversalResult>& expecte
   REQUIRE(isPermutation(run.jobIndices, expected.size()));
   const std::vector<TraversalResult> ordered = resultsInJobOrder(run);
   std::vector<uint64_t> blockedOf(expected.size());
-  for (size_t i = 0; i < run.results.size(); ++i) blockedOf[run.jobIndices[i]] = run.blockedCycles[i];
+  for (size_t i = 0; i < run.results.size(); ++i)
+    blockedOf[run.jobIndices[i]] = run.blockedCycles[i];
   uint64_t extra = 0, mismatches = 0, cheaper = 0;
   for (size_t k = 0; k < expected.size(); ++k) {
     // The cost is the state count, as golden's; cycles BLOCKED on memory are counted beside it.
@@ -269,12 +269,11 @@ void checkResults(const RtuRun& run, const std::vector<TraversalResult>& expecte
     jobs += core.jobs;
     overflows += core.stackOverflows;
   }
-  const uint64_t goldenCost = std::accumulate(
-      expected.begin(), expected.end(), uint64_t{0},
-      [](uint64_t sum, const TraversalResult& r) { return sum + r.cost; });
-  const uint64_t goldenOverflows = static_cast<uint64_t>(
-      std::count_if(expected.begin(), expected.end(),
-                    [](const TraversalResult& r) { return r.stackOverflow; }));
+  const uint64_t goldenCost =
+      std::accumulate(expected.begin(), expected.end(), uint64_t{0},
+                      [](uint64_t sum, const TraversalResult& r) { return sum + r.cost; });
+  const uint64_t goldenOverflows = static_cast<uint64_t>(std::count_if(
+      expected.begin(), expected.end(), [](const TraversalResult& r) { return r.stackOverflow; }));
   CHECK(run.statistics.coreTimes.size() == static_cast<size_t>(config.cores));
   CHECK(extra == blocked);
   if (config.memory.ideal) CHECK(blocked == 0);
@@ -299,9 +298,8 @@ void checkTiming(const RtuRun& run, const RtuConfig& config) {
   for (size_t i = 1; i < n; ++i)
     if (run.arrivalCycles[i] <= run.arrivalCycles[i - 1]) ++notIncreasing;
   for (size_t i = 0; i < n; ++i)
-    if (run.arrivalCycles[i] < run.jobIndices[i] +
-                                  static_cast<uint64_t>(config.jobManager.stages) + 2 +
-                                  run.results[i].cost + run.blockedCycles[i])
+    if (run.arrivalCycles[i] < run.jobIndices[i] + static_cast<uint64_t>(config.jobManager.stages) +
+                                   2 + run.results[i].cost + run.blockedCycles[i])
       ++tooEarly;
   CHECK(notIncreasing == 0);
   CHECK(tooEarly == 0);
@@ -408,7 +406,8 @@ Cycles arrivalByJob(const RtuRun& run) {
 
 uint64_t sumOfCostsPlusTwo(const RtuRun& run) {
   uint64_t sum = 0;
-  for (size_t i = 0; i < run.results.size(); ++i) sum += run.results[i].cost + run.blockedCycles[i] + 2;
+  for (size_t i = 0; i < run.results.size(); ++i)
+    sum += run.results[i].cost + run.blockedCycles[i] + 2;
   return sum;
 }
 
@@ -493,9 +492,8 @@ TEST_CASE("The clock changes the time unit only", "[rtu]") {
     CHECK(run.results == reference.results);
     CHECK(run.statistics.clockMhz == mhz);
     // Rays per second at the simulated clock: rays / (cycles / f).
-    CHECK(run.statistics.raysPerSecond() ==
-          Approx(static_cast<double>(scene.jobs.size()) * mhz * 1e6 /
-                 static_cast<double>(run.totalCycles)));
+    CHECK(run.statistics.raysPerSecond() == Approx(static_cast<double>(scene.jobs.size()) * mhz *
+                                                   1e6 / static_cast<double>(run.totalCycles)));
   }
 }
 
@@ -529,7 +527,8 @@ TEST_CASE("Scheduler waits on a hand-counted job pair", "[rtu]") {
     CHECK(run.statistics.maxWait == wait);
     CHECK(run.statistics.maxWaitWithReadyCore == wait);
     const std::map<uint64_t, uint64_t> histogram =
-        wait == 0 ? std::map<uint64_t, uint64_t>{{0, 2}} : std::map<uint64_t, uint64_t>{{0, 1}, {1, 1}};
+        wait == 0 ? std::map<uint64_t, uint64_t>{{0, 2}}
+                  : std::map<uint64_t, uint64_t>{{0, 1}, {1, 1}};
     CHECK(run.statistics.waitHistogram == histogram);
     CHECK(run.statistics.coreTimes[0].jobs == 1);
     CHECK(run.statistics.coreTimes[1].jobs == 1);
@@ -616,7 +615,9 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
               for (size_t i = 0; i < run.results.size(); ++i) {
                 const uint64_t k = run.jobIndices[i];
                 const uint64_t crossing = (32 * k + 2) / 3;  // ceil(32 k / 3)
-                if (run.arrivalCycles[i] < crossing + 8 + run.results[i].cost + run.blockedCycles[i]) ++early;
+                if (run.arrivalCycles[i] <
+                    crossing + 8 + run.results[i].cost + run.blockedCycles[i])
+                  ++early;
               }
               CHECK(early == 0);
             }
@@ -627,8 +628,7 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
             // select = i" of earlier steps). cfa (cycle-numbered select) and fa (whichever core
             // is ready) can assign jobs differently, and shared caches interleave differently,
             // so no ordering is claimed for them.
-            if (cores == 1 ||
-                (policy == SchedulerPolicy::RoundRobin && config.memory.ideal)) {
+            if (cores == 1 || (policy == SchedulerPolicy::RoundRobin && config.memory.ideal)) {
               const Cycles late = arrivalByJob(run), early = arrivalByJob(unthrottled);
               uint64_t earlier = 0;
               for (size_t k = 0; k < late.size(); ++k)

@@ -7,9 +7,9 @@
 #include "inputs/camera.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 #include "reference/rtl_cycle_model.h"
 #include "run/rtu_simulation.h"
-#include "kinds/svo/svo_builder.h"
 #include "three_balls_scene.h"
 
 namespace rtu {
@@ -38,7 +38,8 @@ TEST_CASE("Thesis configuration: results and every cycle equal the RTL", "[rtu]"
   RtuConfig config;
   config.cores = cores;
   const RtuRun run = simulateRtu(s.build.image.memory(), s.jobs, config);
-  const RtlTopRun rtl = runRtlTop(s.build.image.memory(), s.jobs, RtlTopConfig{cores, config.golden()});
+  const RtlTopRun rtl =
+      runRtlTop(s.build.image.memory(), s.jobs, RtlTopConfig{cores, config.golden()});
   INFO(scene << ", " << cores << " cores");
   CHECK(run.totalCycles == rtl.totalCycles);
   CHECK(run.arrivalCycles == rtl.resultCycles);

@@ -4,13 +4,13 @@
 
 #include <catch2/catch.hpp>
 
-#include "run/analytic_run.h"
 #include "inputs/camera.h"
 #include "kinds/svo/procedural_scenes.h"
-#include "reference/rtl_cycle_model.h"
-#include "rtu/rtu_recurrence.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_image.h"
+#include "reference/rtl_cycle_model.h"
+#include "rtu/rtu_recurrence.h"
+#include "run/analytic_run.h"
 
 namespace rtu {
 namespace {
@@ -96,7 +96,8 @@ TEST_CASE("Recurrence equals the RTL transcription in the thesis configuration",
   RtuConfig config;
   config.cores = cores;
   std::vector<TraversalJob> jobs;
-  for (const HostRecord& record : frame.tValueRecords) jobs.push_back(std::get<TraversalJob>(record));
+  for (const HostRecord& record : frame.tValueRecords)
+    jobs.push_back(std::get<TraversalJob>(record));
   const RtuRun analytic = runAnalytic(frame.image.memory(), jobs, config);
   const RtlTopRun rtl = runRtlTop(frame.image.memory(), jobs, RtlTopConfig{cores, config.golden()});
   INFO(scene << ", " << cores << " cores");
@@ -123,13 +124,14 @@ TEST_CASE("Recurrence equals the SystemC model, statistics included", "[recurren
   const std::vector<HostRecord>& records = rays ? frame.rayRecords : frame.tValueRecords;
   const RtuRun analytic = runAnalytic(frame.image.memory(), records, config);
   const RtuRun simulated = simulateRtu(frame.image.memory(), records, config);
-  INFO(scene << ", " << toString(policy) << ", " << cores << " cores, links " << links.first
-             << "/" << links.second << (rays ? ", ray records" : ", t-value records"));
+  INFO(scene << ", " << toString(policy) << ", " << cores << " cores, links " << links.first << "/"
+             << links.second << (rays ? ", ray records" : ", t-value records"));
   CHECK(analytic.totalCycles == simulated.totalCycles);
   CHECK(analytic.arrivalCycles == simulated.arrivalCycles);
   CHECK(analytic.jobIndices == simulated.jobIndices);
   CHECK(analytic.results == simulated.results);
-  CHECK(withoutHostTime(analytic.statistics.toJson()) == withoutHostTime(simulated.statistics.toJson()));
+  CHECK(withoutHostTime(analytic.statistics.toJson()) ==
+        withoutHostTime(simulated.statistics.toJson()));
 }
 
 TEST_CASE("The recurrence refuses what it cannot model", "[recurrence]") {
@@ -151,7 +153,8 @@ TEST_CASE("Result records over 32 bits take 48 bytes on a paced output link", "[
   // 16 cores finish results faster than an 8-byte-a-cycle link drains them, so consecutive
   // results reach the host one record's slot apart: 32 / 8 = 4 cycles at 32 bits, 48 / 8 = 6 at 40.
   const Frame frame = smallFrame("sphere");
-  for (const auto& [format, gap] : {std::pair{FixedFormat{32, 16}, 4ull}, std::pair{FixedFormat{40, 24}, 6ull}}) {
+  for (const auto& [format, gap] :
+       {std::pair{FixedFormat{32, 16}, 4ull}, std::pair{FixedFormat{40, 24}, 6ull}}) {
     RtuConfig config;
     config.cores = 16;
     config.hostOutput.bytesPerCycle = 8;

@@ -10,6 +10,8 @@
 //   - result manager: the host takes core i's result in a cycle t with t mod N = i.
 // State codes: 0 IDLE, 1 INIT, 2 EVAL, 3 NEXT, 4 PUSH, 5 POP, 6 OUT, 7 BLOCKED.
 
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -27,13 +29,11 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "inputs/camera.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
-#include "run/rtu_simulation.h"
 #include "kinds/svo/svo_builder.h"
+#include "run/rtu_simulation.h"
 
 namespace rtu {
 namespace {
@@ -94,8 +94,7 @@ class Vcd {
             throw std::runtime_error("time stamps going back at " + line);
           vcd.times.push_back(time);
           break;
-        case '$':
-          break;  // $dumpvars, $end
+        case '$': break;  // $dumpvars, $end
         case '0':
         case '1':
         case 'x':
@@ -108,12 +107,12 @@ class Vcd {
           const size_t space = line.find(' ');
           const std::string bits = line.substr(1, space - 1);
           std::optional<uint64_t> value;
-          if (bits.find_first_not_of("01") == std::string::npos) value = std::stoull(bits, nullptr, 2);
+          if (bits.find_first_not_of("01") == std::string::npos)
+            value = std::stoull(bits, nullptr, 2);
           vcd.change(time, line.substr(space + 1), value);
           break;
         }
-        default:
-          throw std::runtime_error("unexpected VCD line: " + line);
+        default: throw std::runtime_error("unexpected VCD line: " + line);
       }
     }
     return vcd;
@@ -122,7 +121,7 @@ class Vcd {
   std::string timescale;
   std::map<std::string, std::string> codes;  // full name -> identifier code
   std::map<std::string, int> widths;
-  std::vector<uint64_t> times;               // every #t, in file order
+  std::vector<uint64_t> times;  // every #t, in file order
 
   bool has(const std::string& name) const { return codes.count(name) > 0; }
   std::vector<std::string> names() const {
@@ -335,12 +334,12 @@ void checkTrace(const Traced& t, int cores) {
     CHECK(badStart == 0);
     CHECK(badLevel == 0);
 
-    // State sequence, cycle by cycle, as src/kinds/svo/traversal_core.h steps it: INIT .. POP last one
-    // cycle each; BLOCKED follows a memory read (EVAL, or PUSH through a far pointer) and ends
+    // State sequence, cycle by cycle, as src/kinds/svo/traversal_core.h steps it: INIT .. POP last
+    // one cycle each; BLOCKED follows a memory read (EVAL, or PUSH through a far pointer) and ends
     // in the state after it; OUT waits for the result manager.
     const std::map<int64_t, std::set<int64_t>> successors = {
-        {0, {0, 1}},          {1, {2}},          {2, {3, 4, 6, 7}},       {3, {2, 5, 6}},
-        {4, {1, 6, 7}},       {5, {3}},          {6, {6, 0}},             {7, {7, 1, 3, 4, 6}}};
+        {0, {0, 1}},    {1, {2}}, {2, {3, 4, 6, 7}}, {3, {2, 5, 6}},
+        {4, {1, 6, 7}}, {5, {3}}, {6, {6, 0}},       {7, {7, 1, 3, 4, 6}}};
     uint64_t illegal = 0, blocked = 0;
     for (uint64_t c = 0; c + 1 < t.horizon; ++c) {
       const auto next = successors.find(state[c]);
@@ -415,8 +414,8 @@ TEST_CASE("VCD of a two-core run shows every handshake and core state", "[rtu]")
         "rtu.scheduler.in.ready", "rtu.result_manager.out.valid", "rtu.result_manager.out.ready"})
     CHECK(t.vcd.has(name));
   for (int i = 0; i < 2; ++i)
-    for (const char* name : {".state", ".stack_depth", ".in.valid", ".in.ready",
-                                    ".out.valid", ".out.ready"})
+    for (const char* name :
+         {".state", ".stack_depth", ".in.valid", ".in.ready", ".out.valid", ".out.ready"})
       CHECK(t.vcd.has(core(i) + name));
   CHECK(t.vcd.widths.at("rtu.core_0.state") == 3);
   CHECK_FALSE(t.vcd.has("rtu.reorder_buffer.out.valid"));
@@ -435,8 +434,8 @@ TEST_CASE("VCD of a two-core run shows every handshake and core state", "[rtu]")
 TEST_CASE("VCD shows each scheduling policy's choice of core", "[rtu]") {
   TempDir dir;
   const int cores = 4;
-  for (SchedulerPolicy policy : {SchedulerPolicy::CyclicFirstAvailable,
-                                 SchedulerPolicy::RoundRobin, SchedulerPolicy::FirstAvailable}) {
+  for (SchedulerPolicy policy : {SchedulerPolicy::CyclicFirstAvailable, SchedulerPolicy::RoundRobin,
+                                 SchedulerPolicy::FirstAvailable}) {
     RtuConfig config;
     config.cores = cores;
     config.scheduler = policy;
@@ -458,9 +457,7 @@ TEST_CASE("VCD shows each scheduling policy's choice of core", "[rtu]") {
         case SchedulerPolicy::CyclicFirstAvailable:
           CHECK(static_cast<uint64_t>(d.core) == d.cycle % cores);
           break;
-        case SchedulerPolicy::RoundRobin:
-          CHECK(d.core == static_cast<int>(k % cores));
-          break;
+        case SchedulerPolicy::RoundRobin: CHECK(d.core == static_cast<int>(k % cores)); break;
         case SchedulerPolicy::FirstAvailable:
           for (int i = 0; i < d.core; ++i) CHECK(ready[static_cast<size_t>(i)][d.cycle] != 1);
           break;
@@ -473,9 +470,7 @@ TEST_CASE("VCD shows each scheduling policy's choice of core", "[rtu]") {
       if (pending[c] != 1) continue;
       bool due = false;
       switch (policy) {
-        case SchedulerPolicy::CyclicFirstAvailable:
-          due = ready[c % cores][c] == 1;
-          break;
+        case SchedulerPolicy::CyclicFirstAvailable: due = ready[c % cores][c] == 1; break;
         case SchedulerPolicy::RoundRobin:
           due = ready[static_cast<size_t>(nextInLine)][c] == 1;
           break;
@@ -589,7 +584,8 @@ TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "
   const Traced full = traced(sphere(), config, dir, "full.vcd");
   REQUIRE(full.run.totalCycles > 120);
 
-  for (const auto& [from, to] : std::vector<std::pair<uint64_t, uint64_t>>{{30, 90}, {0, 7}, {100, 101}}) {
+  for (const auto& [from, to] :
+       std::vector<std::pair<uint64_t, uint64_t>>{{30, 90}, {0, 7}, {100, 101}}) {
     TraceOptions options;
     options.fromCycle = from;
     options.toCycle = to;
@@ -605,8 +601,10 @@ TEST_CASE("VCD window keeps only its cycles, with the values of a full trace", "
     for (const std::string& name : full.vcd.names()) {
       INFO(name);
       const std::vector<int64_t> a = full.levels(name), b = window.levels(name);
-      CHECK(std::vector<int64_t>(a.begin() + static_cast<long>(from), a.begin() + static_cast<long>(to)) ==
-            std::vector<int64_t>(b.begin() + static_cast<long>(from), b.begin() + static_cast<long>(to)));
+      CHECK(std::vector<int64_t>(a.begin() + static_cast<long>(from),
+                                 a.begin() + static_cast<long>(to)) ==
+            std::vector<int64_t>(b.begin() + static_cast<long>(from),
+                                 b.begin() + static_cast<long>(to)));
     }
   }
 }
@@ -637,7 +635,8 @@ TEST_CASE("VCD of cached memory: L1 and L2 counters and BLOCKED states", "[rtu]"
         CHECK(*value >= previous);
         previous = *value;
       }
-      CHECK(previous == (counter == std::string(".hits") ? stats.hits + stats.merged : stats.misses));
+      CHECK(previous ==
+            (counter == std::string(".hits") ? stats.hits + stats.merged : stats.misses));
       CHECK(previous > 0);
     }
   }
@@ -691,7 +690,8 @@ TEST_CASE("VCD time stamps follow the clock", "[rtu]") {
   slow.clockMhz = 100.0;
   const Traced reference = traced(sphere(), slow, dir, "slow.vcd");
   CHECK(reference.run.arrivalCycles == t.run.arrivalCycles);
-  for (const std::string& name : reference.vcd.names()) CHECK(reference.levels(name) == t.levels(name));
+  for (const std::string& name : reference.vcd.names())
+    CHECK(reference.levels(name) == t.levels(name));
 }
 
 TEST_CASE("VCD of a paced input link and of the reorder buffer", "[rtu]") {

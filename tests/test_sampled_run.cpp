@@ -7,9 +7,9 @@
 
 #include "inputs/camera.h"
 #include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/svo_builder.h"
 #include "run/sampled_run.h"
 #include "run/statistics_window.h"
-#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 namespace {
@@ -60,7 +60,8 @@ TEST_CASE("Sample plan: strata tile the middle, two distinct blocks in each", "[
   CHECK(plan.tailFirst == rays - block);
 }
 
-TEST_CASE("Sample plan: another seed, other blocks; too small a fraction is refused", "[sampling]") {
+TEST_CASE("Sample plan: another seed, other blocks; too small a fraction is refused",
+          "[sampling]") {
   SampleSpec spec;
   spec.fraction = 0.1;
   const SamplePlan a = planSample(1000000, 4, spec);
@@ -83,7 +84,8 @@ TEST_CASE("Student's t quantiles against the table", "[sampling]") {
   CHECK(studentT975(100000) == Approx(1.960).epsilon(0.001));
 }
 
-TEST_CASE("Statistics after a prefix: counters subtracted, window's rays and cycles", "[sampling]") {
+TEST_CASE("Statistics after a prefix: counters subtracted, window's rays and cycles",
+          "[sampling]") {
   RtuStatistics whole, prefix;
   whole.coreTimes.resize(2);
   prefix.coreTimes.resize(2);
@@ -136,7 +138,8 @@ TEST_CASE("Snapshots do not change the run and fall on their cycles", "[sampling
     CHECK(arrived >= plan.afterResults[i]);
     CHECK(snapshot.statistics.totalCycles == snapshot.cycle);
   }
-  CHECK(sliced.snapshots[0].statistics.allCores().jobs < sliced.snapshots[1].statistics.allCores().jobs);
+  CHECK(sliced.snapshots[0].statistics.allCores().jobs <
+        sliced.snapshots[1].statistics.allCores().jobs);
 
   plan.stopAtLast = true;
   const RtuRun stopped = simulateRtu(image.memory(), jobs, config, plan);

@@ -1,5 +1,6 @@
 // Scene files (src/scene/scene_file.h) and the model cache (src/scene/model_cache.h).
 #include <catch2/catch.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,7 +19,8 @@ const std::string kInstance = "[[instances]]\nmodel = \"ball\"\n";
 
 std::string writeScene(const std::string& text) {
   const std::string path = (std::filesystem::temp_directory_path() /
-                            ("rtusim_scene_" + std::to_string(std::rand()) + ".toml")).string();
+                            ("rtusim_scene_" + std::to_string(std::rand()) + ".toml"))
+                               .string();
   std::ofstream(path) << text;
   return path;
 }
@@ -63,35 +65,41 @@ TEST_CASE("A scene file reads back its models, instances, keys and camera") {
 }
 
 TEST_CASE("Scene file errors name the file, the line and the key") {
-  CHECK_THAT(errorOf(kModels + kCamera + kInstance + "keys = [{ time = 0, rotaton = [1, 0, 0, 0] }]\n"),
-             Catch::Contains("instances[0].keys[0].rotaton") && Catch::Contains("unknown key"));
+  CHECK_THAT(
+      errorOf(kModels + kCamera + kInstance + "keys = [{ time = 0, rotaton = [1, 0, 0, 0] }]\n"),
+      Catch::Contains("instances[0].keys[0].rotaton") && Catch::Contains("unknown key"));
   CHECK_THAT(errorOf(kModels + kCamera + "[[instances]]\nmodel = \"bal\"\n"),
              Catch::Contains("'instances[0].model'") && Catch::Contains("no model named 'bal'"));
   CHECK_THAT(errorOf(kModels + kCamera + kInstance +
-                     "keys = [{ time = 1, translation = [0, 0, 0] }, { time = 1, translation = [1, 0, 0] }]\n"),
+                     "keys = [{ time = 1, translation = [0, 0, 0] }, "
+                     "{ time = 1, translation = [1, 0, 0] }]\n"),
              Catch::Contains("instances[0].keys[1].time") && Catch::Contains("increase"));
   CHECK_THAT(errorOf(kModels + kCamera + kInstance + "keys = [{ time = 0, scale = [1, 0, 1] }]\n"),
              Catch::Contains("instances[0].keys[0].scale"));
-  CHECK_THAT(errorOf(kModels + kCamera + kInstance + "keys = [{ time = 0, rotation = [0, 0, 0, 0] }]\n"),
-             Catch::Contains("instances[0].keys[0].rotation"));
+  CHECK_THAT(
+      errorOf(kModels + kCamera + kInstance + "keys = [{ time = 0, rotation = [0, 0, 0, 0] }]\n"),
+      Catch::Contains("instances[0].keys[0].rotation"));
   CHECK_THAT(errorOf("width = 0\n" + kModels + kCamera + kInstance), Catch::Contains("'width'"));
   CHECK_THAT(errorOf("[models.ball]\nprocedural = \"spiral\"\n" + kCamera + kInstance),
              Catch::Contains("models.ball.procedural"));
   CHECK_THAT(errorOf("[models.ball]\nmesh = \"missing.obj\"\n" + kCamera + kInstance),
              Catch::Contains("models.ball.mesh") && Catch::Contains("cannot read"));
-  CHECK_THAT(errorOf("[models.ball]\nprocedural = \"sphere\"\nsvo = \"x.svo\"\n" + kCamera + kInstance),
-             Catch::Contains("models.ball") && Catch::Contains("exactly one"));
+  CHECK_THAT(
+      errorOf("[models.ball]\nprocedural = \"sphere\"\nsvo = \"x.svo\"\n" + kCamera + kInstance),
+      Catch::Contains("models.ball") && Catch::Contains("exactly one"));
   CHECK_THAT(errorOf(kModels + kInstance), Catch::Contains("'camera'"));
   // A camera looking along its up vector makes no image.
-  CHECK_THAT(errorOf(kModels + kInstance +
-                     "[camera]\nkeys = [{ time = 0, position = [0, -4, 0], look_at = [0, 0, 0] }]\n"),
-             Catch::Contains("camera.keys") && Catch::Contains("frame 0"));
+  CHECK_THAT(
+      errorOf(kModels + kInstance +
+              "[camera]\nkeys = [{ time = 0, position = [0, -4, 0], look_at = [0, 0, 0] }]\n"),
+      Catch::Contains("camera.keys") && Catch::Contains("frame 0"));
   CHECK_THAT(errorOf(kModels + "[[instances]\n"), Catch::Contains("line 4"));
 }
 
 TEST_CASE("Models are built once and then read from the cache by their content") {
   const std::string cache =
-      (std::filesystem::temp_directory_path() / ("rtusim_cache_" + std::to_string(std::rand()))).string();
+      (std::filesystem::temp_directory_path() / ("rtusim_cache_" + std::to_string(std::rand())))
+          .string();
   ModelDescription model{"ball", SceneSpec{}};
   model.source.procedural = "shell";
   model.source.depth = 5;

@@ -1,6 +1,7 @@
-// The golden scene manager (src/scene/scene_manager.h), the hit buffer (src/scene/hit_buffer.h) and the
-// animation renderer (src/explore/animation_run.h) against answers derived without them.
+// The golden scene manager (src/scene/scene_manager.h), the hit buffer (src/scene/hit_buffer.h) and
+// the animation renderer (src/explore/animation_run.h) against answers derived without them.
 #include <catch2/catch.hpp>
+
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -11,8 +12,8 @@
 
 #include "explore/animation_run.h"
 #include "inputs/camera.h"
-#include "scene/scene_memory.h"
 #include "kinds/svo/svo_builder.h"
+#include "scene/scene_memory.h"
 
 namespace rtu {
 namespace {
@@ -69,8 +70,8 @@ std::vector<SceneHit> traceFrame(SceneManager manager, const Camera& camera) {
   std::vector<SceneHit> hits;
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x)
-      hits.push_back(manager.trace(makeRayRecord(static_cast<uint32_t>(x + y * camera.width),
-                                                 camera.primaryRay(x, y), 0)));
+      hits.push_back(manager.trace(
+          makeRayRecord(static_cast<uint32_t>(x + y * camera.width), camera.primaryRay(x, y), 0)));
   return hits;
 }
 
@@ -110,7 +111,8 @@ TEST_CASE("A ray through two instances returns the nearer, whatever their order 
   // Listed far first: the order of jobs must come from the spheres, not from the list.
   const PlacedScene scene(models, {0, 0}, {placedAt({0, 0, 6}), placedAt({0, 0, 3})});
   SceneManager manager = scene.manager();
-  const SceneHit hit = manager.trace(makeRayRecord(7, Ray{glm::dvec3(0.0), glm::dvec3(0, 0, 1)}, 0));
+  const SceneHit hit =
+      manager.trace(makeRayRecord(7, Ray{glm::dvec3(0.0), glm::dvec3(0, 0, 1)}, 0));
   REQUIRE(hit.instance == 1);
   CHECK(hit.result.id() == 7);
   // The ball of radius 0.8 at z = 3 is entered at t = 2.2, give or take one voxel (2/32).
@@ -119,7 +121,8 @@ TEST_CASE("A ray through two instances returns the nearer, whatever their order 
   CHECK(hit.skipped == 1);
 
   SceneManager everything = scene.manager({false, false});
-  const SceneHit all = everything.trace(makeRayRecord(7, Ray{glm::dvec3(0.0), glm::dvec3(0, 0, 1)}, 0));
+  const SceneHit all =
+      everything.trace(makeRayRecord(7, Ray{glm::dvec3(0.0), glm::dvec3(0, 0, 1)}, 0));
   CHECK(all.jobs == 2);
   CHECK(samePicture(all, hit));
 }
@@ -134,7 +137,8 @@ TEST_CASE("A transformed instance renders like the same model voxelized in place
   };
   ModelPlacement turned;
   turned.translation = glm::dvec3(0.4, -0.2, 0.3);
-  turned.rotation = glm::mat3_cast(glm::angleAxis(glm::radians(30.0), glm::normalize(glm::dvec3(1, 2, 0.5))));
+  turned.rotation =
+      glm::mat3_cast(glm::angleAxis(glm::radians(30.0), glm::normalize(glm::dvec3(1, 2, 0.5))));
   turned.scale = glm::dvec3(1.5, 1.0, 2.0);
   constexpr double kWorldCube = 3.0;  // the in-place model's cube spans [-3, 3]^3
   const auto inPlacedBox = [&](const glm::dvec3& p) {
@@ -152,7 +156,8 @@ TEST_CASE("A transformed instance renders like the same model voxelized in place
   // Every hit point lies within one voxel (of its own model, in world units) of the placed box:
   // measured to a point of the box, found by clamping in the box's own space.
   const auto distanceToBox = [&](const glm::dvec3& world) {
-    const glm::dvec3 q = (glm::transpose(turned.rotation) * (world - turned.translation)) / turned.scale;
+    const glm::dvec3 q =
+        (glm::transpose(turned.rotation) * (world - turned.translation)) / turned.scale;
     const glm::dvec3 inside = glm::clamp(q, lower, upper);
     return glm::length(world - (turned.rotation * (inside * turned.scale) + turned.translation));
   };
@@ -172,14 +177,17 @@ TEST_CASE("A transformed instance renders like the same model voxelized in place
 }
 
 TEST_CASE("Culling and early termination never change the picture") {
-  const std::vector<SceneModel> models = {ballModel(5), modelOf(PointSetSource(6, [](const glm::dvec3& p) {
-                                            return std::abs(p.x) + std::abs(p.y) + std::abs(p.z) < 0.9;
-                                          }))};
+  const std::vector<SceneModel> models = {
+      ballModel(5), modelOf(PointSetSource(6, [](const glm::dvec3& p) {
+        return std::abs(p.x) + std::abs(p.y) + std::abs(p.z) < 0.9;
+      }))};
   std::vector<ModelPlacement> placements;
   std::vector<size_t> instanceModels;
   for (int i = 0; i < 9; ++i) {  // a crowd that overlaps on screen and in depth
-    ModelPlacement placement = placedAt({(i % 3 - 1) * 1.3, (i / 3 - 1) * 0.9, (i % 4) * 0.7}, 0.6 + 0.1 * (i % 3));
-    placement.rotation = glm::mat3_cast(glm::angleAxis(0.4 * i, glm::normalize(glm::dvec3(1, 1, 0.3 * i))));
+    ModelPlacement placement =
+        placedAt({(i % 3 - 1) * 1.3, (i / 3 - 1) * 0.9, (i % 4) * 0.7}, 0.6 + 0.1 * (i % 3));
+    placement.rotation =
+        glm::mat3_cast(glm::angleAxis(0.4 * i, glm::normalize(glm::dvec3(1, 1, 0.3 * i))));
     placements.push_back(placement);
     instanceModels.push_back(static_cast<size_t>(i % 2));
   }
@@ -266,7 +274,8 @@ TEST_CASE("The hit buffer saves every ray while nothing moves") {
   }
 }
 
-TEST_CASE("With a still camera and one model moving, the hit buffer saves the rays it cannot reach") {
+TEST_CASE(
+    "With a still camera and one model moving, the hit buffer saves the rays it cannot reach") {
   const SceneDescription scene = twoBallScene(false, true);
   const std::vector<SceneFrame> buffered = renderAll(scene, true);
   requireSamePictures(buffered, renderAll(scene, false));
@@ -309,9 +318,9 @@ TEST_CASE("Frames on the loosely-timed model equal the golden frames, cycles nea
     const std::vector<SceneFrame> lt = renderAll(scene, true, &config, ModelKind::LooselyTimed);
     requireSamePictures(lt, golden);
     for (size_t frame = 0; frame < golden.size(); ++frame) {
-      INFO((cached ? "cached" : "ideal") << ", frame " << frame << ": lt "
-                                         << lt[frame].statistics.cycles << ", ca "
-                                         << ca[frame].statistics.cycles);
+      INFO((cached ? "cached" : "ideal")
+           << ", frame " << frame << ": lt " << lt[frame].statistics.cycles << ", ca "
+           << ca[frame].statistics.cycles);
       CHECK(lt[frame].statistics.jobs == golden[frame].statistics.jobs);
       // The scene manager's latency and its wait for a ray's result before the next job are not in
       // it (docs/scenes.md): 0.3 % on the default scene, 7-12 % short on these frames of 4,000

@@ -1,6 +1,6 @@
 // The cycle-accurate scene manager (src/sim/ca/scene_manager_module.h, inside the SystemC RTU)
-// against its plain per-cycle reference (src/reference/scene_manager_cycles.h, above the per-cycle RTL
-// transcription): every job entering the job manager in the same cycle, the same merged result
+// against its plain per-cycle reference (src/reference/scene_manager_cycles.h, above the per-cycle
+// RTL transcription): every job entering the job manager in the same cycle, the same merged result
 // of every ray arriving in the same cycle, the same total cycles and statistics, for several core
 // counts and scene manager settings.
 #include <catch2/catch.hpp>
@@ -8,8 +8,8 @@
 #include <map>
 #include <tuple>
 
-#include "run/rtu_simulation.h"
 #include "reference/scene_manager_cycles.h"
+#include "run/rtu_simulation.h"
 #include "three_balls_scene.h"
 
 namespace rtu {
@@ -36,11 +36,11 @@ void checkEqual(const RtuRun& run, const SceneCyclesRun& reference) {
 TEST_CASE("Scene manager module equals the per-cycle reference in every cycle", "[scene][cycles]") {
   const ThreeBalls scene;
   const std::vector<RayRecord> rays = frameRays(20, 12);
-  const auto [cores, raysInFlight, jobsOutstanding, latency, cull, early] = GENERATE(
-      std::make_tuple(1, 1, 1, 0, true, true), std::make_tuple(4, 8, 8, 2, true, true),
-      std::make_tuple(4, 8, 3, 5, true, true), std::make_tuple(2, 3, 8, 1, true, true),
-      std::make_tuple(16, 32, 32, 2, true, true), std::make_tuple(4, 6, 4, 0, false, true),
-      std::make_tuple(3, 8, 8, 2, true, false));
+  const auto [cores, raysInFlight, jobsOutstanding, latency, cull, early] =
+      GENERATE(std::make_tuple(1, 1, 1, 0, true, true), std::make_tuple(4, 8, 8, 2, true, true),
+               std::make_tuple(4, 8, 3, 5, true, true), std::make_tuple(2, 3, 8, 1, true, true),
+               std::make_tuple(16, 32, 32, 2, true, true), std::make_tuple(4, 6, 4, 0, false, true),
+               std::make_tuple(3, 8, 8, 2, true, false));
   RtuConfig config;
   config.cores = cores;
   config.sceneManager.raysInFlight = raysInFlight;

@@ -10,8 +10,9 @@
 
 namespace rtu {
 
-TEST_CASE("Scene manager module: the golden scene manager's hits, jobs, culling and early terminations",
-          "[scene]") {
+TEST_CASE(
+    "Scene manager module: the golden scene manager's hits, jobs, culling and early terminations",
+    "[scene]") {
   const ThreeBalls scene;
   const std::vector<RayRecord> rays = frameRays(24, 16);
   SceneManager golden(scene.memory.memory(), GoldenConfig{}, scene.instances);
@@ -67,10 +68,12 @@ TEST_CASE("Scene manager module: more rays in flight keep more cores busy", "[sc
   RtuConfig config;
   config.cores = 8;
   config.sceneManager.raysInFlight = 1;
-  const uint64_t one = simulateScene(scene.memory.memory(), rays, scene.instances, config).totalCycles;
+  const uint64_t one =
+      simulateScene(scene.memory.memory(), rays, scene.instances, config).totalCycles;
   config.sceneManager.raysInFlight = 16;
   config.sceneManager.jobsOutstanding = 16;
-  const uint64_t many = simulateScene(scene.memory.memory(), rays, scene.instances, config).totalCycles;
+  const uint64_t many =
+      simulateScene(scene.memory.memory(), rays, scene.instances, config).totalCycles;
   CHECK(many * 3 < one);
 }
 

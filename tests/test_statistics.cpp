@@ -43,7 +43,8 @@ void writtenKeys(const Json& json, const std::string& key, const std::set<std::s
   if (json.is_array())
     for (const Json& part : json) writtenKeys(part, prefix + "*", declared, keys);
   else
-    for (const auto& [name, value] : json.items()) writtenKeys(value, prefix + name, declared, keys);
+    for (const auto& [name, value] : json.items())
+      writtenKeys(value, prefix + name, declared, keys);
 }
 
 std::set<std::string> writtenKeys(const Json& json, const std::set<std::string>& declared) {
@@ -101,9 +102,8 @@ TEST_CASE("Every key of the sample, a frame and the CSV columns is declared", "[
   const std::set<std::string> run = declaredKeys(RtuStatistics::declaration().statistics());
   for (const auto& [column, key] : statisticsColumnKeys()) {
     INFO(column);
-    const std::string statistic = key.back() == '0' || key.back() == '1'
-                                      ? key.substr(0, key.rfind('/'))
-                                      : key;
+    const std::string statistic =
+        key.back() == '0' || key.back() == '1' ? key.substr(0, key.rfind('/')) : key;
     const bool inSample = statistic.rfind("sample/", 0) == 0 && sample.count(statistic.substr(7));
     CHECK((run.count(statistic) || inSample));
   }
@@ -248,7 +248,8 @@ struct KindCounters {
   static const StatisticGroup<KindCounters>& declaration() {
     static const StatisticGroup<KindCounters> group =
         StatisticGroup<KindCounters>("a kind")
-            .count(Statistic("nodes_visited", "nodes", "nodes a core visited"), &KindCounters::nodes)
+            .count(Statistic("nodes_visited", "nodes", "nodes a core visited"),
+                   &KindCounters::nodes)
             .count(Statistic("restarts", "rays", "rays restarted").runTotal().reportedWhenNotZero(),
                    &KindCounters::restarts);
     return group;
@@ -281,7 +282,8 @@ TEST_CASE("A kind declares its own counters; they are written and combined gener
   CHECK(statisticsJson(run).dump() ==
         R"({"cores":[{"jobs":2,"nodes_visited":30},{"jobs":3,"nodes_visited":45}],"restarts":3})");
   std::vector<std::string> keys;
-  for (const Statistic& statistic : KindRun::declaration().statistics()) keys.push_back(statistic.key);
+  for (const Statistic& statistic : KindRun::declaration().statistics())
+    keys.push_back(statistic.key);
   CHECK(keys == std::vector<std::string>{"cores/*/jobs", "cores/*/nodes_visited", "restarts"});
   std::ostringstream report;
   writeReportedLines(report, run);

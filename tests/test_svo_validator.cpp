@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+
 #include <random>
 #include <string>
 #include <vector>
@@ -218,10 +219,12 @@ TEST_CASE("validator: descriptor depth of many roots in one pass", "[validator]"
   // Every word of a million-link chain is a root: a walk per root would take 5e11 steps.
   const size_t links = 1000000;
   std::vector<uint32_t> roots(links + 1);
-  for (uint32_t i = 0; i <= links; ++i) roots[i] = static_cast<uint32_t>(links - i);  // deepest last
+  for (uint32_t i = 0; i <= links; ++i)
+    roots[i] = static_cast<uint32_t>(links - i);  // deepest last
   const std::vector<int> depths = descriptorDepths(SvoImage{chain(links), 0}, roots);
   REQUIRE(depths.size() == roots.size());
-  for (size_t i = 0; i < roots.size(); ++i) REQUIRE(depths[i] == static_cast<int>(links - roots[i]));
+  for (size_t i = 0; i < roots.size(); ++i)
+    REQUIRE(depths[i] == static_cast<int>(links - roots[i]));
   CHECK_THROWS_AS(descriptorDepths(SvoImage{chain(3), 0}, {0, 9}), SvoFormatError);
 }
 
@@ -252,11 +255,9 @@ TEST_CASE("validator: far pointers written by the builder lead to the right chil
 uint32_t randomWord(std::mt19937& random, uint32_t size) {
   const auto byte = [&] { return static_cast<uint8_t>(random()); };
   switch (random() % 8) {
-    case 0:
-      return static_cast<uint32_t>(random());
+    case 0: return static_cast<uint32_t>(random());
     case 1:
-    case 2:
-      return static_cast<uint32_t>(random() % (2 * size + 1)) - size;
+    case 2: return static_cast<uint32_t>(random() % (2 * size + 1)) - size;
     default: {
       const auto valid = static_cast<uint8_t>(byte() & byte());
       const auto leaf = static_cast<uint8_t>(random() % 16 == 0 ? byte() : valid & byte());

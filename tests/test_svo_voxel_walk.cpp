@@ -1,6 +1,6 @@
-// The float64 voxel walk (src/kinds/svo/svo_voxel_walk.h), a geometric oracle that shares no traversal
-// code, on hand-built images with hand-derived answers, then against the golden model on the
-// procedural scenes (issue 26: an independent check of the traversal core's control flow).
+// The float64 voxel walk (src/kinds/svo/svo_voxel_walk.h), a geometric oracle that shares no
+// traversal code, on hand-built images with hand-derived answers, then against the golden model on
+// the procedural scenes (issue 26: an independent check of the traversal core's control flow).
 
 #include <catch2/catch.hpp>
 
@@ -20,7 +20,7 @@ namespace rtu {
 namespace {
 
 constexpr double kStep = 1.0 / 65536.0;  // Q16.16
-constexpr int kDepth = 7;                 // of the procedural scenes
+constexpr int kDepth = 7;                // of the procedural scenes
 
 // Hand-built images: index = word address.
 uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
@@ -42,8 +42,8 @@ struct Expected {
 void checkHandCase(const std::vector<uint32_t>& words, uint32_t root, glm::dvec3 origin,
                    glm::dvec3 direction, const Expected& expected) {
   const SvoMemory memory(words);
-  const double length = std::sqrt(direction.x * direction.x + direction.y * direction.y +
-                                  direction.z * direction.z);
+  const double length =
+      std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
   const VoxelWalkResult walk = walkVoxels(memory, root, origin, direction);
   INFO("origin " << origin.x << "," << origin.y << "," << origin.z << " direction " << direction.x
                  << "," << direction.y << "," << direction.z);
@@ -92,8 +92,7 @@ TEST_CASE("Voxel walk: a single voxel, hit across an empty octant or missed", "[
   checkHandCase(image, 0, {-1.5, 0.2, 0.6}, {1, 0.1, 0}, {true, 1.5, 0, 1, 1, 1, 1, 7});
   // The diagonal through the centre, a corner of all eight octants: hits at t = 2, the tie on
   // the entry face going to x.
-  const VoxelWalkResult diagonal =
-      walkVoxels(SvoMemory(image), 0, {-2, -2, -2}, {1, 1, 1});
+  const VoxelWalkResult diagonal = walkVoxels(SvoMemory(image), 0, {-2, -2, -2}, {1, 1, 1});
   CHECK(diagonal.hit);
   CHECK(diagonal.tHit == 2.0);
   CHECK(diagonal.entryAxis == 0);
@@ -126,35 +125,34 @@ TEST_CASE("Voxel walk: far pointers, also wrapping to children before their pare
   // children from the root, word 6. Words 4 and 5 are decoys (a node full of voxels) that a walk
   // misreading the far word would find.
   const uint32_t decoy = descriptor(false, 0, 0xFF, 0xFF);
-  const std::vector<uint32_t> image{0, 0, descriptor(true, 1, 0x01, 0x00), 4, decoy, decoy,
-                                    descriptor(false, 0, 0x80, 0x80)};
+  const std::vector<uint32_t> image{0,     0,     descriptor(true, 1, 0x01, 0x00), 4,
+                                    decoy, decoy, descriptor(false, 0, 0x80, 0x80)};
   checkHandCase(image, 2, {-0.25, -0.25, -5}, {0, 0, 1}, {true, 4.5, 2, 2, 1, 1, 1, 6 << 3 | 7});
   // The far word's offset is added modulo 2^32: here the children are 6 words before the root.
-  const std::vector<uint32_t> wrapped{decoy, descriptor(false, 0, 0x80, 0x80), decoy, decoy,
-                                      decoy, decoy, decoy, descriptor(true, 1, 0x01, 0x00),
-                                      0xFFFFFFFAu};
+  const std::vector<uint32_t> wrapped{
+      decoy, descriptor(false, 0, 0x80, 0x80), decoy,      decoy, decoy, decoy,
+      decoy, descriptor(true, 1, 0x01, 0x00),  0xFFFFFFFAu};
   checkHandCase(wrapped, 7, {-0.25, -0.25, -5}, {0, 0, 1}, {true, 4.5, 2, 2, 1, 1, 1, 1 << 3 | 7});
 }
 
 TEST_CASE("Voxel walk: refuses a zero direction and a cycle of child pointers", "[voxel-walk]") {
   const std::vector<uint32_t> image{descriptor(false, 0, 0x01, 0x00)};  // its child is itself
   CHECK_THROWS_AS(walkVoxels(SvoMemory(image), 0, {0, 0, -3}, {0, 0, 0}), std::invalid_argument);
-  CHECK_THROWS_AS(walkVoxels(SvoMemory(image), 0, {-1, -1, -3}, {0, 0, 1}),
-                  std::runtime_error);
+  CHECK_THROWS_AS(walkVoxels(SvoMemory(image), 0, {-1, -1, -3}, {0, 0, 1}), std::runtime_error);
 }
 
 namespace {
 
 struct Agreement {
   size_t rays = 0, oracleHits = 0, goldenHits = 0;
-  long farPointers = 0;      // far words the walks read
-  size_t agree = 0;          // both miss, or both hit the same voxel with t within tolerance
-  size_t grazing = 0;        // rays whose walk took a decision within the golden model's error
+  long farPointers = 0;  // far words the walks read
+  size_t agree = 0;      // both miss, or both hit the same voxel with t within tolerance
+  size_t grazing = 0;    // rays whose walk took a decision within the golden model's error
   size_t hitMiss = 0, otherVoxel = 0, tBeyond = 0;  // disagreements...
-  size_t explained = 0;      // ... of grazing rays, whose golden answer a ray within its error gets
-  size_t flagged = 0;        // tOverflow or belowResolution: the golden model says it is unreliable
-  double maxTError = 0.0;    // over the agreeing hits
-  std::string unexplained;   // the first few disagreements with clearance left
+  size_t explained = 0;     // ... of grazing rays, whose golden answer a ray within its error gets
+  size_t flagged = 0;       // tOverflow or belowResolution: the golden model says it is unreliable
+  double maxTError = 0.0;   // over the agreeing hits
+  std::string unexplained;  // the first few disagreements with clearance left
   // The float64 reference (the traversal core in double): disagreements with the walk, and those
   // of them on rays passing within 1e-9 in t of an edge of the grid (ties, decided by convention).
   size_t referenceDisagree = 0, referenceTies = 0;
@@ -250,8 +248,8 @@ Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays)
       tError = std::abs(format.toDouble(fixed.tHit) - walk.tHit);
       int fixedAxis = 0;
       while (fixedAxis < 2 && fixed.normal[fixedAxis] == 0) ++fixedAxis;
-      const double tolerance = std::max(options.tUncertainty[walk.entryAxis],
-                                        options.tUncertainty[fixedAxis]);
+      const double tolerance =
+          std::max(options.tUncertainty[walk.entryAxis], options.tUncertainty[fixedAxis]);
       if (tError > tolerance) {
         ++a.tBeyond;
         agrees = false;
@@ -261,7 +259,7 @@ Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays)
       ++a.agree;
       a.maxTError = std::max(a.maxTError, tError);
     } else if (grazing && reproduced(memory, root, ray, options.tUncertainty, fixed.hit, fixedVoxel,
-                                      format.toDouble(fixed.tHit))) {
+                                     format.toDouble(fixed.tHit))) {
       ++a.explained;
     } else if (a.unexplained.size() < 2000) {
       std::ostringstream text;
@@ -285,8 +283,8 @@ std::vector<Ray> eightViews() {
   std::vector<Ray> rays;
   for (int octant = 0; octant < 8; ++octant) {
     Camera camera;
-    camera.position = glm::dvec3(octant & 1 ? 1.9 : -1.9, octant & 2 ? 1.3 : -1.3,
-                                 octant & 4 ? 2.6 : -2.6);
+    camera.position =
+        glm::dvec3(octant & 1 ? 1.9 : -1.9, octant & 2 ? 1.3 : -1.3, octant & 4 ? 2.6 : -2.6);
     camera.width = 32;
     camera.height = 32;
     const std::vector<Ray> view = frameRays(camera);
@@ -305,16 +303,16 @@ TEST_CASE("Voxel walk agrees with the golden model on every procedural scene but
     farPointers += a.farPointers;
     INFO(name << " depth " << kDepth << " (" << build.stats.describe() << "), " << a.rays
               << " rays: " << a.oracleHits << " walk hits, " << a.goldenHits
-              << " golden hits; agree " << a.agree << "; disagree " << a.disagree()
-              << " (hit/miss " << a.hitMiss << ", other voxel " << a.otherVoxel << ", t "
-              << a.tBeyond << "), explained " << a.explained << "; grazing rays " << a.grazing
+              << " golden hits; agree " << a.agree << "; disagree " << a.disagree() << " (hit/miss "
+              << a.hitMiss << ", other voxel " << a.otherVoxel << ", t " << a.tBeyond
+              << "), explained " << a.explained << "; grazing rays " << a.grazing
               << "; far words read " << a.farPointers << "; max |t error| of agreeing hits "
-              << a.maxTError << "; float64 reference disagrees on " << a.referenceDisagree
-              << ", " << a.referenceTies << " of them ties\n"
+              << a.maxTError << "; float64 reference disagrees on " << a.referenceDisagree << ", "
+              << a.referenceTies << " of them ties\n"
               << a.unexplained);
     CHECK(a.flagged == 0);
-    CHECK(a.oracleHits > a.rays / 10);   // the scene fills part of the frame
-    CHECK(a.disagree() == a.explained);  // every disagreement is a grazing ray, reproduced
+    CHECK(a.oracleHits > a.rays / 10);    // the scene fills part of the frame
+    CHECK(a.disagree() == a.explained);   // every disagreement is a grazing ray, reproduced
     CHECK(a.disagree() * 200 <= a.rays);  // and they are rare: at most 0.5 %
     CHECK(a.referenceDisagree == a.referenceTies);  // float64 and the walk differ on ties only
   }

@@ -84,7 +84,7 @@ std::vector<uint32_t> popImage(bool far, uint32_t firstChild, size_t size) {
   std::vector<uint32_t> image(size, 0);
   image[0] = far ? descriptor(true, 1, 0x88, 0x00) : descriptor(false, firstChild, 0x88, 0x00);
   if (far) image[1] = firstChild;
-  image[firstChild] = descriptor(false, 0, 0x02, 0x02);  // child 3
+  image[firstChild] = descriptor(false, 0, 0x02, 0x02);      // child 3
   image[firstChild + 1] = descriptor(false, 0, 0x01, 0x01);  // child 7
   return image;
 }

@@ -8,9 +8,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "inputs/camera.h"
+#include "kinds/svo/svo_builder.h"
 #include "scene/scene_manager.h"
 #include "scene/scene_memory.h"
-#include "kinds/svo/svo_builder.h"
 
 namespace rtu {
 
@@ -60,7 +60,8 @@ inline std::vector<RayRecord> frameRays(int width, int height) {
   std::vector<RayRecord> rays;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      rays.push_back(makeRayRecord(static_cast<uint32_t>(x + y * width), camera.primaryRay(x, y), 0));
+      rays.push_back(
+          makeRayRecord(static_cast<uint32_t>(x + y * width), camera.primaryRay(x, y), 0));
   return rays;
 }
 

@@ -45,8 +45,9 @@ void run(std::vector<std::string> words) {
 std::vector<std::string> img2webp(const std::vector<std::string>& frames, double frameRate,
                                   const std::string& out) {
   const long milliseconds = std::lround(1000.0 / frameRate);
-  std::vector<std::string> words = {"img2webp", "-loop", "0", "-lossy", "-q", "85", "-d",
-                                    std::to_string(std::max(milliseconds, 1L))};
+  std::vector<std::string> words = {
+      "img2webp", "-loop", "0",  "-lossy",
+      "-q",       "85",    "-d", std::to_string(std::max(milliseconds, 1L))};
   words.insert(words.end(), frames.begin(), frames.end());
   words.insert(words.end(), {"-o", out});
   return words;
@@ -58,8 +59,9 @@ std::vector<std::string> ffmpeg(const std::vector<std::string>& frames, double f
                                 const std::string& out) {
   const std::string& first = frames.front();
   const std::string pattern = first.substr(0, first.size() - 8) + "%04d.png";
-  return {"ffmpeg", "-y", "-loglevel", "error", "-framerate", std::to_string(frameRate), "-i",
-          pattern, "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", out};
+  return {"ffmpeg", "-y",    "-loglevel", "error",   "-framerate", std::to_string(frameRate),
+          "-i",     pattern, "-pix_fmt",  "yuv420p", "-vf",        "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+          out};
 }
 
 }  // namespace

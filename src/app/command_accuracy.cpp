@@ -1,16 +1,17 @@
 #include <iostream>
 #include <memory>
 
-#include "kinds/svo/accuracy.h"
 #include "app/commands.h"
 #include "app/config_options.h"
+#include "kinds/svo/accuracy.h"
 
 namespace rtu {
 
 namespace {
 
 // How many of the frame's t-values the two float-to-fixed conversions turn into different numbers.
-size_t countConversionDifferences(const std::vector<TraversalJob>& jobs, const FixedFormat& format) {
+size_t countConversionDifferences(const std::vector<TraversalJob>& jobs,
+                                  const FixedFormat& format) {
   size_t differences = 0;
   for (const TraversalJob& job : jobs)
     for (const auto* bits : {&job.t0Bits, &job.t1Bits})
@@ -28,9 +29,8 @@ void addAccuracyCommand(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "accuracy",
-      "compare the fixed-point golden model with the float64 reference, and the RTL "
-      "float-to-fixed conversion with the exact one, on one frame");
+      "accuracy", "compare the fixed-point golden model with the float64 reference, and the RTL "
+                  "float-to-fixed conversion with the exact one, on one frame");
   auto request = addConfigOptions(*command, kUseArithmetic | kUseScene | kUseCamera);
   command->add_option("--tolerance", options->tolerance, "largest t difference that agrees")
       ->capture_default_str();
@@ -43,11 +43,11 @@ void addAccuracyCommand(CLI::App& app) {
     const Scene scene = loadScene(frame.scene);
     const SvoMemory memory = scene.image.memory();
     const std::vector<Ray> rays = frameRays(frame.camera);
-    const AccuracyReport report = measureAccuracy(memory, scene.image.root, rays, golden,
-                                                  frame.epsilon, options->tolerance);
+    const AccuracyReport report =
+        measureAccuracy(memory, scene.image.root, rays, golden, frame.epsilon, options->tolerance);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "golden      " << golden.format.describe() << ", "
-              << toString(golden.conversion) << " conversion vs float64 reference\n"
+              << "golden      " << golden.format.describe() << ", " << toString(golden.conversion)
+              << " conversion vs float64 reference\n"
               << report.describe();
 
     const std::vector<TraversalJob> jobs =
@@ -58,9 +58,9 @@ void addAccuracyCommand(CLI::App& app) {
     exact.conversion = FloatConversion::Exact;
     const size_t resultDifferences = countDifferences(GoldenModel(memory, rtl).traceAll(jobs),
                                                       GoldenModel(memory, exact).traceAll(jobs));
-    std::cout << "rtl/exact   " << countConversionDifferences(jobs, golden.format)
-              << " of " << jobs.size() * 6 << " t-values convert differently; "
-              << resultDifferences << " of " << jobs.size() << " results differ\n";
+    std::cout << "rtl/exact   " << countConversionDifferences(jobs, golden.format) << " of "
+              << jobs.size() * 6 << " t-values convert differently; " << resultDifferences << " of "
+              << jobs.size() << " results differ\n";
   });
 }
 

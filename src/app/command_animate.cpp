@@ -8,19 +8,19 @@
 #include <thread>
 
 #include "app/animated_image.h"
-#include "explore/animation_run.h"
-#include "explore/animation_workers.h"
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "explore/exploration_run.h"
 #include "app/frame_images.h"
-#include "run/lt_simulation.h"
-#include "run/statistics_output.h"
-#include "scene/model_cache.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/scene_shading.h"
+#include "explore/animation_run.h"
+#include "explore/animation_workers.h"
+#include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
+#include "run/lt_simulation.h"
+#include "run/statistics_output.h"
+#include "scene/model_cache.h"
 
 namespace rtu {
 namespace {
@@ -73,8 +73,7 @@ std::vector<SceneModel> loadModels(const SceneDescription& scene, const std::str
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const SceneModel& model = models.back();
     std::printf("model       %s: %s, %s in %.2f s\n", model.name.c_str(),
-                model.scene.summary.c_str(), model.fromCache ? "from the cache" : "built",
-                seconds);
+                model.scene.summary.c_str(), model.fromCache ? "from the cache" : "built", seconds);
   }
   return models;
 }
@@ -99,8 +98,8 @@ void printSummary(const std::vector<FrameStatistics>& frames, double clockMhz,
               traced ? static_cast<double>(jobs) / traced : 0.0,
               traced ? static_cast<double>(culled) / traced : 0.0,
               traced ? 100.0 * early / traced : 0.0);
-  std::printf("host        %.2f s in %d worker%s, %.2f s per frame (%s model)\n", seconds,
-              workers, workers == 1 ? "" : "s", host / frames.size(), model.c_str());
+  std::printf("host        %.2f s in %d worker%s, %.2f s per frame (%s model)\n", seconds, workers,
+              workers == 1 ? "" : "s", host / frames.size(), model.c_str());
 }
 
 void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
@@ -130,12 +129,17 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   std::printf("scene       %s: %zu models, %zu instances, %d frames of %dx%d at %.3g frames/s\n",
               scene.path.c_str(), scene.models.size(), scene.instances.size(), scene.frames,
               scene.width, scene.height, scene.frameRate);
-  const std::vector<SceneModel> models = loadModels(
-      scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
+  const std::vector<SceneModel> models =
+      loadModels(scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
 
-  AnimationOptions run{rtu.golden(), {!options.traceAll, !options.traceAll}, !options.noHitBuffer,
-                       options.threads, rtu.cores, rtu.clockMhz,
-                       parseModelKind(options.model), options.model == "golden" ? nullptr : &rtu};
+  AnimationOptions run{rtu.golden(),
+                       {!options.traceAll, !options.traceAll},
+                       !options.noHitBuffer,
+                       options.threads,
+                       rtu.cores,
+                       rtu.clockMhz,
+                       parseModelKind(options.model),
+                       options.model == "golden" ? nullptr : &rtu};
   std::ofstream csv(options.csvPath());
   csv << csvLine(statisticsHeader<FrameStatistics>()) << std::flush;
   std::vector<FrameStatistics> statistics;
@@ -146,19 +150,18 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   };
   const int workers = std::min(options.workerCount(), scene.frames);
   const auto start = std::chrono::steady_clock::now();
-  renderFramesInWorkers(scene, models, run, workers, writeFrame,
-                        [&](const FrameStatistics& frame) {
-                          framePaths.push_back(options.framePath(frame.frame));
-                          statistics.push_back(frame);
-                          csv << csvLine(statisticsFields(frame, "%.6g")) << std::flush;
-                        });
+  renderFramesInWorkers(scene, models, run, workers, writeFrame, [&](const FrameStatistics& frame) {
+    framePaths.push_back(options.framePath(frame.frame));
+    statistics.push_back(frame);
+    csv << csvLine(statisticsFields(frame, "%.6g")) << std::flush;
+  });
   if (!csv) throw std::runtime_error("cannot write " + options.csvPath());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   printSummary(statistics, rtu.clockMhz, options.model, seconds, workers);
   std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
-            << framePaths.back().substr(options.outDir.size() + 1) << ", "
-            << options.csvPath() << "\n";
+            << framePaths.back().substr(options.outDir.size() + 1) << ", " << options.csvPath()
+            << "\n";
   writeExtras(options, scene, framePaths);
 }
 
@@ -173,7 +176,8 @@ void addAnimateCommand(CLI::App& app) {
   command->add_option("--scene-file", options->sceneFile, "scene description (TOML)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--frames", options->overrides.frames, "frames to render (default: the file's)")
+  command
+      ->add_option("--frames", options->overrides.frames, "frames to render (default: the file's)")
       ->check(CLI::Range(1, 100000));
   command->add_option("--width", options->overrides.width, "image width (default: the file's)")
       ->check(CLI::Range(1, 1 << 14));
@@ -182,10 +186,11 @@ void addAnimateCommand(CLI::App& app) {
   command->add_option("--out-dir", options->outDir, "directory for frames, CSV, plot, animation")
       ->capture_default_str();
   command->add_option("--csv", options->csv, "per-frame statistics (default: OUT-DIR/frames.csv)");
-  command->add_option("--model", options->model,
-                      "golden (untimed; cycles from its costs and the RTU recurrence), ca "
-                      "(cycle-accurate: the SystemC scene manager and RTU) or lt (the golden scene "
-                      "manager's jobs through the loosely-timed RTU)")
+  command
+      ->add_option("--model", options->model,
+                   "golden (untimed; cycles from its costs and the RTU recurrence), ca "
+                   "(cycle-accurate: the SystemC scene manager and RTU) or lt (the golden scene "
+                   "manager's jobs through the loosely-timed RTU)")
       ->capture_default_str()
       ->check(CLI::IsMember({"golden", "ca", "lt"}));
   command->add_option("--cache-dir", options->cacheDir,
@@ -193,9 +198,10 @@ void addAnimateCommand(CLI::App& app) {
   command->add_option("--threads", options->threads, "threads tracing each frame's rays")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  command->add_option("-j,--jobs", options->jobs,
-                      "worker processes rendering ranges of frames (default: all cores with "
-                      "--model ca, 1 with golden)")
+  command
+      ->add_option("-j,--jobs", options->jobs,
+                   "worker processes rendering ranges of frames (default: all cores with "
+                   "--model ca, 1 with golden)")
       ->check(CLI::Range(1, 256));
   command->add_flag("--no-hit-buffer", options->noHitBuffer, "trace every pixel of every frame");
   command->add_flag("--trace-all", options->traceAll,

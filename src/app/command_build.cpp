@@ -37,7 +37,8 @@ void addBuildCommand(CLI::App& app) {
     }
     writeSvoFile(options->out, scene.image);
     std::cout << scene.name << ": " << scene.summary << ", root at word " << scene.image.root
-              << "\n" << headerReport << "wrote " << options->out << "\n";
+              << "\n"
+              << headerReport << "wrote " << options->out << "\n";
   });
 }
 

@@ -8,13 +8,14 @@
 namespace rtu {
 namespace {
 
-constexpr unsigned kAllUses = kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseBuffers |
-                           kUseSampling;
+constexpr unsigned kAllUses = kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
+                              kUseCamera | kUseBuffers | kUseSampling;
 
 void listSettings(std::ostream& out) {
   const RunConfig defaults;
   out << std::left << std::setw(28) << "key" << std::setw(28) << "flag" << std::setw(12)
-      << "default" << std::setw(22) << "range" << "unit: doc\n";
+      << "default" << std::setw(22) << "range"
+      << "unit: doc\n";
   for (const Setting& s : configSchema()) {
     const std::string value = s.get(defaults);
     out << std::setw(28) << s.key << std::setw(28) << (s.flag.empty() ? "-" : s.flag)
@@ -42,8 +43,10 @@ void addConfigCommand(CLI::App& app) {
     if (options->list == options->dump) throw std::invalid_argument("give --list or --dump");
     if (options->list) return listSettings(std::cout);
     const Configuration configuration = request->resolve();
-    if (options->json) std::cout << configuration.toJson().dump(2) << "\n";
-    else std::cout << configuration.toToml();
+    if (options->json)
+      std::cout << configuration.toJson().dump(2) << "\n";
+    else
+      std::cout << configuration.toToml();
   });
 }
 

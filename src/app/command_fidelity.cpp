@@ -9,12 +9,12 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "explore/exploration_run.h"
-#include "run/fidelity_study.h"
-#include "run/lt_simulation.h"
 #include "app/output_paths.h"
+#include "explore/exploration_run.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/stack_check.h"
+#include "run/fidelity_study.h"
+#include "run/lt_simulation.h"
 
 namespace rtu {
 namespace {
@@ -42,18 +42,18 @@ void printTable(const std::vector<ModeFidelity>& modes, std::ostream& out) {
                 "%", "pts", "= golden");
   out << line;
   for (const ModeFidelity& m : modes) {
-    const std::string interval =
-        m.totalCyclesInterval ? text(m.totalCyclesInterval->low, "[%.0f, ") +
-                                    text(m.totalCyclesInterval->high, "%.0f]")
-                              : "-";
-    std::snprintf(line, sizeof line,
-                  "%-14s %8.3f %11.4g %7.1fx %12s %8s %25s %9s %9s %7s %7s %7s %7s %8s\n",
-                  m.mode.c_str(), m.hostSeconds, m.raysPerHostSecond, m.speedUp,
-                  text(m.totalCycles, "%.0f").c_str(), text(m.totalCyclesError, "%+.3f", 100).c_str(),
-                  interval.c_str(), text(m.perRayErrorMean, "%.3f", 100).c_str(),
-                  text(m.perRayErrorP99, "%.2f", 100).c_str(), text(m.l1HitRate, "%.2f", 100).c_str(),
-                  text(m.l1Error, "%+.3f").c_str(), text(m.l2HitRate, "%.2f", 100).c_str(),
-                  text(m.l2Error, "%+.3f").c_str(), yesNo(m.resultsEqualGolden).c_str());
+    const std::string interval = m.totalCyclesInterval
+                                     ? text(m.totalCyclesInterval->low, "[%.0f, ") +
+                                           text(m.totalCyclesInterval->high, "%.0f]")
+                                     : "-";
+    std::snprintf(
+        line, sizeof line, "%-14s %8.3f %11.4g %7.1fx %12s %8s %25s %9s %9s %7s %7s %7s %7s %8s\n",
+        m.mode.c_str(), m.hostSeconds, m.raysPerHostSecond, m.speedUp,
+        text(m.totalCycles, "%.0f").c_str(), text(m.totalCyclesError, "%+.3f", 100).c_str(),
+        interval.c_str(), text(m.perRayErrorMean, "%.3f", 100).c_str(),
+        text(m.perRayErrorP99, "%.2f", 100).c_str(), text(m.l1HitRate, "%.2f", 100).c_str(),
+        text(m.l1Error, "%+.3f").c_str(), text(m.l2HitRate, "%.2f", 100).c_str(),
+        text(m.l2Error, "%+.3f").c_str(), yesNo(m.resultsEqualGolden).c_str());
     out << line;
   }
 }
@@ -93,16 +93,16 @@ void addFidelityCommand(CLI::App& app) {
       "one frame answered by every mode (SystemC, recurrence, loosely-timed, sampled, golden), "
       "each measured "
       "against the cycle-accurate SystemC model: speed and error");
-  auto request = addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera |
-                                                kUseSampling,
-                                  {"--sample"});
+  auto request = addConfigOptions(
+      *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling, {"--sample"});
   // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
   request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
   command->add_option("--fractions", options->fractions, "sampled fractions to measure")
       ->delimiter(',')
       ->capture_default_str();
-  command->add_option("--quanta", options->quanta,
-                      "global quanta (cycles) of the loosely-timed model to measure")
+  command
+      ->add_option("--quanta", options->quanta,
+                   "global quanta (cycles) of the loosely-timed model to measure")
       ->delimiter(',')
       ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
       ->capture_default_str();
@@ -114,7 +114,8 @@ void addFidelityCommand(CLI::App& app) {
     validate(settings.rtu);
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(settings));
     const Scene scene = loadScene(settings.scene);
-    const std::vector<TraversalJob> jobs = makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
+    const std::vector<TraversalJob> jobs =
+        makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
     if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
       throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);

@@ -8,8 +8,8 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "explore/exploration_run.h"
 #include "app/output_paths.h"
+#include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 
 namespace rtu {
@@ -35,8 +35,8 @@ Resolution parseResolution(const std::string& text) {
 
 void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& out) {
   out << std::left << std::setw(11) << "resolution" << std::right << std::setw(6) << "cores"
-      << std::setw(10) << "rays" << std::setw(14) << "total cycles" << std::setw(11)
-      << "cycles/ray" << std::setw(11) << "frame ms" << std::setw(10) << "fps"
+      << std::setw(10) << "rays" << std::setw(14) << "total cycles" << std::setw(11) << "cycles/ray"
+      << std::setw(11) << "frame ms" << std::setw(10) << "fps"
       << "  limit\n";
   for (const nlohmann::ordered_json& row : rows) {
     const auto& config = row["config"];
@@ -50,10 +50,9 @@ void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& o
     }
     const auto& s = row["statistics"];
     out << std::setw(10) << s["rays"].get<uint64_t>() << std::setw(14)
-        << s["total_cycles"].get<uint64_t>() << std::fixed << std::setprecision(2)
-        << std::setw(11) << s["cycles_per_ray"].get<double>() << std::setw(11)
-        << s["frame_ms"].get<double>() << std::setw(10) << s["fps"].get<double>() << "  "
-        << s["limit"].get<std::string>() << "\n";
+        << s["total_cycles"].get<uint64_t>() << std::fixed << std::setprecision(2) << std::setw(11)
+        << s["cycles_per_ray"].get<double>() << std::setw(11) << s["frame_ms"].get<double>()
+        << std::setw(10) << s["fps"].get<double>() << "  " << s["limit"].get<std::string>() << "\n";
   }
 }
 
@@ -66,12 +65,14 @@ void printMatrix(const std::vector<nlohmann::ordered_json>& rows, const std::vec
   for (size_t first = 0; first < rows.size(); first += cores.size()) {
     const auto& config = rows[first]["config"];
     out << std::left << std::setw(11)
-        << (std::to_string(config["width"].get<int>()) + "x" + std::to_string(config["height"].get<int>()));
+        << (std::to_string(config["width"].get<int>()) + "x" +
+            std::to_string(config["height"].get<int>()));
     for (size_t i = first; i < first + cores.size(); ++i) {
       std::ostringstream cell;
       if (rows[i]["status"] == "ok")
-        cell << std::fixed << std::setprecision(2) << rows[i]["statistics"]["frame_ms"].get<double>()
-             << " (" << std::setprecision(1) << rows[i]["statistics"]["fps"].get<double>() << ")";
+        cell << std::fixed << std::setprecision(2)
+             << rows[i]["statistics"]["frame_ms"].get<double>() << " (" << std::setprecision(1)
+             << rows[i]["statistics"]["fps"].get<double>() << ")";
       else
         cell << "failed";
       out << std::right << std::setw(18) << cell.str();
@@ -101,11 +102,14 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
 std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
   std::set<std::string> models;
   for (const nlohmann::ordered_json& row : rows)
-    if (row["status"] == "ok") models.insert(row["statistics"]["simulation"]["model"].get<std::string>());
+    if (row["status"] == "ok")
+      models.insert(row["statistics"]["simulation"]["model"].get<std::string>());
   std::vector<std::string> parts;
-  if (models.count("recurrence")) parts.push_back("the exact recurrence where it applies (--simulate: SystemC)");
+  if (models.count("recurrence"))
+    parts.push_back("the exact recurrence where it applies (--simulate: SystemC)");
   if (models.count("systemc")) parts.push_back("SystemC simulation");
-  if (models.count("sampled")) parts.push_back("sampled SystemC simulation (estimates, 95 % intervals in the CSV)");
+  if (models.count("sampled"))
+    parts.push_back("sampled SystemC simulation (estimates, 95 % intervals in the CSV)");
   if (models.count("lt")) parts.push_back("the loosely-timed model (estimates, docs/fidelity.md)");
   if (models.count("golden")) parts.push_back("golden costs in the recurrence (memory as ideal)");
   std::string text = "answered by ";
@@ -136,7 +140,9 @@ void addFpsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fps", "frame rate per resolution and core count on the cycle-accurate model: a table in "
              "the form of thesis Tables 8.4 and 8.5");
-  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseSampling,
+  auto request = addConfigOptions(*command,
+                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
+                                      kUseCamera | kUseSampling,
                                   {"--cores", "--width", "--height"});
   command->add_option("--resolutions", options->resolutions, "WIDTHxHEIGHT list")
       ->delimiter(',')
@@ -148,8 +154,8 @@ void addFpsCommand(CLI::App& app) {
                       "write the rows: width,height,cores,rays,total_cycles,cycles_per_ray,"
                       "frame_ms,fps,limit, then more statistics");
   command->add_flag("--simulate", options->simulate,
-                     "run the SystemC model even where the recurrence gives the same answer "
-                     "(ideal memory, no reorder buffer, steady host links)");
+                    "run the SystemC model even where the recurrence gives the same answer "
+                    "(ideal memory, no reorder buffer, steady host links)");
   command->add_option("-j,--jobs", options->jobs, "rows run in parallel (default: all cores)")
       ->check(CLI::Range(1, 1024));
   command->callback([options, request] {
@@ -170,17 +176,18 @@ void addFpsCommand(CLI::App& app) {
     std::vector<size_t> all(configurations.size());
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     std::vector<nlohmann::ordered_json> rows(configurations.size());
-    const size_t failures = runRows(configurations, all, options->jobs, "fps",
-                                    [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; },
-                                    options->simulate ? RowModel::Simulation
-                                                      : RowModel::RecurrenceWhereExact);
+    const size_t failures = runRows(
+        configurations, all, options->jobs, "fps",
+        [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; },
+        options->simulate ? RowModel::Simulation : RowModel::RecurrenceWhereExact);
     const RunConfig& settings = base.values();
-    std::cout << "scene " << (settings.scene.svoFile.empty() && settings.scene.meshFile.empty() &&
-                                      settings.scene.binvoxFile.empty()
-                                  ? settings.scene.procedural + " (depth " +
-                                        std::to_string(settings.scene.depth) + ")"
-                                  : settings.scene.svoFile + settings.scene.meshFile +
-                                        settings.scene.binvoxFile)
+    std::cout << "scene "
+              << (settings.scene.svoFile.empty() && settings.scene.meshFile.empty() &&
+                          settings.scene.binvoxFile.empty()
+                      ? settings.scene.procedural + " (depth " +
+                            std::to_string(settings.scene.depth) + ")"
+                      : settings.scene.svoFile + settings.scene.meshFile +
+                            settings.scene.binvoxFile)
               << ", " << toString(settings.rtu.scheduler) << ", "
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory, "
               << settings.rtu.clockMhz << " MHz, " << answeredBy(rows) << "\n";
@@ -191,8 +198,8 @@ void addFpsCommand(CLI::App& app) {
       std::cout << "wrote " << options->csv << "\n";
     }
     if (failures > 0)
-      throw std::runtime_error(std::to_string(failures) + " rows failed, the first: " +
-                               firstError(rows));
+      throw std::runtime_error(std::to_string(failures) +
+                               " rows failed, the first: " + firstError(rows));
   });
 }
 

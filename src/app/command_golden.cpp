@@ -4,11 +4,11 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "kinds/svo/golden_model.h"
-#include "inputs/host_buffers.h"
 #include "app/host_inputs.h"
-#include "kinds/svo/result_summary.h"
 #include "app/output_paths.h"
+#include "inputs/host_buffers.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/result_summary.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
@@ -20,7 +20,7 @@ void addGoldenCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
       "golden", "replay a host input buffer (job or ray records) through the untimed bit-exact "
-      "golden model");
+                "golden model");
   auto request = addConfigOptions(*command, kUseArithmetic | kUseBuffers);
   command->add_option("--out", options->out, "host output buffer to write")->required();
   command->callback([options, request] {
@@ -35,7 +35,8 @@ void addGoldenCommand(CLI::App& app) {
     const std::vector<TraversalJob> jobs =
         settings.rays.empty()
             ? readJobBufferSkipping(settings.jobs, skipped)
-            : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped), settings.rays,
+            : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped),
+                                 settings.rays,
                                  static_cast<float>(settings.rtu.jobManager.epsilon));
     warnSkippedRecords(settings.rays.empty() ? "job buffer" : "ray buffer",
                        settings.rays.empty() ? settings.jobs : settings.rays, skipped, std::cout);

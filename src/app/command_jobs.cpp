@@ -11,8 +11,8 @@ namespace rtu {
 namespace {
 
 void reportWritten(size_t records, const std::string& kind, const std::string& path) {
-  std::cout << "wrote " << records << " " << kind << " (" << records * kRecordBytes
-            << " bytes) to " << path << "\n";
+  std::cout << "wrote " << records << " " << kind << " (" << records * kRecordBytes << " bytes) to "
+            << path << "\n";
 }
 
 }  // namespace
@@ -37,8 +37,8 @@ void addJobsCommand(CLI::App& app) {
       command->add_option("--rays", options->rays, "output ray buffer (world-space ray records)");
   CLI::Option* modelAddress = command->add_option(
       "--model-address", options->modelAddress,
-      "word address of the model header written into each ray record (see build --model-header)")
-      ->check(kNotNegative);
+      "word address of the model header written into each ray record (see build --model-header)");
+  modelAddress->check(kNotNegative);
   rays->needs(modelAddress);
   modelAddress->needs(rays);
   command->callback([options, request, out, rays] {
@@ -54,8 +54,7 @@ void addJobsCommand(CLI::App& app) {
       reportWritten(jobs.size(), "jobs", options->out);
     }
     if (*rays) {
-      const std::vector<RayRecord> records =
-          makeFrameRayRecords(camera, options->modelAddress);
+      const std::vector<RayRecord> records = makeFrameRayRecords(camera, options->modelAddress);
       writeRayBuffer(options->rays, records);
       reportWritten(records.size(), "ray records", options->rays);
     }

@@ -8,8 +8,8 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "explore/exploration_run.h"
 #include "app/frame_images.h"
+#include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
 
 namespace rtu {
@@ -23,21 +23,23 @@ std::string number(double value) {
 
 void printTable(const std::vector<FormatPrecision>& results, std::ostream& out) {
   char line[256];
-  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n", "format",
-                "false hit", "missed hit", "hit/miss", "voxel", "t mean", "t p99", "t max", "cost",
-                "cost", "t range", "< step");
+  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n",
+                "format", "false hit", "missed hit", "hit/miss", "voxel", "t mean", "t p99",
+                "t max", "cost", "cost", "t range", "< step");
   out << line;
-  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n", "", "%", "%",
-                "%", "%", "steps", "steps", "steps", "/ray", "change", "%", "%");
+  std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n", "",
+                "%", "%", "%", "%", "steps", "steps", "steps", "/ray", "change", "%", "%");
   out << line;
   for (const FormatPrecision& p : results) {
     const double rays = static_cast<double>(p.rays ? p.rays : 1);
-    std::snprintf(line, sizeof line, "%-16s %10.4f %10.4f %10.4f %10.4f %9.3g %9.3g %11.4g %9.2f %+7.2f%% %9.4f %9.4f\n",
-                  p.format.describe().c_str(), 100 * p.falseHitRate(), 100 * p.missedHitRate(),
-                  100 * p.wrongHitMissRate(), 100 * p.differentVoxelRate(), p.tErrorMeanSteps,
-                  p.tErrorP99Steps, p.tErrorMaxSteps, p.meanCost, 100 * p.costChange(),
-                  100.0 * static_cast<double>(p.tOverflowRays) / rays,
-                  100.0 * static_cast<double>(p.belowResolutionRays) / rays);
+    std::snprintf(
+        line, sizeof line,
+        "%-16s %10.4f %10.4f %10.4f %10.4f %9.3g %9.3g %11.4g %9.2f %+7.2f%% %9.4f %9.4f\n",
+        p.format.describe().c_str(), 100 * p.falseHitRate(), 100 * p.missedHitRate(),
+        100 * p.wrongHitMissRate(), 100 * p.differentVoxelRate(), p.tErrorMeanSteps,
+        p.tErrorP99Steps, p.tErrorMaxSteps, p.meanCost, 100 * p.costChange(),
+        100.0 * static_cast<double>(p.tOverflowRays) / rays,
+        100.0 * static_cast<double>(p.belowResolutionRays) / rays);
     out << line;
   }
 }
@@ -45,24 +47,57 @@ void printTable(const std::vector<FormatPrecision>& results, std::ostream& out) 
 void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& frame,
               const std::string& sceneName, const std::string& path) {
   std::ofstream file(path);
-  file << csvLine({"scene", "width", "height", "total_bits", "fraction_bits", "conversion", "rays",
-                   "reference_hits", "false_hits", "missed_hits", "different_voxels",
-                   "false_hit_rate", "missed_hit_rate", "wrong_hit_miss_rate", "different_voxel_rate",
-                   "t_error_mean_steps", "t_error_p99_steps", "t_error_max_steps", "mean_cost",
-                   "reference_mean_cost", "cost_change", "stack_overflows", "t_overflows",
-                   "wrong_unflagged", "below_resolution"});
+  file << csvLine({"scene",
+                   "width",
+                   "height",
+                   "total_bits",
+                   "fraction_bits",
+                   "conversion",
+                   "rays",
+                   "reference_hits",
+                   "false_hits",
+                   "missed_hits",
+                   "different_voxels",
+                   "false_hit_rate",
+                   "missed_hit_rate",
+                   "wrong_hit_miss_rate",
+                   "different_voxel_rate",
+                   "t_error_mean_steps",
+                   "t_error_p99_steps",
+                   "t_error_max_steps",
+                   "mean_cost",
+                   "reference_mean_cost",
+                   "cost_change",
+                   "stack_overflows",
+                   "t_overflows",
+                   "wrong_unflagged",
+                   "below_resolution"});
   for (const FormatPrecision& p : results)
-    file << csvLine({sceneName, std::to_string(frame.camera.width), std::to_string(frame.camera.height),
-                     std::to_string(p.format.totalBits), std::to_string(p.format.fractionBits),
-                     toString(frame.golden().conversion), std::to_string(p.rays),
-                     std::to_string(p.referenceHits), std::to_string(p.falseHits),
-                     std::to_string(p.missedHits), std::to_string(p.differentVoxels),
-                     number(p.falseHitRate()), number(p.missedHitRate()), number(p.wrongHitMissRate()),
-                     number(p.differentVoxelRate()), number(p.tErrorMeanSteps),
-                     number(p.tErrorP99Steps), number(p.tErrorMaxSteps), number(p.meanCost),
-                     number(p.referenceMeanCost), number(p.costChange()),
-                     std::to_string(p.overflowRays), std::to_string(p.tOverflowRays),
-                     std::to_string(p.wrongUnflagged), std::to_string(p.belowResolutionRays)});
+    file << csvLine({sceneName,
+                     std::to_string(frame.camera.width),
+                     std::to_string(frame.camera.height),
+                     std::to_string(p.format.totalBits),
+                     std::to_string(p.format.fractionBits),
+                     toString(frame.golden().conversion),
+                     std::to_string(p.rays),
+                     std::to_string(p.referenceHits),
+                     std::to_string(p.falseHits),
+                     std::to_string(p.missedHits),
+                     std::to_string(p.differentVoxels),
+                     number(p.falseHitRate()),
+                     number(p.missedHitRate()),
+                     number(p.wrongHitMissRate()),
+                     number(p.differentVoxelRate()),
+                     number(p.tErrorMeanSteps),
+                     number(p.tErrorP99Steps),
+                     number(p.tErrorMaxSteps),
+                     number(p.meanCost),
+                     number(p.referenceMeanCost),
+                     number(p.costChange()),
+                     std::to_string(p.overflowRays),
+                     std::to_string(p.tOverflowRays),
+                     std::to_string(p.wrongUnflagged),
+                     std::to_string(p.belowResolutionRays)});
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
@@ -84,8 +119,9 @@ void addPrecisionCommand(CLI::App& app) {
   auto request = addConfigOptions(*command, kUseArithmetic | kUseScene | kUseCamera,
                                   {"--total-bits", "--fraction-bits", "--stack-frames",
                                    "--allow-stack-overflow"});
-  command->add_option("--formats", options->formats,
-                      "formats as TOTAL.FRACTION bits (32.16) or QI.F (Q16.16)")
+  command
+      ->add_option("--formats", options->formats,
+                   "formats as TOTAL.FRACTION bits (32.16) or QI.F (Q16.16)")
       ->delimiter(',')
       ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per format");
@@ -104,7 +140,8 @@ void addPrecisionCommand(CLI::App& app) {
     study.root = scene.image.root;
     study.conversion = frame.golden().conversion;
     study.epsilon = frame.epsilon;
-    const std::vector<FormatPrecision> results = measurePrecision(scene.image.memory(), study, formats);
+    const std::vector<FormatPrecision> results =
+        measurePrecision(scene.image.memory(), study, formats);
     std::cout << "scene " << scene.name << ", " << frame.camera.width << "x" << frame.camera.height
               << ", " << toString(study.conversion) << " conversion; against float64 ("
               << results.front().referenceHits << " hits of " << study.rays.size() << " rays)\n";

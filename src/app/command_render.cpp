@@ -6,14 +6,14 @@
 #include "app/commands.h"
 #include "app/config_options.h"
 #include "app/frame_images.h"
-#include "kinds/svo/golden_model.h"
-#include "run/model_run.h"
 #include "app/output_paths.h"
-#include "kinds/svo/result_summary.h"
 #include "app/rtu_options.h"
-#include "run/rtu_simulation.h"
-#include "kinds/svo/stack_check.h"
 #include "explore/sweep_workers.h"
+#include "kinds/svo/golden_model.h"
+#include "kinds/svo/result_summary.h"
+#include "kinds/svo/stack_check.h"
+#include "run/model_run.h"
+#include "run/rtu_simulation.h"
 
 namespace rtu {
 namespace {
@@ -45,8 +45,9 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
   const ModelKind model = configuration.values().model;
   if (model == ModelKind::Golden) {
     if (options.outputs.any())
-      throw std::invalid_argument("--stats, --trace and --timeline need --model ca or lt: the golden "
-                                  "model is untimed");
+      throw std::invalid_argument(
+          "--stats, --trace and --timeline need --model ca or lt: the golden "
+          "model is untimed");
     configuration.checkApplicable(request.uses & ~kUseModel, "render --model golden");
   }
   checkOutputsOfModel(options.outputs, model);
@@ -68,9 +69,9 @@ std::vector<TraversalResult> traceWithGolden(const Scene& scene,
 }
 
 std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
-                                              const std::vector<TraversalJob>& jobs,
-                                              const Configuration& configuration,
-                                              const RenderOptions& options) {
+                                                 const std::vector<TraversalJob>& jobs,
+                                                 const Configuration& configuration,
+                                                 const RenderOptions& options) {
   const RtuConfig config = options.outputs.traced(configuration.values().rtu);
   checkStackDepth(scene.image, jobs, config.stackFrames, configuration.values().allowStackOverflow);
   const std::vector<HostRecord> records(jobs.begin(), jobs.end());
@@ -121,14 +122,15 @@ void addRenderCommand(CLI::App& app) {
     const std::vector<TraversalJob> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "model       " << toString(settings.model) << ", " << golden.format.describe() << ", "
-              << toString(golden.conversion) << " conversion, " << golden.stackFrames
+              << "model       " << toString(settings.model) << ", " << golden.format.describe()
+              << ", " << toString(golden.conversion) << " conversion, " << golden.stackFrames
               << " stack frames\n"
               << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
     const std::vector<TraversalResult> results =
         untimed ? traceWithGolden(scene, jobs, configuration)
                 : traceWithTimedModel(scene, jobs, configuration, *options);
-    const RenderedFrame rendered = RenderedFrame::fromResults(settings.camera, golden.format, results);
+    const RenderedFrame rendered =
+        RenderedFrame::fromResults(settings.camera, golden.format, results);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
     if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);

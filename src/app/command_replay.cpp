@@ -3,14 +3,14 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "inputs/host_buffers.h"
 #include "app/host_inputs.h"
-#include "kinds/svo/result_summary.h"
 #include "app/output_paths.h"
 #include "app/rtu_options.h"
-#include "run/rtu_simulation.h"
 #include "explore/sweep_workers.h"
+#include "inputs/host_buffers.h"
+#include "kinds/svo/result_summary.h"
 #include "kinds/svo/svo_image.h"
+#include "run/rtu_simulation.h"
 
 namespace rtu {
 
@@ -23,7 +23,8 @@ void addReplayCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "replay", "replay a host input buffer through the cycle-accurate SystemC model of the RTU "
                 "(or the loosely-timed or golden model: --model)");
-  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseBuffers);
+  auto request =
+      addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseBuffers);
   command->add_option("--out", options->out, "host output buffer to write, in arrival order")
       ->required();
   addRunOutputOptions(*command, options->outputs);
@@ -58,7 +59,8 @@ void addReplayCommand(CLI::App& app) {
     const RtuConfig planned =
         plannedTrace(image.memory(), records, config, options->outputs, std::cout);
     RunProgressLine progress("replay", "rays");
-    const RtuRun run = runModel(settings.model, image.memory(), records, planned, progress.callback());
+    const RtuRun run =
+        runModel(settings.model, image.memory(), records, planned, progress.callback());
     writeResultBuffer(options->out, run.results, recordWords);
     std::cout << ResultSummary::of(run.results).describe();
     reportRun(run, configuration, options->outputs, std::cout);

@@ -37,10 +37,9 @@ void listAllStatistics(std::ostream& out) {
 
 void addStatsCommand(CLI::App& app) {
   auto list = std::make_shared<bool>(false);
-  CLI::App* command =
-      app.add_subcommand("stats",
-                         "show every statistic rtusim writes (--list): its key in the JSON, unit, "
-                         "how it combines over cores, frames and rows, and what it counts");
+  CLI::App* command = app.add_subcommand(
+      "stats", "show every statistic rtusim writes (--list): its key in the JSON, unit, "
+               "how it combines over cores, frames and rows, and what it counts");
   command->add_flag("--list", *list, "every statistic with its key, unit, combination and doc");
   command->callback([list] {
     if (!*list) throw std::invalid_argument("give --list");

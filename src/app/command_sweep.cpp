@@ -7,10 +7,10 @@
 
 #include "app/commands.h"
 #include "app/config_options.h"
-#include "explore/exploration_run.h"
 #include "app/plot_script.h"
-#include "explore/sweep_slurm.h"
 #include "config/sweep_spec.h"
+#include "explore/exploration_run.h"
+#include "explore/sweep_slurm.h"
 #include "explore/sweep_workers.h"
 
 namespace rtu {
@@ -99,24 +99,31 @@ void addSweepCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "sweep", "run a grid and/or list of configurations on the cycle-accurate model in parallel "
                "workers: one row per configuration in CSV and JSON lines, resumable");
-  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseSampling);
+  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic |
+                                                kUseScene | kUseCamera | kUseSampling);
   command->add_option("--grid", options->grid,
                       "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
-  command->add_option("--sweep-file", options->sweepFile,
-                      "TOML sweep: [grid] key = [values], [[configs]] explicit configurations")
+  command
+      ->add_option("--sweep-file", options->sweepFile,
+                   "TOML sweep: [grid] key = [values], [[configs]] explicit configurations")
       ->check(CLI::ExistingFile);
-  command->add_option("--out", options->out,
-                      "rows as CSV; JSON lines beside it (.jsonl). Rows already there are kept "
-                      "and not run again")
+  command
+      ->add_option("--out", options->out,
+                   "rows as CSV; JSON lines beside it (.jsonl). Rows already there are kept "
+                   "and not run again")
       ->capture_default_str();
-  command->add_option("-j,--jobs", options->jobs, "configurations run in parallel (default: all cores)")
+  command
+      ->add_option("-j,--jobs", options->jobs,
+                   "configurations run in parallel (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  command->add_option("--plot", options->plotDir, "write plots of the rows (PNG, SVG) into this folder");
+  command->add_option("--plot", options->plotDir,
+                      "write plots of the rows (PNG, SVG) into this folder");
   command->add_flag("--slurm", options->slurm,
                     "run the rows as a Slurm job array (sbatch --wait) instead of local workers");
   command->add_option("--slurm-partition", options->slurmOptions.partition, "Slurm partition");
-  command->add_option("--slurm-tasks", options->slurmOptions.tasks,
-                      "array elements, each running every n-th row (default: a row each, at most 256)")
+  command
+      ->add_option("--slurm-tasks", options->slurmOptions.tasks,
+                   "array elements, each running every n-th row (default: a row each, at most 256)")
       ->check(CLI::Range(1, 100000));
   command->add_flag("--dry-run", options->slurmOptions.dryRun,
                     "with --slurm: write the sweep directory and batch script, do not submit");
@@ -142,12 +149,14 @@ void addSweepCommand(CLI::App& app) {
       const std::string key = configurations[i].toJson().dump();
       if (!seen.insert(key).second) continue;  // the same configuration twice runs once
       const auto found = finished.find(key);
-      if (found != finished.end()) kept.push_back(found->second);
-      else pending.push_back(i);
+      if (found != finished.end())
+        kept.push_back(found->second);
+      else
+        pending.push_back(i);
     }
-    std::cout << "sweep: " << seen.size() << " configurations, " << kept.size()
-              << " already done, " << pending.size() << " to run with " << options->jobs
-              << " workers\n" << std::flush;
+    std::cout << "sweep: " << seen.size() << " configurations, " << kept.size() << " already done, "
+              << pending.size() << " to run with " << options->jobs << " workers\n"
+              << std::flush;
     RowWriter writer(options->out, kept);
     size_t written = 0, failed = 0;
     const auto write = [&](const Json& row) {
@@ -165,8 +174,8 @@ void addSweepCommand(CLI::App& app) {
           options->sweepDir.empty()
               ? std::filesystem::path(options->out).replace_extension(".slurm").string()
               : options->sweepDir;
-      const std::string script = runRowsOnSlurm(configurations, pending, directory,
-                                                options->slurmOptions, write);
+      const std::string script =
+          runRowsOnSlurm(configurations, pending, directory, options->slurmOptions, write);
       if (options->slurmOptions.dryRun) {
         std::cout << "sweep: wrote " << script << " (not submitted: sbatch " << script << ")\n";
         return;
@@ -178,7 +187,8 @@ void addSweepCommand(CLI::App& app) {
     std::cout << "sweep: " << written - failed << " rows done, " << failed << " failed, "
               << pending.size() - written << " lost; wrote " << options->out << " and "
               << jsonLinesPath(options->out) << "\n";
-    if (!options->plotDir.empty()) runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
+    if (!options->plotDir.empty())
+      runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
   });
 }
 

@@ -52,11 +52,14 @@ std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses
   command.add_option("--preset", request->preset, "start from a shipped preset: " + presets)
       ->check(CLI::IsMember(presetNames()))
       ->group("Configuration");
-  command.add_option("--config", request->files, "configuration file(s), TOML or JSON, applied in order")
+  command
+      .add_option("--config", request->files,
+                  "configuration file(s), TOML or JSON, applied in order")
       ->check(CLI::ExistingFile)
       ->group("Configuration");
-  command.add_option("--set", request->assignments,
-                     "key=value for any setting (rtusim config --list), applied last")
+  command
+      .add_option("--set", request->assignments,
+                  "key=value for any setting (rtusim config --list), applied last")
       ->group("Configuration");
   const RunConfig defaults;
   const std::vector<Setting>& schema = configSchema();
@@ -77,14 +80,16 @@ std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses
       for (const Setting& other : schema)
         if (takes(other) && other.formerFlag == setting.formerFlag) sharing.push_back(&other);
     addSettingOption(command, request, setting,
-                     sharing.size() == 1 ? setting.flag + "," + setting.formerFlag : setting.flag, help);
+                     sharing.size() == 1 ? setting.flag + "," + setting.formerFlag : setting.flag,
+                     help);
     if (sharing.size() > 1 && sharing.front() == &setting) {
       std::string instead;
       for (const Setting* other : sharing)
         instead += (instead.empty() ? "" : " or ") + other->flag + " (" + other->key + ")";
-      const std::string warning = "rtusim: warning: " + setting.formerFlag + " is ambiguous in rtusim " +
-                                  request->command + " and deprecated: it sets " + setting.key +
-                                  ", as " + setting.flag + " does; use " + instead;
+      const std::string warning = "rtusim: warning: " + setting.formerFlag +
+                                  " is ambiguous in rtusim " + request->command +
+                                  " and deprecated: it sets " + setting.key + ", as " +
+                                  setting.flag + " does; use " + instead;
       addSettingOption(command, request, setting, setting.formerFlag,
                        "deprecated: as " + setting.flag + "; use " + instead, warning)
           ->group("Deprecated");

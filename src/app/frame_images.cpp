@@ -106,10 +106,9 @@ class TextPainter {
   TextPainter() {
     using WidthFunction = int(const char*, int);
     using DrawFunction = int(float*, int, int, int, int, const char*, int, const float*, int);
-    width_ = pluginFunction<WidthFunction>(kImagesModule, "rtusim_images_text_width",
-                                           kImagesPurpose);
-    draw_ = pluginFunction<DrawFunction>(kImagesModule, "rtusim_images_draw_text",
-                                         kImagesPurpose);
+    width_ =
+        pluginFunction<WidthFunction>(kImagesModule, "rtusim_images_text_width", kImagesPurpose);
+    draw_ = pluginFunction<DrawFunction>(kImagesModule, "rtusim_images_draw_text", kImagesPurpose);
     useFont_ = width_("0123456789", kFontSize) > 0;
   }
 
@@ -121,8 +120,8 @@ class TextPainter {
   // `baseline` is the row under the text's last row of a capital or digit.
   void draw(Canvas& canvas, int x, int baseline, const std::string& text, Align align,
             Pixel colour) const {
-    if (useFont_ && draw_(canvas.rgb.data(), canvas.width, canvas.height, x, baseline,
-                          text.c_str(), kFontSize, &colour.x, static_cast<int>(align)))
+    if (useFont_ && draw_(canvas.rgb.data(), canvas.width, canvas.height, x, baseline, text.c_str(),
+                          kFontSize, &colour.x, static_cast<int>(align)))
       return;
     const int w = static_cast<int>(text.size()) * 6 - 1;
     int left = align == Align::Left ? x : align == Align::Right ? x - w : x - w / 2;
@@ -146,7 +145,8 @@ class TextPainter {
 
 // ---- Shading. ----------------------------------------------------------------------------------
 
-void writeRgb(const RenderedFrame& frame, const std::string& path, Pixel (*shade)(const RenderedFrame&, size_t)) {
+void writeRgb(const RenderedFrame& frame, const std::string& path,
+              Pixel (*shade)(const RenderedFrame&, size_t)) {
   Canvas canvas(frame.camera.width, frame.camera.height, Pixel(0.0f));
   for (size_t i = 0; i < frame.pixels.size(); ++i)
     canvas.set(static_cast<int>(i % frame.camera.width), static_cast<int>(i / frame.camera.width),
@@ -217,7 +217,7 @@ struct CostScale {
 
 struct Label {
   uint32_t cost;
-  int x;      // the tick's column
+  int x;  // the tick's column
   Align align;
   int left, right;  // the label's columns
 };
@@ -263,7 +263,7 @@ std::vector<Label> scaleLabels(const CostScale& scale, int x0, int rampWidth,
 }  // namespace
 
 RenderedFrame RenderedFrame::fromResults(const Camera& camera, const FixedFormat& format,
-                         const std::vector<TraversalResult>& results) {
+                                         const std::vector<TraversalResult>& results) {
   RenderedFrame frame{camera, format, std::vector<TraversalResult>(camera.pixelCount())};
   for (const TraversalResult& result : results) {
     if (result.id() >= frame.pixels.size())
@@ -285,12 +285,11 @@ void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
 
 void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,
                          const std::string& path) {
-  static const std::array<Pixel, 5> colours = {
-      Pixel(0.08f),                  // BothMiss
-      Pixel(0.45f),                  // Agree
-      Pixel(0.20f, 0.50f, 1.00f),    // FalseHit
-      Pixel(1.00f, 0.20f, 0.20f),    // MissedHit
-      Pixel(1.00f, 0.85f, 0.10f)};   // DifferentVoxel
+  static const std::array<Pixel, 5> colours = {Pixel(0.08f),                 // BothMiss
+                                               Pixel(0.45f),                 // Agree
+                                               Pixel(0.20f, 0.50f, 1.00f),   // FalseHit
+                                               Pixel(1.00f, 0.20f, 0.20f),   // MissedHit
+                                               Pixel(1.00f, 0.85f, 0.10f)};  // DifferentVoxel
   Canvas canvas(camera.width, camera.height, colours[0]);
   for (size_t i = 0; i < verdicts.size(); ++i)
     canvas.set(static_cast<int>(i % camera.width), static_cast<int>(i / camera.width),

@@ -20,7 +20,7 @@ struct RenderedFrame {
   std::vector<TraversalResult> pixels;
 
   static RenderedFrame fromResults(const Camera& camera, const FixedFormat& format,
-                           const std::vector<TraversalResult>& results);
+                                   const std::vector<TraversalResult>& results);
 };
 
 // Throws std::invalid_argument naming `option` when no image format writes `path`'s extension;

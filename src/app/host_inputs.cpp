@@ -47,8 +47,8 @@ void warnSkippedRecords(const std::string& what, const std::string& path,
         << " more records skipped (" << skipped.size() << " in all)\n";
 }
 
-void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs,
-                     int stackFrames, bool allowOverflow, const RunConfig& settings) {
+void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+                     bool allowOverflow, const RunConfig& settings) {
   std::vector<uint32_t> roots;
   for (const TraversalJob& job : jobs) addRoot(roots, job.root);
   checkRootTrees(image, std::move(roots), stackFrames, allowOverflow, settings);

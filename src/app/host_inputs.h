@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "config/run_config.h"
 #include "inputs/host_buffers.h"
 #include "kinds/svo/ray_transform.h"
-#include "config/run_config.h"
 #include "kinds/svo/svo_image.h"
 #include "kinds/svo/traversal_job.h"
 
@@ -28,8 +28,8 @@ void warnSkippedRecords(const std::string& what, const std::string& path,
 
 // checkStackDepth (stack_check.h) on the trees the jobs start from; a malformed tree is an
 // error naming the SVO image and the job or ray buffer of `settings` that points into it.
-void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs,
-                     int stackFrames, bool allowOverflow, const RunConfig& settings);
+void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+                     bool allowOverflow, const RunConfig& settings);
 // The same on the records of a job buffer (readJobRecordsSkipping).
 void checkInputTrees(const SvoImage& image, const std::vector<HostRecord>& jobRecords,
                      int stackFrames, bool allowOverflow, const RunConfig& settings);

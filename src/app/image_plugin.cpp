@@ -65,20 +65,21 @@ RTUSIM_PLUGIN_EXPORT int rtusim_images_text_width(const char* text, int fontSize
 // Draws `text` (anti-aliased, in `colour`, one float per channel) into the RGB float buffer
 // `pixels` of `width` x `height`, its baseline at row `y`, starting at column `x` (align 0),
 // ending there (1) or centred on it (2). Returns 1, or 0 when the text could not be rendered.
-RTUSIM_PLUGIN_EXPORT int rtusim_images_draw_text(
-    float* pixels, int width, int height, int x, int y, const char* text, int fontSize,
-    const float* colour, int align) {
+RTUSIM_PLUGIN_EXPORT int rtusim_images_draw_text(float* pixels, int width, int height, int x, int y,
+                                                 const char* text, int fontSize,
+                                                 const float* colour, int align) {
   try {
     const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
     OIIO::ImageBuf image(spec, pixels);
-    const OIIO::ImageBufAlgo::TextAlignX alignX =
-        align == 1   ? OIIO::ImageBufAlgo::TextAlignX::Right
-        : align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Center
-                     : OIIO::ImageBufAlgo::TextAlignX::Left;
-    return OIIO::ImageBufAlgo::render_text(image, x, y, text, fontSize, fontName(),
-                                           {colour, 3}, alignX) ? 1 : 0;
+    const OIIO::ImageBufAlgo::TextAlignX alignX = align == 1 ? OIIO::ImageBufAlgo::TextAlignX::Right
+                                                  : align == 2
+                                                      ? OIIO::ImageBufAlgo::TextAlignX::Center
+                                                      : OIIO::ImageBufAlgo::TextAlignX::Left;
+    return OIIO::ImageBufAlgo::render_text(image, x, y, text, fontSize, fontName(), {colour, 3},
+                                           alignX)
+               ? 1
+               : 0;
   } catch (...) {
     return 0;
   }
 }
-

@@ -33,7 +33,8 @@ void checkWritable(const NamedPath& output) {
   }
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(parent, error))
-    throw std::invalid_argument(named(output) + ": folder '" + parent.string() + "' does not exist");
+    throw std::invalid_argument(named(output) + ": folder '" + parent.string() +
+                                "' does not exist");
   if (access(parent.c_str(), W_OK) != 0)
     throw std::invalid_argument(named(output) + ": folder '" + parent.string() +
                                 "' cannot be written");
@@ -59,8 +60,7 @@ void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<N
                                     ": writing it would destroy the input");
     for (size_t j = 0; j < i; ++j)
       if (!outputs[j].path.empty() && sameFile(output.path, outputs[j].path))
-        throw std::invalid_argument(named(output) + " and " + named(outputs[j]) +
-                                    " are one file");
+        throw std::invalid_argument(named(output) + " and " + named(outputs[j]) + " are one file");
     checkWritable(output);
   }
 }

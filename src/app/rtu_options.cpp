@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "app/cli_options.h"
-#include "explore/sweep_workers.h"
 #include "base/timing_limits.h"
+#include "explore/sweep_workers.h"
 #include "run/trace_plan.h"
 
 namespace rtu {
@@ -35,9 +35,8 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
                      "write the statistics with the effective configuration as JSON");
   CLI::Option* vcd = command.add_option("--trace,--vcd", outputs.vcdPath,
                                         "write a trace for GTKWave: FST for a .fst path, else VCD");
-  command.add_option(
-      "--timeline", outputs.timelinePath,
-      "write a per-core timeline of the rays as Chrome trace-event JSON (Perfetto)");
+  command.add_option("--timeline", outputs.timelinePath,
+                     "write a per-core timeline of the rays as Chrome trace-event JSON (Perfetto)");
   const CLI::Range cycles(uint64_t{0}, kMaxCycles, "cycle in 0 .. 1e13");
   CLI::Option* from =
       command.add_option("--trace-from,--vcd-from", outputs.vcdFrom, "first traced cycle")
@@ -47,32 +46,36 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
       command.add_option("--trace-to,--vcd-to", outputs.vcdTo, "cycle the trace stops before")
           ->check(kNotNegative)
           ->check(cycles);
-  CLI::Option* ray = command.add_option(
-      "--trace-ray", outputs.traceRay,
-      "trace and timeline from this ray's entry into the RTU to its result reaching the host")
-      ->check(CLI::Range(int64_t{0}, int64_t{1} << 40))
-      ->excludes(from)
-      ->excludes(to);
-  command.add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
-                         "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
-          ->needs(vcd);
-  command.add_option("--trace-signals", outputs.signalClasses,
-                     "trace only these signal classes: handshakes, ids, states, stack, caches "
-                     "(default: all)")
+  CLI::Option* ray = command
+                         .add_option("--trace-ray", outputs.traceRay,
+                                     "trace and timeline from this ray's entry into the RTU to its "
+                                     "result reaching the host")
+                         ->check(CLI::Range(int64_t{0}, int64_t{1} << 40))
+                         ->excludes(from)
+                         ->excludes(to);
+  command
+      .add_option("--trace-scope,--vcd-scope", outputs.vcdScopes,
+                  "trace only these modules, e.g. rtu.core_3 rtu.scheduler (default: all)")
+      ->needs(vcd);
+  command
+      .add_option("--trace-signals", outputs.signalClasses,
+                  "trace only these signal classes: handshakes, ids, states, stack, caches "
+                  "(default: all)")
       ->delimiter(',')
       ->needs(vcd);
-  command.add_flag("--trace-clock", outputs.traceClock,
-                   "trace a clock (rtu.clk, high in the first half of every cycle): two changes "
-                   "per cycle")
+  command
+      .add_flag("--trace-clock", outputs.traceClock,
+                "trace a clock (rtu.clk, high in the first half of every cycle): two changes "
+                "per cycle")
       ->needs(vcd);
-  CLI::Option* maxMb = command.add_option(
-      "--trace-max-mb", outputs.traceMaxMb,
-      "refuse a trace or timeline larger than this (measured by a dry run first), default 300")
-      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  CLI::Option* maxMb = command
+                           .add_option("--trace-max-mb", outputs.traceMaxMb,
+                                       "refuse a trace or timeline larger than this (measured by a "
+                                       "dry run first), default 300")
+                           ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   for (CLI::Option* option : {from, to, ray, maxMb})
-    option->each([&outputs, option](const std::string&) {
-      outputs.needingOutput = option->get_name();
-    });
+    option->each(
+        [&outputs, option](const std::string&) { outputs.needingOutput = option->get_name(); });
 }
 
 void reportRun(const RtuRun& run, const Configuration& configuration, const RunOutputs& outputs,

@@ -11,12 +11,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/output_paths.h"
 #include "config/configuration.h"
 #include "config/run_json.h"
 #include "run/model_run.h"
-#include "app/output_paths.h"
-#include "sim/rtu_config.h"
 #include "run/rtu_simulation.h"
+#include "sim/rtu_config.h"
 
 namespace rtu {
 
@@ -29,7 +29,7 @@ struct RunOutputs {
   std::vector<std::string> signalClasses;
   bool traceClock = false;
   std::string timelinePath;
-  int64_t traceRay = -1;       // -1: no --trace-ray
+  int64_t traceRay = -1;  // -1: no --trace-ray
   uint64_t traceMaxMb = 300;
   std::string needingOutput;  // an option given that needs --trace or --timeline
 

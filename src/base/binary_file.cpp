@@ -6,7 +6,8 @@
 
 namespace rtu {
 
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "file formats assume a little-endian host");
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+              "file formats assume a little-endian host");
 
 namespace {
 constexpr size_t kReadChunkBytes = size_t{1} << 20;

@@ -11,7 +11,7 @@
 namespace rtu {
 
 struct ProcessLimits {
-  double seconds = 10;                     // wall clock; the CPU limit is the same, rounded up
+  double seconds = 10;                       // wall clock; the CPU limit is the same, rounded up
   uint64_t memoryBytes = uint64_t{4} << 30;  // address space the child may add to the parent's
 };
 

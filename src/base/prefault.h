@@ -3,11 +3,11 @@
 // they are first written: a 1280x720 run's buffers of results and records are tens of MB. Linux
 // 5.14 on; elsewhere, or should the call fail, the pages still come one fault at a time.
 
-#include <cstdint>
-#include <vector>
-
 #include <sys/mman.h>
 #include <unistd.h>
+
+#include <cstdint>
+#include <vector>
 
 namespace rtu {
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "kinds/svo/procedural_scenes.h"
 #include "base/timing_limits.h"
+#include "kinds/svo/procedural_scenes.h"
 
 namespace rtu {
 namespace {
@@ -134,7 +134,8 @@ template <class F, class T = FieldType<F>>
 Setting choice(std::string key, std::string flag, std::vector<std::string> choices, unsigned uses,
                std::string doc, F field, std::string (*name)(const T&),
                T (*parse)(const std::string&)) {
-  Setting s = declare(std::move(key), std::move(flag), SettingKind::Choice, "", uses, std::move(doc));
+  Setting s =
+      declare(std::move(key), std::move(flag), SettingKind::Choice, "", uses, std::move(doc));
   s.choices = std::move(choices);
   s.get = [field, name](const RunConfig& c) { return name(read(field, c)); };
   s.assign = [field, parse, s](RunConfig& c, const std::string& text) {
@@ -157,20 +158,25 @@ Setting text(SettingKind kind, std::string key, std::string flag, unsigned uses,
 
 template <class F>
 Setting flag(std::string key, std::string flagName, unsigned uses, std::string doc, F field) {
-  Setting s = declare(std::move(key), std::move(flagName), SettingKind::Flag, "", uses, std::move(doc));
+  Setting s =
+      declare(std::move(key), std::move(flagName), SettingKind::Flag, "", uses, std::move(doc));
   s.get = [field](const RunConfig& c) { return std::string(read(field, c) ? "true" : "false"); };
   s.assign = [field, key = s.key](RunConfig& c, const std::string& text) {
     const std::string value = trim(text);
-    if (value == "true" || value == "1") field(c) = true;
-    else if (value == "false" || value == "0") field(c) = false;
-    else fail(key, "'" + text + "' is not true or false");
+    if (value == "true" || value == "1")
+      field(c) = true;
+    else if (value == "false" || value == "0")
+      field(c) = false;
+    else
+      fail(key, "'" + text + "' is not true or false");
   };
   return s;
 }
 
 template <class F>
 Setting vector(std::string key, std::string flagName, unsigned uses, std::string doc, F field) {
-  Setting s = declare(std::move(key), std::move(flagName), SettingKind::Vector, "", uses, std::move(doc));
+  Setting s =
+      declare(std::move(key), std::move(flagName), SettingKind::Vector, "", uses, std::move(doc));
   s.get = [field](const RunConfig& c) {
     const glm::dvec3& v = read(field, c);
     return formatReal(v.x) + "," + formatReal(v.y) + "," + formatReal(v.z);
@@ -227,14 +233,16 @@ void addCache(std::vector<Setting>& schema, const std::string& level,
                         [cache](C& c) -> uint32_t& { return cache(c).sizeBytes; }));
   added.push_back(bytes(key + "line", flag + "line", 1u << 16, kUseModel, name + " line size",
                         [cache](C& c) -> uint32_t& { return cache(c).lineBytes; }));
-  added.push_back(integer(key + "ways", flag + "ways", "", 1, 1024, kUseModel, name + " associativity",
+  added.push_back(integer(key + "ways", flag + "ways", "", 1, 1024, kUseModel,
+                          name + " associativity",
                           [cache](C& c) -> uint32_t& { return cache(c).ways; }));
-  added.push_back(choice(key + "replacement", flag + "replacement", {"lru", "fifo", "random"},
-                         kUseModel, name + " replacement policy",
-                         [cache](C& c) -> Replacement& { return cache(c).replacement; },
-                         replacementName, parseReplacement));
-  added.push_back(integer(key + "latency", flag + "latency", "cycles", 0, kMaxLatencyCycles, kUseModel,
-                          name + " hit latency", [cache](C& c) -> uint32_t& { return cache(c).hitLatency; }));
+  added.push_back(choice(
+      key + "replacement", flag + "replacement", {"lru", "fifo", "random"}, kUseModel,
+      name + " replacement policy", [cache](C& c) -> Replacement& { return cache(c).replacement; },
+      replacementName, parseReplacement));
+  added.push_back(integer(key + "latency", flag + "latency", "cycles", 0, kMaxLatencyCycles,
+                          kUseModel, name + " hit latency",
+                          [cache](C& c) -> uint32_t& { return cache(c).hitLatency; }));
   added.push_back(integer(key + "mshrs", flag + "mshrs", "", 1, 4096, kUseModel,
                           name + " outstanding-miss limit",
                           [cache](C& c) -> uint32_t& { return cache(c).maxOutstandingMisses; }));
@@ -250,19 +258,23 @@ void addSvoSettings(std::vector<Setting>& schema) {
   constexpr unsigned arith = kUseArithmetic;
   std::vector<Setting> added;
   added.push_back(integer("stack_frames", "--stack-frames", "frames", 1, kMaxStackFrames, arith,
-                      "traversal stack depth (RTL: 11)", [](RunConfig& c) -> int& { return c.rtu.stackFrames; }));
+                          "traversal stack depth (RTL: 11)",
+                          [](RunConfig& c) -> int& { return c.rtu.stackFrames; }));
   added.push_back(flag("allow_stack_overflow", "--allow-stack-overflow", arith,
-                   "run even when a tree is deeper than the stack (such rays are flagged)",
-                   [](RunConfig& c) -> bool& { return c.allowStackOverflow; }));
+                       "run even when a tree is deeper than the stack (such rays are flagged)",
+                       [](RunConfig& c) -> bool& { return c.allowStackOverflow; }));
   added.push_back(integer("format.total_bits", "--total-bits", "bits", 8, 48, arith,
-                      "fixed-point word width", [](RunConfig& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
+                          "fixed-point word width",
+                          [](RunConfig& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
   added.push_back(integer("format.fraction_bits", "--fraction-bits", "bits", 1, 46, arith,
-                      "fixed-point fraction bits",
-                      [](RunConfig& c) -> int& { return c.rtu.jobManager.format.fractionBits; }));
-  added.push_back(choice("format.conversion", "--conversion", {"rtl", "exact"}, arith,
-                     "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
-                     [](RunConfig& c) -> FloatConversion& { return c.rtu.jobManager.conversion; },
-                     conversionName, parseFloatConversion));
+                          "fixed-point fraction bits", [](RunConfig& c) -> int& {
+                            return c.rtu.jobManager.format.fractionBits;
+                          }));
+  added.push_back(choice(
+      "format.conversion", "--conversion", {"rtl", "exact"}, arith,
+      "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
+      [](RunConfig& c) -> FloatConversion& { return c.rtu.jobManager.conversion; }, conversionName,
+      parseFloatConversion));
   for (Setting& s : added) {
     s.ignoredBecause = [](const RunConfig& c) {
       return c.rtu.core == SvoKind::kName ? std::string() : "the core kind is " + c.rtu.core;
@@ -276,30 +288,33 @@ std::vector<Setting> makeSchema() {
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
                      camera = kUseCamera, buffers = kUseBuffers, sampling = kUseSampling;
   std::vector<Setting> s;
-  s.push_back(choice("model", "--model", {"golden", "lt", "ca"}, kUseModelChoice,
-                     "which model answers: ca (cycle-accurate SystemC, exact), lt (loosely-timed "
-                     "TLM-2.0, estimated cycles) or golden (untimed; cycles from golden costs)",
-                     [](C& c) -> ModelKind& { return c.model; }, modelKindName, parseModelKind));
+  s.push_back(choice(
+      "model", "--model", {"golden", "lt", "ca"}, kUseModelChoice,
+      "which model answers: ca (cycle-accurate SystemC, exact), lt (loosely-timed "
+      "TLM-2.0, estimated cycles) or golden (untimed; cycles from golden costs)",
+      [](C& c) -> ModelKind& { return c.model; }, modelKindName, parseModelKind));
   s.push_back(integer("lt.quantum", "--lt-quantum", "cycles", 1, 1e9, kUseModelChoice,
                       "loosely-timed model: global quantum of temporal decoupling",
                       [](C& c) -> uint64_t& { return c.rtu.ltQuantum; }));
   s.back().ignoredBecause = ignoredUnlessLooselyTimed;
   s.push_back(integer("cores", "--cores", "", 1, kMaxCores, model, "number of traversal cores",
                       [](C& c) -> int& { return c.rtu.cores; }));
-  s.push_back(choice("scheduler", "--scheduler", {"cfa", "rr", "fa"}, model,
-                     "cfa (cyclic first-available, the RTL), rr (round-robin) or fa (first-available)",
-                     [](C& c) -> SchedulerPolicy& { return c.rtu.scheduler; }, schedulerName,
-                     parseSchedulerPolicy));
+  s.push_back(choice(
+      "scheduler", "--scheduler", {"cfa", "rr", "fa"}, model,
+      "cfa (cyclic first-available, the RTL), rr (round-robin) or fa (first-available)",
+      [](C& c) -> SchedulerPolicy& { return c.rtu.scheduler; }, schedulerName,
+      parseSchedulerPolicy));
   s.push_back(real("clock_mhz", "--clock-mhz", "MHz", kMinClockMhz, kMaxClockMhz, model,
-                   "clock for rates and frame rates", [](C& c) -> double& { return c.rtu.clockMhz; }));
-  s.push_back(choice("memory.kind", "--memory", {"ideal", "cached"}, model,
-                     "ideal (thesis ROM, every word at once) or cached (L1, L2, DRAM)",
-                     [](C& c) -> bool& { return c.rtu.memory.ideal; }, memoryKindName,
-                     parseMemoryKind));
+                   "clock for rates and frame rates",
+                   [](C& c) -> double& { return c.rtu.clockMhz; }));
+  s.push_back(choice(
+      "memory.kind", "--memory", {"ideal", "cached"}, model,
+      "ideal (thesis ROM, every word at once) or cached (L1, L2, DRAM)",
+      [](C& c) -> bool& { return c.rtu.memory.ideal; }, memoryKindName, parseMemoryKind));
   addCache(s, "l1", [](C& c) -> CacheConfig& { return c.rtu.memory.l1; });
   addCache(s, "l2", [](C& c) -> CacheConfig& { return c.rtu.memory.l2; });
-  s.push_back(integer("memory.dram.latency", "--dram-latency", "cycles", 0, kMaxLatencyCycles, model,
-                      "cycles from issuing a read to the start of its data",
+  s.push_back(integer("memory.dram.latency", "--dram-latency", "cycles", 0, kMaxLatencyCycles,
+                      model, "cycles from issuing a read to the start of its data",
                       [](C& c) -> uint32_t& { return c.rtu.memory.dram.latency; }));
   s.back().ignoredBecause = ignoredWithIdealMemory;
   s.push_back(real("memory.dram.bytes_per_cycle", "--dram-bytes-per-cycle", "bytes/cycle",
@@ -332,25 +347,28 @@ std::vector<Setting> makeSchema() {
   s.push_back(integer("job_manager.ray_stages", "--jm-ray-stages", "cycles", 0, 64, model,
                       "extra stages for ray records: transform and t-parameters",
                       [](C& c) -> int& { return c.rtu.jobManager.rayStages; }));
-  s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0, kMaxLatencyCycles, model,
-                      "cycles to fetch a model header, once per model",
+  s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0,
+                      kMaxLatencyCycles, model, "cycles to fetch a model header, once per model",
                       [](C& c) -> int& { return c.rtu.jobManager.headerFetchCycles; }));
-  s.push_back(real("job_manager.epsilon", "--ray-epsilon", "", 0, 1, buffers,
-                   "ray records: direction components below epsilon times the largest count as zero",
-                   [](C& c) -> float& { return c.rtu.jobManager.epsilon; }));
+  s.push_back(
+      real("job_manager.epsilon", "--ray-epsilon", "", 0, 1, buffers,
+           "ray records: direction components below epsilon times the largest count as zero",
+           [](C& c) -> float& { return c.rtu.jobManager.epsilon; }));
   s.back().formerFlag = "--epsilon";
   s.back().ignoredBecause = [](const C& c) {
     return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();
   };
   // The kind of core, then each kind's own settings.
-  s.push_back(choice("core", "--core", CoreKinds::names(), model | arith,
-                     "the kind of traversal core: svo (the thesis' sparse voxel octree core)",
-                     [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
+  s.push_back(choice(
+      "core", "--core", CoreKinds::names(), model | arith,
+      "the kind of traversal core: svo (the thesis' sparse voxel octree core)",
+      [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
   addSvoSettings(s);
   // The workload.
-  s.push_back(choice("scene", "--scene", proceduralSceneNames(), scene,
-                     "procedural scene, used when no scene file is given",
-                     [](C& c) -> std::string& { return c.scene.procedural; }, sameText, sameText));
+  s.push_back(choice(
+      "scene", "--scene", proceduralSceneNames(), scene,
+      "procedural scene, used when no scene file is given",
+      [](C& c) -> std::string& { return c.scene.procedural; }, sameText, sameText));
   s.back().ignoredBecause = ignoredWithSceneFile;
   s.push_back(integer("scene.depth", "--depth", "levels", 1, 16, scene,
                       "octree depth of procedural scenes and meshes",
@@ -361,15 +379,18 @@ std::vector<Setting> makeSchema() {
                       [](C& c) -> uint64_t& { return c.scene.seed; }));
   s.back().ignoredBecause = ignoredWithSceneFile;
   s.push_back(integer("scene.root", "--root", "word", 0, 4294967295.0, scene,
-                      "word address of the root descriptor", [](C& c) -> uint32_t& { return c.scene.root; }));
+                      "word address of the root descriptor",
+                      [](C& c) -> uint32_t& { return c.scene.root; }));
   s.push_back(text(SettingKind::Path, "svo", "--svo", scene | buffers,
                    "SVO memory image (.svo, little-endian u32 words)",
                    [](C& c) -> std::string& { return c.scene.svoFile; }));
-  s.push_back(text(SettingKind::Path, "mesh", "--mesh", scene, "triangle mesh to voxelize (OBJ or PLY)",
+  s.push_back(text(SettingKind::Path, "mesh", "--mesh", scene,
+                   "triangle mesh to voxelize (OBJ or PLY)",
                    [](C& c) -> std::string& { return c.scene.meshFile; }));
   s.push_back(text(SettingKind::Path, "binvox", "--binvox", scene, "voxel file to import (.binvox)",
                    [](C& c) -> std::string& { return c.scene.binvoxFile; }));
-  s.push_back(text(SettingKind::Path, "jobs", "--jobs", buffers, "host input buffer (8 u32 per job record)",
+  s.push_back(text(SettingKind::Path, "jobs", "--jobs", buffers,
+                   "host input buffer (8 u32 per job record)",
                    [](C& c) -> std::string& { return c.jobs; }));
   s.push_back(text(SettingKind::Path, "rays", "--rays", buffers,
                    "ray buffer (8 u32 per world-space ray record)",
@@ -384,7 +405,8 @@ std::vector<Setting> makeSchema() {
                      [](C& c) -> glm::dvec3& { return c.camera.lookAt; }));
   s.push_back(vector("camera.up", "--up", camera, "camera up vector x,y,z",
                      [](C& c) -> glm::dvec3& { return c.camera.up; }));
-  s.push_back(real("camera.fov", "--fov", "degrees", 1e-3, 179.999, camera, "vertical field of view",
+  s.push_back(real("camera.fov", "--fov", "degrees", 1e-3, 179.999, camera,
+                   "vertical field of view",
                    [](C& c) -> double& { return c.camera.verticalFovDegrees; }));
   s.push_back(real("camera.epsilon", "--camera-epsilon", "", 1e-30, 1, camera,
                    "camera rays: replaces exact zero direction components (thesis driver: 0.0001)",
@@ -434,8 +456,9 @@ std::string Setting::range() const {
       for (const std::string& c : choices) all += (all.empty() ? "" : "|") + c;
       return all;
     }
-    case SettingKind::Bytes: return formatBytes(static_cast<uint64_t>(min)) + " .. " +
-                                    formatBytes(static_cast<uint64_t>(max));
+    case SettingKind::Bytes:
+      return formatBytes(static_cast<uint64_t>(min)) + " .. " +
+             formatBytes(static_cast<uint64_t>(max));
     case SettingKind::Integer:
     case SettingKind::Real:
       return (zeroAllowed ? "0 or " : "") + formatReal(min) + " .. " + formatReal(max);
@@ -471,10 +494,10 @@ uint64_t parseBytes(const std::string& text, const std::string& key) {
   const std::string digits = trim(value.substr(0, unitStart));
   const std::string unit = unitStart == std::string::npos ? "" : trim(value.substr(unitStart));
   static const std::vector<std::pair<std::string, double>> units = {
-      {"", 1},           {"B", 1},         {"KiB", 1024.0},  {"MiB", 1048576.0},
-      {"GiB", 1073741824.0}, {"kB", 1e3}, {"KB", 1e3},      {"MB", 1e6}, {"GB", 1e9}};
-  const auto found = std::find_if(units.begin(), units.end(),
-                                  [&](const auto& u) { return u.first == unit; });
+      {"", 1},     {"B", 1},    {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0},
+      {"kB", 1e3}, {"KB", 1e3}, {"MB", 1e6},     {"GB", 1e9}};
+  const auto found =
+      std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.first == unit; });
   if (digits.empty() || found == units.end())
     fail(key, "'" + text + "' is not a size (e.g. 4096, 4KiB, 1MiB)");
   const double bytes = parseNumber(digits, key, false) * found->second;

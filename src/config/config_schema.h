@@ -16,12 +16,12 @@ enum class SettingKind { Integer, Real, Bytes, Choice, Text, Path, Flag, Vector 
 
 // Which part of a run a setting configures; each command names the parts it uses.
 enum SettingUse : unsigned {
-  kUseModel = 1u << 0,       // the timed RTU model: cores, memory, links, job manager
-  kUseArithmetic = 1u << 1,  // number format and stack, golden model too
-  kUseScene = 1u << 2,       // procedural scene or scene file
-  kUseCamera = 1u << 3,      // camera and frame size
-  kUseBuffers = 1u << 4,     // job or ray buffers and the .svo they run on
-  kUseSampling = 1u << 5,    // sampled simulation of fps and sweep rows
+  kUseModel = 1u << 0,        // the timed RTU model: cores, memory, links, job manager
+  kUseArithmetic = 1u << 1,   // number format and stack, golden model too
+  kUseScene = 1u << 2,        // procedural scene or scene file
+  kUseCamera = 1u << 3,       // camera and frame size
+  kUseBuffers = 1u << 4,      // job or ray buffers and the .svo they run on
+  kUseSampling = 1u << 5,     // sampled simulation of fps and sweep rows
   kUseModelChoice = 1u << 6,  // which model answers: golden, lt or ca
 };
 
@@ -46,7 +46,7 @@ struct Setting {
   // Why the setting has no effect in this configuration, or empty when it has one.
   std::function<std::string(const RunConfig&)> ignoredBecause;
 
-  std::string range() const;  // "1 .. 1024", "cfa|rr|fa", ...
+  std::string range() const;   // "1 .. 1024", "cfa|rr|fa", ...
   bool quotedInFiles() const;  // written as a TOML string
 };
 

@@ -32,7 +32,8 @@ std::string tomlLeafText(const toml::node& node, const std::string& key) {
   if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
   if (const auto* a = node.as_array()) {
     std::string text;
-    for (const toml::node& element : *a) text += (text.empty() ? "" : ",") + tomlLeafText(element, key);
+    for (const toml::node& element : *a)
+      text += (text.empty() ? "" : ",") + tomlLeafText(element, key);
     return text;
   }
   throw std::invalid_argument(key + ": unsupported value type");
@@ -42,8 +43,10 @@ void flattenToml(const toml::table& table, const std::string& prefix,
                  std::vector<std::pair<std::string, std::string>>& out) {
   for (const auto& [name, node] : table) {
     const std::string key = join(prefix, std::string(name.str()));
-    if (const auto* sub = node.as_table()) flattenToml(*sub, key, out);
-    else out.emplace_back(key, tomlLeafText(node, key));
+    if (const auto* sub = node.as_table())
+      flattenToml(*sub, key, out);
+    else
+      out.emplace_back(key, tomlLeafText(node, key));
   }
 }
 
@@ -54,7 +57,8 @@ std::string jsonLeafText(const nlohmann::json& value, const std::string& key) {
   if (value.is_number()) return realText(value.get<double>());
   if (value.is_array()) {
     std::string text;
-    for (const auto& element : value) text += (text.empty() ? "" : ",") + jsonLeafText(element, key);
+    for (const auto& element : value)
+      text += (text.empty() ? "" : ",") + jsonLeafText(element, key);
     return text;
   }
   throw std::invalid_argument(key + ": unsupported value type");
@@ -64,8 +68,10 @@ void flattenJson(const nlohmann::json& object, const std::string& prefix,
                  std::vector<std::pair<std::string, std::string>>& out) {
   for (const auto& [name, value] : object.items()) {
     const std::string key = join(prefix, name);
-    if (value.is_object()) flattenJson(value, key, out);
-    else out.emplace_back(key, jsonLeafText(value, key));
+    if (value.is_object())
+      flattenJson(value, key, out);
+    else
+      out.emplace_back(key, jsonLeafText(value, key));
   }
 }
 
@@ -165,11 +171,15 @@ void Configuration::checkApplicable(unsigned uses, const std::string& command,
     // A file that states a default (a dumped configuration states them all) changes nothing.
     if (from == ConfigSource::File && setting.get(values_) == setting.get(defaults)) continue;
     std::string reason;
-    if (!(setting.uses & uses)) reason = "rtusim " + command + " does not use it";
-    else if (setting.ignoredBecause) reason = setting.ignoredBecause(effective);
+    if (!(setting.uses & uses))
+      reason = "rtusim " + command + " does not use it";
+    else if (setting.ignoredBecause)
+      reason = setting.ignoredBecause(effective);
     if (reason.empty()) continue;
-    const std::string message = setting.key + " (" + sourceName(from) + ") has no effect: " + reason;
-    const bool sceneConflict = isSceneSource(setting.key) && reason.find(" is given") != std::string::npos;
+    const std::string message =
+        setting.key + " (" + sourceName(from) + ") has no effect: " + reason;
+    const bool sceneConflict =
+        isSceneSource(setting.key) && reason.find(" is given") != std::string::npos;
     if (from == ConfigSource::CommandLine && (sceneConflict || !(setting.uses & uses)))
       throw std::invalid_argument(message);
     std::cerr << "rtusim: warning: " << message << "\n";
@@ -181,9 +191,15 @@ std::string Configuration::toToml() const {
   for (const Setting& setting : configSchema()) {
     const std::string text = setting.get(values_);
     switch (setting.kind) {
-      case SettingKind::Integer: insertNested(root, setting.key, toml::value<int64_t>(std::stoll(text))); break;
-      case SettingKind::Real: insertNested(root, setting.key, toml::value<double>(std::stod(text))); break;
-      case SettingKind::Flag: insertNested(root, setting.key, toml::value<bool>(text == "true")); break;
+      case SettingKind::Integer:
+        insertNested(root, setting.key, toml::value<int64_t>(std::stoll(text)));
+        break;
+      case SettingKind::Real:
+        insertNested(root, setting.key, toml::value<double>(std::stod(text)));
+        break;
+      case SettingKind::Flag:
+        insertNested(root, setting.key, toml::value<bool>(text == "true"));
+        break;
       default: insertNested(root, setting.key, toml::value<std::string>(text)); break;
     }
   }

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "inputs/camera.h"
-#include "run/model_run.h"
-#include "sim/rtu_config.h"
-#include "run/sampled_run.h"
 #include "kinds/svo/scene_loader.h"
+#include "run/model_run.h"
+#include "run/sampled_run.h"
+#include "sim/rtu_config.h"
 
 namespace rtu {
 

@@ -2,7 +2,8 @@
 
 namespace rtu {
 
-nlohmann::ordered_json runJson(const RtuStatistics& statistics, const Configuration& configuration) {
+nlohmann::ordered_json runJson(const RtuStatistics& statistics,
+                               const Configuration& configuration) {
   return {{"rtusim", {{"version", rtusimVersion()}}},
           {"config", configuration.toJson()},
           {"statistics", statistics.toJson()}};

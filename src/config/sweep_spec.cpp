@@ -24,9 +24,12 @@ std::string leafText(const toml::node& node, const std::string& key) {
 template <class Leaf>
 void flatten(const toml::table& table, const std::string& prefix, const Leaf& leaf) {
   for (const auto& [name, node] : table) {
-    const std::string key = prefix.empty() ? std::string(name.str()) : prefix + "." + std::string(name.str());
-    if (const auto* sub = node.as_table()) flatten(*sub, key, leaf);
-    else leaf(key, node);
+    const std::string key = prefix.empty() ? std::string(name.str())
+                                           : prefix + "." + std::string(name.str());
+    if (const auto* sub = node.as_table())
+      flatten(*sub, key, leaf);
+    else
+      leaf(key, node);
   }
 }
 
@@ -73,9 +76,10 @@ void SweepSpec::loadFile(const std::string& path) {
       } else if (section == "configs" && node.is_array_of_tables()) {
         for (const toml::node& entry : *node.as_array()) {
           Assignments assignments;
-          flatten(*entry.as_table(), "", [&assignments](const std::string& key, const toml::node& value) {
-            assignments.emplace_back(findSetting(key).key, leafText(value, key));
-          });
+          flatten(*entry.as_table(), "",
+                  [&assignments](const std::string& key, const toml::node& value) {
+                    assignments.emplace_back(findSetting(key).key, leafText(value, key));
+                  });
           list.push_back(assignments);
         }
       } else {

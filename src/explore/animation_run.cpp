@@ -4,8 +4,8 @@
 #include <thread>
 
 #include "kinds/svo/job_setup.h"
-#include "run/lt_simulation.h"
 #include "rtu/rtu_recurrence.h"
+#include "run/lt_simulation.h"
 #include "run/rtu_simulation.h"
 
 namespace rtu {
@@ -20,8 +20,7 @@ std::vector<size_t> instanceModels(const SceneDescription& scene) {
 
 bool sameCamera(const Camera& a, const Camera& b) {
   return a.position == b.position && a.lookAt == b.lookAt && a.up == b.up &&
-         a.verticalFovDegrees == b.verticalFovDegrees && a.width == b.width &&
-         a.height == b.height;
+         a.verticalFovDegrees == b.verticalFovDegrees && a.width == b.width && a.height == b.height;
 }
 
 void count(FrameStatistics& statistics, const SceneHit& hit) {
@@ -46,9 +45,9 @@ const StatisticGroup<FrameStatistics>& FrameStatistics::declaration() {
                  &F::raysTraced)
           .count(Statistic("rays_saved", "rays", "pixels the hit buffer answered"), &F::raysSaved)
           .count(Statistic("hits", "rays", "pixels whose ray hit an instance"), &F::hits)
-          .count(
-              Statistic("jobs", "jobs", "jobs issued: one per instance a ray was traced against"),
-              &F::jobs)
+          .count(Statistic("jobs", "jobs",
+                           "jobs issued: one per instance a ray was traced against"),
+                 &F::jobs)
           .derived(Statistic("jobs_per_ray", "jobs", "jobs per traced ray"), &F::jobsPerRay)
           .count(Statistic("culled", "instances", "instance tests that missed the bounding sphere"),
                  &F::culled)
@@ -83,7 +82,9 @@ struct AnimationRenderer::Work {
 AnimationRenderer::AnimationRenderer(const SceneDescription& scene,
                                      const std::vector<SceneModel>& models,
                                      AnimationOptions options)
-    : scene_(scene), options_(options), memory_(models, instanceModels(scene)),
+    : scene_(scene),
+      options_(options),
+      memory_(models, instanceModels(scene)),
       hitBuffer_(static_cast<size_t>(scene.width) * static_cast<size_t>(scene.height)) {
   if (options_.threads < 1) options_.threads = 1;
 }
@@ -96,8 +97,8 @@ void AnimationRenderer::traceRows(Work& work, int firstRow, int rowStep) {
     for (int x = 0; x < width; ++x) {
       const uint32_t id = static_cast<uint32_t>(x + y * width);
       const RayRecord ray = makeRayRecord(id, work.camera.primaryRay(x, y), 0);
-      const SceneHit* reused =
-          options_.hitBuffer ? hitBuffer_.reusable(id, ray, work.instances) : nullptr;
+      const SceneHit* reused = options_.hitBuffer ? hitBuffer_.reusable(id, ray, work.instances)
+                                                  : nullptr;
       if (reused) {
         work.pixels[id] = *reused;
         ++statistics.raysSaved;
@@ -153,8 +154,9 @@ uint64_t AnimationRenderer::looselyTimedCycles(const Work& work) const {
 uint64_t AnimationRenderer::simulateFrame(Work& work, const std::vector<uint32_t>& traced) const {
   std::vector<RayRecord> rays;
   for (uint32_t id : traced)
-    rays.push_back(makeRayRecord(id, work.camera.primaryRay(static_cast<int>(id % work.camera.width),
-                                                            static_cast<int>(id / work.camera.width)),
+    rays.push_back(makeRayRecord(id,
+                                 work.camera.primaryRay(static_cast<int>(id % work.camera.width),
+                                                        static_cast<int>(id / work.camera.width)),
                                  0));
   RtuConfig config = *options_.rtu;
   config.sceneManager.options = options_.manager;
@@ -223,7 +225,8 @@ AnimationRenderer::Work AnimationRenderer::trace(int frame, SceneFrame& result) 
   hitBuffer_.beginFrame(!lastCamera_ || !sameCamera(*lastCamera_, result.camera), moved);
 
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back([&work, t, threads, this] { traceRows(work, t, threads); });
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&work, t, threads, this] { traceRows(work, t, threads); });
   traceRows(work, 0, threads);
   for (std::thread& thread : pool) thread.join();
   return work;
@@ -235,7 +238,8 @@ void AnimationRenderer::remember(const SceneFrame& frame, const Work& work) {
     hitBuffer_.store(pixel, work.pixels[pixel]);
   lastCamera_ = frame.camera;
   lastHeaders_.clear();
-  for (size_t i = 0; i < memory_.instanceCount(); ++i) lastHeaders_.push_back(memory_.headerWords(i));
+  for (size_t i = 0; i < memory_.instanceCount(); ++i)
+    lastHeaders_.push_back(memory_.headerWords(i));
 }
 
 }  // namespace rtu

@@ -1,11 +1,11 @@
 #pragma once
 // Frames of an animated scene on the untimed models: each frame's camera and instance headers
-// from the scene description, every pixel's ray through the scene manager (src/scene/scene_manager.h)
-// in parallel threads, the hit buffer (src/scene/hit_buffer.h) carried from frame to frame, and
-// the frame's statistics. Cycles are the golden costs of the issued jobs run through the RTU
-// recurrence (src/rtu/rtu_recurrence.h: ideal memory, the job manager's latencies, the chosen
-// cores and cyclic first-available scheduling) in the order the scene manager issues them; the
-// scene manager's own sphere tests and the hit buffer's checks are not timed.
+// from the scene description, every pixel's ray through the scene manager
+// (src/scene/scene_manager.h) in parallel threads, the hit buffer (src/scene/hit_buffer.h) carried
+// from frame to frame, and the frame's statistics. Cycles are the golden costs of the issued jobs
+// run through the RTU recurrence (src/rtu/rtu_recurrence.h: ideal memory, the job manager's
+// latencies, the chosen cores and cyclic first-available scheduling) in the order the scene manager
+// issues them; the scene manager's own sphere tests and the hit buffer's checks are not timed.
 //
 // On the cycle-accurate model (AnimationOptions::rtu) the rays the hit buffer does not answer
 // are also simulated through the SystemC scene manager (src/run/rtu_simulation.h
@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "base/statistics.h"
-#include "scene/hit_buffer.h"
 #include "run/model_run.h"
-#include "sim/rtu_config.h"
+#include "scene/hit_buffer.h"
 #include "scene/scene_file.h"
 #include "scene/scene_memory.h"
+#include "sim/rtu_config.h"
 
 namespace rtu {
 

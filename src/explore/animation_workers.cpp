@@ -56,7 +56,8 @@ class FrameCollector {
       return fail(range, std::string("unreadable worker answer: ") + error.what());
     }
     progress_.update(++received_, 0);
-    for (auto next = waiting_.find(handed_); next != waiting_.end(); next = waiting_.find(handed_)) {
+    for (auto next = waiting_.find(handed_); next != waiting_.end();
+         next = waiting_.find(handed_)) {
       frameDone_(next->second);
       waiting_.erase(next);
       ++handed_;

@@ -23,10 +23,10 @@ std::vector<FrameRange> splitFrames(int frames, int ranges);
 // Ranges per worker: each costs one primed frame, traced on the golden model.
 constexpr int kFrameRangesPerWorker = 4;
 
-// Renders every frame of `scene` in up to `workers` workers (one: a single range). In a worker `writeFrame` writes a rendered frame's files; in the
-// parent `frameDone` gets each frame's statistics in frame order, and a progress line with ETA
-// counts the frames. Throws std::runtime_error naming the frames of a worker that failed, after
-// the other workers finished.
+// Renders every frame of `scene` in up to `workers` workers (one: a single range). In a worker
+// `writeFrame` writes a rendered frame's files; in the parent `frameDone` gets each frame's
+// statistics in frame order, and a progress line with ETA counts the frames. Throws
+// std::runtime_error naming the frames of a worker that failed, after the other workers finished.
 void renderFramesInWorkers(const SceneDescription& scene, const std::vector<SceneModel>& models,
                            const AnimationOptions& options, int workers,
                            const std::function<void(const SceneFrame&)>& writeFrame,

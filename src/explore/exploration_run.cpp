@@ -2,16 +2,16 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
-#include "run/analytic_run.h"
 #include "config/run_json.h"
+#include "explore/sweep_workers.h"
+#include "kinds/svo/stack_check.h"
+#include "run/analytic_run.h"
 #include "run/rtu_simulation.h"
 #include "run/sampled_run.h"
-#include "kinds/svo/stack_check.h"
-#include "explore/sweep_workers.h"
 
 namespace rtu {
 namespace {
@@ -36,8 +36,9 @@ void SceneCache::build(const std::vector<Configuration>& configurations) {
   std::map<std::string, Use> uses;
   for (const Configuration& configuration : configurations) {
     const RunConfig& settings = configuration.values();
-    auto [use, added] = uses.emplace(sceneKey(settings.scene),
-                                     Use{&settings.scene, settings.rtu.stackFrames, settings.allowStackOverflow});
+    auto [use, added] =
+        uses.emplace(sceneKey(settings.scene),
+                     Use{&settings.scene, settings.rtu.stackFrames, settings.allowStackOverflow});
     use->second.stackFrames = std::max(use->second.stackFrames, settings.rtu.stackFrames);
     use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
   }
@@ -65,8 +66,11 @@ void SceneCache::save(const std::string& directory) const {
   for (const auto& [key, scene] : scenes_) {
     const std::string file = "scene_" + std::to_string(number++) + ".svo";
     writeSvoFile(directory + "/" + file, scene.image);
-    index[key] = {{"file", file}, {"root", scene.image.root}, {"name", scene.name},
-                  {"summary", scene.summary}, {"depth", scene.depth}};
+    index[key] = {{"file", file},
+                  {"root", scene.image.root},
+                  {"name", scene.name},
+                  {"summary", scene.summary},
+                  {"depth", scene.depth}};
   }
   for (const auto& [key, error] : errors_) index[key] = {{"error", error}};
   std::ofstream out(directory + "/scenes.json");
@@ -104,7 +108,8 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
   if (settings.model != ModelKind::CycleAccurate) {
     if (settings.sample.enabled())
       throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
-                                              "not go with --model ") + toString(settings.model));
+                                              "not go with --model ") +
+                                  toString(settings.model));
     const RtuRun run = runModel(settings.model, scene.image.memory(), jobs, settings.rtu);
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
     row.update(runJson(run.statistics, configuration));
@@ -152,14 +157,17 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
   scenes.build(used);
   Progress progress(label, rows.size());
   size_t finished = 0, failures = 0;
-  const auto work = [&](size_t row) { return runRowSafely(configurations[row], scenes, model).dump(); };
+  const auto work = [&](size_t row) {
+    return runRowSafely(configurations[row], scenes, model).dump();
+  };
   runInWorkers(rows, jobs, work, [&](size_t row, const WorkerOutcome& outcome) {
     nlohmann::ordered_json result;
     try {
       result = outcome.answered ? nlohmann::ordered_json::parse(outcome.line)
                                 : failedRow(configurations[row], outcome.failure, "lost");
     } catch (const nlohmann::json::exception& error) {
-      result = failedRow(configurations[row], std::string("unreadable worker answer: ") + error.what());
+      result =
+          failedRow(configurations[row], std::string("unreadable worker answer: ") + error.what());
     }
     failures += result["status"] != "ok";
     done(row, result);
@@ -237,7 +245,8 @@ std::vector<std::string> statisticsValues(const Json& row) {
   const bool ok = row.contains("statistics");
   for (const auto& [name, pointer] : columnPointers()) {
     const Json* statistics = ok ? &row["statistics"] : nullptr;
-    values.push_back(statistics && statistics->contains(pointer) ? valueText((*statistics)[pointer]) : "");
+    values.push_back(statistics && statistics->contains(pointer) ? valueText((*statistics)[pointer])
+                                                                 : "");
   }
   return values;
 }

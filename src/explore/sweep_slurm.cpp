@@ -81,7 +81,8 @@ size_t countRows(const std::string& directory, int tasks) {
 }
 
 // sbatch --wait, with progress from the rows the tasks have written meanwhile.
-void submitAndWait(const std::string& script, const std::string& directory, int tasks, size_t total) {
+void submitAndWait(const std::string& script, const std::string& directory, int tasks,
+                   size_t total) {
   std::vector<std::string> words = {"sbatch", "--wait", "--parsable", script};
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
@@ -106,12 +107,13 @@ void submitAndWait(const std::string& script, const std::string& directory, int 
 
 std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
                            const std::vector<size_t>& rows, const std::string& directoryName,
-                           const SlurmOptions& options, const std::function<void(const Json&)>& done) {
+                           const SlurmOptions& options,
+                           const std::function<void(const Json&)>& done) {
   const std::string directory = fs::absolute(directoryName).string();
   fs::remove_all(directory);  // a fresh plan: rows already done are in the sweep's own files
   fs::create_directories(directory);
-  const int tasks = static_cast<int>(std::max<size_t>(
-      1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
+  const int tasks = static_cast<int>(
+      std::max<size_t>(1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
   std::vector<Configuration> pending;
   {
     std::ofstream plan(directory + "/configs.jsonl");
@@ -148,7 +150,8 @@ void runSlurmTask(const std::string& directory, int task) {
   std::vector<std::string> done;
   for (const Json& row : readRows(path)) done.push_back(row["config"].dump());
   std::ofstream out(path, std::ios::app);
-  for (size_t i = static_cast<size_t>(task); i < configurations.size(); i += static_cast<size_t>(tasks)) {
+  for (size_t i = static_cast<size_t>(task); i < configurations.size();
+       i += static_cast<size_t>(tasks)) {
     const std::string key = configurations[i].toJson().dump();
     if (std::find(done.begin(), done.end(), key) != done.end()) continue;
     out << runRowSafely(configurations[i], scenes).dump() << "\n" << std::flush;

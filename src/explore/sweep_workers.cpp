@@ -79,8 +79,8 @@ WorkerOutcome finishWorker(Worker& worker) {
     outcome.failure = "worker killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
                       strsignal(WTERMSIG(status)) + ")";
   } else {
-    outcome.failure = "worker exited with status " + std::to_string(WEXITSTATUS(status)) +
-                      " without a result";
+    outcome.failure =
+        "worker exited with status " + std::to_string(WEXITSTATUS(status)) + " without a result";
   }
   return outcome;
 }
@@ -98,11 +98,13 @@ Progress::Progress(std::string label, size_t total, std::string unit)
 std::string Progress::line(size_t done, size_t failed) const {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  std::string text = label_ + " " + std::to_string(done) + "/" + std::to_string(total_) + " " + unit_;
+  std::string text =
+      label_ + " " + std::to_string(done) + "/" + std::to_string(total_) + " " + unit_;
   if (failed > 0) text += ", " + std::to_string(failed) + " failed";
   text += ", " + clockText(elapsed) + " elapsed";
   if (done > 0 && done < total_)
-    text += ", ETA " + clockText(elapsed / static_cast<double>(done) * static_cast<double>(total_ - done));
+    text += ", ETA " +
+            clockText(elapsed / static_cast<double>(done) * static_cast<double>(total_ - done));
   return text;
 }
 

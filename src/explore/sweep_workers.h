@@ -39,7 +39,8 @@ class Progress {
 // Progress of one simulation (rays received by the host), for simulateRtu's callback.
 class RunProgressLine {
  public:
-  RunProgressLine(std::string label, std::string unit) : label_(std::move(label)), unit_(std::move(unit)) {}
+  RunProgressLine(std::string label, std::string unit)
+      : label_(std::move(label)), unit_(std::move(unit)) {}
   ~RunProgressLine() {
     if (progress_) progress_->finish();
   }

@@ -58,9 +58,9 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_meshes_load(const char* path, void* mesh
   return rtu::pluginCall([&]() -> std::string {
     Assimp::Importer importer;
     // Validation rejects out-of-range indices, so the walk below can trust the scene.
-    const aiScene* scene = importer.ReadFile(
-        path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                  aiProcess_ValidateDataStructure);
+    const aiScene* scene =
+        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                    aiProcess_ValidateDataStructure);
     if (scene == nullptr) return std::string("assimp: ") + importer.GetErrorString();
     if (scene->mRootNode != nullptr)
       appendNode(*scene, *scene->mRootNode, glm::dmat4(1.0), *static_cast<TriangleMesh*>(mesh));

@@ -38,7 +38,8 @@ std::string encodeMesh(const TriangleMesh& mesh) {
 // vertex before anything is allocated or used.
 TriangleMesh decodeMesh(const std::string& bytes, const std::string& path) {
   const auto broken = [&] {
-    return std::runtime_error("cannot read mesh '" + path + "': the loading process sent a "
+    return std::runtime_error("cannot read mesh '" + path +
+                              "': the loading process sent a "
                               "malformed mesh");
   };
   if (bytes.size() < kCountsBytes) throw broken();

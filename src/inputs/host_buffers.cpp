@@ -70,7 +70,7 @@ struct JobCodec {
         throw valueError(i, std::string("t-value on axis ") + axes[k] + " is NaN");
       if (t0 > t1)
         throw valueError(i, std::string("t0") + axes[k] + " > t1" + axes[k] +
-                                 ": after mirroring every direction is positive, so t0 <= t1");
+                                ": after mirroring every direction is positive, so t0 <= t1");
     }
     job.root = record[7];
     return job;
@@ -212,7 +212,8 @@ std::vector<typename Codec::Record> decodeAll(const std::vector<uint32_t>& words
 template <class Codec>
 std::vector<uint32_t> encodeAll(const std::vector<typename Codec::Record>& records) {
   std::vector<uint32_t> words(records.size() * Codec::kWords);
-  for (size_t i = 0; i < records.size(); ++i) Codec::encode(records[i], i, &words[i * Codec::kWords]);
+  for (size_t i = 0; i < records.size(); ++i)
+    Codec::encode(records[i], i, &words[i * Codec::kWords]);
   return words;
 }
 
@@ -285,7 +286,7 @@ std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs) {
   return encodeAll<JobCodec>(jobs);
 }
 std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words,
-                                                size_t recordWords) {
+                                                 size_t recordWords) {
   return recordWords == kWideResultWords ? decodeAll<WideResultCodec>(words)
                                          : decodeAll<ResultCodec>(words);
 }
@@ -307,7 +308,7 @@ std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
   return readAll<JobCodec>(path, &skipped);
 }
 std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
-                                              std::vector<SkippedRecord>& skipped) {
+                                               std::vector<SkippedRecord>& skipped) {
   return readAll<JobCodec, HostRecord>(path, &skipped);
 }
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {

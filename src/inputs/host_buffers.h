@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "kinds/svo/fixed_point.h"
-#include "rtu/host_link.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/traversal_job.h"
+#include "rtu/host_link.h"
 
 namespace rtu {
 
@@ -40,7 +40,7 @@ std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs);
 // bits (resultRecordWords). Decoding throws std::runtime_error for hit words other than 0/1,
 // unknown flag bits, or a normal that is not zero on a miss.
 std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words,
-                                                size_t recordWords = kRecordWords);
+                                                 size_t recordWords = kRecordWords);
 // Throws std::invalid_argument when t_hit or the normal do not fit 32 bits in 8-word records.
 std::vector<uint32_t> encodeResultRecords(const std::vector<TraversalResult>& results,
                                           size_t recordWords = kRecordWords);
@@ -65,7 +65,7 @@ std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
                                                 std::vector<SkippedRecord>& skipped);
 // readJobBufferSkipping straight into the records a run reads, without a job vector in between.
 std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
-                                              std::vector<SkippedRecord>& skipped);
+                                               std::vector<SkippedRecord>& skipped);
 std::vector<RayRecord> readRayBufferSkipping(const std::string& path,
                                              std::vector<SkippedRecord>& skipped);
 void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);

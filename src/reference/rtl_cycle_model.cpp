@@ -20,7 +20,8 @@ void RtlTopConfig::validate() const {
                                 " frames, got " + std::to_string(golden.stackFrames));
   if (rayStages < 0 || rayStages > 64 || headerFetchCycles < 0)
     throw std::invalid_argument("ray stages must be 0 to 64 and header fetch cycles not negative, "
-                                "got " + std::to_string(rayStages) + " and " +
+                                "got " +
+                                std::to_string(rayStages) + " and " +
                                 std::to_string(headerFetchCycles));
 }
 
@@ -131,13 +132,13 @@ class RtlTop::Registers {
 RtlTop::Registers::Registers(const SvoMemory& memory, const RtlTopConfig& config)
     : memory_(memory),
       config_(config),
-      setup_(memory, JobManagerConfig{config.golden.format, config.golden.conversion,
-                                      kJobManagerStages, config.rayStages,
-                                      config.headerFetchCycles}) {
+      setup_(memory,
+             JobManagerConfig{config.golden.format, config.golden.conversion, kJobManagerStages,
+                              config.rayStages, config.headerFetchCycles}) {
   config_.validate();
   const size_t cores = static_cast<size_t>(config_.cores);
-  const Core idle{TraversalCore<FixedArith>(FixedArith{config_.golden.format},
-                                            config_.golden.stackFrames)};
+  const Core idle{
+      TraversalCore<FixedArith>(FixedArith{config_.golden.format}, config_.golden.stackFrames)};
   cores_.assign(cores, idle);
   resultManager_.resultValid.assign(cores, false);
   resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
@@ -244,9 +245,7 @@ void RtlTop::Registers::clockCores(const Wires& w) {
       case CoreState::Out:
         if (w.coreOutReady[i]) core.traversal.finish();
         break;
-      default:
-        core.traversal.step(read);
-        break;
+      default: core.traversal.step(read); break;
     }
   }
 }

@@ -5,14 +5,14 @@
 // then updates every register of every module, as the clock edge does. Speed is no concern: it is
 // the reference the event-driven SystemC model is checked against, cycle count and result.
 //
-// The job manager also takes ray records (src/kinds/svo/job_setup.h), as the SystemC one does: a ray
-// passes `rayStages` more stages and, the first against a model, waits `headerFetchCycles` for its
-// header, in which no record is accepted (docs/cycle-semantics.md "Job manager").
+// The job manager also takes ray records (src/kinds/svo/job_setup.h), as the SystemC one does: a
+// ray passes `rayStages` more stages and, the first against a model, waits `headerFetchCycles` for
+// its header, in which no record is accepted (docs/cycle-semantics.md "Job manager").
 //
 // runRtlTop is the thesis' host: cycle 0 is the first cycle after reset. It offers job 0 from
 // cycle 0 and job i + 1 from the cycle after job i's handshake, and it is ready for a result in
-// every cycle. Another host (the scene manager's reference, src/reference/scene_manager_cycles.h) steps
-// RtlTop itself. Memory is ideal (data in the cycle of the address), as in the thesis.
+// every cycle. Another host (the scene manager's reference, src/reference/scene_manager_cycles.h)
+// steps RtlTop itself. Memory is ideal (data in the cycle of the address), as in the thesis.
 
 #include <cstdint>
 #include <memory>

@@ -23,7 +23,10 @@ class SceneCycles {
   SceneCycles(const SvoMemory& memory, const std::vector<RayRecord>& rays,
               const std::vector<SceneInstance>& instances, const SceneManagerConfig& scene,
               const RtlTopConfig& rtu)
-      : rays_(rays), instances_(instances), scene_(scene), format_(rtu.golden.format),
+      : rays_(rays),
+        instances_(instances),
+        scene_(scene),
+        format_(rtu.golden.format),
         top_(memory, rtu) {
     scene_.validate();
   }
@@ -52,7 +55,8 @@ class SceneCycles {
   }
 
   std::vector<HeldRay>::iterator heldRay(uint64_t id) {
-    return std::find_if(held_.begin(), held_.end(), [id](const HeldRay& ray) { return ray.id == id; });
+    return std::find_if(held_.begin(), held_.end(),
+                        [id](const HeldRay& ray) { return ray.id == id; });
   }
 
   // A result delivered in the cycle before: the nearest hit so far, the costs summed.
@@ -143,8 +147,8 @@ class SceneCycles {
   FixedFormat format_;
   RtlTop top_;
   // Registers.
-  size_t nextRay_ = 0;            // the ray the host offers
-  std::vector<HeldRay> held_;     // oldest first
+  size_t nextRay_ = 0;         // the ray the host offers
+  std::vector<HeldRay> held_;  // oldest first
   std::optional<RtlOffer> jobOffer_;
   std::vector<uint64_t> jobRay_;  // per job id: its ray
   uint64_t jobsOutstanding_ = 0;  // offered and not merged

@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "kinds/svo/ray_transform.h"
+#include "kinds/svo/svo_memory.h"
+#include "kinds/svo/traversal_job.h"
 #include "reference/rtl_cycle_model.h"
 #include "scene/scene_manager.h"
 #include "scene/scene_manager_timing.h"
-#include "kinds/svo/svo_memory.h"
-#include "kinds/svo/traversal_job.h"
 
 namespace rtu {
 

@@ -10,8 +10,9 @@ namespace rtu {
 
 HostLinkPacer::HostLinkPacer(HostLinkConfig config)
     : config_(config),
-      slot_(config.bytesPerCycle > 0.0 ? static_cast<double>(config.recordBytes) / config.bytesPerCycle
-                                       : 0.0),
+      slot_(config.bytesPerCycle > 0.0
+                ? static_cast<double>(config.recordBytes) / config.bytesPerCycle
+                : 0.0),
       generator_(config.seed) {}
 
 // Slot boundaries are computed from the last restart, not accumulated, so rounding cannot drift
@@ -22,7 +23,8 @@ HostLinkPacer::HostLinkPacer(HostLinkConfig config)
 uint64_t HostLinkPacer::slotStart(uint64_t records) const {
   const double cycles = static_cast<double>(static_cast<int64_t>(records)) * slot_ - 1e-6;  // > -1
   const auto whole = static_cast<int64_t>(std::max(cycles, 0.0));
-  return restartCycle_ + static_cast<uint64_t>(static_cast<double>(whole) < cycles ? whole + 1 : whole);
+  return restartCycle_ +
+         static_cast<uint64_t>(static_cast<double>(whole) < cycles ? whole + 1 : whole);
 }
 
 uint64_t HostLinkPacer::nextAllowed(uint64_t cycle) {
@@ -45,8 +47,9 @@ bool HostLinkPacer::drawActive() {
 void validate(const HostLinkConfig& config, const char* which) {
   const double rate = config.bytesPerCycle;
   if (rate != 0.0 && !(rate >= kMinBytesPerCycle && rate <= kMaxBytesPerCycle))  // NaN fails too
-    throw std::invalid_argument(std::string(which) + " bytes per cycle must be 0 (unlimited) or in " +
-                                rateRange() + ", not " + std::to_string(rate));
+    throw std::invalid_argument(std::string(which) +
+                                " bytes per cycle must be 0 (unlimited) or in " + rateRange() +
+                                ", not " + std::to_string(rate));
   if (!(config.activeProbability > 0.0 && config.activeProbability <= 1.0))
     throw std::invalid_argument(std::string(which) + " activity must be in (0, 1]");
 }

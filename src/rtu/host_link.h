@@ -19,8 +19,8 @@ inline uint64_t resultRecordBytes(int totalBits) {
 }
 
 struct HostLinkConfig {
-  double bytesPerCycle = 0.0;       // 0: unlimited
-  double activeProbability = 1.0;   // chance the link can move a record in a given cycle
+  double bytesPerCycle = 0.0;      // 0: unlimited
+  double activeProbability = 1.0;  // chance the link can move a record in a given cycle
   uint64_t seed = 1;
   uint64_t recordBytes = kHostRecordBytes;  // what one record takes on the link
 };
@@ -39,10 +39,10 @@ class HostLinkPacer {
   uint64_t slotStart(uint64_t records) const;
 
   HostLinkConfig config_;
-  double slot_;                        // cycles a record takes on a paced link
-  uint64_t restartCycle_ = 0;          // pacing runs from here ...
-  uint64_t recordsSinceRestart_ = 0;   // ... with this many records crossed since
-  uint64_t lastSlotStart_ = 0;         // slotStart(recordsSinceRestart_)
+  double slot_;                       // cycles a record takes on a paced link
+  uint64_t restartCycle_ = 0;         // pacing runs from here ...
+  uint64_t recordsSinceRestart_ = 0;  // ... with this many records crossed since
+  uint64_t lastSlotStart_ = 0;        // slotStart(recordsSinceRestart_)
   std::mt19937_64 generator_;
 };
 

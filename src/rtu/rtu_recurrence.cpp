@@ -168,7 +168,8 @@ class Recurrence {
     if (inPipeline_ < i && run_.pendingCycles[inPipeline_] <= accept)
       accept = run_.dispatchCycles[inPipeline_++];  // the pipeline is held until that dispatch
     uint64_t stalls = 0;
-    for (size_t k = inPipeline_; k < i; ++k) stalls += run_.dispatchCycles[k] - run_.pendingCycles[k];
+    for (size_t k = inPipeline_; k < i; ++k)
+      stalls += run_.dispatchCycles[k] - run_.pendingCycles[k];
     uint64_t pending = accept + job.pipelineCycles + stalls;
     if (i > 0) pending = std::max(pending, run_.dispatchCycles[i - 1] + 1);
     if (job.headerFetch > 0) fetchUntil_ = accept + 1 + job.headerFetch;
@@ -248,7 +249,7 @@ class Recurrence {
   std::vector<uint64_t> idleFrom_;  // per core: idle from this cycle on (kUnknown: not yet known)
   std::vector<size_t> waiting_;     // per core: job whose result waits in the core (kNoJob: none)
   std::vector<uint64_t> waitingFrom_;  // ... from this cycle, D_i + 1 + W_i
-  std::vector<size_t> buffered_;    // per core: job whose result is in the result buffer
+  std::vector<size_t> buffered_;       // per core: job whose result is in the result buffer
   std::vector<uint64_t> lastDrain_;
   uint64_t fetchUntil_ = 0;
   size_t inPipeline_ = 0;  // the oldest job not yet dispatched when the current one entered

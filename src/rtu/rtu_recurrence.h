@@ -33,7 +33,7 @@
 namespace rtu {
 
 struct RecurrenceJob {
-  uint64_t cost = 0;           // traversal cycles W_i, INIT up to the last state before OUT
+  uint64_t cost = 0;            // traversal cycles W_i, INIT up to the last state before OUT
   uint64_t pipelineCycles = 6;  // job manager latency (L_i): stages, plus ray set-up and fetch
   uint64_t headerFetch = 0;     // cycles after its acceptance in which no record is accepted
 };

@@ -7,8 +7,8 @@
 
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
-#include "run/recurrence_results.h"
 #include "rtu/rtu_recurrence.h"
+#include "run/recurrence_results.h"
 
 namespace rtu {
 namespace {
@@ -49,7 +49,8 @@ std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
 namespace {
 
 template <typename Record>
-RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records, const RtuConfig& config) {
+RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records,
+                   const RtuConfig& config) {
   validate(config);
   if (const auto why = whyNotAnalytic(config))
     throw std::invalid_argument("the analytic model does not apply: " + *why);

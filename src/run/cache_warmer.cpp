@@ -30,7 +30,8 @@ void CacheWarmer::warmUpTo(const std::vector<TraversalJob>& jobs, uint64_t end) 
 
 void CacheWarmer::touch(int core, uint32_t wordAddress) {
   const uint64_t byteAddress = L1CacheTiming::byteAddress(wordAddress);
-  if (!contents_.l1[static_cast<size_t>(core)].touch(byteAddress)) contents_.l2.front().touch(byteAddress);
+  if (!contents_.l1[static_cast<size_t>(core)].touch(byteAddress))
+    contents_.l2.front().touch(byteAddress);
 }
 
 }  // namespace rtu

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "sim/memory/cache_contents.h"
 #include "kinds/svo/golden_model.h"
+#include "sim/memory/cache_contents.h"
 #include "sim/rtu_config.h"
 
 namespace rtu {

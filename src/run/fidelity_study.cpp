@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "run/analytic_run.h"
 #include "kinds/svo/golden_model.h"
+#include "run/analytic_run.h"
 #include "run/lt_simulation.h"
 
 namespace rtu {
@@ -118,7 +118,8 @@ class Study {
     ModeFidelity m = base(mode, seconds);
     m.totalCycles = cycles;
     m.totalCyclesError = cycles / static_cast<double>(reference_.totalCycles) - 1;
-    if (!config_.memory.ideal) setHitRates(m, hitRate(statistics.allL1()), hitRate(statistics.l2.cache));
+    if (!config_.memory.ideal)
+      setHitRates(m, hitRate(statistics.allL1()), hitRate(statistics.l2.cache));
     return m;
   }
 

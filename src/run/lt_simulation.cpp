@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "run/analytic_run.h"
-#include "sim/lt/lt_top.h"
 #include "run/recurrence_results.h"
 #include "sim/kernel/sc_kernel.h"
+#include "sim/lt/lt_top.h"
 
 namespace rtu {
 

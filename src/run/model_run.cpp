@@ -29,7 +29,8 @@ RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& re
   ideal.memory.ideal = true;
   if (const auto why = whyNotAnalytic(ideal))
     throw std::invalid_argument("--model golden times rays by their golden costs in the "
-                                "recurrence, which does not apply: " + *why);
+                                "recurrence, which does not apply: " +
+                                *why);
   RtuRun run = runAnalytic(memory, records, ideal);
   run.statistics.model = "golden";
   return run;

@@ -21,8 +21,13 @@ class RunLoop {
  public:
   RunLoop(RtuTop& top, const RtuConfig& config, CycleTrace* trace, const RunProgress& progress,
           const BlockRun& plan, std::vector<RunSnapshot>& snapshots)
-      : top_(top), config_(config), clock_(CycleClock::atMegahertz(config.clockMhz)), trace_(trace),
-        progress_(progress), plan_(plan), snapshots_(snapshots) {}
+      : top_(top),
+        config_(config),
+        clock_(CycleClock::atMegahertz(config.clockMhz)),
+        trace_(trace),
+        progress_(progress),
+        plan_(plan),
+        snapshots_(snapshots) {}
 
   // False when the run stopped at its last snapshot.
   bool run() {
@@ -50,7 +55,8 @@ class RunLoop {
   static constexpr uint64_t kProgressCycles = uint64_t{1} << 18;
 
   uint64_t slice() const {
-    if (snapshots_.size() < plan_.afterResults.size()) return std::max<uint64_t>(1, plan_.everyCycles);
+    if (snapshots_.size() < plan_.afterResults.size())
+      return std::max<uint64_t>(1, plan_.everyCycles);
     if (!trace_) return kProgressCycles;
     return config_.trace ? config_.trace->flushCycles : TraceOptions{}.flushCycles;
   }
@@ -75,7 +81,8 @@ class RunLoop {
 };
 
 // A trace when the run writes or counts one, a timeline, or has listeners: the file is optional.
-std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config, std::vector<TraceListener*> listeners) {
+std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config,
+                                      std::vector<TraceListener*> listeners) {
   if (!config.trace && listeners.empty()) return nullptr;
   TraceOptions options = config.trace.value_or(TraceOptions{});
   options.periodPs = CycleClock::atMegahertz(config.clockMhz).period().value();
@@ -113,8 +120,8 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
   const std::vector<uint64_t>& cycles = sink.arrivals().cycles;
   if (trace) trace->finish(cycles.empty() ? 0 : cycles.front());
   if (!sink.complete())
-    throw std::runtime_error("simulation stalled after " + std::to_string(cycles.size()) +
-                             " of " + std::to_string(records.size()) + " results");
+    throw std::runtime_error("simulation stalled after " + std::to_string(cycles.size()) + " of " +
+                             std::to_string(records.size()) + " results");
   run.totalCycles = cycles.empty() ? 0 : cycles.back() + 1;
   if (top->sceneManager()) run.jobIssueCycles = top->sceneManager()->issueCycles();
   run.statistics = collectStatistics(*top, config, run.totalCycles);

@@ -7,13 +7,13 @@
 #include <functional>
 #include <vector>
 
-#include "sim/rtu_config.h"
-#include "sim/memory/cache_contents.h"
-#include "sim/ca/rtu_payloads.h"
-#include "run/rtu_statistics.h"
 #include "kinds/svo/svo_memory.h"
-#include "trace/trace_listener.h"
 #include "kinds/svo/traversal_job.h"
+#include "run/rtu_statistics.h"
+#include "sim/ca/rtu_payloads.h"
+#include "sim/memory/cache_contents.h"
+#include "sim/rtu_config.h"
+#include "trace/trace_listener.h"
 
 namespace rtu {
 

@@ -45,7 +45,9 @@ void RtuStatistics::count(const TraversalResult& result, uint64_t blocked) {
 
 double RtuStatistics::cyclesPerRay() const { return rays == 0 ? 0.0 : ratio(totalCycles, rays); }
 double RtuStatistics::raysPerSecond() const {
-  return totalCycles == 0 ? 0.0 : static_cast<double>(rays) * clockMhz * 1e6 / static_cast<double>(totalCycles);
+  return totalCycles == 0
+             ? 0.0
+             : static_cast<double>(rays) * clockMhz * 1e6 / static_cast<double>(totalCycles);
 }
 double RtuStatistics::framesPerSecond() const {
   return totalCycles == 0 ? 0.0 : clockMhz * 1e6 / static_cast<double>(totalCycles);
@@ -84,7 +86,8 @@ RtuStatistics::Utilisation RtuStatistics::utilisation() const {
   // The job manager and scheduler issue at most one job a cycle.
   const double issue = totalCycles == 0 ? 0.0 : ratio(rays, totalCycles);
   const double hostIn = linkUtilisation(rays, kHostRecordBytes, hostInBytesPerCycle, totalCycles);
-  const double hostOut = linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
+  const double hostOut =
+      linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
   return {shares.busy, shares.blocked, hostInBytesPerCycle > 0 ? hostIn : 0.0,
           hostOutBytesPerCycle > 0 ? hostOut : 0.0, issue};
 }
@@ -154,9 +157,9 @@ const StatisticGroup<RtuStatistics>& RtuStatistics::declaration() {
           .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"), &S::cyclesPerRay)
           .setting(Statistic("clock_mhz", "MHz", "the clock of rates and frame times"),
                    &S::clockMhz)
-          .derived(
-              Statistic("frame_ms", "ms", "total_cycles at the clock: the run's rays as one frame"),
-              &S::frameMilliseconds)
+          .derived(Statistic("frame_ms", "ms",
+                             "total_cycles at the clock: the run's rays as one frame"),
+                   &S::frameMilliseconds)
           .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
                    &S::framesPerSecond)
           .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
@@ -258,10 +261,10 @@ void RtuStatistics::writeReport(std::ostream& out) const {
   out << "rays " << rays << ", total cycles " << totalCycles << " (" << cyclesPerRay()
       << " per ray)\n";
   out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, frame "
-      << frameMilliseconds() << " ms, " << framesPerSecond() << " frames/s, limited by "
-      << limit() << "\n";
-  out << "per ray: cost " << ratio(totalCost, rays) << " states (max " << maxCost
-      << "), blocked " << ratio(totalBlocked, rays) << " cycles (max " << maxBlocked << ")\n";
+      << frameMilliseconds() << " ms, " << framesPerSecond() << " frames/s, limited by " << limit()
+      << "\n";
+  out << "per ray: cost " << ratio(totalCost, rays) << " states (max " << maxCost << "), blocked "
+      << ratio(totalBlocked, rays) << " cycles (max " << maxBlocked << ")\n";
   const CoreTimeShares shares = coreTimeShares();
   out << "core time (" << cores << " cores): busy " << 100 * shares.busy << " %, blocked "
       << 100 * shares.blocked << " %, handover " << 100 * shares.handover << " %, idle "
@@ -272,9 +275,9 @@ void RtuStatistics::writeReport(std::ostream& out) const {
   if (!idealMemory) {
     const CacheStats l1Total = allL1();
     out << "L1 hit rate " << 100 * hitRate(l1Total) << " % of " << l1Total.accesses
-        << " reads; L2 hit rate " << 100 * hitRate(l2.cache) << " % of "
-        << l2.cache.accesses << "; DRAM " << l2.dram.bytes << " bytes ("
-        << dramBytesPerCycle() << " B/cycle, " << dramBytesPerCycle() * clockMhz << " MB/s)\n";
+        << " reads; L2 hit rate " << 100 * hitRate(l2.cache) << " % of " << l2.cache.accesses
+        << "; DRAM " << l2.dram.bytes << " bytes (" << dramBytesPerCycle() << " B/cycle, "
+        << dramBytesPerCycle() * clockMhz << " MB/s)\n";
   }
   if (scene)
     out << "scene manager: " << ratio(scene->jobs, scene->rays) << " jobs per ray, "
@@ -299,7 +302,8 @@ RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint
   stats.maxWait = scheduler.maxWait;
   stats.maxWaitWithReadyCore = scheduler.maxWaitWithReadyCore;
   stats.resultBuffersMaxFull = top.resultManager().statistics().maxBuffered;
-  if (top.reorderBuffer()) stats.reorderMaxOccupancy = top.reorderBuffer()->statistics().maxOccupancy;
+  if (top.reorderBuffer())
+    stats.reorderMaxOccupancy = top.reorderBuffer()->statistics().maxOccupancy;
   if (top.sceneManager()) stats.scene = top.sceneManager()->statistics();
   stats.idealMemory = top.memory().combinational();
   if (!stats.idealMemory) {

@@ -14,9 +14,9 @@
 
 #include "base/statistics.h"
 #include "rtu/core_statistics.h"
+#include "scene/scene_manager_timing.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"
-#include "scene/scene_manager_timing.h"
 
 namespace rtu {
 
@@ -43,7 +43,7 @@ struct RtuStatistics {
   uint64_t totalCost = 0, maxCost = 0;  // traversal states per ray, as the golden model counts
   uint64_t totalBlocked = 0, maxBlocked = 0;  // cycles BLOCKED on memory per ray, beside the cost
   double hostInBytesPerCycle = 0.0, hostOutBytesPerCycle = 0.0;  // 0: a record a cycle
-  uint64_t hostOutRecordBytes = kHostRecordBytes;  // 48 for formats over 32 bits
+  uint64_t hostOutRecordBytes = kHostRecordBytes;                // 48 for formats over 32 bits
   double hostSeconds = 0.0;
   std::string model = "systemc";  // what answered: the SystemC simulation or the "recurrence"
 

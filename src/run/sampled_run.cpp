@@ -9,24 +9,28 @@
 #include <stdexcept>
 #include <string>
 
-#include "run/cache_warmer.h"
 #include "kinds/svo/golden_model.h"
+#include "run/cache_warmer.h"
 #include "run/statistics_output.h"
 #include "run/statistics_window.h"
 
 namespace rtu {
 namespace {
 
-constexpr uint64_t kMinBlockRays = 1024, kMaxBlockRays = 4096;  // docs/fidelity.md: shorter ones are noisy
+constexpr uint64_t kMinBlockRays = 1024,
+                   kMaxBlockRays = 4096;  // docs/fidelity.md: shorter ones are noisy
 // Simulated before each block: fills the pipeline and the cores, and gives each L1 the rays its
 // core really takes; the caches are warmed functionally before it (cache_warmer.h). 512 rays, or
 // 32 a core: with 8 a core, 64 cores' L1s stayed colder than in the full run (docs/fidelity.md).
-uint64_t defaultWarmupRays(int cores) { return std::max<uint64_t>(512, 32 * static_cast<uint64_t>(cores)); }
+uint64_t defaultWarmupRays(int cores) {
+  return std::max<uint64_t>(512, 32 * static_cast<uint64_t>(cores));
+}
 constexpr uint64_t kTargetStrata = 40;
 
 uint64_t autoBlockRays(double budget, uint64_t warmup, uint64_t cooldown) {
   // head, tail and two blocks in each of kTargetStrata strata
-  const double perBlock = budget / (2.0 * kTargetStrata + 2.0) - static_cast<double>(warmup + cooldown);
+  const double perBlock =
+      budget / (2.0 * kTargetStrata + 2.0) - static_cast<double>(warmup + cooldown);
   return std::clamp<uint64_t>(static_cast<uint64_t>(std::max(perBlock, 0.0)), kMinBlockRays,
                               kMaxBlockRays);
 }
@@ -41,7 +45,8 @@ std::string shortText(double value) {
   throw std::invalid_argument(
       "sample.fraction " + shortText(spec.fraction) + " of " + std::to_string(rays) +
       " rays is too small for two strata of two blocks of " + std::to_string(block) +
-      " rays after a warm-up of " + std::to_string(warmup) + ": raise sample.fraction or lower "
+      " rays after a warm-up of " + std::to_string(warmup) +
+      ": raise sample.fraction or lower "
       "sample.block / sample.warmup, or simulate every ray");
 }
 
@@ -51,7 +56,8 @@ struct Block {
   RtuStatistics counted;
 };
 
-std::vector<TraversalJob> slice(const std::vector<TraversalJob>& jobs, uint64_t first, uint64_t end) {
+std::vector<TraversalJob> slice(const std::vector<TraversalJob>& jobs, uint64_t first,
+                                uint64_t end) {
   return {jobs.begin() + static_cast<ptrdiff_t>(first), jobs.begin() + static_cast<ptrdiff_t>(end)};
 }
 
@@ -129,7 +135,8 @@ struct Sample {
   // The paired jackknife's replicate h (JK2): stratum h's second block replaced by its first.
   Sample replicate(size_t h) const {
     Sample copy = *this;
-    for (Quantity* q : {&copy.cycles, &copy.l1Hits, &copy.l1Accesses, &copy.l2Hits, &copy.l2Accesses})
+    for (Quantity* q :
+         {&copy.cycles, &copy.l1Hits, &copy.l1Accesses, &copy.l2Hits, &copy.l2Accesses})
       q->strata[h][1] = q->strata[h][0];
     copy.blockCost[h][1] = copy.blockCost[h][0];
     return copy;
@@ -185,7 +192,8 @@ uint64_t SamplePlan::simulatedRays() const {
 
 SamplePlan planSample(uint64_t rays, int cores, const SampleSpec& spec) {
   if (!(spec.fraction > 0 && spec.fraction <= 1))
-    throw std::invalid_argument("sample.fraction must be in (0, 1], got " + shortText(spec.fraction));
+    throw std::invalid_argument("sample.fraction must be in (0, 1], got " +
+                                shortText(spec.fraction));
   const double budget = spec.fraction * static_cast<double>(rays);
   SamplePlan plan;
   plan.rays = rays;
@@ -243,8 +251,8 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
     }
     addStatistics(run.counted, b.counted);
   };
-  for (Quantity* q : {&sample.cycles, &sample.l1Hits, &sample.l1Accesses, &sample.l2Hits,
-                      &sample.l2Accesses})
+  for (Quantity* q :
+       {&sample.cycles, &sample.l1Hits, &sample.l1Accesses, &sample.l2Hits, &sample.l2Accesses})
     q->strata.resize(plan.strata.size());
 
   // Blocks in frame order, so that one warmer walks the frame once.
@@ -256,7 +264,8 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
   std::vector<Place> places{{0, kFixed}, {plan.tailFirst, kFixed}};
   for (size_t h = 0; h < plan.strata.size(); ++h)
     for (uint64_t first : plan.strata[h].blocks) places.push_back({first, h});
-  std::sort(places.begin(), places.end(), [](const Place& a, const Place& b) { return a.first < b.first; });
+  std::sort(places.begin(), places.end(),
+            [](const Place& a, const Place& b) { return a.first < b.first; });
   std::unique_ptr<CacheWarmer> warmer;
   if (!config.memory.ideal) warmer = std::make_unique<CacheWarmer>(memory, config);
   for (const Place& place : places) {
@@ -266,8 +275,8 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
       warmer->warmUpTo(jobs, place.first - std::min(warmup, place.first));
       options.startCaches = &warmer->contents();
     }
-    const Block measured = simulateBlock(memory, jobs, config, place.first, block, warmup,
-                                         plan.cooldownRays, options);
+    const Block measured =
+        simulateBlock(memory, jobs, config, place.first, block, warmup, plan.cooldownRays, options);
     count(measured, place.stratum == kFixed, place.stratum == kFixed ? 0 : place.stratum);
   }
 
@@ -276,7 +285,8 @@ SampledRun runSampled(const SvoMemory& memory, const std::vector<TraversalJob>& 
     sample.rays.push_back(static_cast<double>(stratum.rays));
     sample.stratumCost.push_back(meanCost(golden, stratum.first, stratum.rays));
     sample.blockCost.emplace_back();
-    for (uint64_t first : stratum.blocks) sample.blockCost.back().push_back(meanCost(golden, first, block));
+    for (uint64_t first : stratum.blocks)
+      sample.blockCost.back().push_back(meanCost(golden, first, block));
   }
   run.totalCycles = sample.interval([](const Sample& s) { return s.total(s.cycles); });
   if (!config.memory.ideal) {
@@ -295,17 +305,18 @@ const StatisticGroup<SampledRun>& SampledRun::declaration() {
   const auto rays = [](const R& r) { return static_cast<double>(r.plan.rays); };
   static const StatisticGroup<SampledRun> group =
       StatisticGroup<SampledRun>("a sampled run")
-          .derived(
-              Statistic("fraction_simulated", "",
-                        "share of the frame's rays simulated, warm-ups included"),
-              [rays](const R& r) { return static_cast<double>(r.plan.simulatedRays()) / rays(r); })
+          .derived(Statistic("fraction_simulated", "",
+                             "share of the frame's rays simulated, warm-ups included"),
+                   [rays](const R& r) {
+                     return static_cast<double>(r.plan.simulatedRays()) / rays(r);
+                   })
           .derived(Statistic("simulated_rays", "rays", "rays simulated"),
                    [](const R& r) { return r.plan.simulatedRays(); })
           .derived(Statistic("block_rays", "rays", "rays counted per block"),
                    [](const R& r) { return r.plan.blockRays; })
-          .derived(
-              Statistic("warmup_rays", "rays", "rays simulated before each block, not counted"),
-              [](const R& r) { return r.plan.warmupRays; })
+          .derived(Statistic("warmup_rays", "rays",
+                             "rays simulated before each block, not counted"),
+                   [](const R& r) { return r.plan.warmupRays; })
           .derived(Statistic("strata", "", "strata of the frame, two blocks each"),
                    [](const R& r) { return r.plan.strata.size(); })
           .derived(Statistic("blocks", "", "blocks simulated: two per stratum, head and tail"),
@@ -314,19 +325,19 @@ const StatisticGroup<SampledRun>& SampledRun::declaration() {
                    [](const R& r) { return r.counted.rays; })
           .derived(Statistic("counted_cycles", "cycles", "cycles of the counted blocks"),
                    [](const R& r) { return r.counted.totalCycles; })
-          .derived(
-              Statistic("total_cycles_ci95", "cycles", "95 % interval of the frame's total cycles"),
-              [interval](const R& r) { return interval(r.totalCycles, 1.0); })
-          .derived(
-              Statistic("cycles_per_ray_ci95", "cycles", "95 % interval of the cycles per ray"),
-              [interval, rays](const R& r) { return interval(r.totalCycles, rays(r)); })
-          .derived(
-              Statistic("l1_hit_rate_ci95", "", "95 % interval of the L1 hit rate (cached memory)"),
-              [interval](const R& r) { return interval(r.l1HitRate, 1.0); })
+          .derived(Statistic("total_cycles_ci95", "cycles",
+                             "95 % interval of the frame's total cycles"),
+                   [interval](const R& r) { return interval(r.totalCycles, 1.0); })
+          .derived(Statistic("cycles_per_ray_ci95", "cycles",
+                             "95 % interval of the cycles per ray"),
+                   [interval, rays](const R& r) { return interval(r.totalCycles, rays(r)); })
+          .derived(Statistic("l1_hit_rate_ci95", "",
+                             "95 % interval of the L1 hit rate (cached memory)"),
+                   [interval](const R& r) { return interval(r.l1HitRate, 1.0); })
           .writtenWhen([](const R& r) { return !r.counted.idealMemory; })
-          .derived(
-              Statistic("l2_hit_rate_ci95", "", "95 % interval of the L2 hit rate (cached memory)"),
-              [interval](const R& r) { return interval(r.l2HitRate, 1.0); })
+          .derived(Statistic("l2_hit_rate_ci95", "",
+                             "95 % interval of the L2 hit rate (cached memory)"),
+                   [interval](const R& r) { return interval(r.l2HitRate, 1.0); })
           .writtenWhen([](const R& r) { return !r.counted.idealMemory; });
   return group;
 }
@@ -339,19 +350,21 @@ nlohmann::ordered_json sampledStatisticsJson(const SampledRun& run) {
   frame.hostSeconds = run.hostSeconds;
   const Json frameJson = frame.toJson();
   Json json = run.counted.toJson();
-  for (const char* key : {"rays", "total_cycles", "cycles_per_ray", "frame_ms", "fps", "rays_per_second"})
+  for (const char* key :
+       {"rays", "total_cycles", "cycles_per_ray", "frame_ms", "fps", "rays_per_second"})
     json[key] = frameJson[key];
   const double rays = static_cast<double>(run.plan.rays);
   if (json["memory"]["kind"] == "cached") {
     json["memory"]["l1"]["hit_rate"] = run.l1HitRate.estimate;
     json["memory"]["l2"]["hit_rate"] = run.l2HitRate.estimate;
-    json["memory"]["dram"]["bytes"] = std::llround(run.counted.dramBytesPerCycle() *
-                                                   static_cast<double>(frame.totalCycles));
+    json["memory"]["dram"]["bytes"] =
+        std::llround(run.counted.dramBytesPerCycle() * static_cast<double>(frame.totalCycles));
   }
   json["sample"] = statisticsJson(run);
   json["simulation"] = {{"model", "sampled"},
                         {"host_seconds", run.hostSeconds},
-                        {"rays_per_host_second", run.hostSeconds > 0 ? rays / run.hostSeconds : 0.0}};
+                        {"rays_per_host_second",
+                         run.hostSeconds > 0 ? rays / run.hostSeconds : 0.0}};
   return json;
 }
 

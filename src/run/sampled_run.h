@@ -35,14 +35,13 @@ namespace rtu {
 
 // What to sample.
 struct SampleSpec {
-  double fraction = 0;      // of the frame's rays simulated, warm-ups included; 0: every ray
+  double fraction = 0;  // of the frame's rays simulated, warm-ups included; 0: every ray
   uint64_t seed = 1;
   uint64_t blockRays = 0;   // rays counted per block; 0: chosen from the fraction
   uint64_t warmupRays = 0;  // rays simulated before each block, not counted; 0: 4096
 
   bool enabled() const { return fraction > 0; }
 };
-
 
 struct SamplePlan {
   uint64_t rays = 0;

@@ -160,14 +160,10 @@ void writeReportedLine(std::ostream& out, const Statistic& statistic, const Stat
 
 const char* combineName(Combine combine) {
   switch (combine) {
-    case Combine::Sum:
-      return "sum";
-    case Combine::Max:
-      return "max";
-    case Combine::Setting:
-      return "setting";
-    case Combine::Derived:
-      return "derived";
+    case Combine::Sum: return "sum";
+    case Combine::Max: return "max";
+    case Combine::Setting: return "setting";
+    case Combine::Derived: return "derived";
   }
   return "";
 }

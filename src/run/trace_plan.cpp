@@ -108,7 +108,7 @@ RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& reco
   if (config.trace) {
     out << "trace size  " << config.trace->path << ": " << megabytes(sizes.trace)
         << (isFst(config.trace->path) ? " (estimated from its VCD's " + megabytes(sizes.vcd) + ")"
-                                       : "")
+                                      : "")
         << "\n";
     refuseAbove("trace", config.trace->path, sizes.trace, limits.maxBytes,
                 "--trace-scope, --trace-from/--trace-to, --trace-ray, an .fst path");

@@ -11,8 +11,8 @@
 #include <iosfwd>
 #include <vector>
 
-#include "sim/rtu_config.h"
 #include "run/rtu_simulation.h"
+#include "sim/rtu_config.h"
 
 namespace rtu {
 

@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "scene/scene_file.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/svo_bounds.h"
+#include "scene/scene_file.h"
 
 namespace rtu {
 

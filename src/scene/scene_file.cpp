@@ -33,7 +33,8 @@ class SceneFileReader {
     }
     SceneDescription scene;
     scene.path = path_;
-    allowOnly(root, "", {"width", "height", "frames", "frame_rate", "models", "instances", "camera"});
+    allowOnly(root, "",
+              {"width", "height", "frames", "frame_rate", "models", "instances", "camera"});
     scene.width = integer(root, "", "width", 1, 1 << 14, scene.width);
     scene.height = integer(root, "", "height", 1, 1 << 14, scene.height);
     scene.frames = integer(root, "", "frames", 1, 100000, scene.frames);
@@ -75,16 +76,15 @@ class SceneFileReader {
     const toml::node* node = table.get(key);
     if (!node) return otherwise;
     const std::optional<double> value = node->value<double>();
-    if (!value || !std::isfinite(*value))
-      fail(node, join(prefix, key), "expected a number");
+    if (!value || !std::isfinite(*value)) fail(node, join(prefix, key), "expected a number");
     if (*value < low || *value > high)
       fail(node, join(prefix, key),
            "must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
     return *value;
   }
 
-  int integer(const toml::table& table, const std::string& prefix, const std::string& key,
-              int low, int high, int otherwise) const {
+  int integer(const toml::table& table, const std::string& prefix, const std::string& key, int low,
+              int high, int otherwise) const {
     const toml::node* node = table.get(key);
     if (!node) return otherwise;
     if (!node->is_integer()) fail(node, join(prefix, key), "expected an integer");
@@ -99,7 +99,8 @@ class SceneFileReader {
   std::string text(const toml::table& table, const std::string& prefix,
                    const std::string& key) const {
     const toml::node* node = table.get(key);
-    if (!node || !node->is_string()) fail(node ? node : &table, join(prefix, key), "expected a string");
+    if (!node || !node->is_string())
+      fail(node ? node : &table, join(prefix, key), "expected a string");
     return node->as_string()->get();
   }
 
@@ -114,7 +115,8 @@ class SceneFileReader {
       const std::optional<double> value = element.value<double>();
       if (!value || !std::isfinite(*value)) fail(&node, key, expected);
       if (std::abs(*value) > limit)
-        fail(&node, key, "component " + std::to_string(*value) + " beyond " + std::to_string(limit));
+        fail(&node, key,
+             "component " + std::to_string(*value) + " beyond " + std::to_string(limit));
       values.push_back(*value);
     }
     return values;
@@ -135,7 +137,8 @@ class SceneFileReader {
                         const std::string& key) const {
     std::filesystem::path file = text(table, prefix, key);
     if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
-    if (!std::ifstream(file)) fail(table.get(key), join(prefix, key), "cannot read '" + file.string() + "'");
+    if (!std::ifstream(file))
+      fail(table.get(key), join(prefix, key), "cannot read '" + file.string() + "'");
     return file.string();
   }
 
@@ -146,8 +149,7 @@ class SceneFileReader {
     SceneSpec& source = model.source;
     int sources = 0;
     for (const char* key : {"procedural", "mesh", "svo", "binvox"}) sources += table.contains(key);
-    if (sources != 1)
-      fail(&table, prefix, "give exactly one of procedural, mesh, svo and binvox");
+    if (sources != 1) fail(&table, prefix, "give exactly one of procedural, mesh, svo and binvox");
     if (table.contains("procedural")) {
       source.procedural = text(table, prefix, "procedural");
       const auto& known = proceduralSceneNames();
@@ -185,8 +187,10 @@ class SceneFileReader {
 
   glm::dvec3 scale(const toml::node& node, const std::string& key) const {
     glm::dvec3 value;
-    if (node.value<double>()) value = glm::dvec3(*node.value<double>());
-    else value = vector3(node, key, 1e30);
+    if (node.value<double>())
+      value = glm::dvec3(*node.value<double>());
+    else
+      value = vector3(node, key, 1e30);
     for (int axis = 0; axis < 3; ++axis)
       if (!(value[axis] >= kMinInverseScale && value[axis] <= kMaxInverseScale))
         fail(&node, key, "a scale must lie in [2^-32, 2^32] on every axis");
@@ -201,7 +205,8 @@ class SceneFileReader {
     const toml::node* node = key.get("rotation");
     const std::vector<double> q = numbers(*node, join(prefix, "rotation"), 4, 1e6, "w, x, y, z");
     const glm::dquat quaternion(q[0], q[1], q[2], q[3]);
-    if (glm::length(quaternion) < 1e-9) fail(node, join(prefix, "rotation"), "a zero quaternion is no rotation");
+    if (glm::length(quaternion) < 1e-9)
+      fail(node, join(prefix, "rotation"), "a zero quaternion is no rotation");
     return glm::normalize(quaternion);
   }
 
@@ -210,12 +215,15 @@ class SceneFileReader {
     const double time = real(key, prefix, "time", 0.0, 1e6, 0.0);
     try {
       if (const toml::node* node = key.get("translation"))
-        tracks.translation.add(time, vector3(*node, join(prefix, "translation"), kMaxModelCoordinate));
+        tracks.translation.add(time,
+                               vector3(*node, join(prefix, "translation"), kMaxModelCoordinate));
       if (key.contains("rotation") || key.contains("rotation_deg"))
         tracks.rotation.add(time, rotation(key, prefix));
-      if (const toml::node* node = key.get("scale")) tracks.scale.add(time, scale(*node, join(prefix, "scale")));
+      if (const toml::node* node = key.get("scale"))
+        tracks.scale.add(time, scale(*node, join(prefix, "scale")));
     } catch (const std::invalid_argument& error) {
-      fail(key.get("time"), join(prefix, "time"), std::string(error.what()) + " within each channel");
+      fail(key.get("time"), join(prefix, "time"),
+           std::string(error.what()) + " within each channel");
     }
   }
 
@@ -262,7 +270,8 @@ class SceneFileReader {
       if (const toml::node* node = key.get("look_at"))
         camera.lookAt.add(time, vector3(*node, join(prefix, "look_at")));
     } catch (const std::invalid_argument& error) {
-      fail(key.get("time"), join(prefix, "time"), std::string(error.what()) + " within each channel");
+      fail(key.get("time"), join(prefix, "time"),
+           std::string(error.what()) + " within each channel");
     }
   }
 
@@ -276,7 +285,8 @@ class SceneFileReader {
     if (const toml::node* up = table.get("up")) camera.up = vector3(*up, "camera.up");
     const toml::node* keys = table.get("keys");
     const toml::array* array = keys ? keys->as_array() : nullptr;
-    if (!array || array->empty()) fail(keys ? keys : node, "camera.keys", "expected at least one [[camera.keys]]");
+    if (!array || array->empty())
+      fail(keys ? keys : node, "camera.keys", "expected at least one [[camera.keys]]");
     for (size_t i = 0; i < array->size(); ++i) {
       const std::string prefix = "camera.keys[" + std::to_string(i) + "]";
       addCameraKey(camera, tableAt(*array->get(i), prefix), prefix);

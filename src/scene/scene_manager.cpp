@@ -59,8 +59,8 @@ std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
 
 bool hitEndsRayBefore(double tHit, double near) { return tHit < near - roundingAllowance(near); }
 
-bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
-                    const TraversalResult& best, int bestInstance) {
+bool nearerSceneHit(const TraversalResult& result, uint32_t instance, const TraversalResult& best,
+                    int bestInstance) {
   if (!result.hit || result.tHit < 0) return false;
   if (bestInstance < 0) return true;
   return result.tHit != best.tHit ? result.tHit < best.tHit
@@ -70,7 +70,9 @@ bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
 SceneManager::SceneManager(SvoMemory memory, const GoldenConfig& golden,
                            std::vector<SceneInstance> instances, SceneManagerOptions options,
                            float epsilon)
-    : model_(memory, golden), instances_(std::move(instances)), options_(options),
+    : model_(memory, golden),
+      instances_(std::move(instances)),
+      options_(options),
       epsilon_(epsilon) {
   headers_.reserve(instances_.size());
   for (const SceneInstance& instance : instances_)

@@ -62,8 +62,8 @@ std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
 // `near`.
 bool hitEndsRayBefore(double tHit, double near);
 // Whether `result` of `instance` is nearer than `best` of `bestInstance` (-1: no hit so far).
-bool nearerSceneHit(const TraversalResult& result, uint32_t instance,
-                    const TraversalResult& best, int bestInstance);
+bool nearerSceneHit(const TraversalResult& result, uint32_t instance, const TraversalResult& best,
+                    int bestInstance);
 
 // One job the manager issued, for a timing model of the frame.
 struct IssuedJob {

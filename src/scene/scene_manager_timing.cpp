@@ -13,9 +13,10 @@ const StatisticGroup<SceneManagerStatistics>& SceneManagerStatistics::declaratio
           .count(Statistic("jobs", "jobs",
                            "jobs it issued: one per instance a ray was traced against"),
                  &S::jobs)
-          .derived(
-              Statistic("jobs_per_ray", "jobs", "jobs per ray, 0 without rays"),
-              [](const S& s) { return s.rays == 0 ? 0.0 : static_cast<double>(s.jobs) / s.rays; })
+          .derived(Statistic("jobs_per_ray", "jobs", "jobs per ray, 0 without rays"),
+                   [](const S& s) {
+                     return s.rays == 0 ? 0.0 : static_cast<double>(s.jobs) / s.rays;
+                   })
           .histogram(Statistic("jobs_per_ray_histogram", "rays", "rays by their number of jobs")
                          .keyedByValue(),
                      &S::jobsPerRay)

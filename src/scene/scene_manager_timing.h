@@ -24,9 +24,9 @@ struct SceneManagerConfig {
 struct SceneManagerStatistics {
   uint64_t rays = 0;
   uint64_t jobs = 0;
-  uint64_t culled = 0;             // instances whose sphere a ray missed
-  uint64_t earlyTerminations = 0;  // rays that ended with instances left to trace
-  uint64_t skipped = 0;            // instances those rays did not trace
+  uint64_t culled = 0;                      // instances whose sphere a ray missed
+  uint64_t earlyTerminations = 0;           // rays that ended with instances left to trace
+  uint64_t skipped = 0;                     // instances those rays did not trace
   std::map<uint64_t, uint64_t> jobsPerRay;  // jobs -> rays
 
   bool operator==(const SceneManagerStatistics& other) const {

@@ -26,7 +26,8 @@ SceneMemory::SceneMemory(const std::vector<SceneModel>& models, std::vector<size
     words_.insert(words_.end(), image.begin(), image.end());
   }
   for (const size_t model : instanceModels_)
-    if (model >= models.size()) throw std::invalid_argument("instance of a model that is not there");
+    if (model >= models.size())
+      throw std::invalid_argument("instance of a model that is not there");
   headersStart_ = static_cast<uint32_t>(words_.size());
   words_.resize(words_.size() + instanceModels_.size() * kModelHeaderWords, 0);
 }

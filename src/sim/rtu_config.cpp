@@ -1,14 +1,13 @@
 #include "sim/rtu_config.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "sim/memory/cache_array.h"
-#include "rtu/host_memory.h"
 #include "base/timing_limits.h"
+#include "rtu/host_memory.h"
+#include "sim/memory/cache_array.h"
 
 namespace rtu {
 namespace {
@@ -21,8 +20,8 @@ constexpr uint64_t kMaxCacheTagBytes = uint64_t{4} << 30;
 void checkCacheTagsFit(const RtuConfig& config) {
   if (config.memory.ideal) return;
   const uint64_t l1 = CacheArray::tagBytes(config.memory.l1);
-  const uint64_t total = l1 * static_cast<uint64_t>(config.cores) +
-                         CacheArray::tagBytes(config.memory.l2);
+  const uint64_t total =
+      l1 * static_cast<uint64_t>(config.cores) + CacheArray::tagBytes(config.memory.l2);
   const uint64_t available = std::min(physicalMemoryBytes(), kMaxCacheTagBytes);
   if (total <= available) return;
   throw std::invalid_argument(
@@ -37,8 +36,8 @@ void checkCacheTagsFit(const RtuConfig& config) {
 
 void validate(const RtuConfig& config) {
   if (config.cores < 1 || config.cores > kMaxCores)
-    throw std::invalid_argument("the RTU needs 1 to " + std::to_string(kMaxCores) +
-                                " cores, got " + std::to_string(config.cores));
+    throw std::invalid_argument("the RTU needs 1 to " + std::to_string(kMaxCores) + " cores, got " +
+                                std::to_string(config.cores));
   if (config.stackFrames < 1 || config.stackFrames > kMaxStackFrames)
     throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
                                 " frames, got " + std::to_string(config.stackFrames));

@@ -6,14 +6,14 @@
 #include <optional>
 #include <string>
 
-#include "trace/cycle_trace.h"
 #include "kinds/registry.h"
 #include "kinds/svo/golden_model.h"
-#include "rtu/host_link.h"
 #include "kinds/svo/job_setup.h"
-#include "sim/memory/memory_config.h"
+#include "rtu/host_link.h"
 #include "rtu/scheduling_policy.h"
 #include "scene/scene_manager_timing.h"
+#include "sim/memory/memory_config.h"
+#include "trace/cycle_trace.h"
 #include "trace/timeline_writer.h"
 
 namespace rtu {
@@ -26,7 +26,7 @@ struct RtuConfig {
   JobManagerConfig jobManager;
   int stackFrames = kRtlStackFrames;
   HostLinkConfig hostInput, hostOutput;
-  int reorderCapacity = 0;  // 0: no reorder buffer
+  int reorderCapacity = 0;          // 0: no reorder buffer
   SceneManagerConfig sceneManager;  // used when the run traces a scene
   double clockMhz = 100.0;
   uint64_t ltQuantum = 1000;  // loosely-timed model: global quantum in cycles (lt.quantum)

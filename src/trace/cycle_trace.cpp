@@ -1,13 +1,13 @@
 #include "trace/cycle_trace.h"
 
-#include "trace/gtkw_save_file.h"
-#include "trace/instance_names.h"
-#include "trace/trace_signal_classes.h"
-
 #include <algorithm>
 #include <limits>
 #include <map>
 #include <stdexcept>
+
+#include "trace/gtkw_save_file.h"
+#include "trace/instance_names.h"
+#include "trace/trace_signal_classes.h"
 
 namespace rtu {
 namespace {
@@ -196,7 +196,7 @@ void CycleTrace::fallingEdge(uint64_t cycle) {
 }
 
 CycleTrace::Settled CycleTrace::settle(std::vector<Change>::const_iterator begin,
-                                      std::vector<Change>::const_iterator end) {
+                                       std::vector<Change>::const_iterator end) {
   std::map<int, uint64_t> last;
   for (auto change = begin; change != end; ++change) last[change->signal] = change->value;
   Settled settled;

@@ -29,7 +29,7 @@ struct TraceOptions {
   uint64_t toCycle = std::numeric_limits<uint64_t>::max();  // exclusive
   std::vector<std::string> scopes;                          // scope prefixes; empty keeps all
   std::vector<std::string> signalClasses;  // src/trace/trace_signal_classes.h; empty keeps all
-  uint64_t periodPs = 10000;                                // trace time of one cycle
+  uint64_t periodPs = 10000;               // trace time of one cycle
   uint64_t flushCycles = 4096;  // how often the simulation writes the final cycles (memory bound)
   bool countOnly = false;       // write nothing: count the bytes of the VCD the file would be
   // A clock `clk` in the top scope, high in the first half of every cycle from the window's first
@@ -102,12 +102,12 @@ class CycleTrace {
   std::vector<TraceListener*> listeners_;
   CountingStream counter_;
   std::unique_ptr<TraceWriter> writer_;
-  std::vector<int> fileIndex_;  // per signal id: its index in signals_, or kNoSignal
-  std::vector<Signal> signals_;  // the signals the file keeps
+  std::vector<int> fileIndex_;            // per signal id: its index in signals_, or kNoSignal
+  std::vector<Signal> signals_;           // the signals the file keeps
   std::set<std::string> declaredScopes_;  // kept or not
   std::vector<bool> scopeMatched_;        // per scope of the filter
-  std::vector<Change> changes_;  // records of cycles not yet written, in arrival order
-  uint64_t written_ = 0;         // every cycle before it is written
+  std::vector<Change> changes_;           // records of cycles not yet written, in arrival order
+  uint64_t written_ = 0;                  // every cycle before it is written
   bool declared_ = false, dumped_ = false;
   std::vector<bool> known_;  // per signal of the file
   std::vector<uint64_t> current_;

@@ -39,8 +39,8 @@ class FstWriter : public TraceWriter {
   void time(uint64_t timePs) override { fstWriterEmitTimeChange(fst_, timePs); }
   void value(size_t index, bool known, uint64_t value) override {
     const auto [width, handle] = variables_[index];
-    const std::string text =
-        known ? bitString(value, width) : std::string(static_cast<size_t>(width), 'x');
+    const std::string text = known ? bitString(value, width)
+                                   : std::string(static_cast<size_t>(width), 'x');
     fstWriterEmitValueChange(fst_, handle, text.c_str());
   }
   void close() override {
@@ -62,10 +62,10 @@ class FstWriter : public TraceWriter {
       valueTexts.push_back(values[v].c_str());
     }
     const std::string tableName = variable.name + "_" + std::to_string(enums_.size());
-    entry->second = fstWriterCreateEnumTable(fst_, tableName.c_str(),
-                                             static_cast<uint32_t>(names.size()),
-                                             static_cast<unsigned>(variable.width), names.data(),
-                                             valueTexts.data());
+    entry->second =
+        fstWriterCreateEnumTable(fst_, tableName.c_str(), static_cast<uint32_t>(names.size()),
+                                 static_cast<unsigned>(variable.width), names.data(),
+                                 valueTexts.data());
     return entry->second;
   }
 

@@ -94,7 +94,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
   if (!out) throw std::runtime_error("cannot write GTKWave save file " + path);
   out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
   out << "*-20.000000 " << markerPs;
-  for (int i = 0; i < 26; ++i) out << " -1";  // no named markers
+  for (int i = 0; i < 26; ++i) out << " -1";           // no named markers
   out << "\n[sst_expanded] 1\n[signals_width] 240\n";  // room for "stack_depth =BLOCKED"
 
   std::map<std::tuple<int, long, std::string>, std::vector<const SaveFileSignal*>> byModule;

@@ -10,8 +10,7 @@ namespace {
 // A scope component "core_03": its kind "core_" and number "03"; number empty for other names.
 std::pair<std::string, std::string> splitInstance(const std::string& component) {
   const size_t underscore = component.rfind('_');
-  if (underscore == std::string::npos || underscore + 1 == component.size())
-    return {component, ""};
+  if (underscore == std::string::npos || underscore + 1 == component.size()) return {component, ""};
   const std::string number = component.substr(underscore + 1);
   if (!std::all_of(number.begin(), number.end(), ::isdigit)) return {component, ""};
   return {component.substr(0, underscore + 1), number};
@@ -23,8 +22,9 @@ std::string withoutZeros(const std::string& number) {
 }
 
 // Applies `rename(kind, number)` to every numbered component of the dot-separated scope.
-std::string mapInstances(const std::string& scope,
-                         const std::function<std::string(const std::string&, const std::string&)>& rename) {
+std::string mapInstances(
+    const std::string& scope,
+    const std::function<std::string(const std::string&, const std::string&)>& rename) {
   std::string result;
   size_t start = 0;
   while (true) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-
 namespace rtu {
 namespace {
 
@@ -12,7 +11,8 @@ bool startsWith(const std::string& s, const std::string& prefix) {
 }
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // "core_12" -> 12; npos for another name.
@@ -83,7 +83,8 @@ void TimelineWriter::advanceTo(uint64_t cycle) {
 
 void TimelineWriter::coreState(size_t core, uint64_t cycle, uint64_t state) {
   Core& c = cores_[core];
-  if (c.state == states_.blocked) slice(core, states_.names[states_.blocked], c.blockedStart, cycle);
+  if (c.state == states_.blocked)
+    slice(core, states_.names[states_.blocked], c.blockedStart, cycle);
   if (state != states_.idle && c.state == states_.idle) {
     c.ray = nextRay_++;
     c.start = cycle;
@@ -125,7 +126,8 @@ void TimelineWriter::transfer(const Channel& channel) {
 
 // The counters: what each channel's transfers add to or take from them.
 void TimelineWriter::assignCounters() {
-  counters_ = {{"job manager", "jobs"}, {"scheduler wait", "pending"}, {"result manager", "results"}};
+  counters_ = {
+      {"job manager", "jobs"}, {"scheduler wait", "pending"}, {"result manager", "results"}};
   for (size_t i = 0; i < channels_.size(); ++i) {
     Channel& c = channels_[i];
     if (c.key == "job_manager.in") c.into = kJobCounter;
@@ -138,7 +140,8 @@ void TimelineWriter::assignCounters() {
     }
   }
   for (Channel& c : channels_)
-    if (c.key == "result_manager.out" && counters_.size() > kReorderCounter) c.into = kReorderCounter;
+    if (c.key == "result_manager.out" && counters_.size() > kReorderCounter)
+      c.into = kReorderCounter;
 }
 
 // Track names, zero-padded to sort in order (core_03), and the counters this run has.

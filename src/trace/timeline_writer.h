@@ -93,7 +93,7 @@ class TimelineWriter : public TraceListener {
   std::vector<Core> cores_;
   std::vector<Counter> counters_;
   size_t waitChannel_ = kNone;  // scheduler.in
-  uint64_t cursor_ = 0;  // channel transfers are counted up to this cycle
+  uint64_t cursor_ = 0;         // channel transfers are counted up to this cycle
   uint64_t nextRay_ = 0;
   bool started_ = false, firstEvent_ = true;
 };

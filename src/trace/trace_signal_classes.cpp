@@ -13,8 +13,8 @@ const std::vector<std::string>& traceSignalClasses() {
 
 std::string traceSignalClass(const std::string& name) {
   static const std::map<std::string, std::string> byName{
-      {"valid", "handshakes"}, {"ready", "handshakes"}, {"ray", "ids"},  {"state", "states"},
-      {"stack_depth", "stack"}, {"hits", "caches"},     {"misses", "caches"}};
+      {"valid", "handshakes"},  {"ready", "handshakes"}, {"ray", "ids"},      {"state", "states"},
+      {"stack_depth", "stack"}, {"hits", "caches"},      {"misses", "caches"}};
   const auto found = byName.find(name);
   return found == byName.end() ? "" : found->second;
 }
@@ -25,8 +25,8 @@ void checkTraceSignalClasses(const std::vector<std::string>& classes) {
     if (std::find(known.begin(), known.end(), name) != known.end()) continue;
     std::string list;
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    throw std::invalid_argument("trace signal class '" + name + "' does not exist; the classes are " +
-                                list);
+    throw std::invalid_argument("trace signal class '" + name +
+                                "' does not exist; the classes are " + list);
   }
 }
 

@@ -37,7 +37,7 @@ class VcdWriter : public TraceWriter {
     if (variables_.size() <= index) variables_.resize(index + 1);
     variables_[index] = {variable.width, identifierCode(index)};
     out() << "$var wire " << variable.width << ' ' << variables_[index].code << ' ' << variable.name
-         << " $end\n";
+          << " $end\n";
   }
   void endDeclarations() override { out() << "$enddefinitions $end\n"; }
   void beginInitial(uint64_t timePs) override { out() << '#' << timePs << "\n$dumpvars\n"; }

@@ -11,14 +11,15 @@ namespace rtu {
 
 std::string AccuracyReport::describe() const {
   char text[512];
-  std::snprintf(text, sizeof text,
-                "agreement   %.4f %% of %zu rays (t within %g), %zu float64 hits\n"
-                "mismatches  %zu hit/miss, %zu t beyond tolerance (%zu edge hits agree on t, not face)\n"
-                "t error     mean %.3g, max %.3g (where both hit)\n"
-                "cost        fixed %llu, float64 %llu cycles in total\n",
-                100.0 * agreement(), rays, tTolerance, referenceHits, hitMismatches, tOutliers, edgeHits,
-                meanTError, maxTError, static_cast<unsigned long long>(fixedCost),
-                static_cast<unsigned long long>(referenceCost));
+  std::snprintf(
+      text, sizeof text,
+      "agreement   %.4f %% of %zu rays (t within %g), %zu float64 hits\n"
+      "mismatches  %zu hit/miss, %zu t beyond tolerance (%zu edge hits agree on t, not face)\n"
+      "t error     mean %.3g, max %.3g (where both hit)\n"
+      "cost        fixed %llu, float64 %llu cycles in total\n",
+      100.0 * agreement(), rays, tTolerance, referenceHits, hitMismatches, tOutliers, edgeHits,
+      meanTError, maxTError, static_cast<unsigned long long>(fixedCost),
+      static_cast<unsigned long long>(referenceCost));
   return text;
 }
 
@@ -54,7 +55,8 @@ AccuracyReport measureAccuracy(const SvoMemory& memory, uint32_t root, const std
   return report;
 }
 
-size_t countDifferences(const std::vector<TraversalResult>& a, const std::vector<TraversalResult>& b) {
+size_t countDifferences(const std::vector<TraversalResult>& a,
+                        const std::vector<TraversalResult>& b) {
   if (a.size() != b.size()) throw std::invalid_argument("result sets differ in size");
   size_t differences = 0;
   for (size_t i = 0; i < a.size(); ++i) differences += a[i] != b[i];

@@ -14,12 +14,12 @@ struct AccuracyReport {
   double tTolerance = 0.0;
   size_t rays = 0;
   size_t referenceHits = 0;
-  size_t hitMismatches = 0;     // one model hits, the other misses
-  size_t edgeHits = 0;          // both hit at the same t, but name different faces: an edge
-  size_t tOutliers = 0;         // both hit, t differs by more than the tolerance
-  double maxTError = 0.0;       // over the pixels where both hit
+  size_t hitMismatches = 0;  // one model hits, the other misses
+  size_t edgeHits = 0;       // both hit at the same t, but name different faces: an edge
+  size_t tOutliers = 0;      // both hit, t differs by more than the tolerance
+  double maxTError = 0.0;    // over the pixels where both hit
   double meanTError = 0.0;
-  uint64_t fixedCost = 0;       // total cost of each model, to see traversal differences
+  uint64_t fixedCost = 0;  // total cost of each model, to see traversal differences
   uint64_t referenceCost = 0;
 
   size_t agreeing() const { return rays - hitMismatches - tOutliers; }
@@ -36,6 +36,7 @@ AccuracyReport measureAccuracy(const SvoMemory& memory, uint32_t root, const std
                                const GoldenConfig& config, double epsilon, double tTolerance);
 
 // Number of results that differ in any field.
-size_t countDifferences(const std::vector<TraversalResult>& a, const std::vector<TraversalResult>& b);
+size_t countDifferences(const std::vector<TraversalResult>& a,
+                        const std::vector<TraversalResult>& b);
 
 }  // namespace rtu

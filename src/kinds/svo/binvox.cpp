@@ -122,8 +122,8 @@ void checkRuns(const std::vector<uint8_t>& data, uint64_t voxels, uint64_t dataO
       fail(path, where + " has value " + std::to_string(data[i]) + " (must be 0 or 1)");
     covered += data[i + 1];
     if (covered > voxels)
-      fail(path, where + " overflows the grid: runs cover more than its " +
-                     std::to_string(voxels) + " voxels");
+      fail(path, where + " overflows the grid: runs cover more than its " + std::to_string(voxels) +
+                     " voxels");
   }
   if (data.size() % 2 != 0)
     fail(path, "data is truncated: it ends inside the run at byte " +
@@ -215,9 +215,9 @@ Occupancy BinvoxGrid::classify(const OctreeNode& node) const {
                                 std::to_string(depth_));
   const uint32_t cells = 1u << node.level;
   if (node.x >= cells || node.y >= cells || node.z >= cells)
-    throw std::invalid_argument("node (" + std::to_string(node.x) + ", " +
-                                std::to_string(node.y) + ", " + std::to_string(node.z) +
-                                ") is outside the " + std::to_string(cells) + "^3 cells of level " +
+    throw std::invalid_argument("node (" + std::to_string(node.x) + ", " + std::to_string(node.y) +
+                                ", " + std::to_string(node.z) + ") is outside the " +
+                                std::to_string(cells) + "^3 cells of level " +
                                 std::to_string(node.level));
   const uint64_t index = cellIndex(node.level, node.x, node.y, node.z);
   if (!anySolid_[node.level][index]) return Occupancy::Empty;

@@ -62,7 +62,6 @@ class BinvoxGrid : public VoxelSource {
 // Writes a D^3 binvox file (identity translate and scale) where voxel (x, y, z) is solid when
 // `solid(x, y, z)`. Throws std::invalid_argument for a dim outside 1 to kMaxBinvoxDim and
 // std::runtime_error naming `path` when it cannot be written.
-void writeBinvox(const std::string& path, int dim,
-                 const std::function<bool(int, int, int)>& solid);
+void writeBinvox(const std::string& path, int dim, const std::function<bool(int, int, int)>& solid);
 
 }  // namespace rtu

@@ -10,10 +10,9 @@ void FixedFormat::validate() const {
     throw std::invalid_argument("fixed-point width must be 8 to 48 bits, got " +
                                 std::to_string(totalBits));
   if (fractionBits < 1 || fractionBits > totalBits - 2)
-    throw std::invalid_argument("fixed-point fraction bits must be 1 to " +
-                                std::to_string(totalBits - 2) + " for a " +
-                                std::to_string(totalBits) + "-bit number, got " +
-                                std::to_string(fractionBits));
+    throw std::invalid_argument(
+        "fixed-point fraction bits must be 1 to " + std::to_string(totalBits - 2) + " for a " +
+        std::to_string(totalBits) + "-bit number, got " + std::to_string(fractionBits));
 }
 
 double FixedFormat::toDouble(int64_t raw) const {

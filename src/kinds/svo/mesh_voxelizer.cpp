@@ -76,8 +76,8 @@ bool separated(double p0, double p1, double r) {
 // The remaining separating-axis tests: the triangle's normal and the nine cross products of its
 // edges with the box axes. A zero axis (from a degenerate triangle) never separates, so a
 // degenerate triangle is tested as the segment or point it is.
-bool planeAndEdgeAxesOverlap(const std::array<glm::dvec3, 3>& triangle,
-                             const glm::dvec3& boxCentre, const glm::dvec3& boxHalfSize) {
+bool planeAndEdgeAxesOverlap(const std::array<glm::dvec3, 3>& triangle, const glm::dvec3& boxCentre,
+                             const glm::dvec3& boxHalfSize) {
   const std::array<glm::dvec3, 3> v = {triangle[0] - boxCentre, triangle[1] - boxCentre,
                                        triangle[2] - boxCentre};
   const std::array<glm::dvec3, 3> edges = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
@@ -155,7 +155,7 @@ const std::vector<uint32_t>& MeshVoxelizer::candidatesFor(const OctreeNode& node
 const std::vector<uint32_t>& MeshVoxelizer::overlappingTriangles(const OctreeNode& node) const {
   LevelCache& entry = cache_[node.level];
   if (entry.node.level == node.level && isAncestorOrSelf(entry.node, node))
-    return entry.triangles;  // asked again about the same node
+    return entry.triangles;                                       // asked again about the same node
   const std::vector<uint32_t>& candidates = candidatesFor(node);  // from levels above: no alias
   const glm::dvec3 lower = node.lower();
   const glm::dvec3 upper = node.upper();

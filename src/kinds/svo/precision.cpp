@@ -14,13 +14,14 @@ namespace {
 double percentile99(std::vector<double> values) {
   if (values.empty()) return 0.0;
   const size_t k = (values.size() * 99) / 100;
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(std::min(k, values.size() - 1)),
+  std::nth_element(values.begin(),
+                   values.begin() + static_cast<std::ptrdiff_t>(std::min(k, values.size() - 1)),
                    values.end());
   return values[std::min(k, values.size() - 1)];
 }
 
-FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, const FixedFormat& format,
-                        const std::vector<ReferenceResult>& reference) {
+FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study,
+                        const FixedFormat& format, const std::vector<ReferenceResult>& reference) {
   GoldenModel golden(memory, GoldenConfig{format, study.conversion, kMaxStackFrames});
   FormatPrecision p;
   p.format = format;
@@ -55,8 +56,9 @@ FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study, co
       verdict = sameVoxel ? PrecisionVerdict::Agree : PrecisionVerdict::DifferentVoxel;
       p.differentVoxels += !sameVoxel;
     }
-    p.wrongUnflagged += verdict != PrecisionVerdict::BothMiss && verdict != PrecisionVerdict::Agree &&
-                        !fixed.tOverflow && !fixed.belowResolution;
+    p.wrongUnflagged += verdict != PrecisionVerdict::BothMiss &&
+                        verdict != PrecisionVerdict::Agree && !fixed.tOverflow &&
+                        !fixed.belowResolution;
     p.verdicts.push_back(verdict);
   }
   if (!errors.empty()) {
@@ -85,17 +87,20 @@ std::vector<FormatPrecision> measurePrecision(const SvoMemory& memory, const Pre
   reference.reserve(study.rays.size());
   for (const Ray& ray : study.rays) reference.push_back(referenceModel.trace(ray, study.root));
   std::vector<FormatPrecision> results;
-  for (const FixedFormat& format : formats) results.push_back(compare(memory, study, format, reference));
+  for (const FixedFormat& format : formats)
+    results.push_back(compare(memory, study, format, reference));
   return results;
 }
 
 FixedFormat parseFixedFormat(const std::string& text) {
-  const std::string error = "format '" + text + "': write TOTAL.FRACTION (e.g. 32.16) or QI.F (e.g. Q16.16)";
+  const std::string error =
+      "format '" + text + "': write TOTAL.FRACTION (e.g. 32.16) or QI.F (e.g. Q16.16)";
   const bool q = !text.empty() && (text[0] == 'Q' || text[0] == 'q');
   const std::string body = q ? text.substr(1) : text;
   const size_t dot = body.find('.');
   if (dot == std::string::npos || dot == 0 || dot + 1 == body.size() ||
-      body.find_first_not_of("0123456789.") != std::string::npos || body.find('.', dot + 1) != std::string::npos)
+      body.find_first_not_of("0123456789.") != std::string::npos ||
+      body.find('.', dot + 1) != std::string::npos)
     throw std::invalid_argument(error);
   int first = 0, second = 0;
   try {

@@ -27,10 +27,11 @@ struct FormatPrecision {
   size_t rays = 0;
   size_t referenceHits = 0;
   size_t falseHits = 0, missedHits = 0, differentVoxels = 0;
-  size_t overflowRays = 0;  // the format's stack (kMaxStackFrames) overflowed: counted, not compared
-  size_t tOverflowRays = 0;  // flagged: a t sum wrapped (TraversalResult::tOverflow)
+  // The format's stack (kMaxStackFrames) overflowed: counted, not compared.
+  size_t overflowRays = 0;
+  size_t tOverflowRays = 0;        // flagged: a t sum wrapped (TraversalResult::tOverflow)
   size_t belowResolutionRays = 0;  // flagged: nodes narrower than a step (belowResolution)
-  size_t wrongUnflagged = 0;  // wrong (hit/miss or voxel) without either flag
+  size_t wrongUnflagged = 0;       // wrong (hit/miss or voxel) without either flag
   // |t - t_float64| in units of the format's step 2^-fractionBits, where both hit.
   double tErrorMeanSteps = 0.0, tErrorP99Steps = 0.0, tErrorMaxSteps = 0.0;
   double meanCost = 0.0, referenceMeanCost = 0.0;  // traversal states per ray

@@ -23,7 +23,8 @@ void checkRay(const Ray& ray) {
 // components tiny) nor overflow (all huge) in float.
 glm::dvec3 scaledDirection(const glm::dvec3& direction) {
   int exponent = 0;
-  std::frexp(std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)}), &exponent);
+  std::frexp(std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)}),
+             &exponent);
   return direction * std::ldexp(1.0, -exponent);
 }
 

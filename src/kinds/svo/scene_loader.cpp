@@ -5,12 +5,12 @@
 #include <stdexcept>
 
 #include "kinds/svo/binvox.h"
-#include "rtu/host_memory.h"
 #include "kinds/svo/mesh_voxelizer.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_size_estimate.h"
 #include "kinds/svo/svo_validator.h"
+#include "rtu/host_memory.h"
 
 namespace rtu {
 
@@ -57,11 +57,11 @@ void checkBuildFits(const VoxelSource& source, const SceneSpec& spec, const std:
                              " words, more than 32-bit word addresses reach: lower --depth");
   const uint64_t available = physicalMemoryBytes();
   if (size.peakBytes <= static_cast<double>(available)) return;
-  throw std::runtime_error("building " + name + " would need about " + formatGiB(size.peakBytes) +
-                           " of memory (estimated " + std::to_string(static_cast<uint64_t>(size.descriptors)) +
-                           " descriptors), more than the " +
-                           formatGiB(static_cast<double>(available)) +
-                           " of this machine: lower --depth");
+  throw std::runtime_error(
+      "building " + name + " would need about " + formatGiB(size.peakBytes) +
+      " of memory (estimated " + std::to_string(static_cast<uint64_t>(size.descriptors)) +
+      " descriptors), more than the " + formatGiB(static_cast<double>(available)) +
+      " of this machine: lower --depth");
 }
 
 }  // namespace

@@ -14,10 +14,10 @@ struct SceneSpec {
   std::string svoFile;
   std::string meshFile;
   std::string binvoxFile;
-  int depth = 8;        // octree depth for procedural scenes and meshes
+  int depth = 8;  // octree depth for procedural scenes and meshes
   uint64_t seed = 1;
-  uint32_t root = 0;    // root descriptor address of an .svo file, or where to build the root
-  int maxDepth = 16;    // deepest octree an .svo file may have
+  uint32_t root = 0;  // root descriptor address of an .svo file, or where to build the root
+  int maxDepth = 16;  // deepest octree an .svo file may have
 };
 
 struct Scene {

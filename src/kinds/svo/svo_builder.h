@@ -20,8 +20,8 @@ namespace rtu {
 struct SvoStats {
   size_t descriptors = 0;
   size_t farPointers = 0;
-  size_t leaves = 0;     // solid children (collapsed regions count once)
-  int depth = 0;         // deepest level holding a leaf; the root cube is level 0
+  size_t leaves = 0;  // solid children (collapsed regions count once)
+  int depth = 0;      // deepest level holding a leaf; the root cube is level 0
   size_t words = 0;
   size_t bytes() const { return words * 4; }
 

@@ -61,7 +61,9 @@ struct SvoKind {
     return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
                convertToFixed(record.t1Bits, format, conversion), record.root};
   }
-  static void start(Behaviour& core, const Job& job) { core.start(job.t0, job.t1, job.a, job.root); }
+  static void start(Behaviour& core, const Job& job) {
+    core.start(job.t0, job.t1, job.a, job.root);
+  }
   static void writeResult(uint32_t idWord, const Behaviour& core, Result& result) {
     rtu::writeResult(idWord, core, result);
   }

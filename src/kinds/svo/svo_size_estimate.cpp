@@ -8,7 +8,8 @@ namespace {
 // Levels with more mixed nodes than this are extrapolated rather than counted.
 constexpr size_t kCountedNodes = size_t{1} << 14;
 
-std::vector<OctreeNode> mixedNodes(const VoxelSource& source, const std::vector<OctreeNode>& nodes) {
+std::vector<OctreeNode> mixedNodes(const VoxelSource& source,
+                                   const std::vector<OctreeNode>& nodes) {
   std::vector<OctreeNode> mixed;
   for (const OctreeNode& node : nodes)
     if (source.classify(node) == Occupancy::Mixed) mixed.push_back(node);

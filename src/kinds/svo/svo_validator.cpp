@@ -79,9 +79,9 @@ class Validator {
 
   struct WordState {
     Visit visit = Visit::New;
-    uint8_t references = 0;   // child pointers naming this word, saturating at 2
-    uint32_t reach = 0;       // levels below the descriptor down to its deepest valid child
-    uint32_t leafHeight = 0;  // levels below it down to its deepest leaf, 0 without leaves
+    uint8_t references = 0;         // child pointers naming this word, saturating at 2
+    uint32_t reach = 0;             // levels below the descriptor down to its deepest valid child
+    uint32_t leafHeight = 0;        // levels below it down to its deepest leaf, 0 without leaves
     uint32_t descriptorHeight = 0;  // levels below it down to its deepest descriptor
   };
 
@@ -116,17 +116,12 @@ class Validator {
     WordState& state = state_[child];
     if (state.references < 2 && ++state.references == 2) ++report_.sharedDescriptors;
     switch (state.visit) {
-      case Visit::New:
-        enter(child);
-        break;
+      case Visit::New: enter(child); break;
       case Visit::OnPath:
-        throw SvoFormatError(child,
-                             "cycle: the descriptor is reachable from itself (through "
-                             "the child pointer of word " +
-                                 std::to_string(parent) + ")");
-      case Visit::Done:
-        fold(parent, child);
-        break;
+        throw SvoFormatError(child, "cycle: the descriptor is reachable from itself (through "
+                                    "the child pointer of word " +
+                                        std::to_string(parent) + ")");
+      case Visit::Done: fold(parent, child); break;
     }
   }
 

@@ -29,7 +29,7 @@ struct SvoReport {
   // Deepest level holding a descriptor, leafless or not: the traversal stack frames the tree
   // needs, one per descent (a chain of leafless descriptors needs them too).
   int descriptorDepth = 0;
-  size_t words = 0;              // size of the image
+  size_t words = 0;  // size of the image
 };
 
 class SvoFormatError : public std::runtime_error {

@@ -15,8 +15,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 struct Cell {
   int level = 0;
   std::array<uint32_t, 3> index{};
-  bool leaf = false;          // a solid voxel; otherwise an empty cell
-  uint64_t voxelKey = 0;      // parent descriptor address << 3 | slot
+  bool leaf = false;      // a solid voxel; otherwise an empty cell
+  uint64_t voxelKey = 0;  // parent descriptor address << 3 | slot
 
   double size() const { return std::ldexp(2.0, -level); }
   double lower(int k) const { return -1.0 + index[k] * size(); }

@@ -154,12 +154,8 @@ class TraversalCore {
         frame_.child = initialChildIndex(frame_.t0, frame_.tm);
         state_ = CoreState::Eval;
         break;
-      case CoreState::Eval:
-        evaluate(readWord(frame_.entry));
-        break;
-      case CoreState::Next:
-        next();
-        break;
+      case CoreState::Eval: evaluate(readWord(frame_.entry)); break;
+      case CoreState::Next: next(); break;
       case CoreState::Push:
         push(Descriptor{descriptor_}.far() ? readWord(memoryAddress()) : 0);
         break;
@@ -191,7 +187,9 @@ class TraversalCore {
   bool belowResolution() const { return belowResolution_; }
   // After a hit: the leaf hit, as its parent descriptor's address and its slot there. It names the
   // voxel uniquely in the image, so two arithmetics can be compared on which voxel they hit.
-  uint64_t hitVoxel() const { return uint64_t{frame_.entry} << 3 | static_cast<uint64_t>(frame_.child ^ a_); }
+  uint64_t hitVoxel() const {
+    return uint64_t{frame_.entry} << 3 | static_cast<uint64_t>(frame_.child ^ a_);
+  }
   int stackSize() const { return stackSize_; }
   const Arith& arith() const { return arith_; }
 
@@ -253,8 +251,8 @@ class TraversalCore {
       state_ = CoreState::Out;
       return;
     }
-    const uint32_t firstChild =
-        descriptor.far() ? frame_.entry + farWord : frame_.entry + descriptor.childPointer();
+    const uint32_t firstChild = descriptor.far() ? frame_.entry + farWord
+                                                 : frame_.entry + descriptor.childPointer();
     const uint32_t childEntry = firstChild + descriptor.childOffset(frame_.child ^ a_);
     const Vec3 t0 = childT0(frame_);
     const Vec3 t1 = childT1(frame_);

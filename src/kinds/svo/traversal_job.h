@@ -10,11 +10,11 @@ namespace rtu {
 // A traversal job with the t-parameters still in float32, as the host driver sends them
 // (appendix F): the job manager converts them to fixed point.
 struct TraversalJob {
-  uint32_t id = 0;                  // 28 bits: the driver packs `a` into bits 30:28 beside it
-  uint8_t a = 0;                    // direction coefficient: bit k set when direction k was negative
+  uint32_t id = 0;  // 28 bits: the driver packs `a` into bits 30:28 beside it
+  uint8_t a = 0;    // direction coefficient: bit k set when direction k was negative
   std::array<uint32_t, 3> t0Bits{};  // float32 bit patterns of t0x, t0y, t0z
   std::array<uint32_t, 3> t1Bits{};
-  uint32_t root = 0;                // word address of the root descriptor
+  uint32_t root = 0;  // word address of the root descriptor
 
   static constexpr uint32_t kMaxId = (1u << 28) - 1;
   // The first word of the host record; the RTL carries it unchanged into the result.
@@ -24,12 +24,12 @@ struct TraversalJob {
 struct TraversalResult {
   uint32_t idWord = 0;  // the job's first word, a bits included, exactly as the RTL returns it
   bool hit = false;
-  int64_t tHit = 0;                // fixed point; 0 on a miss
+  int64_t tHit = 0;                 // fixed point; 0 on a miss
   std::array<int64_t, 3> normal{};  // 1.0 on the entry face's axis (mirrored space); 0 on a miss
-  uint32_t cost = 0;               // cycles spent in INIT, EVAL, NEXT, PUSH and POP
-  bool stackOverflow = false;      // traversal needed more stack frames than configured
-  bool tOverflow = false;          // t-values beyond the format's range (wrapped or saturated)
-  bool belowResolution = false;    // descended into nodes narrower than the format's step
+  uint32_t cost = 0;                // cycles spent in INIT, EVAL, NEXT, PUSH and POP
+  bool stackOverflow = false;       // traversal needed more stack frames than configured
+  bool tOverflow = false;           // t-values beyond the format's range (wrapped or saturated)
+  bool belowResolution = false;     // descended into nodes narrower than the format's step
 
   uint32_t id() const { return idWord & TraversalJob::kMaxId; }
   bool operator==(const TraversalResult& other) const {

@@ -12,9 +12,9 @@
 
 #include <systemc>
 
+#include "kinds/svo/svo_memory.h"
 #include "sim/kernel/decision_pump.h"
 #include "sim/memory/l1_cache_timing.h"
-#include "kinds/svo/svo_memory.h"
 
 namespace rtu {
 

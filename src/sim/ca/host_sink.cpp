@@ -45,7 +45,8 @@ void HostSink::bind(TransferChannel<CoreResult>& in) {
 }
 
 void HostSink::decide() {
-  in_->collectDelivered([this](uint64_t cycle, const CoreResult& result) { receive(cycle, result); });
+  in_->collectDelivered(
+      [this](uint64_t cycle, const CoreResult& result) { receive(cycle, result); });
   if (in_->offering()) {  // from a reorder buffer
     const uint64_t cycle = firstReadyFrom(in_->offerCycle());
     const CoreResult result = in_->payload();

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "sim/kernel/decision_pump.h"
 #include "rtu/host_link.h"
 #include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/decision_pump.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -59,8 +59,8 @@ class HostSink final : public Agent {
   HostLinkConfig link_;
   HostLinkPacer pacer_;
   uint64_t allowedFrom_ = 0;
-  uint64_t drawnUntil_ = 0;           // a random link: cycles drawn so far ...
-  std::vector<bool> activeFrom_;      // ... and their outcomes from allowedFrom_
+  uint64_t drawnUntil_ = 0;       // a random link: cycles drawn so far ...
+  std::vector<bool> activeFrom_;  // ... and their outcomes from allowedFrom_
   Arrivals arrivals_;
   uint64_t lastArrival_ = 0;
   std::vector<uint64_t> notYetArrived_;  // cycles of results not yet counted by arrivedBefore

@@ -10,11 +10,11 @@
 
 #include <systemc>
 
+#include "rtu/host_link.h"
+#include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/cycle_clock.h"
 #include "sim/kernel/decision_pump.h"
-#include "rtu/host_link.h"
 #include "sim/kernel/module_process.h"
-#include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -38,8 +38,8 @@ class HostSource final : public sc_core::sc_module, public Agent {
   const std::vector<HostRecord>& records_;  // the caller's: they outlive the run
   HostLinkPacer pacer_;
   uint64_t lookAhead_;
-  uint64_t next_ = 0;         // index of the record offered or to be offered
-  uint64_t allowedFrom_ = 0;  // the link's next slot
+  uint64_t next_ = 0;                  // index of the record offered or to be offered
+  uint64_t allowedFrom_ = 0;           // the link's next slot
   uint64_t drawnOffer_ = kNeverCycle;  // a random link's offer cycle, once drawn
   CycleWake wake_;
 };

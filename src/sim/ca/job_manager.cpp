@@ -11,7 +11,8 @@ JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerCo
     : Agent(pump), clock_(clock), config_(config), setup_(memory, config) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
-                                "rays), got " + std::to_string(config_.stages) + " and " +
+                                "rays), got " +
+                                std::to_string(config_.stages) + " and " +
                                 std::to_string(config_.rayStages));
   if (config_.headerFetchCycles < 0)
     throw std::invalid_argument("model header fetch cycles must not be negative");

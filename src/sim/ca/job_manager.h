@@ -21,11 +21,11 @@
 #include <optional>
 #include <vector>
 
-#include "sim/kernel/cycle_clock.h"
-#include "sim/kernel/decision_pump.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
 #include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/kernel/decision_pump.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -39,7 +39,8 @@ class JobManager final : public Agent {
   // Its ports on the transfer channels (TransferChannel::connect).
   static constexpr int kInPort = 0, kOutPort = 0;
 
-  JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config, SvoMemory memory);
+  JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
+             SvoMemory memory);
 
   void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
   void decide() override;
@@ -77,8 +78,8 @@ class JobManager final : public Agent {
   uint64_t stallShift_ = 0;  // the stalls so far (modulo 2^64: only outputOf() is a cycle)
   bool frontOffered_ = false;
   std::optional<uint64_t> lastDispatch_;  // of the job that left the output last
-  std::deque<Window> stalls_;   // decided stalls a later acceptance may fall into
-  std::deque<Window> fetches_;  // header fetches
+  std::deque<Window> stalls_;             // decided stalls a later acceptance may fall into
+  std::deque<Window> fetches_;            // header fetches
   bool accepted_ = false;
   uint64_t lastAccepted_ = 0;
   std::vector<uint64_t> readyPoints_;  // traced cycles whose level a later window may change

@@ -75,8 +75,8 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
 }
 
 void MemorySystem::failBehind(int core, uint64_t cycle) const {
-  throw std::logic_error("shared memory request of core " + std::to_string(core) +
-                         " for cycle " + std::to_string(cycle) +
+  throw std::logic_error("shared memory request of core " + std::to_string(core) + " for cycle " +
+                         std::to_string(cycle) +
                          ", not after simulated time and the cycles served");
 }
 

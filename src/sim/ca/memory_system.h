@@ -29,16 +29,16 @@
 
 #include <systemc>
 
-#include "sim/memory/cache_contents.h"
+#include "base/lowest_of.h"
+#include "kinds/svo/svo_memory.h"
 #include "sim/ca/core_memory_if.h"
 #include "sim/kernel/cycle_clock.h"
-#include "trace/cycle_trace.h"
+#include "sim/kernel/module_process.h"
+#include "sim/memory/cache_contents.h"
 #include "sim/memory/l1_cache_timing.h"
 #include "sim/memory/l2_cache_timing.h"
-#include "base/lowest_of.h"
 #include "sim/memory/memory_config.h"
-#include "sim/kernel/module_process.h"
-#include "kinds/svo/svo_memory.h"
+#include "trace/cycle_trace.h"
 
 namespace rtu {
 
@@ -46,9 +46,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-               SvoMemory backing, MemoryConfig config, int cores,
-               uint64_t firstReadAfterDispatch, CycleTrace* trace,
-               const CacheContents* start = nullptr);
+               SvoMemory backing, MemoryConfig config, int cores, uint64_t firstReadAfterDispatch,
+               CycleTrace* trace, const CacheContents* start = nullptr);
 
   // The scheduler whose dispatches bound the idle cores' next requests.
   void followDispatches(DispatchFloor& scheduler);
@@ -84,7 +83,9 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
     return cycle << coreBits_ | static_cast<uint64_t>(core);
   }
   uint64_t cycleOf(uint64_t key) const { return key >> coreBits_; }
-  int coreOf(uint64_t key) const { return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1)); }
+  int coreOf(uint64_t key) const {
+    return static_cast<int>(key & ((uint64_t{1} << coreBits_) - 1));
+  }
 
   void end_of_elaboration() override;
   // Out of line, so that requestShared() needs no stack frame for the message.
@@ -114,7 +115,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
-  uint64_t firstRead_;  // the cores' kind's first read after dispatch (rtu/core_kind.h)
+  uint64_t firstRead_;          // the cores' kind's first read after dispatch (rtu/core_kind.h)
   // Per core, the earliest cycle it can ask in, nor before the scheduler's floor + R: a core
   // offering (or handed over and not dispatched yet); kNoBound for a core whose request waits
   // (it asks again after its cycle) or that runs.

@@ -16,7 +16,8 @@ ReorderBuffer::ReorderBuffer(DecisionPump& pump, const CycleClock& clock, int ca
 void ReorderBuffer::bind(TransferChannel<CoreResult>& in, TransferChannel<CoreResult>& out) {
   in_ = &in;
   out_ = &out;
-  in_->readyWhen([this](uint64_t cycle, const CoreResult& result) { return accepts(cycle, result); });
+  in_->readyWhen(
+      [this](uint64_t cycle, const CoreResult& result) { return accepts(cycle, result); });
 }
 
 void ReorderBuffer::decide() {
@@ -44,7 +45,8 @@ void ReorderBuffer::decide() {
 // in_ready = the offered result lies within the window of the next one due in that cycle.
 ReorderBuffer::Ready ReorderBuffer::accepts(uint64_t cycle, const CoreResult& result) {
   // The due result is on its way to the host: the window moves once that is settled.
-  if (out_->takenUnseen() || (out_->offering() && cycle > out_->offerCycle())) return Ready::Unknown;
+  if (out_->takenUnseen() || (out_->offering() && cycle > out_->offerCycle()))
+    return Ready::Unknown;
   const bool ready = result.id() < dueIn(cycle) + capacity_;
   in_->traceReady(cycle, ready);
   in_->traceReady(cycle + 1, false);

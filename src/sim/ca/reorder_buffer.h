@@ -10,10 +10,10 @@
 #include <map>
 #include <utility>
 
-#include "sim/kernel/cycle_clock.h"
-#include "sim/kernel/decision_pump.h"
 #include "base/occupancy_peak.h"
 #include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/kernel/decision_pump.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {

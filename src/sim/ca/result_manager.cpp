@@ -90,8 +90,7 @@ void ResultManager::drainInCycleOrder() {
     }
     Buffer& buffer = buffers_[static_cast<size_t>(core)];
     switch (out_->readyIn(cycle, buffer.result)) {
-      case TransferChannel<CoreResult>::Ready::Unknown:
-        return;
+      case TransferChannel<CoreResult>::Ready::Unknown: return;
       case TransferChannel<CoreResult>::Ready::No:
         out_->traceValid(cycle, true);
         out_->traceValid(cycle + 1, false);
@@ -129,7 +128,8 @@ uint64_t ResultManager::nextSelect(size_t core, uint64_t from) const {
 
 // The first cycle an empty buffer could be full: after a handover, which follows an offer.
 uint64_t ResultManager::fillHorizon() const {
-  const uint64_t idleOffer = clock_.now() + 2;  // a job dispatched from now on offers then at the earliest
+  const uint64_t idleOffer =
+      clock_.now() + 2;  // a job dispatched from now on offers then at the earliest
   uint64_t horizon = kNeverCycle;
   for (size_t core = 0; core < buffers_.size(); ++core) {
     if (buffers_[core].full) continue;
@@ -169,6 +169,5 @@ void ResultManager::rememberDrain(uint64_t cycle) {
   for (auto it = drainCycles_.begin(); it != drainCycles_.end();)
     it = *it + 1 < now ? drainCycles_.erase(it) : std::next(it);
 }
-
 
 }  // namespace rtu

@@ -18,12 +18,12 @@
 
 #include <systemc>
 
-#include "sim/kernel/cycle_clock.h"
 #include "base/modulo.h"
-#include "sim/kernel/module_process.h"
 #include "base/occupancy_peak.h"
-#include "sim/kernel/decision_pump.h"
 #include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/kernel/decision_pump.h"
+#include "sim/kernel/module_process.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -74,7 +74,7 @@ class ResultManager final : public sc_core::sc_module, public Agent {
   std::vector<int> heard_;     // cores whose channel changed since the last decision
   std::vector<int> deciding_;  // those being decided now
   int fullBuffers_ = 0;
-  uint64_t scan_ = 0;       // cycle order: every cycle before it is decided
+  uint64_t scan_ = 0;                         // cycle order: every cycle before it is decided
   std::unordered_set<uint64_t> drainCycles_;  // traced drains, for the valid level
   // The buffers full in a cycle, counted as the RTL's registers see them: a buffer from its
   // handover's next cycle to the cycle after its drain.

@@ -41,9 +41,9 @@ struct CoreJob {
 // The RTL's result_t.
 struct CoreResult {
   PayloadIds ids;
-  TraversalResult result;       // its cost counts traversal states only, as the golden model's
-  uint32_t blockedCycles = 0;   // cycles the core spent BLOCKED on memory for this ray
-  int instance = -1;            // a scene manager's merged result: the instance hit (-1: none)
+  TraversalResult result;      // its cost counts traversal states only, as the golden model's
+  uint32_t blockedCycles = 0;  // cycles the core spent BLOCKED on memory for this ray
+  int instance = -1;           // a scene manager's merged result: the instance hit (-1: none)
   uint64_t id() const { return ids.job; }
 };
 

@@ -28,15 +28,16 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
 
   hostJobs_ = channel<HostJob>("host_jobs", clock_, trace, top + ".job_manager.in");
   pendingJobs_ = channel<CoreJob>("pending_jobs", clock_, trace, top + ".scheduler.in");
-  managedResults_ = channel<CoreResult>("managed_results", clock_, trace, top + ".result_manager.out");
+  managedResults_ =
+      channel<CoreResult>("managed_results", clock_, trace, top + ".result_manager.out");
 
-  source_ = std::make_unique<HostSource>("host_source", clock_, pump_, records,
-                                         config.hostInput, kLookAheadCycles);
+  source_ = std::make_unique<HostSource>("host_source", clock_, pump_, records, config.hostInput,
+                                         kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(pump_, clock_, config.jobManager, memory);
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler, config.cores);
   // The cores' kind decides when an idle core reads first; the cores are made by makeTimedCore.
-  const uint64_t firstRead = withCoreKind(
-      config.core, [](auto kind) { return decltype(kind)::kFirstReadAfterDispatch; });
+  const uint64_t firstRead =
+      withCoreKind(config.core, [](auto kind) { return decltype(kind)::kFirstReadAfterDispatch; });
   memory_ = std::make_unique<MemorySystem>("memory", clock_, pump_, memory, config.memory,
                                            config.cores, firstRead, trace, caches);
   memory_->followDispatches(*scheduler_);
@@ -44,9 +45,8 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   if (scene) {
     sceneRays_ = channel<HostJob>("scene_rays", clock_, trace, top + ".scene_manager.in");
     rayResults_ = channel<CoreResult>("ray_results", clock_, trace, top + ".scene_manager.out");
-    sceneManager_ = std::make_unique<SceneManagerModule>("scene_manager", clock_, pump_, *scene,
-                                                         config.sceneManager,
-                                                         config.jobManager.format);
+    sceneManager_ = std::make_unique<SceneManagerModule>(
+        "scene_manager", clock_, pump_, *scene, config.sceneManager, config.jobManager.format);
     sceneRays_->connect(*source_, HostSource::kOutPort, *sceneManager_,
                         SceneManagerModule::kRaysInPort);
     hostJobs_->connect(*sceneManager_, SceneManagerModule::kJobsOutPort, *jobManager_,
@@ -60,9 +60,10 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   std::vector<Channel<CoreResult>*> resultsFromCores;
   for (size_t i = 0; i < coreCount; ++i) {
     const std::string coreName = indexed("core_", i);
-    coreJobs_.push_back(channel<CoreJob>(indexed("core_jobs_", i), clock_, trace, top + "." + coreName + ".in"));
-    coreResults_.push_back(
-        channel<CoreResult>(indexed("core_results_", i), clock_, trace, top + "." + coreName + ".out"));
+    coreJobs_.push_back(
+        channel<CoreJob>(indexed("core_jobs_", i), clock_, trace, top + "." + coreName + ".in"));
+    coreResults_.push_back(channel<CoreResult>(indexed("core_results_", i), clock_, trace,
+                                               top + "." + coreName + ".out"));
     cores_.push_back(makeTimedCore(config, coreName.c_str(), pump_, static_cast<int>(i), trace));
     cores_[i]->memory(*memory_);
     coreJobs_[i]->connect(*scheduler_, static_cast<int>(i), *cores_[i], TimedCoreBase::kJobsPort);
@@ -75,7 +76,8 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   Channel<CoreResult>* toHost = managedResults_.get();
   sink_ = std::make_unique<HostSink>(pump_, jobCount, config.outputLink());
   if (config.reorderCapacity > 0) {
-    orderedResults_ = channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
+    orderedResults_ =
+        channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");
     reorderBuffer_ = std::make_unique<ReorderBuffer>(pump_, clock_, config.reorderCapacity);
     managedResults_->connect(*resultManager_, ResultManager::kOutPort, *reorderBuffer_,
                              ReorderBuffer::kInPort);
@@ -85,9 +87,11 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory 
   Agent& resultsConsumer = sceneManager_ ? static_cast<Agent&>(*sceneManager_) : *sink_;
   const int resultsPort = sceneManager_ ? SceneManagerModule::kResultsInPort : HostSink::kInPort;
   if (reorderBuffer_)
-    orderedResults_->connect(*reorderBuffer_, ReorderBuffer::kOutPort, resultsConsumer, resultsPort);
+    orderedResults_->connect(*reorderBuffer_, ReorderBuffer::kOutPort, resultsConsumer,
+                             resultsPort);
   else
-    managedResults_->connect(*resultManager_, ResultManager::kOutPort, resultsConsumer, resultsPort);
+    managedResults_->connect(*resultManager_, ResultManager::kOutPort, resultsConsumer,
+                             resultsPort);
   if (sceneManager_) {
     rayResults_->connect(*sceneManager_, SceneManagerModule::kRaysOutPort, *sink_,
                          HostSink::kInPort);

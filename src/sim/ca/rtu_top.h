@@ -12,9 +12,6 @@
 
 #include <systemc>
 
-#include "sim/kernel/cycle_clock.h"
-#include "trace/cycle_trace.h"
-#include "sim/kernel/decision_pump.h"
 #include "sim/ca/host_sink.h"
 #include "sim/ca/host_source.h"
 #include "sim/ca/job_manager.h"
@@ -22,10 +19,13 @@
 #include "sim/ca/reorder_buffer.h"
 #include "sim/ca/result_manager.h"
 #include "sim/ca/scene_manager_module.h"
-#include "sim/rtu_config.h"
 #include "sim/ca/scheduler.h"
 #include "sim/ca/timed_core.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/kernel/decision_pump.h"
 #include "sim/kernel/transfer_channel.h"
+#include "sim/rtu_config.h"
+#include "trace/cycle_trace.h"
 
 namespace rtu {
 

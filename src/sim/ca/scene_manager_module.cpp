@@ -93,9 +93,9 @@ void SceneManagerModule::merge(const CoreResult& result, uint64_t cycle) {
   }
   ray.merged.result.cost = cost;
   const bool allIssued = ray.next == ray.candidates.size();
-  const bool ended = !allIssued && config_.options.earlyTermination && ray.nearest >= 0 &&
-                     hitEndsRayBefore(format_.toDouble(ray.merged.result.tHit),
-                                      ray.candidates[ray.next].near);
+  const bool ended =
+      !allIssued && config_.options.earlyTermination && ray.nearest >= 0 &&
+      hitEndsRayBefore(format_.toDouble(ray.merged.result.tHit), ray.candidates[ray.next].near);
   if (allIssued || ended) finish(ray, cycle + 1);
 }
 
@@ -120,9 +120,9 @@ void SceneManagerModule::offerToHost(uint64_t now) {
 
 uint64_t SceneManagerModule::heldIn(uint64_t cycle) const {
   // A ray the host took in cycle k is held through k.
-  return rays_.size() + static_cast<uint64_t>(std::count_if(
-                            leaving_.begin(), leaving_.end(),
-                            [cycle](uint64_t left) { return left >= cycle; }));
+  return rays_.size() +
+         static_cast<uint64_t>(std::count_if(leaving_.begin(), leaving_.end(),
+                                             [cycle](uint64_t left) { return left >= cycle; }));
 }
 
 void SceneManagerModule::takeRay(uint64_t now) {

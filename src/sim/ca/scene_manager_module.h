@@ -34,13 +34,13 @@
 
 #include <systemc>
 
-#include "sim/kernel/cycle_clock.h"
-#include "sim/kernel/decision_pump.h"
 #include "kinds/svo/fixed_point.h"
-#include "sim/kernel/module_process.h"
-#include "sim/ca/rtu_payloads.h"
 #include "scene/scene_manager.h"
 #include "scene/scene_manager_timing.h"
+#include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/cycle_clock.h"
+#include "sim/kernel/decision_pump.h"
+#include "sim/kernel/module_process.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -72,7 +72,7 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
     uint64_t readyFrom = 0;
     bool outstanding = false;
     CoreResult merged;
-    int nearest = -1;  // the instance hit, -1 on a miss so far
+    int nearest = -1;                 // the instance hit, -1 on a miss so far
     uint64_t doneFrom = kNeverCycle;  // the cycle it may be offered to the host from
   };
 
@@ -99,14 +99,14 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
   TransferChannel<HostJob>* jobsOut_ = nullptr;
   TransferChannel<CoreResult>* resultsIn_ = nullptr;
   TransferChannel<CoreResult>* raysOut_ = nullptr;
-  std::deque<Ray> rays_;                              // held, oldest first
-  std::multimap<uint64_t, CoreResult> arriving_;      // delivered, by cycle, not yet merged
+  std::deque<Ray> rays_;                          // held, oldest first
+  std::multimap<uint64_t, CoreResult> arriving_;  // delivered, by cycle, not yet merged
   uint64_t jobsOutstanding_ = 0;
   uint64_t nextJob_ = 0;
-  uint64_t issueFrom_ = 0;   // the cycle after the last transfer to the job manager
-  uint64_t hostFrom_ = 0;    // the cycle after the last transfer to the host
-  uint64_t takeFrom_ = 0;    // the cycle after the last ray taken
-  uint64_t offeredRay_ = 0;  // the ray offered to the host
+  uint64_t issueFrom_ = 0;        // the cycle after the last transfer to the job manager
+  uint64_t hostFrom_ = 0;         // the cycle after the last transfer to the host
+  uint64_t takeFrom_ = 0;         // the cycle after the last ray taken
+  uint64_t offeredRay_ = 0;       // the ray offered to the host
   std::deque<uint64_t> leaving_;  // cycles rays left in, not yet past
   std::vector<uint64_t> issueCycles_;
   SceneManagerStatistics statistics_;

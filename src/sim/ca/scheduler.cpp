@@ -95,7 +95,7 @@ void Scheduler::dispatch(int core, uint64_t cycle) {
   const CoreJob& job = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   cores_[static_cast<size_t>(core)]->deliver(job, cycle);
-  awaited_ = kAnyCore;  // the next job's search has not started
+  awaited_ = kAnyCore;            // the next job's search has not started
   raiseDispatchFloor(cycle + 1);  // jobs are dispatched in increasing cycles
   choice_.dispatched(core);
 }

@@ -11,10 +11,10 @@
 #include <map>
 #include <vector>
 
-#include "sim/ca/core_memory_if.h"
-#include "sim/kernel/decision_pump.h"
-#include "sim/ca/rtu_payloads.h"
 #include "rtu/scheduler_choice.h"
+#include "sim/ca/core_memory_if.h"
+#include "sim/ca/rtu_payloads.h"
+#include "sim/kernel/decision_pump.h"
 #include "sim/kernel/transfer_channel.h"
 
 namespace rtu {
@@ -66,7 +66,7 @@ class Scheduler final : public Agent, public DispatchFloor {
   // The one core whose declaration the pending job's search waits for, or kAnyCore: the others'
   // news cannot move the search (a cached run's cores bound their readiness at every miss).
   int awaited_ = kAnyCore;
-  SchedulerStatistics statistics_;  // its histogram holds the waits past shortWaits_
+  SchedulerStatistics statistics_;          // its histogram holds the waits past shortWaits_
   std::array<uint64_t, 256> shortWaits_{};  // jobs by wait: an array, not a map lookup per job
 };
 

@@ -86,7 +86,8 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
     if (out_->collectTaken())
       handOver();
     else if (out_->readyBound() > outCycle_ && in_->readyBound() < out_->readyBound() + 1)
-      in_->notReadyBefore(out_->readyBound() + 1);  // the result manager takes it then at the earliest
+      in_->notReadyBefore(out_->readyBound() +
+                          1);  // the result manager takes it then at the earliest
   }
 
  private:

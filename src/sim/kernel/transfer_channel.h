@@ -17,6 +17,7 @@
 // A module whose levels do more than that (the job manager's combinational in_ready, the result
 // manager's select) records the rest.
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -26,9 +27,8 @@
 #include <vector>
 
 #include "sim/kernel/cycle_clock.h"
-#include "trace/cycle_trace.h"
 #include "sim/kernel/decision_pump.h"
-#include <algorithm>
+#include "trace/cycle_trace.h"
 
 namespace rtu {
 

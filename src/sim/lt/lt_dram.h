@@ -7,8 +7,8 @@
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 
-#include "sim/memory/dram_channel.h"
 #include "sim/lt/lt_time.h"
+#include "sim/memory/dram_channel.h"
 
 namespace rtu {
 

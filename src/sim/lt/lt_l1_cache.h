@@ -10,10 +10,10 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
-#include "sim/memory/l1_cache_timing.h"
+#include "kinds/svo/svo_memory.h"
 #include "sim/lt/lt_time.h"
 #include "sim/lt/lt_timing_target.h"
-#include "kinds/svo/svo_memory.h"
+#include "sim/memory/l1_cache_timing.h"
 
 namespace rtu {
 

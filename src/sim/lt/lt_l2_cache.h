@@ -9,9 +9,9 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
-#include "sim/memory/l2_cache_timing.h"
 #include "sim/lt/lt_time.h"
 #include "sim/lt/lt_timing_target.h"
+#include "sim/memory/l2_cache_timing.h"
 
 namespace rtu {
 
@@ -28,7 +28,6 @@ class LtL2Cache : public sc_core::sc_module, public LtTimingTarget {
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) override;
 
  private:
-
   LtTime time_;
   uint64_t forgottenAt_ = 0;  // the cycle of the last forgetBefore
   L2CacheTiming timing_;

@@ -3,8 +3,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/ca/job_manager.h"
 #include "base/prefault.h"
+#include "sim/ca/job_manager.h"
 
 namespace rtu {
 
@@ -36,8 +36,8 @@ void LtTop::bindCachedMemory(const RtuConfig& config, SvoMemory memory) {
   dram_ = std::make_unique<LtDram>("dram", config.memory.dram, time_);
   l2_->dram.bind(dram_->socket);
   for (size_t i = 0; i < cores_.size(); ++i) {
-    l1_.push_back(std::make_unique<LtL1Cache>(("l1_" + std::to_string(i)).c_str(),
-                                              config.memory.l1, memory, time_));
+    l1_.push_back(std::make_unique<LtL1Cache>(("l1_" + std::to_string(i)).c_str(), config.memory.l1,
+                                              memory, time_));
     cores_[i]->memory.bind(l1_.back()->socket);
     l1_.back()->next.bind(l2_->socket);
   }

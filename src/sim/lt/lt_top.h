@@ -21,13 +21,13 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "kinds/svo/job_setup.h"
+#include "rtu/rtu_recurrence.h"
 #include "sim/lt/lt_dram.h"
 #include "sim/lt/lt_l1_cache.h"
 #include "sim/lt/lt_l2_cache.h"
 #include "sim/lt/lt_rom.h"
 #include "sim/lt/lt_traversal_core.h"
 #include "sim/rtu_config.h"
-#include "rtu/rtu_recurrence.h"
 
 namespace rtu {
 

@@ -62,8 +62,8 @@ uint32_t LtTraversalCore::stepThroughSocket(uint64_t initCycle) {
 }
 
 void LtTraversalCore::failRead() const {
-  throw std::runtime_error(std::string(name()) + ": memory read failed: " +
-                           read_.get_response_string());
+  throw std::runtime_error(std::string(name()) +
+                           ": memory read failed: " + read_.get_response_string());
 }
 
 }  // namespace rtu

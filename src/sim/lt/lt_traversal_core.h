@@ -1,9 +1,9 @@
 #pragma once
 // A traversal core of the loosely-timed model: a TLM-2.0 initiator. traverse() steps the shared
-// state machine (src/kinds/svo/traversal_core.h) through a whole job at once, ahead of simulated time,
-// with the cycle accounting of the cycle-accurate core (sim/ca/timed_core.h): INIT in the cycle
-// after dispatch, one cycle per state, and a read issued in c whose word is there in d > c costs
-// BLOCKED in c + 1 .. d.
+// state machine (src/kinds/svo/traversal_core.h) through a whole job at once, ahead of simulated
+// time, with the cycle accounting of the cycle-accurate core (sim/ca/timed_core.h): INIT in the
+// cycle after dispatch, one cycle per state, and a read issued in c whose word is there in d > c
+// costs BLOCKED in c + 1 .. d.
 //
 // Each word it reads is a b_transport on `memory`, the delay annotated to the state's cycle and
 // returned with the cycle the word is there; with DMI granted (the ideal ROM) it reads the image
@@ -18,9 +18,9 @@
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "kinds/svo/fixed_point.h"
-#include "sim/lt/lt_time.h"
-#include "sim/ca/rtu_payloads.h"
 #include "kinds/svo/traversal_core.h"
+#include "sim/ca/rtu_payloads.h"
+#include "sim/lt/lt_time.h"
 
 namespace rtu {
 

@@ -22,9 +22,9 @@ const StatisticGroup<CacheStats>& CacheStats::declaration() {
           .count(Statistic("accesses", "reads", "lines looked up: hits + merged + misses"),
                  &CacheStats::accesses)
           .count(Statistic("hits", "reads", "the line resident and filled"), &CacheStats::hits)
-          .count(
-              Statistic("merged", "reads", "the line resident but still in flight: a merged miss"),
-              &CacheStats::merged)
+          .count(Statistic("merged", "reads",
+                           "the line resident but still in flight: a merged miss"),
+                 &CacheStats::merged)
           .count(Statistic("misses", "reads", "the line not resident: a fill"), &CacheStats::misses)
           .count(Statistic("evictions", "lines", "allocations that replaced a valid line"),
                  &CacheStats::evictions)

@@ -154,14 +154,14 @@ class CacheArray {
   int lineShift_;
   uint64_t setMask_;
   size_t waysPerSet_;
-  int wayBits_;       // bits of the largest way number in a set
-  uint64_t wayMask_;  // those bits of a stamp
-  std::vector<uint64_t> lines_;  // per way, sets x ways, set-major: its line number or kEmpty
-  std::vector<Way> ways_;        // per way, as lines_
+  int wayBits_;                       // bits of the largest way number in a set
+  uint64_t wayMask_;                  // those bits of a stamp
+  std::vector<uint64_t> lines_;       // per way, sets x ways, set-major: its line number or kEmpty
+  std::vector<Way> ways_;             // per way, as lines_
   std::vector<uint32_t> mostRecent_;  // per set, its most recently used way
-  uint64_t clock_ = 0;     // source of stamps
-  uint64_t missedLine_ = kEmpty;  // the line access() missed last, until an allocation
-  CacheStats stats_;        // all but the hits, which stats() derives
+  uint64_t clock_ = 0;                // source of stamps
+  uint64_t missedLine_ = kEmpty;      // the line access() missed last, until an allocation
+  CacheStats stats_;                  // all but the hits, which stats() derives
   std::mt19937_64 random_;  // 2.5 KB, last: the fields every access reads share host cache lines
 };
 

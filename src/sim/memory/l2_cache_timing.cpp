@@ -27,8 +27,8 @@ constexpr size_t kManyMshrUses = 256, kFewMshrUses = 64;
 
 }  // namespace
 
-L2CacheTiming::L2CacheTiming(const CacheConfig& cache, const DramConfig& dram,
-                             RequestOrder order, DramRead external)
+L2CacheTiming::L2CacheTiming(const CacheConfig& cache, const DramConfig& dram, RequestOrder order,
+                             DramRead external)
     : array_(validated(cache)),
       dram_(validated(dram), order),
       externalDram_(std::move(external)),

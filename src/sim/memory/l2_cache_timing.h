@@ -43,8 +43,8 @@
 namespace rtu {
 
 struct L2Stats {
-  CacheStats cache;  // requests = cache.accesses; hits, merged, misses, evictions
-  DramStats dram;    // bytes read, bus busy cycles
+  CacheStats cache;              // requests = cache.accesses; hits, merged, misses, evictions
+  DramStats dram;                // bytes read, bus busy cycles
   uint64_t portQueueCycles = 0;  // sum of accept - R
   uint64_t mshrQueueCycles = 0;  // sum of issue - T over misses
 
@@ -131,7 +131,7 @@ class L2CacheTiming {
     void update(Index node);
     Index root_ = 0;
     std::vector<Node> nodes_ = std::vector<Node>(1);
-    std::vector<Index> unused_;  // nodes_ free for reuse
+    std::vector<Index> unused_;              // nodes_ free for reuse
     uint64_t random_ = 0x9E3779B97F4A7C15u;  // xorshift state of the priorities
   };
   // RequestOrder::Any: the MSHRs' uses, [issue, release), that may still be busy for a request.

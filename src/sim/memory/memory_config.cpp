@@ -44,10 +44,10 @@ void validate(const CacheConfig& cache, const std::string& level) {
           prefix + std::to_string(cache.sizeBytes) + " bytes do not hold one " + line);
   // 64 bits: lineBytes * ways may not fit in 32.
   const uint64_t setBytes = uint64_t{cache.lineBytes} * cache.ways;
-  require(cache.sizeBytes % setBytes == 0,
-          prefix + "size " + std::to_string(cache.sizeBytes) + " is not a multiple of " +
-              std::to_string(cache.ways) + " ways x " + line + " (" + std::to_string(setBytes) +
-              " bytes)");
+  require(cache.sizeBytes % setBytes == 0, prefix + "size " + std::to_string(cache.sizeBytes) +
+                                               " is not a multiple of " +
+                                               std::to_string(cache.ways) + " ways x " + line +
+                                               " (" + std::to_string(setBytes) + " bytes)");
   const uint64_t sets = cache.sizeBytes / setBytes;
   // The set index is a field of the address.
   require(isPowerOfTwo(sets), prefix + std::to_string(sets) + " sets is not a power of two");
@@ -62,9 +62,9 @@ void validate(const DramConfig& dram) {
   require(dram.bytesPerCycle >= kMinBytesPerCycle && dram.bytesPerCycle <= kMaxBytesPerCycle,
           "DRAM: bytes per cycle must be in " + rateRange() + ", not " +
               std::to_string(dram.bytesPerCycle));
-  require(dram.latency <= kMaxLatencyCycles,
-          "DRAM: latency " + std::to_string(dram.latency) + " is above the limit of " +
-              std::to_string(kMaxLatencyCycles) + " cycles");
+  require(dram.latency <= kMaxLatencyCycles, "DRAM: latency " + std::to_string(dram.latency) +
+                                                 " is above the limit of " +
+                                                 std::to_string(kMaxLatencyCycles) + " cycles");
 }
 
 void validate(const MemoryConfig& memory) {
