@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
   bool allMet = true;
   for (const std::string& name : names) {
     const BenchFrame frame = benchFrame(name);
-    const SvoMemory memory = frame.build.image.memory();
+    const WordMemory memory = frame.build.image.memory();
     const std::vector<HostRecord> records(frame.jobs.begin(), frame.jobs.end());
     const double rays = static_cast<double>(frame.jobs.size());
     const double goldenCpu = fastestOf(repeat, [&] {

@@ -30,7 +30,7 @@ double secondsOf(Work&& work) {
 int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : "menger";
   const BenchFrame frame = benchFrame(scene, 6);
-  const SvoMemory memory = frame.build.image.memory();
+  const WordMemory memory = frame.build.image.memory();
   std::vector<RecurrenceJob> timing;
   const double golden = secondsOf([&] {
     GoldenModel model(memory, GoldenConfig{});

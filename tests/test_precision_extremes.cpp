@@ -245,7 +245,7 @@ DeepCount traceDeep(int depth, FixedFormat format) {
   glm::dvec3 lower;
   double size = 0;
   const std::vector<uint32_t> words = deepChain(depth, lower, size);
-  const SvoMemory memory(words);
+  const WordMemory memory(words);
   GoldenModel golden(memory, GoldenConfig{format, FloatConversion::Rtl, kMaxStackFrames});
   ReferenceModel reference(memory);
   DeepCount count;

@@ -201,7 +201,7 @@ TEST_CASE("Model headers round-trip and place the model as documented", "[rays]"
 TEST_CASE("Malformed model headers are rejected with the address and the field", "[rays]") {
   SvoImage image{std::vector<uint32_t>(20, 0), 0};
   const uint32_t address = appendModelHeader(image, ModelPlacement{});
-  const SvoMemory memory = image.memory();
+  const WordMemory memory = image.memory();
   REQUIRE_THROWS_WITH(readModelHeader(memory, 21),
                       Catch::Contains("word 21") && Catch::Contains("past the end"));
   REQUIRE_THROWS_WITH(readModelHeader(memory, 1u << 31), Catch::Contains("past the end"));
@@ -212,7 +212,7 @@ TEST_CASE("Malformed model headers are rejected with the address and the field",
     return words;
   };
   auto readFrom = [&](const std::vector<uint32_t>& words) {
-    return readModelHeader(SvoMemory(words), address);
+    return readModelHeader(WordMemory(words), address);
   };
   REQUIRE_THROWS_WITH(readFrom(corrupted(1, 0x7FC00000u)),
                       Catch::Contains("word 20") &&

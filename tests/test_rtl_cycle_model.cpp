@@ -78,11 +78,11 @@ RtlTopRun runTrees(const std::vector<Tree>& trees, int cores) {
   const std::vector<uint32_t> image = treeImage();
   const std::vector<TraversalJob> jobs = centreLineJobs(trees);
   // The premise of every hand count: the golden model agrees with the hand-worked costs.
-  GoldenModel golden(SvoMemory(image), GoldenConfig{});
+  GoldenModel golden(WordMemory(image), GoldenConfig{});
   for (size_t i = 0; i < jobs.size(); ++i) REQUIRE(golden.trace(jobs[i]).cost == trees[i].cost);
   RtlTopConfig config;
   config.cores = cores;
-  return runRtlTop(SvoMemory(image), jobs, config);
+  return runRtlTop(WordMemory(image), jobs, config);
 }
 
 std::vector<uint32_t> resultIds(const RtlTopRun& run) {
@@ -267,14 +267,14 @@ TEST_CASE("Ray records: the ray stages, and a model's first ray waits for its he
 }
 
 TEST_CASE("No jobs take no cycles", "[rtl]") {
-  const RtlTopRun run = runRtlTop(SvoMemory(), std::vector<TraversalJob>{}, RtlTopConfig{});
+  const RtlTopRun run = runRtlTop(WordMemory(), std::vector<TraversalJob>{}, RtlTopConfig{});
   REQUIRE(run.results.empty());
   REQUIRE(run.totalCycles == 0);
 }
 
 TEST_CASE("Impossible configurations are rejected", "[rtl]") {
   const std::vector<TraversalJob> jobs = centreLineJobs({kFullRoot});
-  const SvoMemory memory;
+  const WordMemory memory;
   RtlTopConfig config;
   for (int cores : {0, -1, kMaxRtlCores + 1}) {
     config.cores = cores;

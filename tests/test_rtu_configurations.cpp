@@ -49,7 +49,7 @@ struct Scene {
   std::string name;
   SvoBuild build;
   std::vector<TraversalJob> jobs;
-  SvoMemory memory() const { return build.image.memory(); }
+  WordMemory memory() const { return build.image.memory(); }
 };
 
 Scene frameScene(const std::string& name, int width, int height, int depth = 6) {
@@ -122,13 +122,13 @@ std::vector<TraversalJob> treeJobs(const std::vector<Tree>& trees) {
     jobs.push_back(job);
   }
   // The premise of every hand count: the golden model agrees with the hand-worked costs.
-  GoldenModel golden(SvoMemory(treeImage()), GoldenConfig{});
+  GoldenModel golden(WordMemory(treeImage()), GoldenConfig{});
   for (size_t i = 0; i < jobs.size(); ++i) REQUIRE(golden.trace(jobs[i]).cost == trees[i].cost);
   return jobs;
 }
 
 RtuRun runTrees(const std::vector<Tree>& trees, const RtuConfig& config) {
-  return simulateRtu(SvoMemory(treeImage()), treeJobs(trees), config);
+  return simulateRtu(WordMemory(treeImage()), treeJobs(trees), config);
 }
 
 using Cycles = std::vector<uint64_t>;
@@ -205,7 +205,7 @@ std::string describe(const RtuConfig& c) {
 
 // Memory words the traversal state machine reads for each job (EVAL, PUSH through a far pointer),
 // counted by running the golden state machine itself, independently of the cache models.
-uint64_t wordsRead(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+uint64_t wordsRead(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const GoldenConfig& golden) {
   TraversalCore<FixedArith> core(FixedArith{golden.format}, golden.stackFrames);
   uint64_t reads = 0;
@@ -833,7 +833,7 @@ TEST_CASE("32 bytes per cycle and full activity are an unlimited link, cycle for
 
 TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
   const std::vector<TraversalJob> jobs = treeJobs({kFullRoot});
-  const SvoMemory memory(treeImage());
+  const WordMemory memory(treeImage());
   const auto rejects = [&](const RtuConfig& config) {
     INFO(describe(config));
     CHECK_THROWS_AS(simulateRtu(memory, jobs, config), std::invalid_argument);
@@ -937,13 +937,13 @@ TEST_CASE("An impossible cache is an error even with ideal memory", "[rtu]") {
   config.memory.l1.sizeBytes = 16;  // config.memory.ideal stays true
   REQUIRE(config.memory.ideal);
   CHECK_THROWS_AS(validate(config.memory), std::invalid_argument);  // the memory's own check
-  CHECK_THROWS_AS(simulateRtu(SvoMemory(treeImage()), treeJobs({kFullRoot}), config),
+  CHECK_THROWS_AS(simulateRtu(WordMemory(treeImage()), treeJobs({kFullRoot}), config),
                   std::invalid_argument);
 }
 
 TEST_CASE("No jobs: no results and no cycles", "[rtu]") {
   RtuConfig config;
-  const RtuRun run = simulateRtu(SvoMemory(treeImage()), std::vector<TraversalJob>{}, config);
+  const RtuRun run = simulateRtu(WordMemory(treeImage()), std::vector<TraversalJob>{}, config);
   CHECK(run.results.empty());
   CHECK(run.totalCycles == 0);
   CHECK(run.statistics.rays == 0);

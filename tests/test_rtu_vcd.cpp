@@ -195,7 +195,7 @@ class TempDir {
 struct Scene {
   SvoBuild build;
   std::vector<TraversalJob> jobs;
-  SvoMemory memory() const { return build.image.memory(); }
+  WordMemory memory() const { return build.image.memory(); }
 };
 
 Scene frameScene(const std::string& name, int width, int height) {

@@ -41,7 +41,7 @@ struct Expected {
 // model, whose t is along the normalised direction: the walk gets the same normalised line.
 void checkHandCase(const std::vector<uint32_t>& words, uint32_t root, glm::dvec3 origin,
                    glm::dvec3 direction, const Expected& expected) {
-  const SvoMemory memory(words);
+  const WordMemory memory(words);
   const double length =
       std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
   const VoxelWalkResult walk = walkVoxels(memory, root, origin, direction);
@@ -92,7 +92,7 @@ TEST_CASE("Voxel walk: a single voxel, hit across an empty octant or missed", "[
   checkHandCase(image, 0, {-1.5, 0.2, 0.6}, {1, 0.1, 0}, {true, 1.5, 0, 1, 1, 1, 1, 7});
   // The diagonal through the centre, a corner of all eight octants: hits at t = 2, the tie on
   // the entry face going to x.
-  const VoxelWalkResult diagonal = walkVoxels(SvoMemory(image), 0, {-2, -2, -2}, {1, 1, 1});
+  const VoxelWalkResult diagonal = walkVoxels(WordMemory(image), 0, {-2, -2, -2}, {1, 1, 1});
   CHECK(diagonal.hit);
   CHECK(diagonal.tHit == 2.0);
   CHECK(diagonal.entryAxis == 0);
@@ -137,8 +137,8 @@ TEST_CASE("Voxel walk: far pointers, also wrapping to children before their pare
 
 TEST_CASE("Voxel walk: refuses a zero direction and a cycle of child pointers", "[voxel-walk]") {
   const std::vector<uint32_t> image{descriptor(false, 0, 0x01, 0x00)};  // its child is itself
-  CHECK_THROWS_AS(walkVoxels(SvoMemory(image), 0, {0, 0, -3}, {0, 0, 0}), std::invalid_argument);
-  CHECK_THROWS_AS(walkVoxels(SvoMemory(image), 0, {-1, -1, -3}, {0, 0, 1}), std::runtime_error);
+  CHECK_THROWS_AS(walkVoxels(WordMemory(image), 0, {0, 0, -3}, {0, 0, 0}), std::invalid_argument);
+  CHECK_THROWS_AS(walkVoxels(WordMemory(image), 0, {-1, -1, -3}, {0, 0, 1}), std::runtime_error);
 }
 
 namespace {
@@ -188,7 +188,7 @@ std::array<double, 3> goldenUncertainty(const TraversalJob& job, int depth) {
 // (a miss, or the same voxel entered at a t within the error): the walk along the same direction
 // from origins moved along each axis k by -1, -1/2, 0, 1/2 or 1 times u_k |d_k|, which moves
 // that axis' plane crossings by up to u_k in t.
-bool reproduced(const SvoMemory& memory, uint32_t root, const Ray& ray,
+bool reproduced(const WordMemory& memory, uint32_t root, const Ray& ray,
                 const std::array<double, 3>& u, bool hit, uint64_t voxel, double tHit) {
   const glm::dvec3 d = jobLineDirection(ray.direction, kDefaultDirectionEpsilon);
   const double tolerance = 2 * std::max({u[0], u[1], u[2]});
@@ -205,7 +205,7 @@ bool reproduced(const SvoMemory& memory, uint32_t root, const Ray& ray,
 }
 
 Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays) {
-  const SvoMemory memory = build.image.memory();
+  const WordMemory memory = build.image.memory();
   const uint32_t root = build.image.root;
   GoldenModel golden(memory, GoldenConfig{});
   ReferenceModel reference(memory, kDefaultDirectionEpsilon);

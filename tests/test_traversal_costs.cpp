@@ -29,7 +29,7 @@ TraversalResult trace(const std::vector<uint32_t>& image, const TraversalJob& jo
                       int stackFrames = kRtlStackFrames) {
   GoldenConfig config;
   config.stackFrames = stackFrames;
-  GoldenModel model(SvoMemory(image), config);
+  GoldenModel model(WordMemory(image), config);
   return model.trace(job);
 }
 

@@ -41,7 +41,7 @@ void addAccuracyCommand(CLI::App& app) {
     golden.format.validate();
     frame.camera.validate();
     const Scene scene = loadScene(frame.scene);
-    const SvoMemory memory = scene.image.memory();
+    const WordMemory memory = scene.image.memory();
     const std::vector<Ray> rays = frameRays(frame.camera);
     const AccuracyReport report =
         measureAccuracy(memory, scene.image.root, rays, golden, frame.epsilon, options->tolerance);

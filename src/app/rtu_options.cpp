@@ -23,7 +23,7 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
   return resolved;
 }
 
-RtuConfig plannedTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuConfig plannedTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunOutputs& outputs, std::ostream& out) {
   RunProgressLine progress("dry run", "rays");
   return planTrace(memory, records, config, {outputs.traceRay, outputs.traceMaxMb * 1000000}, out,

@@ -47,7 +47,7 @@ void checkOutputsOfModel(const RunOutputs& outputs, ModelKind model);
 
 // `config` with the trace's window (--trace-ray), after measuring the trace and the timeline
 // (src/run/trace_plan.h): prints their sizes, refuses one above --trace-max-mb.
-RtuConfig plannedTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuConfig plannedTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunOutputs& outputs, std::ostream& out);
 
 // Prints the report and writes the --stats JSON if asked for.

@@ -100,7 +100,7 @@ void recordCycle(std::vector<uint64_t>& cycles, uint64_t tag, uint64_t cycle) {
 
 class RtlTop::Registers {
  public:
-  Registers(const SvoMemory& memory, const RtlTopConfig& config);
+  Registers(const WordMemory& memory, const RtlTopConfig& config);
 
   RtlCycle step(const RtlOffer* offer);
 
@@ -120,7 +120,7 @@ class RtlTop::Registers {
   // result down the stages gives what float_to_fixed delivers at the end of them.
   void accept(const RtlOffer& offer);
 
-  SvoMemory memory_;
+  WordMemory memory_;
   RtlTopConfig config_;
   JobSetup setup_;  // the ray transform, and the model headers read so far
   JobManager jobManager_;
@@ -129,7 +129,7 @@ class RtlTop::Registers {
   ResultManager resultManager_;
 };
 
-RtlTop::Registers::Registers(const SvoMemory& memory, const RtlTopConfig& config)
+RtlTop::Registers::Registers(const WordMemory& memory, const RtlTopConfig& config)
     : memory_(memory),
       config_(config),
       setup_(memory,
@@ -262,7 +262,7 @@ void RtlTop::Registers::clockResultManager(const Wires& w) {
   rm.resultSelect = nextSelect(rm.resultSelect, config_.cores);
 }
 
-RtlTop::RtlTop(const SvoMemory& memory, const RtlTopConfig& config)
+RtlTop::RtlTop(const WordMemory& memory, const RtlTopConfig& config)
     : registers_(std::make_unique<Registers>(memory, config)) {}
 RtlTop::~RtlTop() = default;
 
@@ -272,7 +272,7 @@ const std::vector<uint64_t>& RtlTop::acceptCycles() const { return registers_->a
 const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_->dispatchCycles; }
 
 // The thesis' host: job i + 1 offered from the cycle after job i was taken.
-RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config) {
   RtlTop top(memory, config);
   RtlTopRun run;
@@ -293,7 +293,7 @@ RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& reco
   return run;
 }
 
-RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                     const RtlTopConfig& config) {
   return runRtlTop(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
 }

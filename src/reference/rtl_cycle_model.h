@@ -21,8 +21,8 @@
 
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
-#include "kinds/svo/svo_memory.h"
 #include "kinds/svo/traversal_job.h"
+#include "rtu/word_memory.h"
 
 namespace rtu {
 
@@ -47,9 +47,9 @@ struct RtlTopRun {
   uint64_t totalCycles = 0;              // cycle in which the last result was taken, plus one
 };
 
-RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config);
-RtlTopRun runRtlTop(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                     const RtlTopConfig& config);
 
 // What a host offers the job manager in one cycle; `tag` names the job to the host (no RTL
@@ -73,7 +73,7 @@ struct RtlCycle {
 class RtlTop {
  public:
   // Throws std::invalid_argument for an invalid configuration.
-  RtlTop(const SvoMemory& memory, const RtlTopConfig& config);
+  RtlTop(const WordMemory& memory, const RtlTopConfig& config);
   ~RtlTop();
   RtlTop(const RtlTop&) = delete;
   RtlTop& operator=(const RtlTop&) = delete;

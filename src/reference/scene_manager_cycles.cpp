@@ -20,7 +20,7 @@ struct HeldRay {
 
 class SceneCycles {
  public:
-  SceneCycles(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+  SceneCycles(const WordMemory& memory, const std::vector<RayRecord>& rays,
               const std::vector<SceneInstance>& instances, const SceneManagerConfig& scene,
               const RtlTopConfig& rtu)
       : rays_(rays),
@@ -159,7 +159,7 @@ class SceneCycles {
 
 }  // namespace
 
-SceneCyclesRun runSceneCycles(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+SceneCyclesRun runSceneCycles(const WordMemory& memory, const std::vector<RayRecord>& rays,
                               const std::vector<SceneInstance>& instances,
                               const SceneManagerConfig& scene, const RtlTopConfig& rtu) {
   return SceneCycles(memory, rays, instances, scene, rtu).run();

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/svo_memory.h"
 #include "kinds/svo/traversal_job.h"
 #include "reference/rtl_cycle_model.h"
+#include "rtu/word_memory.h"
 #include "scene/scene_manager.h"
 #include "scene/scene_manager_timing.h"
 
@@ -37,7 +37,7 @@ struct SceneCyclesRun {
 };
 
 // Throws std::invalid_argument for an impossible configuration.
-SceneCyclesRun runSceneCycles(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+SceneCyclesRun runSceneCycles(const WordMemory& memory, const std::vector<RayRecord>& rays,
                               const std::vector<SceneInstance>& instances,
                               const SceneManagerConfig& scene, const RtlTopConfig& rtu);
 

@@ -17,7 +17,7 @@ namespace {
 // (src/kinds/svo/job_setup.h), the golden model's result and cost.
 class RecordTracer {
  public:
-  RecordTracer(const SvoMemory& memory, const RtuConfig& config)
+  RecordTracer(const WordMemory& memory, const RtuConfig& config)
       : setup_(memory, config.jobManager), golden_(memory, config.golden()) {}
 
   void trace(const HostRecord& record) {
@@ -49,7 +49,7 @@ std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
 namespace {
 
 template <typename Record>
-RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records,
+RtuRun analyticRun(const WordMemory& memory, const std::vector<Record>& records,
                    const RtuConfig& config) {
   validate(config);
   if (const auto why = whyNotAnalytic(config))
@@ -71,12 +71,12 @@ RtuRun analyticRun(const SvoMemory& memory, const std::vector<Record>& records,
 
 }  // namespace
 
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config) {
   return analyticRun(memory, jobs, config);
 }
 
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config) {
   return analyticRun(memory, records, config);
 }

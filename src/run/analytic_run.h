@@ -17,9 +17,9 @@ namespace rtu {
 std::optional<std::string> whyNotAnalytic(const RtuConfig& config);
 
 // Throws std::invalid_argument when whyNotAnalytic says why, or for an impossible configuration.
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config);
-RtuRun runAnalytic(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config);
 
 }  // namespace rtu

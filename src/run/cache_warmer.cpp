@@ -4,7 +4,7 @@
 
 namespace rtu {
 
-CacheWarmer::CacheWarmer(SvoMemory memory, const RtuConfig& config)
+CacheWarmer::CacheWarmer(WordMemory memory, const RtuConfig& config)
     : memory_(memory),
       golden_(config.golden()),
       cores_(config.cores),

@@ -17,7 +17,7 @@ namespace rtu {
 class CacheWarmer {
  public:
   // `config.memory` must be cached.
-  CacheWarmer(SvoMemory memory, const RtuConfig& config);
+  CacheWarmer(WordMemory memory, const RtuConfig& config);
 
   // Traces jobs[next .. end) untimed, touching their lines; `next` is where the last call ended.
   void warmUpTo(const std::vector<TraversalJob>& jobs, uint64_t end);
@@ -27,7 +27,7 @@ class CacheWarmer {
  private:
   void touch(int core, uint32_t wordAddress);
 
-  SvoMemory memory_;
+  WordMemory memory_;
   GoldenConfig golden_;
   int cores_;
   TraversalCore<FixedArith> core_;

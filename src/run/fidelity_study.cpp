@@ -41,7 +41,7 @@ std::pair<double, double> relativeErrors(const std::vector<double>& mode,
 
 class Study {
  public:
-  Study(const SvoMemory& memory, const std::vector<TraversalJob>& jobs, const RtuConfig& config)
+  Study(const WordMemory& memory, const std::vector<TraversalJob>& jobs, const RtuConfig& config)
       : memory_(memory), jobs_(jobs), config_(config) {
     const auto start = std::chrono::steady_clock::now();
     golden_ = GoldenModel(memory, config.golden()).traceAll(jobs);
@@ -130,7 +130,7 @@ class Study {
     m.l2Error = 100 * (l2 - hitRate(reference_.l2.cache));
   }
 
-  const SvoMemory& memory_;
+  const WordMemory& memory_;
   const std::vector<TraversalJob>& jobs_;
   const RtuConfig& config_;
   std::vector<TraversalResult> golden_;
@@ -141,7 +141,7 @@ class Study {
 
 }  // namespace
 
-std::vector<ModeFidelity> measureFidelity(const SvoMemory& memory,
+std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
                                           const std::vector<TraversalJob>& jobs,
                                           const RtuConfig& config,
                                           const std::vector<uint64_t>& quanta,

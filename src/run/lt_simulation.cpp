@@ -19,7 +19,7 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
   return whyNotAnalytic(anyMemory);
 }
 
-RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunProgress& progress) {
   validate(config);
   if (const auto why = whyNotLooselyTimed(config))
@@ -42,7 +42,7 @@ RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<HostRecord>& r
   return run;
 }
 
-RtuRun runLooselyTimed(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                        const RtuConfig& config, const RunProgress& progress) {
   const std::vector<HostRecord> records(jobs.begin(), jobs.end());
   return runLooselyTimed(memory, records, config, progress);

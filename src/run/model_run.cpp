@@ -23,7 +23,7 @@ const char* toString(ModelKind model) {
   return "?";
 }
 
-RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runGoldenTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                       const RtuConfig& config) {
   RtuConfig ideal = config;
   ideal.memory.ideal = true;
@@ -36,7 +36,7 @@ RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& re
   return run;
 }
 
-RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<HostRecord>& records,
                 const RtuConfig& config, const RunProgress& progress) {
   switch (model) {
     case ModelKind::Golden: return runGoldenTimed(memory, records, config);
@@ -46,7 +46,7 @@ RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<Host
   return simulateRtu(memory, records, config, progress);
 }
 
-RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                 const RtuConfig& config, const RunProgress& progress) {
   return runModel(model, memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config,
                   progress);

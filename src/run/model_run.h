@@ -21,13 +21,13 @@ ModelKind parseModelKind(const std::string& name);
 const char* toString(ModelKind model);
 
 // Throws std::invalid_argument when the model cannot run `config` (saying why).
-RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<HostRecord>& records,
                 const RtuConfig& config, const RunProgress& progress = {});
-RtuRun runModel(ModelKind model, const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                 const RtuConfig& config, const RunProgress& progress = {});
 
 // The golden model's timing: golden costs in the recurrence, memory as ideal.
-RtuRun runGoldenTimed(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runGoldenTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                       const RtuConfig& config);
 
 }  // namespace rtu

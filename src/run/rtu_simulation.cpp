@@ -89,7 +89,7 @@ std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config,
   return std::make_unique<CycleTrace>(options, std::move(listeners));
 }
 
-RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records,
                 const RtuConfig& config, const RunProgress& progress,
                 std::vector<TraceListener*> listeners, const BlockRun& plan,
                 const std::vector<SceneInstance>* scene = nullptr) {
@@ -139,23 +139,23 @@ RtuRun simulate(const SvoMemory& memory, const std::vector<HostRecord>& records,
 
 }  // namespace
 
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const RunProgress& progress) {
   return simulateRtu(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, progress);
 }
 
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const RunProgress& progress,
                    std::vector<TraceListener*> listeners) {
   return simulate(memory, records, config, progress, std::move(listeners), BlockRun{});
 }
 
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const BlockRun& block) {
   return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, {}, block);
 }
 
-RtuRun simulateScene(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+RtuRun simulateScene(const WordMemory& memory, const std::vector<RayRecord>& rays,
                      const std::vector<SceneInstance>& scene, const RtuConfig& config,
                      const RunProgress& progress) {
   return simulate(memory, std::vector<HostRecord>(rays.begin(), rays.end()), config, progress, {},

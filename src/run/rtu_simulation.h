@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "kinds/svo/svo_memory.h"
 #include "kinds/svo/traversal_job.h"
+#include "rtu/word_memory.h"
 #include "run/rtu_statistics.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/memory/cache_contents.h"
@@ -57,18 +57,18 @@ using RunProgress = std::function<void(size_t results, size_t total)>;
 // Throws std::invalid_argument for impossible configurations and std::runtime_error when the
 // simulation ends without every result (which would be a model defect). `listeners` see the
 // trace's records (src/trace/trace_listener.h) and must outlive the call.
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const RunProgress& progress = {},
                    std::vector<TraceListener*> listeners = {});
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
 // A sampled block's run.
-RtuRun simulateRtu(const SvoMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
                    const RtuConfig& config, const BlockRun& block);
 
 // A scene: each of `rays` (world space) is traced against `scene`'s instances by the scene
 // manager (src/sim/ca/scene_manager_module.h); one merged result per ray.
-RtuRun simulateScene(const SvoMemory& memory, const std::vector<RayRecord>& rays,
+RtuRun simulateScene(const WordMemory& memory, const std::vector<RayRecord>& rays,
                      const std::vector<SceneInstance>& scene, const RtuConfig& config,
                      const RunProgress& progress = {});
 

@@ -59,7 +59,7 @@ void refuseAbove(const std::string& what, const std::string& path, uint64_t byte
 
 }  // namespace
 
-std::pair<uint64_t, uint64_t> rayWindow(const SvoMemory& memory,
+std::pair<uint64_t, uint64_t> rayWindow(const WordMemory& memory,
                                         const std::vector<HostRecord>& records,
                                         const RtuConfig& config, uint64_t ray) {
   if (ray >= records.size())
@@ -78,7 +78,7 @@ std::pair<uint64_t, uint64_t> rayWindow(const SvoMemory& memory,
                          std::to_string(ray));
 }
 
-TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+TraceSizes measureTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                         const RtuConfig& config, const RunProgress& progress) {
   RtuConfig dry = config;
   if (dry.trace) dry.trace->countOnly = true;
@@ -90,7 +90,7 @@ TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& 
   return sizes;
 }
 
-RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                     RtuConfig config, const TraceLimits& limits, std::ostream& out,
                     const RunProgress& progress) {
   if (!config.trace && !config.timeline.wanted()) return config;

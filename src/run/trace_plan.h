@@ -31,17 +31,17 @@ struct TraceSizes {
 
 // The window of job `ray`: from its handshake into the job manager to the cycle after its result's
 // handshake with the host. Throws std::invalid_argument for a ray the records do not have.
-std::pair<uint64_t, uint64_t> rayWindow(const SvoMemory& memory,
+std::pair<uint64_t, uint64_t> rayWindow(const WordMemory& memory,
                                         const std::vector<HostRecord>& records,
                                         const RtuConfig& config, uint64_t ray);
 
 // The sizes of the files `config` asks for, from a dry run.
-TraceSizes measureTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+TraceSizes measureTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                         const RtuConfig& config, const RunProgress& progress);
 
 // `config` with the window of limits.ray; prints the sizes; throws std::invalid_argument naming
 // the options that narrow a file above limits.maxBytes.
-RtuConfig planTrace(const SvoMemory& memory, const std::vector<HostRecord>& records,
+RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                     RtuConfig config, const TraceLimits& limits, std::ostream& out,
                     const RunProgress& progress = {});
 

@@ -67,7 +67,7 @@ bool nearerSceneHit(const TraversalResult& result, uint32_t instance, const Trav
                                   : instance < static_cast<uint32_t>(bestInstance);
 }
 
-SceneManager::SceneManager(SvoMemory memory, const GoldenConfig& golden,
+SceneManager::SceneManager(WordMemory memory, const GoldenConfig& golden,
                            std::vector<SceneInstance> instances, SceneManagerOptions options,
                            float epsilon)
     : model_(memory, golden),

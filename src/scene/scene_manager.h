@@ -21,7 +21,7 @@
 
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/svo_memory.h"
+#include "rtu/word_memory.h"
 
 namespace rtu {
 
@@ -86,7 +86,7 @@ class SceneManager {
  public:
   // Reads every instance's header once, as the job manager does once per frame. Throws
   // std::runtime_error naming the address of an invalid header.
-  SceneManager(SvoMemory memory, const GoldenConfig& golden, std::vector<SceneInstance> instances,
+  SceneManager(WordMemory memory, const GoldenConfig& golden, std::vector<SceneInstance> instances,
                SceneManagerOptions options = {}, float epsilon = kDefaultDirectionEpsilonF);
 
   // `ray.modelAddress` is ignored: the manager names each instance's header itself. Appends the

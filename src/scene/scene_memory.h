@@ -26,7 +26,7 @@ class SceneMemory {
   std::vector<SceneInstance> place(const std::vector<ModelPlacement>& placements);
 
   // Valid until the next place().
-  SvoMemory memory() const { return SvoMemory(words_); }
+  WordMemory memory() const { return WordMemory(words_); }
   ModelHeaderWords headerWords(size_t instance) const;
   size_t instanceCount() const { return instanceModels_.size(); }
   // Word address of the instance's header: what a ray record against it names.

@@ -23,8 +23,9 @@ std::string AccuracyReport::describe() const {
   return text;
 }
 
-AccuracyReport measureAccuracy(const SvoMemory& memory, uint32_t root, const std::vector<Ray>& rays,
-                               const GoldenConfig& config, double epsilon, double tTolerance) {
+AccuracyReport measureAccuracy(const WordMemory& memory, uint32_t root,
+                               const std::vector<Ray>& rays, const GoldenConfig& config,
+                               double epsilon, double tTolerance) {
   GoldenModel golden(memory, config);
   ReferenceModel reference(memory, epsilon);
   AccuracyReport report;

@@ -32,8 +32,9 @@ struct AccuracyReport {
 // |t_fixed - t_float64| <= tTolerance. Where the t-values agree but the faces differ, the ray hit
 // an edge or corner (two entry planes at the same t) and rounding broke the tie differently:
 // counted as edgeHits, and agreeing.
-AccuracyReport measureAccuracy(const SvoMemory& memory, uint32_t root, const std::vector<Ray>& rays,
-                               const GoldenConfig& config, double epsilon, double tTolerance);
+AccuracyReport measureAccuracy(const WordMemory& memory, uint32_t root,
+                               const std::vector<Ray>& rays, const GoldenConfig& config,
+                               double epsilon, double tTolerance);
 
 // Number of results that differ in any field.
 size_t countDifferences(const std::vector<TraversalResult>& a,

@@ -9,7 +9,7 @@ std::array<int64_t, 3> convertToFixed(const std::array<uint32_t, 3>& floatBits,
           floatToFixed(floatBits[2], format, conversion)};
 }
 
-GoldenModel::GoldenModel(SvoMemory memory, GoldenConfig config)
+GoldenModel::GoldenModel(WordMemory memory, GoldenConfig config)
     : memory_(memory), config_(config), core_(FixedArith{config.format}, config.stackFrames) {
   config_.format.validate();
 }

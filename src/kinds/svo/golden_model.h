@@ -20,7 +20,7 @@ struct GoldenConfig {
 
 class GoldenModel {
  public:
-  GoldenModel(SvoMemory memory, GoldenConfig config);
+  GoldenModel(WordMemory memory, GoldenConfig config);
 
   TraversalResult trace(const TraversalJob& job);
   std::vector<TraversalResult> traceAll(const std::vector<TraversalJob>& jobs);
@@ -33,7 +33,7 @@ class GoldenModel {
   uint64_t lastHitVoxel() const { return core_.hitVoxel(); }
 
  private:
-  SvoMemory memory_;
+  WordMemory memory_;
   GoldenConfig config_;
   TraversalCore<FixedArith> core_;
 };

@@ -2,7 +2,7 @@
 
 namespace rtu {
 
-JobSetup::JobSetup(SvoMemory memory, const JobManagerConfig& config)
+JobSetup::JobSetup(WordMemory memory, const JobManagerConfig& config)
     : memory_(memory), config_(config) {}
 
 JobSetup::SetUp JobSetup::setUp(const HostRecord& record) {

@@ -34,7 +34,7 @@ struct JobManagerConfig {
 
 class JobSetup {
  public:
-  JobSetup(SvoMemory memory, const JobManagerConfig& config);
+  JobSetup(WordMemory memory, const JobManagerConfig& config);
 
   struct SetUp {
     TraversalJob job;
@@ -48,7 +48,7 @@ class JobSetup {
   SetUp tValueJob(const TraversalJob& job) const;
   SetUp rayJob(const RayRecord& ray);
 
-  SvoMemory memory_;
+  WordMemory memory_;
   JobManagerConfig config_;
   std::map<uint32_t, ModelHeader> headers_;  // by model address
 };

@@ -119,7 +119,7 @@ ModelHeader decodeModelHeader(const ModelHeaderWords& words) {
   return header;
 }
 
-ModelHeader readModelHeader(const SvoMemory& memory, uint32_t address) {
+ModelHeader readModelHeader(const WordMemory& memory, uint32_t address) {
   const std::string where = "model header at word " + std::to_string(address);
   if (address > memory.size() || memory.size() - address < kModelHeaderWords)
     throw std::runtime_error(where + " runs past the end of the memory (" +

@@ -59,6 +59,6 @@ ModelHeaderWords encodeModelHeader(const ModelHeader& header);
 ModelHeader decodeModelHeader(const ModelHeaderWords& words);
 // Decodes and validates the header at `address`; throws std::runtime_error naming the address
 // when the header or the root it names lies outside the memory, or validate() fails.
-ModelHeader readModelHeader(const SvoMemory& memory, uint32_t address);
+ModelHeader readModelHeader(const WordMemory& memory, uint32_t address);
 
 }  // namespace rtu

@@ -20,7 +20,7 @@ double percentile99(std::vector<double> values) {
   return values[std::min(k, values.size() - 1)];
 }
 
-FormatPrecision compare(const SvoMemory& memory, const PrecisionStudy& study,
+FormatPrecision compare(const WordMemory& memory, const PrecisionStudy& study,
                         const FixedFormat& format, const std::vector<ReferenceResult>& reference) {
   GoldenModel golden(memory, GoldenConfig{format, study.conversion, kMaxStackFrames});
   FormatPrecision p;
@@ -79,7 +79,7 @@ double FormatPrecision::costChange() const {
   return referenceMeanCost > 0.0 ? meanCost / referenceMeanCost - 1.0 : 0.0;
 }
 
-std::vector<FormatPrecision> measurePrecision(const SvoMemory& memory, const PrecisionStudy& study,
+std::vector<FormatPrecision> measurePrecision(const WordMemory& memory, const PrecisionStudy& study,
                                               const std::vector<FixedFormat>& formats) {
   for (const FixedFormat& format : formats) format.validate();
   ReferenceModel referenceModel(memory, study.epsilon);

@@ -56,7 +56,7 @@ struct PrecisionStudy {
 
 // Traces the study's rays through the float64 reference once and through the golden model in each
 // format (each validated first: std::invalid_argument names the one that is not).
-std::vector<FormatPrecision> measurePrecision(const SvoMemory& memory, const PrecisionStudy& study,
+std::vector<FormatPrecision> measurePrecision(const WordMemory& memory, const PrecisionStudy& study,
                                               const std::vector<FixedFormat>& formats);
 
 // "32.16" or "Q16.16" -> 32 bits, 16 of them fraction; throws std::invalid_argument naming it.

@@ -112,7 +112,7 @@ TraversalJob rayRecordToJob(const RayRecord& record, const ModelHeader& header, 
   return job;
 }
 
-std::vector<TraversalJob> rayRecordsToJobs(const SvoMemory& memory,
+std::vector<TraversalJob> rayRecordsToJobs(const WordMemory& memory,
                                            const std::vector<RayRecord>& records, float epsilon) {
   std::map<uint32_t, ModelHeader> headers;
   std::vector<TraversalJob> jobs;

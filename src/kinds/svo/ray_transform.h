@@ -62,7 +62,7 @@ TraversalJob rayRecordToJob(const RayRecord& record, const ModelHeader& header,
 // Reads each model header the records name from `memory` (once per address, as the job manager
 // caches them for a frame) and sets up every job. Throws std::runtime_error naming the record for
 // an invalid record or header.
-std::vector<TraversalJob> rayRecordsToJobs(const SvoMemory& memory,
+std::vector<TraversalJob> rayRecordsToJobs(const WordMemory& memory,
                                            const std::vector<RayRecord>& records, float epsilon);
 
 }  // namespace rtu

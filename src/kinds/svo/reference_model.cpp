@@ -2,7 +2,7 @@
 
 namespace rtu {
 
-ReferenceModel::ReferenceModel(SvoMemory memory, double epsilon, int stackFrames)
+ReferenceModel::ReferenceModel(WordMemory memory, double epsilon, int stackFrames)
     : memory_(memory), epsilon_(epsilon), core_(Float64Arith{}, stackFrames) {}
 
 ReferenceResult ReferenceModel::trace(const Ray& ray, uint32_t root) {

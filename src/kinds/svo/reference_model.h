@@ -21,13 +21,13 @@ struct ReferenceResult {
 
 class ReferenceModel {
  public:
-  explicit ReferenceModel(SvoMemory memory, double epsilon = kDefaultDirectionEpsilon,
+  explicit ReferenceModel(WordMemory memory, double epsilon = kDefaultDirectionEpsilon,
                           int stackFrames = kMaxStackFrames);
 
   ReferenceResult trace(const Ray& ray, uint32_t root);
 
  private:
-  SvoMemory memory_;
+  WordMemory memory_;
   double epsilon_;
   TraversalCore<Float64Arith> core_;
 };

@@ -46,7 +46,7 @@ class BoundsWalk {
     bounds_.empty = false;
   }
 
-  SvoMemory memory_;
+  WordMemory memory_;
   VoxelBounds bounds_;
 };
 

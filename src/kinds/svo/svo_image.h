@@ -16,7 +16,7 @@ struct SvoImage {
   std::vector<uint32_t> words;
   uint32_t root = 0;
 
-  SvoMemory memory() const { return SvoMemory(words); }
+  WordMemory memory() const { return WordMemory(words); }
   size_t bytes() const { return words.size() * sizeof(uint32_t); }
 };
 

@@ -33,12 +33,13 @@ struct SvoKind {
   using Job = SvoJob;
   using Result = TraversalResult;
   using Behaviour = TraversalCore<FixedArith>;
-  using Memory = SvoMemory;
+  using Memory = WordMemory;
   using Config = GoldenConfig;
 
   // Memory accesses: each reading state reads one 32-bit word (a descriptor in EVAL, a far word
   // in PUSH), and every state takes one cycle.
   static constexpr int kWordsPerRead = 1;
+  static constexpr uint32_t stateCycles(const Behaviour&) { return 1; }
   // Dispatched in D, INIT in D + 1, the first read in EVAL in D + 2: the memory arbiter's bound
   // on an idle core's next request (docs/cycle-semantics.md, "Run-ahead").
   static constexpr uint64_t kFirstReadAfterDispatch = 2;

@@ -1,28 +1,14 @@
 #pragma once
-// Read-only view of an SVO memory image: 32-bit words addressed by word index. Reads outside the
-// image return 0 (an empty descriptor), so a corrupt image cannot make a model read out of bounds.
+// The SVO image's words (thesis figure 4.6): node descriptors over the RTU's word memory
+// (rtu/word_memory.h; a read outside the image returns 0, an empty descriptor).
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "rtu/word_memory.h"
+
 namespace rtu {
-
-class SvoMemory {
- public:
-  SvoMemory() = default;
-  SvoMemory(const uint32_t* words, size_t size) : words_(words), size_(size) {}
-  explicit SvoMemory(const std::vector<uint32_t>& words) : SvoMemory(words.data(), words.size()) {}
-
-  uint32_t read(uint32_t address) const { return address < size_ ? words_[address] : 0; }
-  size_t size() const { return size_; }
-  // The words themselves, for a component that grants direct access (the LT model's ROM).
-  const uint32_t* data() const { return words_; }
-
- private:
-  const uint32_t* words_ = nullptr;
-  size_t size_ = 0;
-};
 
 // Set bits of a byte (the RTL's get_ones_count). A table, because without -mpopcnt the
 // builtin becomes a library call on the traversal's hot path.

@@ -26,7 +26,7 @@ struct Cell {
 // The cell holding point p, from the root down. A coordinate on a splitting plane belongs to the
 // side the ray is heading to (the upper one when it runs along the plane), so the point where the
 // ray leaves a cell locates the cell it enters next.
-Cell locate(const SvoMemory& memory, uint32_t root, const glm::dvec3& p, const glm::dvec3& d,
+Cell locate(const WordMemory& memory, uint32_t root, const glm::dvec3& p, const glm::dvec3& d,
             int maxLevel, long& farPointers) {
   uint32_t address = root;
   Cell cell;
@@ -94,7 +94,7 @@ glm::dvec3 jobLineDirection(const glm::dvec3& direction, double epsilon) {
   return line;
 }
 
-VoxelWalkResult walkVoxels(const SvoMemory& memory, uint32_t root, const glm::dvec3& o,
+VoxelWalkResult walkVoxels(const WordMemory& memory, uint32_t root, const glm::dvec3& o,
                            const glm::dvec3& d, const VoxelWalkOptions& options) {
   for (int k = 0; k < 3; ++k)
     if (!std::isfinite(o[k]) || !std::isfinite(d[k]))

@@ -8,7 +8,7 @@
 // locates the point where the ray currently is by descending the octree from the root (point
 // location, decoding the descriptors itself), takes the slab test of the cell found, and moves to
 // the point where the ray leaves that cell, until the cell is a leaf voxel or the ray leaves the
-// root cube [-1,1]^3. It reads the image only through SvoMemory and Descriptor's field accessors
+// root cube [-1,1]^3. It reads the image only through WordMemory and Descriptor's field accessors
 // (the word format) and counts the siblings before a child itself. It must not include
 // traversal_core.h, reference_model.h, golden_model.h or ray_setup.h.
 
@@ -63,7 +63,7 @@ struct VoxelWalkResult {
 // root descriptor is at word `root` of `memory`. Throws std::invalid_argument for a non-finite or
 // zero direction, std::runtime_error for an image deeper than options.maxLevel or a walk longer
 // than options.maxCells.
-VoxelWalkResult walkVoxels(const SvoMemory& memory, uint32_t root, const glm::dvec3& origin,
+VoxelWalkResult walkVoxels(const WordMemory& memory, uint32_t root, const glm::dvec3& origin,
                            const glm::dvec3& direction, const VoxelWalkOptions& options = {});
 
 // The line a traversal job describes, so that t means what the golden model's tHit means: the

@@ -297,7 +297,7 @@ class TraversalCore {
 
 // Runs a started core to OUT against an ideal memory (data in the same cycle).
 template <class Arith>
-void runToCompletion(TraversalCore<Arith>& core, const SvoMemory& memory) {
+void runToCompletion(TraversalCore<Arith>& core, const WordMemory& memory) {
   const auto read = [&memory](uint32_t address) { return memory.read(address); };
   while (core.busy()) core.step(read);
 }

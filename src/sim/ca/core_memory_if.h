@@ -12,7 +12,7 @@
 
 #include <systemc>
 
-#include "kinds/svo/svo_memory.h"
+#include "rtu/word_memory.h"
 #include "sim/kernel/decision_pump.h"
 #include "sim/memory/l1_cache_timing.h"
 
@@ -50,7 +50,7 @@ class SharedReadListener {
 class CoreMemoryIf : public virtual sc_core::sc_interface {
  public:
   // The words themselves (timing is the other calls' business).
-  virtual const SvoMemory& backingStore() const = 0;
+  virtual const WordMemory& backingStore() const = 0;
   // True for the thesis' combinational ROM: every word is there in the cycle it is read, so a
   // core need not look it up.
   virtual bool combinational() const = 0;

@@ -7,7 +7,7 @@
 namespace rtu {
 
 JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
-                       SvoMemory memory)
+                       WordMemory memory)
     : Agent(pump), clock_(clock), config_(config), setup_(memory, config) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "

@@ -40,7 +40,7 @@ class JobManager final : public Agent {
   static constexpr int kInPort = 0, kOutPort = 0;
 
   JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
-             SvoMemory memory);
+             WordMemory memory);
 
   void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
   void decide() override;

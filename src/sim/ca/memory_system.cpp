@@ -7,7 +7,7 @@
 namespace rtu {
 
 MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock,
-                           DecisionPump& pump, SvoMemory backing, MemoryConfig config, int cores,
+                           DecisionPump& pump, WordMemory backing, MemoryConfig config, int cores,
                            uint64_t firstReadAfterDispatch, CycleTrace* trace,
                            const CacheContents* start)
     : sc_core::sc_module(name),

@@ -30,7 +30,7 @@
 #include <systemc>
 
 #include "base/lowest_of.h"
-#include "kinds/svo/svo_memory.h"
+#include "rtu/word_memory.h"
 #include "sim/ca/core_memory_if.h"
 #include "sim/kernel/cycle_clock.h"
 #include "sim/kernel/module_process.h"
@@ -46,13 +46,13 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
  public:
   // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-               SvoMemory backing, MemoryConfig config, int cores, uint64_t firstReadAfterDispatch,
+               WordMemory backing, MemoryConfig config, int cores, uint64_t firstReadAfterDispatch,
                CycleTrace* trace, const CacheContents* start = nullptr);
 
   // The scheduler whose dispatches bound the idle cores' next requests.
   void followDispatches(DispatchFloor& scheduler);
 
-  const SvoMemory& backingStore() const override { return backing_; }
+  const WordMemory& backingStore() const override { return backing_; }
   bool combinational() const override { return config_.ideal; }
   L1CacheTiming* privateCache(int core) override {
     return config_.ideal ? nullptr : cores_[static_cast<size_t>(core)].l1.get();
@@ -106,7 +106,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   void servedLast(int core);
 
   const CycleClock& clock_;
-  SvoMemory backing_;
+  WordMemory backing_;
   MemoryConfig config_;
   std::vector<CorePort> cores_;
   std::unique_ptr<L2CacheTiming> l2_;

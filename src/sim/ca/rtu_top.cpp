@@ -17,7 +17,7 @@ std::unique_ptr<TransferChannel<Payload>> channel(const std::string& name, const
 
 }  // namespace
 
-RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
+RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
                const std::vector<HostRecord>& records, CycleTrace* trace,
                const CacheContents* caches, const std::vector<SceneInstance>* scene)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {

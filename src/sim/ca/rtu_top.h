@@ -34,7 +34,7 @@ class RtuTop : public sc_core::sc_module {
   // `memory`, `records` and the trace must outlive the top; `trace` may be null.
   // `caches`: lines resident from cycle 0 (sampled simulation), or null. `scene`: the instances
   // the host's ray records are traced against, or null for records each traced once.
-  RtuTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
+  RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
          const std::vector<HostRecord>& records, CycleTrace* trace,
          const CacheContents* caches = nullptr, const std::vector<SceneInstance>* scene = nullptr);
 

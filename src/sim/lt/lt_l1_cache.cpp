@@ -4,7 +4,7 @@
 
 namespace rtu {
 
-LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
+LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, WordMemory words,
                      const LtTime& time)
     : sc_core::sc_module(name),
       socket("socket"),

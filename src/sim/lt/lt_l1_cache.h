@@ -10,7 +10,7 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
-#include "kinds/svo/svo_memory.h"
+#include "rtu/word_memory.h"
 #include "sim/lt/lt_time.h"
 #include "sim/lt/lt_timing_target.h"
 #include "sim/memory/l1_cache_timing.h"
@@ -22,7 +22,7 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   tlm::tlm_target_socket<> socket;
   tlm_utils::simple_initiator_socket<LtL1Cache> next;
 
-  LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, SvoMemory words,
+  LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, WordMemory words,
             const LtTime& time);
 
   CacheStats statistics() const { return timing_.stats(); }
@@ -35,7 +35,7 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   // the delay to the cycle the word is there.
   sc_core::sc_time fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request);
 
-  SvoMemory words_;
+  WordMemory words_;
   LtTime time_;
   L1CacheTiming timing_;
   uint64_t hitPicoseconds_;

@@ -2,7 +2,7 @@
 
 namespace rtu {
 
-LtRom::LtRom(sc_core::sc_module_name name, SvoMemory words)
+LtRom::LtRom(sc_core::sc_module_name name, WordMemory words)
     : sc_core::sc_module(name), socket("socket"), words_(words) {
   socket.register_b_transport(this, &LtRom::b_transport);
   socket.register_get_direct_mem_ptr(this, &LtRom::get_direct_mem_ptr);

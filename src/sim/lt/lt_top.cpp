@@ -8,7 +8,7 @@
 
 namespace rtu {
 
-LtTop::LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
+LtTop::LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
              const std::vector<HostRecord>& records)
     : sc_core::sc_module(name),
       config_(config),
@@ -31,7 +31,7 @@ LtTop::LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory me
   SC_THREAD(drive);
 }
 
-void LtTop::bindCachedMemory(const RtuConfig& config, SvoMemory memory) {
+void LtTop::bindCachedMemory(const RtuConfig& config, WordMemory memory) {
   l2_ = std::make_unique<LtL2Cache>("l2", config.memory, time_);
   dram_ = std::make_unique<LtDram>("dram", config.memory.dram, time_);
   l2_->dram.bind(dram_->socket);

@@ -34,7 +34,7 @@ namespace rtu {
 class LtTop : public sc_core::sc_module {
  public:
   // `records` must outlive the top.
-  LtTop(sc_core::sc_module_name name, const RtuConfig& config, SvoMemory memory,
+  LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
         const std::vector<HostRecord>& records);
 
   // After the simulation, taken once: the cycles, and each job's result and blocked cycles by
@@ -50,7 +50,7 @@ class LtTop : public sc_core::sc_module {
   void drive();
   RecurrenceJob setUp(size_t job);
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
-  void bindCachedMemory(const RtuConfig& config, SvoMemory memory);
+  void bindCachedMemory(const RtuConfig& config, WordMemory memory);
 
   const RtuConfig& config_;
   const std::vector<HostRecord>& records_;

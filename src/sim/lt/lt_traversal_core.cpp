@@ -23,8 +23,8 @@ void LtTraversalCore::acquireDmi() {
   read_.set_address(0);
   if (!memory->get_direct_mem_ptr(read_, dmi) || !dmi.is_read_allowed()) return;
   dmi_ = true;
-  direct_ = SvoMemory(reinterpret_cast<const uint32_t*>(dmi.get_dmi_ptr()),
-                      static_cast<size_t>((dmi.get_end_address() + 1) / 4));
+  direct_ = WordMemory(reinterpret_cast<const uint32_t*>(dmi.get_dmi_ptr()),
+                       static_cast<size_t>((dmi.get_end_address() + 1) / 4));
 }
 
 uint32_t LtTraversalCore::traverse(const CoreJob& job, uint64_t initCycle,

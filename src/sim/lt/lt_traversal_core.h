@@ -50,7 +50,7 @@ class LtTraversalCore : public sc_core::sc_module {
   TraversalCore<FixedArith>& core_;
   tlm::tlm_generic_payload read_;
   uint32_t word_ = 0;  // the read's data
-  SvoMemory direct_;   // the image through DMI, when granted
+  WordMemory direct_;  // the image through DMI, when granted
   bool dmiAsked_ = false, dmi_ = false;
 };
 
