@@ -4,8 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "base/timing_limits.h"
+#include "kinds/registry.h"
 #include "rtu/host_memory.h"
 #include "sim/memory/cache_array.h"
 
@@ -32,6 +34,20 @@ void checkCacheTagsFit(const RtuConfig& config) {
       "--cores, or raise --l1-line or --l2-line");
 }
 
+// A kind's read of kWordsPerRead words, aligned to its size, lies within one line of each cache.
+void checkAccessFitsLines(const RtuConfig& config) {
+  if (config.memory.ideal) return;
+  const uint32_t accessBytes = withCoreKind(config.core, [](auto kind) {
+    return uint32_t{sizeof(uint32_t)} * decltype(kind)::kWordsPerRead;
+  });
+  for (const auto& [level, cache] : {std::pair{"L1", config.memory.l1}, {"L2", config.memory.l2}})
+    if (cache.lineBytes < accessBytes)
+      throw std::invalid_argument("the " + config.core + " core reads " +
+                                  std::to_string(accessBytes) + " bytes at once, more than the " +
+                                  level + "'s " + std::to_string(cache.lineBytes) +
+                                  "-byte line: raise its line size");
+}
+
 }  // namespace
 
 void validate(const RtuConfig& config) {
@@ -50,6 +66,7 @@ void validate(const RtuConfig& config) {
   config.jobManager.format.validate();
   validate(config.memory);  // settings are checked even when ideal memory ignores them
   checkCacheTagsFit(config);
+  checkAccessFitsLines(config);
   validate(config.hostInput, "host input");
   validate(config.hostOutput, "host output");
 }

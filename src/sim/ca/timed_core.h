@@ -14,12 +14,14 @@
 // it offers no result and is not ready before then. The memory's reply lets it go on. The core
 // tells the memory when it offers its result, which bounds its next request.
 //
-// A read issued in cycle c whose word is there in cycle d > c costs the reading state in c and
-// BLOCKED in c+1..d; the state consumes the word in d and the next state starts in d+1. The cost
-// in the result counts every cycle from the first state to the last before OUT, blocked ones
-// included. The core is ready for a job from cycle 0 and from the cycle after its result was
-// taken.
+// A state takes Kind::stateCycles cycles (one for SVO), c .. c+k-1, and issues its read, of
+// Kind::kWordsPerRead words within one line, in c. Its word there in cycle d > c+k-1 costs
+// BLOCKED in c+k..d; the state consumes the word in d and the next state starts in d+1
+// (docs/cycle-semantics.md, "Access width and multi-cycle states"). The cost in the result
+// counts every cycle from the first state to the last before OUT, blocked ones included. The core
+// is ready for a job from cycle 0 and from the cycle after its result was taken.
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <variant>
@@ -145,12 +147,13 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
           // BLOCKED until the shared level answers. Recorded now, as a trace takes no record
           // behind simulated time and the core resumes only in reply.cycle. (Should the word come
           // in this very cycle, the next state's record in the same cycle replaces it.)
-          traceState(localCycle_ + 1, Kind::kBlockedState);
+          traceState(lastStateCycle() + 1, Kind::kBlockedState);
           phase_ = Phase::AwaitingShared;
           memory->requestShared(index_, address, reply.cycle, *this);
           // The word comes in reply.cycle at the earliest; OUT follows the state after it.
-          out_->noOfferBefore(reply.cycle + 1);
-          in_->notReadyBefore(reply.cycle + 2);
+          const uint64_t stateEnd = std::max(reply.cycle, lastStateCycle());
+          out_->noOfferBefore(stateEnd + 1);
+          in_->notReadyBefore(stateEnd + 2);
           return;
         }
         consumeWordIn<kTraced>(reply.cycle);
@@ -165,8 +168,9 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   // state.
   template <bool kTraced>
   [[gnu::always_inline]] inline void stepState() {
+    const uint32_t cycles = Kind::stateCycles(core_);
     core_.stepInline([this](uint32_t address) { return words_->read(address); });
-    ++localCycle_;
+    localCycle_ += cycles;
     if (kTraced)
       trace_->record(stackSignal_, localCycle_, static_cast<uint64_t>(core_.stackSize()));
   }
@@ -180,18 +184,26 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
     return {reply.hit, reply.cycle};
   }
 
-  // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED in between.
+  // The state issued its read in localCycle_ and gets the word in dataCycle: BLOCKED from the
+  // state's last cycle to then.
   template <bool kTraced>
   void consumeWordIn(uint64_t dataCycle) {
-    if (dataCycle == localCycle_) return;
-    if (kTraced) traceState(localCycle_ + 1, Kind::kBlockedState);
+    if (dataCycle <= lastStateCycle()) return;
+    if (kTraced) traceState(lastStateCycle() + 1, Kind::kBlockedState);
     waitForWord(dataCycle);
   }
 
+  // The state ends in dataCycle if that is after its last cycle: kept as a later first cycle, so
+  // that stepState() moves on to the cycle after the state's end.
   void waitForWord(uint64_t dataCycle) {
-    blocked_ += dataCycle - localCycle_;
-    localCycle_ = dataCycle;
+    const uint64_t stateEnd = std::max(dataCycle, lastStateCycle());
+    blocked_ += stateEnd - lastStateCycle();
+    localCycle_ = stateEnd - (Kind::stateCycles(core_) - 1);
   }
+
+  // The current state's last cycle. (The kind's stateCycles() is read where needed, not kept: for
+  // a kind whose states all take one cycle it is a constant, and the loop stays as fast.)
+  uint64_t lastStateCycle() const { return localCycle_ + (Kind::stateCycles(core_) - 1); }
 
   void offerResult() {
     outCycle_ = localCycle_;
@@ -228,7 +240,7 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   Phase phase_ = Phase::Idle;
   PayloadIds ids_;  // of the current job, for its result
   uint32_t idWord_ = 0;
-  uint64_t localCycle_ = 0;  // the cycle the core's current state executes in
+  uint64_t localCycle_ = 0;  // the first cycle of the core's current state
   uint64_t outCycle_ = 0;
   uint64_t blocked_ = 0;  // blocked cycles of the current job
   const typename Kind::Memory* words_ = nullptr;
