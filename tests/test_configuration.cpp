@@ -106,7 +106,7 @@ TEST_CASE("Each flag names one setting; the two epsilons have their own (issue 2
   CHECK(findSetting("camera.epsilon").flag == "--camera-epsilon");
   CHECK(findSetting("job_manager.epsilon").formerFlag == "--epsilon");
   CHECK(findSetting("camera.epsilon").formerFlag == "--epsilon");
-  // The ambiguous --epsilon keeps the first declared setting's meaning (config_options.cpp).
+  // The ambiguous --epsilon keeps the first declared setting's meaning (schema_flags.cpp).
   const auto& schema = configSchema();
   const auto at = [&](const std::string& key) {
     return std::find_if(schema.begin(), schema.end(),

@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
+#include "app/schema_flags.h"
 #include "kinds/svo/accuracy.h"
 
 namespace rtu {

@@ -9,11 +9,11 @@
 
 #include "app/animated_image.h"
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/frame_images.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/scene_shading.h"
+#include "app/schema_flags.h"
 #include "explore/animation_run.h"
 #include "explore/animation_workers.h"
 #include "explore/exploration_run.h"

@@ -1,10 +1,10 @@
 #include <iostream>
 #include <memory>
 
-#include "app/cli_options.h"
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/output_paths.h"
+#include "app/placement_flags.h"
+#include "app/schema_flags.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
+#include "app/schema_flags.h"
 
 namespace rtu {
 namespace {

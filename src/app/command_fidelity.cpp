@@ -8,8 +8,8 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/output_paths.h"
+#include "app/schema_flags.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/stack_check.h"

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/output_paths.h"
+#include "app/schema_flags.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 

@@ -3,9 +3,9 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/host_inputs.h"
 #include "app/output_paths.h"
+#include "app/schema_flags.h"
 #include "inputs/host_buffers.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/result_summary.h"

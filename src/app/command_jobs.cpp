@@ -1,9 +1,9 @@
 #include <iostream>
 #include <memory>
 
-#include "app/cli_options.h"
 #include "app/commands.h"
-#include "app/config_options.h"
+#include "app/placement_flags.h"
+#include "app/schema_flags.h"
 #include "inputs/host_buffers.h"
 
 namespace rtu {

@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/frame_images.h"
+#include "app/schema_flags.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
 

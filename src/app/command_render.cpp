@@ -4,10 +4,10 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/frame_images.h"
 #include "app/output_paths.h"
-#include "app/rtu_options.h"
+#include "app/run_outputs.h"
+#include "app/schema_flags.h"
 #include "explore/sweep_workers.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/result_summary.h"

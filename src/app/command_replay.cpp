@@ -2,10 +2,10 @@
 #include <memory>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/host_inputs.h"
 #include "app/output_paths.h"
-#include "app/rtu_options.h"
+#include "app/run_outputs.h"
+#include "app/schema_flags.h"
 #include "explore/sweep_workers.h"
 #include "inputs/host_buffers.h"
 #include "kinds/svo/result_summary.h"

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "app/commands.h"
-#include "app/config_options.h"
 #include "app/plot_script.h"
+#include "app/schema_flags.h"
 #include "config/sweep_spec.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_slurm.h"

@@ -2,8 +2,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "app/cli_options.h"
 #include "app/commands.h"
+#include "app/placement_flags.h"
 #include "kinds/svo/svo_image.h"
 #include "kinds/svo/svo_validator.h"
 

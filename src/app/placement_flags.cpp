@@ -1,4 +1,4 @@
-#include "app/cli_options.h"
+#include "app/placement_flags.h"
 
 #include "inputs/camera.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Command-line options of an animated model's placement, bound to CLI11. Every other setting
-// comes from the configuration schema (config_options.h).
+// comes from the configuration schema (schema_flags.h).
 
 #include <CLI/CLI.hpp>
 

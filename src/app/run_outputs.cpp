@@ -1,10 +1,10 @@
-#include "app/rtu_options.h"
+#include "app/run_outputs.h"
 
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
 
-#include "app/cli_options.h"
+#include "app/placement_flags.h"
 #include "base/timing_limits.h"
 #include "explore/sweep_workers.h"
 #include "run/trace_plan.h"

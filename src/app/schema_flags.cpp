@@ -1,4 +1,4 @@
-#include "app/config_options.h"
+#include "app/schema_flags.h"
 
 #include <iostream>
 

@@ -29,7 +29,7 @@ struct Setting {
   std::string key;   // "memory.l1.size"
   std::string flag;  // its short command-line spelling, "--l1-size"; may be empty
   // An older spelling still accepted: an alias where the command has no other setting of that
-  // spelling, else deprecated, with the first such setting's meaning (config_options.cpp).
+  // spelling, else deprecated, with the first such setting's meaning (schema_flags.cpp).
   std::string formerFlag;
   SettingKind kind = SettingKind::Integer;
   std::string unit;  // "bytes", "cycles", "MHz", ...
