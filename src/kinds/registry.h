@@ -4,6 +4,7 @@
 // withCoreKind (as pbrt-v4's CreateAccelerator chooses an accelerator), so nothing below branches
 // on the kind.
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,7 @@ struct CoreKindList {
 using CoreKinds = CoreKindList<SvoKind>;  // a new kind: one more name here
 
 using CoreKindJob = CoreKinds::Job;
+using CoreKindJobSetUp = JobSetUp<CoreKindJob>;
 
 // Calls `use(Kind{})` with the kind named `name`; throws std::invalid_argument naming the kinds
 // for an unknown one.
@@ -47,6 +49,21 @@ auto withCoreKindOf(CoreKindList<Kinds...>, const std::string& name, Use&& use) 
 template <class Use>
 auto withCoreKind(const std::string& name, Use&& use) {
   return withCoreKindOf(CoreKinds{}, name, std::forward<Use>(use));
+}
+
+// The job manager's set-up of host records for the kind named `core` (its Kind::Setup), behind
+// one call per job: the job manager stays kind-agnostic, and nothing per cycle goes through it.
+using CoreJobSetup = std::function<CoreKindJobSetUp(const HostRecord&)>;
+
+inline CoreJobSetup makeCoreJobSetup(const std::string& core, WordMemory memory,
+                                     const JobManagerConfig& config) {
+  return withCoreKind(core, [&](auto kind) -> CoreJobSetup {
+    return
+        [setup = typename decltype(kind)::Setup(memory, config)](const HostRecord& record) mutable {
+          auto set = setup.setUp(record);
+          return CoreKindJobSetUp{CoreKindJob{set.job}, set.idWord, set.latency, set.headerFetch};
+        };
+  });
 }
 
 }  // namespace rtu

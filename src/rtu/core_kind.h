@@ -23,4 +23,16 @@ struct StateVocabulary {
   uint64_t idle = 0, out = 0, blocked = 0;
 };
 
+// What a kind's job set-up (Kind::Setup) makes of a host record, as the job manager computes it:
+// the core's job, the id word its result carries back, the cycles from acceptance to the
+// pipeline's output (stalls aside) and the cycles after acceptance in which no record is accepted
+// (a model header's fetch).
+template <class Job>
+struct JobSetUp {
+  Job job;
+  uint32_t idWord = 0;
+  uint64_t latency = 0;
+  uint64_t headerFetch = 0;
+};
+
 }  // namespace rtu

@@ -43,6 +43,7 @@ class JobSetup {
   };
   // Throws std::runtime_error for a model header that is not valid.
   SetUp setUp(const HostRecord& record);
+  const JobManagerConfig& config() const { return config_; }
 
  private:
   SetUp tValueJob(const TraversalJob& job) const;

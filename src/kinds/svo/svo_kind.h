@@ -7,6 +7,7 @@
 
 #include "kinds/svo/fixed_point.h"
 #include "kinds/svo/golden_model.h"
+#include "kinds/svo/job_setup.h"
 #include "kinds/svo/state_vocabulary.h"
 #include "kinds/svo/svo_memory.h"
 #include "kinds/svo/traversal_core.h"
@@ -29,7 +30,6 @@ struct SvoKind {
   static constexpr const char* kDescription =
       "sparse voxel octree core of the thesis (Espe 2019), Q-format fixed point";
 
-  using HostRecord = TraversalJob;  // the thesis driver's t-value record
   using Job = SvoJob;
   using Result = TraversalResult;
   using Behaviour = TraversalCore<FixedArith>;
@@ -53,11 +53,28 @@ struct SvoKind {
     return StateVocabulary{kCoreStateNames, 3, kIdleState, kOutState, kBlockedState};
   }
 
+  // The job manager's set-up (thesis 6.2.1, appendix C.2): a host record through the pipeline of
+  // kinds/svo/job_setup.h, then its t-values to fixed point (appendix C.2.1).
+  class Setup {
+   public:
+    Setup(WordMemory memory, const JobManagerConfig& config) : records_(memory, config) {}
+    // Throws std::runtime_error for a model header that is not valid.
+    JobSetUp<Job> setUp(const HostRecord& record) {
+      const JobSetup::SetUp set = records_.setUp(record);
+      const JobManagerConfig& config = records_.config();
+      return {SvoKind::setUp(set.job, config.format, config.conversion), set.job.idWord(),
+              set.latency, set.headerFetch};
+    }
+
+   private:
+    JobSetup records_;
+  };
+
   static Behaviour behaviour(const Config& config) {
     return Behaviour(FixedArith{config.format}, config.stackFrames);
   }
   // The job manager's set-up of a t-value record (appendix C.2.1: float32 to fixed point).
-  static Job setUp(const HostRecord& record, const FixedFormat& format,
+  static Job setUp(const TraversalJob& record, const FixedFormat& format,
                    FloatConversion conversion) {
     return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
                convertToFixed(record.t1Bits, format, conversion), record.root};

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rtu {
 
 JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
-                       WordMemory memory)
-    : Agent(pump), clock_(clock), config_(config), setup_(memory, config) {
+                       CoreJobSetup setup)
+    : Agent(pump), clock_(clock), config_(config), setup_(std::move(setup)) {
   if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
                                 "rays), got " +
@@ -74,7 +75,7 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   lastAccepted_ = cycle;
   while (!stalls_.empty() && stalls_.front().to <= cycle) stalls_.pop_front();
   while (!fetches_.empty() && fetches_.front().to <= cycle) fetches_.pop_front();
-  const JobSetup::SetUp set = setup_.setUp(host.record);
+  const CoreKindJobSetUp set = setup_(host.record);
   if (set.headerFetch > 0) fetches_.push_back({cycle + 1, cycle + 1 + set.headerFetch});
   // Stalls decided before this acceptance but after its cycle held this job too.
   uint64_t outputCycle = cycle + set.latency;
@@ -84,7 +85,8 @@ void JobManager::accept(const HostJob& host, uint64_t cycle) {
   // acceptance (after a header fetch that outlasted a stall, the next ray is accepted late).
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, outputOf(pipeline_.back()) + 1);
   if (lastDispatch_) outputCycle = std::max(outputCycle, *lastDispatch_ + 1);
-  pipeline_.push_back(InFlight{coreJobOf(host.ids, set.job, config_), outputCycle - stallShift_});
+  CoreJob job{host.ids, set.idWord, set.job};
+  pipeline_.push_back(InFlight{std::move(job), outputCycle - stallShift_});
   traceReadyAt(cycle + 1);
   if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);
   // The new job may be the one at the output now.

@@ -21,8 +21,7 @@
 #include <optional>
 #include <vector>
 
-#include "kinds/svo/golden_model.h"
-#include "kinds/svo/job_setup.h"
+#include "kinds/registry.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/cycle_clock.h"
 #include "sim/kernel/decision_pump.h"
@@ -39,8 +38,9 @@ class JobManager final : public Agent {
   // Its ports on the transfer channels (TransferChannel::connect).
   static constexpr int kInPort = 0, kOutPort = 0;
 
+  // `setup` is the cores' kind's (kinds/registry.h, makeCoreJobSetup).
   JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
-             WordMemory memory);
+             CoreJobSetup setup);
 
   void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
   void decide() override;
@@ -71,7 +71,7 @@ class JobManager final : public Agent {
 
   const CycleClock& clock_;
   JobManagerConfig config_;
-  JobSetup setup_;  // what it computes (src/kinds/svo/job_setup.h); this module adds when
+  CoreJobSetup setup_;  // what it computes (the kind's Setup); this module adds when
   TransferChannel<HostJob>* in_ = nullptr;
   TransferChannel<CoreJob>* out_ = nullptr;
   std::deque<InFlight> pipeline_;
@@ -85,16 +85,5 @@ class JobManager final : public Agent {
   std::vector<uint64_t> readyPoints_;  // traced cycles whose level a later window may change
   JobManagerStatistics statistics_;
 };
-
-// The job the core receives: the host job's float32 t-values converted to fixed point (appendix
-// C.2.1), as the pipeline's last stage converts them. Inline: it runs once per job.
-inline CoreJob coreJobOf(PayloadIds ids, const TraversalJob& host, const JobManagerConfig& config) {
-  CoreJob job;
-  job.ids = ids;
-  job.idWord = host.idWord();
-  // Host records are the SVO kind's until a triangle kind brings its own.
-  job.job = SvoKind::setUp(host, config.format, config.conversion);
-  return job;
-}
 
 }  // namespace rtu

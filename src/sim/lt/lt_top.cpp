@@ -4,7 +4,6 @@
 #include <string>
 
 #include "base/prefault.h"
-#include "sim/ca/job_manager.h"
 
 namespace rtu {
 
@@ -59,8 +58,8 @@ void LtTop::drive() {
 }
 
 RecurrenceJob LtTop::setUp(size_t job) {
-  const JobSetup::SetUp set = setup_.setUp(records_[job]);
-  current_ = set.job;
+  const JobSetUp<SvoJob> set = setup_.setUp(records_[job]);
+  current_ = CoreJob{PayloadIds::plain(job), set.idWord, set.job};
   return RecurrenceJob{0, set.latency, set.headerFetch};
 }
 
@@ -70,9 +69,8 @@ uint64_t LtTop::traverse(size_t job, int core, uint64_t initCycle) {
   if (job != results_.size()) throw std::logic_error("LtTop: jobs must be dispatched in order");
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
-  const CoreJob fixed = coreJobOf(PayloadIds::plain(job), current_, config_.jobManager);
   TraversalResult& result = results_.emplace_back();
-  const uint32_t blocked = cores_[static_cast<size_t>(core)]->traverse(fixed, initCycle, result);
+  const uint32_t blocked = cores_[static_cast<size_t>(core)]->traverse(current_, initCycle, result);
   blocked_.push_back(blocked);
   return result.cost + blocked;
 }

@@ -55,7 +55,7 @@ class LtTop : public sc_core::sc_module {
   const RtuConfig& config_;
   const std::vector<HostRecord>& records_;
   LtTime time_;
-  JobSetup setup_;
+  SvoKind::Setup setup_;
   tlm_utils::tlm_quantumkeeper quantum_;
   // The cores' shared state machine: each runs a job to its end in one call (lt_traversal_core.h).
   TraversalCore<FixedArith> stateMachine_;
@@ -64,7 +64,7 @@ class LtTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
-  TraversalJob current_;  // the job set up last, float t-values: converted at dispatch
+  CoreJob current_;  // the job set up last
   RecurrenceRun timing_;
   std::vector<TraversalResult> results_;
   std::vector<uint32_t> blocked_;
