@@ -109,11 +109,20 @@ TEST_CASE("Every key of the sample, a frame and the CSV columns is declared", "[
   }
 }
 
+// A core's statistics: its kind's counters are a base class, so no aggregate initialisation.
+CoreStatistics coreStatistics(uint64_t jobs, uint64_t busy, uint64_t blocked, uint64_t out,
+                              uint64_t stackOverflows, uint64_t tOverflows) {
+  CoreStatistics core;
+  core.jobs = jobs, core.busyCycles = busy, core.blockedCycles = blocked, core.outCycles = out;
+  core.stackOverflows = stackOverflows, core.tOverflows = tOverflows;
+  return core;
+}
+
 TEST_CASE("A window subtracts counters and histograms and keeps the whole run's maxima",
           "[statistics]") {
   RtuStatistics whole = everything(), prefix = everything();
-  whole.coreTimes[0] = {10, 100, 20, 5, 3, 1};
-  prefix.coreTimes[0] = {4, 30, 5, 2, 1, 1};
+  whole.coreTimes[0] = coreStatistics(10, 100, 20, 5, 3, 1);
+  prefix.coreTimes[0] = coreStatistics(4, 30, 5, 2, 1, 1);
   whole.l1[1] = CacheStats{50, 40, 2, 8, 1};
   prefix.l1[1] = CacheStats{20, 15, 1, 4, 0};
   whole.l2.cache = CacheStats{9, 5, 1, 3, 2};
@@ -154,7 +163,7 @@ TEST_CASE("A window subtracts counters and histograms and keeps the whole run's 
 
 TEST_CASE("Sums over cores, rows and frames", "[statistics]") {
   RtuStatistics run = everything();
-  run.coreTimes = {{3, 30, 6, 2, 1, 0}, {4, 41, 7, 3, 0, 2}};
+  run.coreTimes = {coreStatistics(3, 30, 6, 2, 1, 0), coreStatistics(4, 41, 7, 3, 0, 2)};
   run.l1 = {CacheStats{10, 7, 1, 2, 0}, CacheStats{20, 12, 3, 5, 1}};
   const CoreStatistics cores = run.allCores();
   CHECK((cores.jobs == 7 && cores.busyCycles == 71 && cores.blockedCycles == 13 &&

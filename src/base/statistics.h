@@ -17,6 +17,7 @@
 //   derived    computed from the others when written: ratios, shares, rates
 //   group      a member struct (or an optional one) with its own declaration, at its key (an
 //              empty key: its statistics among the holder's)
+//   base       a base class with its own declaration, its statistics among the holder's
 //   computed   a struct of another declaration computed for writing (the L1s summed)
 //   list       one struct per part (per core) as an array; its statistics marked runTotal() are
 //              written once beside the array, summed over the parts (a kind's counters of rays)
@@ -207,6 +208,19 @@ class StatisticGroup {
     entry.subtract = [member](V& a, const V& b) {
       if (a.*member && b.*member) G::declaration().subtract(*(a.*member), *(b.*member));
     };
+    entries_.push_back(std::move(entry));
+    return *this;
+  }
+  // The statistics of V's base class B among V's own, at this place (a core's statistics hold
+  // its kind's counters so).
+  template <class B>
+  StatisticGroup& base() {
+    static_assert(std::is_base_of_v<B, V>, "base() declares a base class of the values");
+    Entry entry =
+        groupEntry<B>(Statistic("", "", ""), [](const V& values) -> const B* { return &values; });
+    entry.add = [](V& a, const V& b) { B::declaration().add(a, b); };
+    entry.subtract = [](V& a, const V& b) { B::declaration().subtract(a, b); };
+    entry.read = [](V& values, StatisticReader& reader) { B::declaration().read(values, reader); };
     entries_.push_back(std::move(entry));
     return *this;
   }

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/statistics.h"
 #include "kinds/svo/svo_kind.h"
 
 namespace rtu {
@@ -22,6 +23,17 @@ template <class... Kinds>
 struct CoreKindList {
   // What the job manager hands a core, whichever kind it is.
   using Job = std::variant<typename Kinds::Job...>;
+  // Every kind's own counters, held by a core's statistics (kinds/core_statistics.h).
+  struct Counters : Kinds::Counters... {
+    static const StatisticGroup<Counters>& declaration() {
+      static const StatisticGroup<Counters> group = [] {
+        StatisticGroup<Counters> kinds("the core kinds' counters");
+        (kinds.template base<typename Kinds::Counters>(), ...);
+        return kinds;
+      }();
+      return group;
+    }
+  };
   static std::vector<std::string> names() { return {Kinds::kName...}; }
 };
 

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/statistics.h"
-#include "rtu/core_statistics.h"
+#include "kinds/core_statistics.h"
 #include "scene/scene_manager_timing.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"

@@ -9,11 +9,11 @@
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/state_vocabulary.h"
+#include "kinds/svo/svo_counters.h"
 #include "kinds/svo/svo_memory.h"
 #include "kinds/svo/traversal_core.h"
 #include "kinds/svo/traversal_job.h"
 #include "rtu/core_kind.h"
-#include "rtu/core_statistics.h"
 
 namespace rtu {
 
@@ -87,9 +87,10 @@ struct SvoKind {
   }
 
   // The kind's own counters, counted per job when its result is offered.
-  static void count(const Behaviour& core, CoreStatistics& statistics) {
-    statistics.stackOverflows += core.stackOverflow();
-    statistics.tOverflows += core.tOverflow();
+  using Counters = SvoCounters;
+  static void count(const Behaviour& core, Counters& counters) {
+    counters.stackOverflows += core.stackOverflow();
+    counters.tOverflows += core.tOverflow();
   }
 };
 

@@ -28,7 +28,7 @@
 
 #include <systemc>
 
-#include "rtu/core_statistics.h"
+#include "kinds/core_statistics.h"
 #include "sim/ca/core_memory_if.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/decision_pump.h"
