@@ -21,6 +21,8 @@ template <class... Kinds>
 struct CoreKindList {
   // What the job manager hands a core, whichever kind it is.
   using Job = std::variant<typename Kinds::Job...>;
+  // The kinds as a type list (Catch2's TEMPLATE_LIST_TEST_CASE runs a test for each).
+  using Tuple = std::tuple<Kinds...>;
   static std::vector<std::string> names() { return {Kinds::kName...}; }
 };
 
