@@ -154,7 +154,7 @@ RtlTop::KindRegisters<Kind>::KindRegisters(const WordMemory& memory, const RtlTo
                               config.rayStages, config.headerFetchCycles}) {
   config_.validate();
   const size_t cores = static_cast<size_t>(config_.cores);
-  const Core<Kind> idle{Kind::behaviour(config_.template coreConfig<Kind>())};
+  const Core<Kind> idle{Kind::behaviour(config_.coreConfig<Kind>())};
   cores_.assign(cores, idle);
   resultManager_.resultValid.assign(cores, false);
   resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
