@@ -7,7 +7,7 @@
 #include <string>
 
 #include "inputs/camera.h"
-#include "kinds/svo/golden_model.h"
+#include "kind_fixture.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 #include "run/lt_simulation.h"
@@ -30,8 +30,9 @@ Frame frame(const std::string& scene, int depth, int width, int height) {
   return f;
 }
 
+template <class Kind = SvoKind>
 RtuConfig configWith(int cores, bool cached, SchedulerPolicy policy) {
-  RtuConfig config;
+  RtuConfig config = kindConfig<Kind>();
   config.cores = cores;
   config.memory.ideal = !cached;
   config.scheduler = policy;
@@ -44,11 +45,12 @@ double relativeError(uint64_t value, uint64_t reference) {
 
 }  // namespace
 
-TEST_CASE("LT: per-ray results equal the golden model's", "[lt]") {
-  for (const std::string& scene : proceduralSceneNames()) {
-    const Frame f = frame(scene, 6, 48, 32);
+TEMPLATE_LIST_TEST_CASE("LT: per-ray results equal the golden model's", "[lt]", TestedKinds) {
+  using Fixture = KindFixture<TestType>;
+  for (const std::string& scene : Fixture::scenes()) {
+    const auto f = Fixture::frame(scene, 6, 48, 32);
     const std::vector<TraversalResult> golden =
-        GoldenModel(f.build.image.memory(), RtuConfig{}.golden()).traceAll(f.jobs);
+        Fixture::golden(f.memory(), kindConfig<TestType>(), f.jobs);
     for (int cores : {1, 4, 16, 64})
       for (bool cached : {false, true})
         for (SchedulerPolicy policy :
@@ -56,9 +58,9 @@ TEST_CASE("LT: per-ray results equal the golden model's", "[lt]") {
               SchedulerPolicy::RoundRobin}) {
           INFO(scene << ", " << cores << " cores, " << (cached ? "cached" : "ideal") << ", "
                      << toString(policy));
-          RtuConfig config = configWith(cores, cached, policy);
+          RtuConfig config = configWith<TestType>(cores, cached, policy);
           config.ltQuantum = cores == 4 ? 10 : 1000;
-          const RtuRun run = runLooselyTimed(f.build.image.memory(), f.jobs, config);
+          const RtuRun run = runLooselyTimed(f.memory(), f.jobs, config);
           REQUIRE(resultsInJobOrder(run) == golden);
           CHECK(run.statistics.rays == f.jobs.size());
           CHECK(run.statistics.allCores().jobs == f.jobs.size());
@@ -66,24 +68,29 @@ TEST_CASE("LT: per-ray results equal the golden model's", "[lt]") {
   }
 }
 
-TEST_CASE("LT: ideal memory, every cycle as the cycle-accurate model's", "[lt]") {
+TEMPLATE_LIST_TEST_CASE("LT: ideal memory, every cycle as the cycle-accurate model's", "[lt]",
+                        TestedKinds) {
   // The job manager, scheduler and result manager are the recurrence's rules, exact with ideal
   // memory (docs/cycle-semantics.md): only the memory makes the loosely-timed model estimate.
-  const Frame f = frame("terrain", 6, 48, 32);
-  for (int cores : {1, 4, 16})
-    for (SchedulerPolicy policy : {SchedulerPolicy::CyclicFirstAvailable,
-                                   SchedulerPolicy::FirstAvailable, SchedulerPolicy::RoundRobin}) {
-      RtuConfig config = configWith(cores, false, policy);
-      config.hostInput.bytesPerCycle = 8;  // a record every 4 cycles
-      config.hostOutput.bytesPerCycle = 6;
-      const RtuRun ca = simulateRtu(f.build.image.memory(), f.jobs, config);
-      const RtuRun lt = runLooselyTimed(f.build.image.memory(), f.jobs, config);
-      INFO(cores << " cores, " << toString(policy));
-      CHECK(lt.arrivalCycles == ca.arrivalCycles);
-      CHECK(lt.jobIndices == ca.jobIndices);
-      CHECK(lt.statistics.waitHistogram == ca.statistics.waitHistogram);
-      CHECK(lt.statistics.allCores().outCycles == ca.statistics.allCores().outCycles);
-    }
+  using Fixture = KindFixture<TestType>;
+  for (const std::string& scene : Fixture::scenes()) {
+    const auto f = Fixture::frame(scene, 6, 48, 32);
+    for (int cores : {1, 4, 16})
+      for (SchedulerPolicy policy :
+           {SchedulerPolicy::CyclicFirstAvailable, SchedulerPolicy::FirstAvailable,
+            SchedulerPolicy::RoundRobin}) {
+        RtuConfig config = configWith<TestType>(cores, false, policy);
+        config.hostInput.bytesPerCycle = 8;  // a record every 4 cycles
+        config.hostOutput.bytesPerCycle = 6;
+        const RtuRun ca = simulateRtu(f.memory(), f.jobs, config);
+        const RtuRun lt = runLooselyTimed(f.memory(), f.jobs, config);
+        INFO(scene << ", " << cores << " cores, " << toString(policy));
+        CHECK(lt.arrivalCycles == ca.arrivalCycles);
+        CHECK(lt.jobIndices == ca.jobIndices);
+        CHECK(lt.statistics.waitHistogram == ca.statistics.waitHistogram);
+        CHECK(lt.statistics.allCores().outCycles == ca.statistics.allCores().outCycles);
+      }
+  }
 }
 
 TEST_CASE("LT: cached memory, total cycles near the cycle-accurate model's", "[lt]") {
@@ -120,15 +127,20 @@ TEST_CASE("LT: settings it cannot model are refused by name", "[lt]") {
                     Catch::Contains("randomly inactive"));
 }
 
-TEST_CASE("Model choice: golden times golden costs with ideal memory", "[lt]") {
-  const Frame f = frame("menger", 5, 16, 16);
-  RtuConfig cached = configWith(4, true, SchedulerPolicy::CyclicFirstAvailable);
-  RtuConfig ideal = cached;
-  ideal.memory.ideal = true;
-  const RtuRun golden = runModel(ModelKind::Golden, f.build.image.memory(), f.jobs, cached);
-  const RtuRun ca = runModel(ModelKind::CycleAccurate, f.build.image.memory(), f.jobs, ideal);
-  CHECK(golden.statistics.model == "golden");
-  CHECK(golden.totalCycles == ca.totalCycles);  // the recurrence is exact with ideal memory
+TEMPLATE_LIST_TEST_CASE("Model choice: golden times golden costs with ideal memory", "[lt]",
+                        TestedKinds) {
+  using Fixture = KindFixture<TestType>;
+  for (const std::string& scene : Fixture::scenes()) {
+    const auto f = Fixture::frame(scene, 5, 16, 16);
+    RtuConfig cached = configWith<TestType>(4, true, SchedulerPolicy::CyclicFirstAvailable);
+    RtuConfig ideal = cached;
+    ideal.memory.ideal = true;
+    const RtuRun golden = runModel(ModelKind::Golden, f.memory(), f.jobs, cached);
+    const RtuRun ca = runModel(ModelKind::CycleAccurate, f.memory(), f.jobs, ideal);
+    INFO(scene);
+    CHECK(golden.statistics.model == "golden");
+    CHECK(golden.totalCycles == ca.totalCycles);  // the recurrence is exact with ideal memory
+  }
   CHECK(parseModelKind("lt") == ModelKind::LooselyTimed);
   CHECK_THROWS_WITH(parseModelKind("systemc"), Catch::Contains("golden, lt or ca"));
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "inputs/camera.h"
+#include "kind_fixture.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
@@ -183,26 +184,23 @@ TEST_CASE("Two cores take jobs in turn", "[rtl]") {
   }
 }
 
-TEST_CASE("Every ray's result equals the golden model's, whatever the core count", "[rtl]") {
-  Camera camera;
-  camera.width = 32;
-  camera.height = 24;
-  GoldenConfig thesis;
-  GoldenConfig narrow;  // other arithmetic and a stack shallow enough to overflow
-  narrow.format = FixedFormat{28, 12};
-  narrow.conversion = FloatConversion::Exact;
-  narrow.stackFrames = 3;
+TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever the core count",
+                        "[rtl]", TestedKinds) {
+  using Fixture = KindFixture<TestType>;
+  const RtuConfig thesis = kindConfig<TestType>();
+  RtuConfig other = thesis;  // other arithmetic and a stack shallow enough to overflow
+  Fixture::otherArithmetic(other);
 
-  for (const char* scene : {"sphere", "noise"}) {
-    const SvoBuild build = buildSvo(*makeProceduralScene(scene, 6));
-    const std::vector<TraversalJob> jobs = makeFrameJobs(camera, build.image.root);
-    for (const GoldenConfig& golden : {thesis, narrow}) {
-      const std::vector<TraversalResult> expected =
-          GoldenModel(build.image.memory(), golden).traceAll(jobs);
+  for (const std::string& scene : Fixture::scenes()) {
+    const auto frame = Fixture::frame(scene, 6, 32, 24);
+    const auto& jobs = frame.jobs;
+    for (RtuConfig config : {thesis, other}) {
+      const std::vector<TraversalResult> expected = Fixture::golden(frame.memory(), config, jobs);
       for (int cores : {1, 2, 4, 16}) {
-        INFO(scene << ", " << golden.format.describe() << ", " << golden.stackFrames << " frames, "
-                   << cores << " cores");
-        const RtlTopRun run = runRtlTop(build.image.memory(), jobs, RtlTopConfig{cores, golden});
+        config.cores = cores;
+        INFO(scene << ", " << config.jobManager.format.describe() << ", " << config.stackFrames
+                   << " frames, " << cores << " cores");
+        const RtlTopRun run = runRtlTop(frame.memory(), jobs, rtlTopConfig(config));
         REQUIRE(run.results.size() == jobs.size());
         REQUIRE(run.resultCycles.size() == jobs.size());
 

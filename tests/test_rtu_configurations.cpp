@@ -30,6 +30,7 @@
 
 #include "base/timing_limits.h"
 #include "inputs/camera.h"
+#include "kind_fixture.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
@@ -45,36 +46,25 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Workloads
 
-struct Scene {
-  std::string name;
-  SvoBuild build;
-  std::vector<TraversalJob> jobs;
-  WordMemory memory() const { return build.image.memory(); }
-};
-
-Scene frameScene(const std::string& name, int width, int height, int depth = 6) {
-  Scene s{name, buildSvo(*makeProceduralScene(name, depth)), {}};
-  Camera camera;
-  camera.width = width;
-  camera.height = height;
-  s.jobs = makeFrameJobs(camera, s.build.image.root);
-  return s;
-}
-
-// Built once per process: the scenes are shared by several test cases.
-const std::vector<Scene>& frameScenes() {
-  static const std::vector<Scene> scenes = [] {
-    std::vector<Scene> all;
-    for (const char* name : {"sphere", "shell", "menger", "terrain", "noise"})
-      all.push_back(frameScene(name, 24, 16));
+// A kind's test scenes at depth 6 (or its fixture's detail 6), 24x16 rays each. Built once per
+// process: the scenes are shared by several test cases.
+template <class Kind = SvoKind>
+const std::vector<typename KindFixture<Kind>::Frame>& frameScenes() {
+  using Fixture = KindFixture<Kind>;
+  static const std::vector<typename Fixture::Frame> scenes = [] {
+    std::vector<typename Fixture::Frame> all;
+    for (const std::string& name : Fixture::scenes())
+      all.push_back(Fixture::frame(name, 6, 24, 16));
     return all;
   }();
   return scenes;
 }
 
-const Scene& sceneNamed(const std::string& name) {
-  for (const Scene& s : frameScenes())
-    if (s.name == name) return s;
+using SvoFrame = KindFixture<SvoKind>::Frame;
+
+const SvoFrame& sceneNamed(const std::string& name) {
+  for (const SvoFrame& s : frameScenes())
+    if (s.scene == name) return s;
   throw std::logic_error("no scene " + name);
 }
 
@@ -203,21 +193,22 @@ std::string describe(const RtuConfig& c) {
   return out.str();
 }
 
-// Memory words the traversal state machine reads for each job (EVAL, PUSH through a far pointer),
-// counted by running the golden state machine itself, independently of the cache models.
-uint64_t wordsRead(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
-                   const GoldenConfig& golden) {
-  TraversalCore<FixedArith> core(FixedArith{golden.format}, golden.stackFrames);
+// Memory words the kind's behaviour reads for its jobs (EVAL, PUSH through a far pointer for
+// SVO), counted by running the behaviour itself, independently of the cache models.
+template <class Kind = SvoKind, class Record>
+uint64_t wordsRead(const WordMemory& memory, const std::vector<Record>& records,
+                   const RtuConfig& config) {
+  typename Kind::Setup setup(memory, config.jobManager);
+  typename Kind::Behaviour behaviour = Kind::behaviour(config.coreConfig<Kind>());
   uint64_t reads = 0;
   const auto read = [&](uint32_t address) {
     ++reads;
     return memory.read(address);
   };
-  for (const TraversalJob& job : jobs) {
-    core.start(convertToFixed(job.t0Bits, golden.format, golden.conversion),
-               convertToFixed(job.t1Bits, golden.format, golden.conversion), job.a, job.root);
-    while (core.busy()) core.step(read);
-    core.finish();
+  for (const Record& record : records) {
+    Kind::start(behaviour, setup.setUp(HostRecord{record}).job);
+    while (behaviour.busy()) behaviour.step(read);
+    behaviour.finish();
   }
   return reads;
 }
@@ -416,12 +407,13 @@ uint64_t sumOfCostsPlusTwo(const RtuRun& run) {
 // ---------------------------------------------------------------------------------------------
 // 1. Results across scenes, core counts, schedulers and memories
 
-TEST_CASE("Every configuration returns the golden model's results", "[rtu]") {
-  for (const Scene& scene : frameScenes()) {
-    RtuConfig base;
+TEMPLATE_LIST_TEST_CASE("Every configuration returns the golden model's results", "[rtu]",
+                        TestedKinds) {
+  for (const auto& scene : frameScenes<TestType>()) {
+    const RtuConfig base = kindConfig<TestType>();
     const std::vector<TraversalResult> expected =
-        GoldenModel(scene.memory(), base.golden()).traceAll(scene.jobs);
-    const uint64_t reads = wordsRead(scene.memory(), scene.jobs, base.golden());
+        KindFixture<TestType>::golden(scene.memory(), base, scene.jobs);
+    const uint64_t reads = wordsRead<TestType>(scene.memory(), scene.jobs, base);
     for (const NamedMemory& memory : memories()) {
       for (int cores : {1, 2, 4, 16}) {
         for (SchedulerPolicy policy : kPolicies) {
@@ -429,8 +421,8 @@ TEST_CASE("Every configuration returns the golden model's results", "[rtu]") {
           config.cores = cores;
           config.scheduler = policy;
           config.memory = memory.config;
-          INFO(scene.name << " (" << scene.jobs.size() << " rays), " << memory.name << ": "
-                          << describe(config));
+          INFO(scene.scene << " (" << scene.jobs.size() << " rays), " << memory.name << ": "
+                           << describe(config));
           const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
           checkRun(run, expected, config, reads);
           if (cores == 1) {
@@ -446,29 +438,28 @@ TEST_CASE("Every configuration returns the golden model's results", "[rtu]") {
   }
 }
 
-TEST_CASE("Other arithmetic, stack depths and job manager depths", "[rtu]") {
-  // The golden model with the same configuration is the reference (config.golden()).
-  for (const char* name : {"sphere", "noise"}) {
-    const Scene& scene = sceneNamed(name);
+TEMPLATE_LIST_TEST_CASE("Other arithmetic, stack depths and job manager depths", "[rtu]",
+                        TestedKinds) {
+  // The golden model with the same configuration is the reference.
+  using Fixture = KindFixture<TestType>;
+  for (const auto& scene : frameScenes<TestType>()) {
     for (int stages : {1, 3, 12}) {
-      for (bool narrow : {false, true}) {
-        RtuConfig config;
+      for (bool other : {false, true}) {
+        RtuConfig config = kindConfig<TestType>();
         config.cores = stages == 3 ? 1 : 4;
         config.scheduler = stages == 12 ? SchedulerPolicy::FirstAvailable
                                         : SchedulerPolicy::CyclicFirstAvailable;
         config.jobManager.stages = stages;
-        if (narrow) {
-          config.jobManager.format = FixedFormat{28, 12};
-          config.jobManager.conversion = FloatConversion::Exact;
-          config.stackFrames = 3;
+        if (other) {
+          Fixture::otherArithmetic(config);
           config.memory = MemoryConfig{};
         }
-        INFO(name << ", " << stages << " job manager stages, "
-                  << config.jobManager.format.describe() << ": " << describe(config));
+        INFO(scene.scene << ", " << stages << " job manager stages, "
+                         << config.jobManager.format.describe() << ": " << describe(config));
         const std::vector<TraversalResult> expected =
-            GoldenModel(scene.memory(), config.golden()).traceAll(scene.jobs);
+            Fixture::golden(scene.memory(), config, scene.jobs);
         const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
-        checkRun(run, expected, config, wordsRead(scene.memory(), scene.jobs, config.golden()));
+        checkRun(run, expected, config, wordsRead<TestType>(scene.memory(), scene.jobs, config));
         // (checkTiming: job k's result arrives no earlier than k + stages + 2 + cost.)
         // One core: dispatches back to back from cycle `stages` (P_STAGES), as with 6 stages.
         if (config.cores == 1)
@@ -479,7 +470,7 @@ TEST_CASE("Other arithmetic, stack depths and job manager depths", "[rtu]") {
 }
 
 TEST_CASE("The clock changes the time unit only", "[rtu]") {
-  const Scene& scene = sceneNamed("terrain");
+  const SvoFrame& scene = sceneNamed("terrain");
   RtuConfig config;
   config.cores = 4;
   config.memory = MemoryConfig{};
@@ -584,10 +575,10 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
 
   uint64_t seed = 1;
   for (const char* name : {"sphere", "noise"}) {
-    const Scene& scene = sceneNamed(name);
+    const SvoFrame& scene = sceneNamed(name);
     const std::vector<TraversalResult> expected =
         GoldenModel(scene.memory(), RtuConfig{}.golden()).traceAll(scene.jobs);
-    const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{}.golden());
+    const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{});
     for (const NamedMemory& memory : {memories()[0], memories()[1]}) {
       for (int cores : {1, 4, 16}) {
         for (SchedulerPolicy policy : kPolicies) {
@@ -655,10 +646,10 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
 
 TEST_CASE("The reorder buffer delivers results in job order", "[rtu]") {
   for (const char* name : {"sphere", "terrain", "noise"}) {
-    const Scene& scene = sceneNamed(name);
+    const SvoFrame& scene = sceneNamed(name);
     const std::vector<TraversalResult> expected =
         GoldenModel(scene.memory(), RtuConfig{}.golden()).traceAll(scene.jobs);
-    const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{}.golden());
+    const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{});
     for (int capacity : {1, 4, 64}) {
       for (int cores : {1, 4, 16}) {
         for (SchedulerPolicy policy : kPolicies) {
@@ -810,7 +801,7 @@ TEST_CASE("A saturated link moves R bytes per cycle", "[rtu]") {
 TEST_CASE("32 bytes per cycle and full activity are an unlimited link, cycle for cycle", "[rtu]") {
   // nextAllowed(c) = c + 1 at 32 bytes per cycle (see above), and activeProbability = 1 draws
   // nothing, so both runs must agree in every arrival, on any configuration.
-  const Scene& scene = sceneNamed("terrain");
+  const SvoFrame& scene = sceneNamed("terrain");
   for (int cores : {1, 4, 16}) {
     for (SchedulerPolicy policy : kPolicies) {
       RtuConfig config;
@@ -953,7 +944,7 @@ TEST_CASE("A two-frame stack overflows on a deep scene", "[rtu]") {
   // Depth-6 noise needs more than two frames (checked on the golden model below); with two,
   // rays that need a third report an overflow and no hit, exactly as the golden model with the
   // same stack.
-  const Scene& scene = sceneNamed("noise");
+  const SvoFrame& scene = sceneNamed("noise");
   for (bool cached : {false, true}) {
     for (int cores : {1, 16}) {
       RtuConfig config;
@@ -968,7 +959,7 @@ TEST_CASE("A two-frame stack overflows on a deep scene", "[rtu]") {
                         [](const TraversalResult& r) { return r.stackOverflow; }));
       REQUIRE(overflows > 0);
       const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
-      checkRun(run, expected, config, wordsRead(scene.memory(), scene.jobs, config.golden()));
+      checkRun(run, expected, config, wordsRead(scene.memory(), scene.jobs, config));
       uint64_t flagged = 0;
       for (const TraversalResult& r : run.results) {
         if (!r.stackOverflow) continue;

@@ -5,8 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "inputs/camera.h"
-#include "kinds/svo/procedural_scenes.h"
-#include "kinds/svo/svo_builder.h"
+#include "kind_fixture.h"
 #include "kinds/svo/svo_image.h"
 #include "reference/rtl_cycle_model.h"
 #include "rtu/rtu_recurrence.h"
@@ -27,26 +26,20 @@ RecurrenceConfig onCores(int cores) {
   return config;
 }
 
-Camera smallCamera(int width, int height) {
-  Camera camera;
-  camera.width = width;
-  camera.height = height;
-  return camera;
-}
-
-struct Frame {
-  SvoImage image;
+// A small frame's t-value records, and its rays as ray records against a model header.
+template <class Kind>
+struct RecordFrame {
+  typename KindFixture<Kind>::Frame frame;
   std::vector<HostRecord> tValueRecords, rayRecords;
 };
 
-Frame smallFrame(const std::string& scene) {
-  Frame frame{buildSvo(*makeProceduralScene(scene, 5)).image, {}, {}};
-  const Camera camera = smallCamera(20, 12);
-  for (const TraversalJob& job : makeFrameJobs(camera, frame.image.root))
-    frame.tValueRecords.push_back(job);
-  const uint32_t header = appendModelHeader(frame.image, ModelPlacement{});
-  for (const RayRecord& ray : makeFrameRayRecords(camera, header)) frame.rayRecords.push_back(ray);
-  return frame;
+template <class Kind>
+RecordFrame<Kind> smallFrame(const std::string& scene) {
+  using Fixture = KindFixture<Kind>;
+  RecordFrame<Kind> records{Fixture::frame(scene, 5, 20, 12), {}, {}};
+  records.tValueRecords.assign(records.frame.jobs.begin(), records.frame.jobs.end());
+  records.rayRecords = Fixture::rayRecords(records.frame, 20, 12);
+  return records;
 }
 
 nlohmann::ordered_json withoutHostTime(nlohmann::ordered_json statistics) {
@@ -89,26 +82,28 @@ TEST_CASE("Recurrence: two cores under cfa take turns with the select counter", 
   CHECK(run.drainCycles == std::vector<uint64_t>{18, 19, 22});
 }
 
-TEST_CASE("Recurrence equals the RTL transcription in the thesis configuration", "[recurrence]") {
-  const auto scene = GENERATE(as<std::string>{}, "sphere", "menger");
-  const int cores = GENERATE(1, 3, 16);
-  const Frame frame = smallFrame(scene);
-  RtuConfig config;
-  config.cores = cores;
-  std::vector<TraversalJob> jobs;
-  for (const HostRecord& record : frame.tValueRecords)
-    jobs.push_back(std::get<TraversalJob>(record));
-  const RtuRun analytic = runAnalytic(frame.image.memory(), jobs, config);
-  const RtlTopRun rtl = runRtlTop(frame.image.memory(), jobs, RtlTopConfig{cores, config.golden()});
-  INFO(scene << ", " << cores << " cores");
-  CHECK(analytic.totalCycles == rtl.totalCycles);
-  CHECK(analytic.arrivalCycles == rtl.resultCycles);
-  CHECK(analytic.results == rtl.results);
+TEMPLATE_LIST_TEST_CASE("Recurrence equals the RTL transcription in the thesis configuration",
+                        "[recurrence]", TestedKinds) {
+  for (const std::string& scene : KindFixture<TestType>::scenes()) {
+    const RecordFrame<TestType> records = smallFrame<TestType>(scene);
+    const auto& frame = records.frame;
+    for (int cores : {1, 3, 16}) {
+      RtuConfig config = kindConfig<TestType>();
+      config.cores = cores;
+      const RtuRun analytic = runAnalytic(frame.memory(), frame.jobs, config);
+      const RtlTopRun rtl = runRtlTop(frame.memory(), frame.jobs, rtlTopConfig(config));
+      INFO(scene << ", " << cores << " cores");
+      CHECK(analytic.totalCycles == rtl.totalCycles);
+      CHECK(analytic.arrivalCycles == rtl.resultCycles);
+      CHECK(analytic.results == rtl.results);
+    }
+  }
 }
 
-TEST_CASE("Recurrence equals the SystemC model, statistics included", "[recurrence]") {
-  const auto scene = GENERATE(as<std::string>{}, "sphere", "menger");
-  const Frame frame = smallFrame(scene);
+TEMPLATE_LIST_TEST_CASE("Recurrence equals the SystemC model, statistics included", "[recurrence]",
+                        TestedKinds) {
+  const auto scene = GENERATE_COPY(from_range(KindFixture<TestType>::scenes()));
+  const RecordFrame<TestType> records = smallFrame<TestType>(scene);
   const auto policy = GENERATE(SchedulerPolicy::CyclicFirstAvailable, SchedulerPolicy::RoundRobin,
                                SchedulerPolicy::FirstAvailable);
   const int cores = GENERATE(1, 4, 16);
@@ -116,14 +111,15 @@ TEST_CASE("Recurrence equals the SystemC model, statistics included", "[recurren
                               std::pair<double, double>{0, 8}, std::pair<double, double>{3, 5},
                               std::pair<double, double>{32, 2.5});
   const bool rays = GENERATE(false, true);
-  RtuConfig config;
+  RtuConfig config = kindConfig<TestType>();
   config.cores = cores;
   config.scheduler = policy;
   config.hostInput.bytesPerCycle = links.first;
   config.hostOutput.bytesPerCycle = links.second;
-  const std::vector<HostRecord>& records = rays ? frame.rayRecords : frame.tValueRecords;
-  const RtuRun analytic = runAnalytic(frame.image.memory(), records, config);
-  const RtuRun simulated = simulateRtu(frame.image.memory(), records, config);
+  const std::vector<HostRecord>& hostRecords = rays ? records.rayRecords : records.tValueRecords;
+  const WordMemory memory = records.frame.memory();
+  const RtuRun analytic = runAnalytic(memory, hostRecords, config);
+  const RtuRun simulated = simulateRtu(memory, hostRecords, config);
   INFO(scene << ", " << toString(policy) << ", " << cores << " cores, links " << links.first << "/"
              << links.second << (rays ? ", ray records" : ", t-value records"));
   CHECK(analytic.totalCycles == simulated.totalCycles);
@@ -152,19 +148,20 @@ TEST_CASE("The recurrence refuses what it cannot model", "[recurrence]") {
 TEST_CASE("Result records over 32 bits take 48 bytes on a paced output link", "[recurrence]") {
   // 16 cores finish results faster than an 8-byte-a-cycle link drains them, so consecutive
   // results reach the host one record's slot apart: 32 / 8 = 4 cycles at 32 bits, 48 / 8 = 6 at 40.
-  const Frame frame = smallFrame("sphere");
+  const RecordFrame<SvoKind> records = smallFrame<SvoKind>("sphere");
+  const WordMemory memory = records.frame.memory();
   for (const auto& [format, gap] :
        {std::pair{FixedFormat{32, 16}, 4ull}, std::pair{FixedFormat{40, 24}, 6ull}}) {
     RtuConfig config;
     config.cores = 16;
     config.hostOutput.bytesPerCycle = 8;
     config.jobManager.format = format;
-    const RtuRun simulated = simulateRtu(frame.image.memory(), frame.tValueRecords, config);
+    const RtuRun simulated = simulateRtu(memory, records.tValueRecords, config);
     uint64_t smallest = ~0ull;
     for (size_t i = 1; i < simulated.arrivalCycles.size(); ++i)
       smallest = std::min(smallest, simulated.arrivalCycles[i] - simulated.arrivalCycles[i - 1]);
     CHECK(smallest == gap);
-    CHECK(runAnalytic(frame.image.memory(), frame.tValueRecords, config).arrivalCycles ==
+    CHECK(runAnalytic(memory, records.tValueRecords, config).arrivalCycles ==
           simulated.arrivalCycles);
   }
 }

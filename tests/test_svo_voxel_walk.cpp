@@ -1,6 +1,7 @@
 // The float64 voxel walk (src/kinds/svo/svo_voxel_walk.h), a geometric oracle that shares no
 // traversal code, on hand-built images with hand-derived answers, then against the golden model on
-// the procedural scenes (issue 26: an independent check of the traversal core's control flow).
+// the procedural scenes (issue 26: an independent check of the traversal core's control flow),
+// which tests/test_kind_oracles.cpp runs as the SVO kind's oracle.
 
 #include <catch2/catch.hpp>
 
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "inputs/camera.h"
+#include "kind_fixture.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/ray_setup.h"
@@ -293,8 +295,9 @@ std::vector<Ray> eightViews() {
   return rays;
 }
 
-TEST_CASE("Voxel walk agrees with the golden model on every procedural scene but grazing rays",
-          "[voxel-walk]") {
+// The SVO kind's oracle check (tests/test_kind_oracles.cpp): the walk agrees with the golden
+// model on every procedural scene but grazing rays.
+void KindFixture<SvoKind>::checkOracle() {
   const std::vector<Ray> rays = eightViews();
   long farPointers = 0;
   for (const std::string& name : proceduralSceneNames()) {

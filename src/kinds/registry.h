@@ -23,6 +23,8 @@ template <class... Kinds>
 struct CoreKindList {
   // What the job manager hands a core, whichever kind it is.
   using Job = std::variant<typename Kinds::Job...>;
+  // The kinds as a type list (Catch2's TEMPLATE_LIST_TEST_CASE runs a test for each).
+  using Tuple = std::tuple<Kinds...>;
   // Every kind's own counters, held by a core's statistics (kinds/core_statistics.h).
   struct Counters : Kinds::Counters... {
     static const StatisticGroup<Counters>& declaration() {

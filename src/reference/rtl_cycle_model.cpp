@@ -1,12 +1,11 @@
 #include "reference/rtl_cycle_model.h"
 
 #include <algorithm>
-#include <array>
 #include <deque>
 #include <stdexcept>
 #include <string>
 
-#include "kinds/svo/traversal_core.h"
+#include "kinds/registry.h"
 
 namespace rtu {
 
@@ -29,17 +28,17 @@ namespace {
 
 constexpr int kJobManagerStages = 6;  // P_STAGES
 
-// job_t: what the job manager hands to the cores.
+// job_t: what the job manager hands to the cores, the id word and the kind's job (for SVO a, root,
+// t0 and t1).
+template <class Kind>
 struct Job {
   uint64_t tag = 0;  // not an RTL signal: it names the job to the host
   uint32_t idWord = 0;
-  uint8_t a = 0;
-  uint32_t root = 0;
-  std::array<int64_t, 3> t0{};
-  std::array<int64_t, 3> t1{};
+  typename Kind::Job job;
 };
 
 // The combinational signals of one cycle, named after the RTL's wires.
+template <class Kind>
 struct Wires {
   // host -> job_manager
   bool inValid = false;
@@ -49,7 +48,7 @@ struct Wires {
   // job_manager -> scheduler -> cores
   bool schedValid = false;
   bool schedReady = false;
-  Job pendingJob;
+  Job<Kind> pendingJob;
   std::vector<bool> coreInReady;
   std::vector<bool> coreInValid;
   // cores -> result_manager -> host
@@ -66,20 +65,27 @@ struct Wires {
 // (JobSetup). Every job moves one stage when pipeline_enable is high and none when it is low; a
 // job reaches the output no earlier than the cycle after the one ahead of it. For t-value
 // records alone this is exactly the shift register.
+template <class Kind>
 struct PipelineJob {
-  Job job;
+  Job<Kind> job;
   uint64_t remaining = 0;  // cycles to the output; 0: at the output (valid_delay[5])
 };
 
+template <class Kind>
 struct JobManager {
-  std::deque<PipelineJob> pipeline;
+  std::deque<PipelineJob<Kind>> pipeline;
   uint64_t fetchRemaining = 0;  // cycles of a model header fetch still to come
 };
 
+// A core slot: the kind's behaviour (for SVO core_state, the frames and the result fields), whose
+// trace code tells IDLE and OUT (the kind's kIdleState and kOutState).
+template <class Kind>
 struct Core {
-  TraversalCore<FixedArith> traversal;  // core_state, the frames and the result fields
-  uint32_t idWord = 0;                  // out_result.job_id
+  typename Kind::Behaviour behaviour;
+  uint32_t idWord = 0;  // out_result.job_id
   uint64_t tag = 0;
+
+  uint64_t state() const { return static_cast<uint64_t>(behaviour.state()); }
 };
 
 struct ResultManager {
@@ -98,17 +104,27 @@ void recordCycle(std::vector<uint64_t>& cycles, uint64_t tag, uint64_t cycle) {
 
 }  // namespace
 
+// What RtlTop needs of the registers of any kind. One call per simulated cycle of the whole
+// RTU, not per core: the cores' per-cycle work inside is a template over the kind.
 class RtlTop::Registers {
  public:
-  Registers(const WordMemory& memory, const RtlTopConfig& config);
-
-  RtlCycle step(const RtlOffer* offer);
+  virtual ~Registers() = default;
+  virtual RtlCycle step(const RtlOffer* offer) = 0;
 
   uint64_t cycle = 0;
   std::vector<uint64_t> acceptCycles;
   std::vector<uint64_t> dispatchCycles;
+};
+
+template <class Kind>
+class RtlTop::KindRegisters final : public RtlTop::Registers {
+ public:
+  KindRegisters(const WordMemory& memory, const RtlTopConfig& config);
+
+  RtlCycle step(const RtlOffer* offer) override;
 
  private:
+  using Wires = rtu::Wires<Kind>;
   Wires evaluate(const RtlOffer* offer) const;
   // Each clock function updates one module from the wires and its own registers only, so the
   // order in which they run does not matter.
@@ -122,14 +138,15 @@ class RtlTop::Registers {
 
   WordMemory memory_;
   RtlTopConfig config_;
-  JobSetup setup_;  // the ray transform, and the model headers read so far
-  JobManager jobManager_;
+  typename Kind::Setup setup_;  // the kind's job set-up, with the model headers read so far
+  JobManager<Kind> jobManager_;
   int coreSelect_ = 0;
-  std::vector<Core> cores_;
+  std::vector<Core<Kind>> cores_;
   ResultManager resultManager_;
 };
 
-RtlTop::Registers::Registers(const WordMemory& memory, const RtlTopConfig& config)
+template <class Kind>
+RtlTop::KindRegisters<Kind>::KindRegisters(const WordMemory& memory, const RtlTopConfig& config)
     : memory_(memory),
       config_(config),
       setup_(memory,
@@ -137,14 +154,14 @@ RtlTop::Registers::Registers(const WordMemory& memory, const RtlTopConfig& confi
                               config.rayStages, config.headerFetchCycles}) {
   config_.validate();
   const size_t cores = static_cast<size_t>(config_.cores);
-  const Core idle{
-      TraversalCore<FixedArith>(FixedArith{config_.golden.format}, config_.golden.stackFrames)};
+  const Core<Kind> idle{Kind::behaviour(config_.coreConfig<Kind>())};
   cores_.assign(cores, idle);
   resultManager_.resultValid.assign(cores, false);
   resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
 }
 
-RtlCycle RtlTop::Registers::step(const RtlOffer* offer) {
+template <class Kind>
+RtlCycle RtlTop::KindRegisters<Kind>::step(const RtlOffer* offer) {
   const Wires wires = evaluate(offer);
   RtlCycle handshakes{cycle, wires.inValid && wires.inReady, std::nullopt};
   if (wires.outValid && wires.outReady) handshakes.delivered = wires.outResult;
@@ -157,7 +174,9 @@ RtlCycle RtlTop::Registers::step(const RtlOffer* offer) {
   return handshakes;
 }
 
-Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
+template <class Kind>
+typename RtlTop::KindRegisters<Kind>::Wires RtlTop::KindRegisters<Kind>::evaluate(
+    const RtlOffer* offer) const {
   const size_t cores = cores_.size();
   Wires w;
   w.coreInReady.assign(cores, false);
@@ -168,11 +187,13 @@ Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
 
   // svo_trav_core
   for (size_t i = 0; i < cores; ++i) {
-    const CoreState state = cores_[i].traversal.state();
-    w.coreInReady[i] = state == CoreState::Idle;
-    w.coreOutValid[i] = state == CoreState::Out;
-    if (w.coreOutValid[i])
-      w.coreOutResult[i] = {makeResult(cores_[i].idWord, cores_[i].traversal), cores_[i].tag};
+    const Core<Kind>& core = cores_[i];
+    w.coreInReady[i] = core.state() == Kind::kIdleState;
+    w.coreOutValid[i] = core.state() == Kind::kOutState;
+    if (w.coreOutValid[i]) {
+      w.coreOutResult[i].tag = core.tag;
+      Kind::writeResult(core.idWord, core.behaviour, w.coreOutResult[i].result);
+    }
   }
 
   // result_manager
@@ -182,7 +203,7 @@ Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
   w.outResult = rm.resultBuffer[rm.resultSelect];
 
   // scheduler
-  const JobManager& jm = jobManager_;
+  const JobManager<Kind>& jm = jobManager_;
   w.schedReady = w.coreInReady[coreSelect_];
   w.schedValid = !jm.pipeline.empty() && jm.pipeline.front().remaining == 0;
   for (size_t i = 0; i < cores; ++i)
@@ -200,24 +221,20 @@ Wires RtlTop::Registers::evaluate(const RtlOffer* offer) const {
   return w;
 }
 
-void RtlTop::Registers::clockJobManager(const Wires& w) {
-  JobManager& jm = jobManager_;
+template <class Kind>
+void RtlTop::KindRegisters<Kind>::clockJobManager(const Wires& w) {
+  JobManager<Kind>& jm = jobManager_;
   if (jm.fetchRemaining > 0) --jm.fetchRemaining;
   if (!w.pipelineEnable) return;
   if (w.schedValid) jm.pipeline.pop_front();  // enabled with a valid output: the core took it
-  for (PipelineJob& job : jm.pipeline) --job.remaining;
+  for (PipelineJob<Kind>& job : jm.pipeline) --job.remaining;
   if (w.inValid && w.inReady) accept(*w.inRay);
 }
 
-void RtlTop::Registers::accept(const RtlOffer& offer) {
-  const JobSetup::SetUp set = setup_.setUp(offer.record);
-  const GoldenConfig& golden = config_.golden;
-  const Job job{offer.tag,
-                set.job.idWord(),
-                set.job.a,
-                set.job.root,
-                convertToFixed(set.job.t0Bits, golden.format, golden.conversion),
-                convertToFixed(set.job.t1Bits, golden.format, golden.conversion)};
+template <class Kind>
+void RtlTop::KindRegisters<Kind>::accept(const RtlOffer& offer) {
+  const JobSetUp<typename Kind::Job> set = setup_.setUp(offer.record);
+  const Job<Kind> job{offer.tag, set.idWord, set.job};
   // In the pipeline from the next cycle, at the output `latency` cycles after this one.
   uint64_t remaining = set.latency - 1;
   if (!jobManager_.pipeline.empty())
@@ -226,31 +243,34 @@ void RtlTop::Registers::accept(const RtlOffer& offer) {
   jobManager_.fetchRemaining = set.headerFetch;
 }
 
-void RtlTop::Registers::clockScheduler() { coreSelect_ = nextSelect(coreSelect_, config_.cores); }
+template <class Kind>
+void RtlTop::KindRegisters<Kind>::clockScheduler() {
+  coreSelect_ = nextSelect(coreSelect_, config_.cores);
+}
 
-void RtlTop::Registers::clockCores(const Wires& w) {
+template <class Kind>
+void RtlTop::KindRegisters<Kind>::clockCores(const Wires& w) {
   const auto read = [this](uint32_t address) { return memory_.read(address); };
   for (size_t i = 0; i < cores_.size(); ++i) {
-    Core& core = cores_[i];
-    switch (core.traversal.state()) {
-      case CoreState::Idle:
-        if (w.coreInReady[i] && w.coreInValid[i]) {
-          const Job& job = w.pendingJob;
-          core.idWord = job.idWord;
-          core.tag = job.tag;
-          core.traversal.start(job.t0, job.t1, job.a, job.root);
-          recordCycle(dispatchCycles, job.tag, cycle);
-        }
-        break;
-      case CoreState::Out:
-        if (w.coreOutReady[i]) core.traversal.finish();
-        break;
-      default: core.traversal.step(read); break;
+    Core<Kind>& core = cores_[i];
+    if (core.state() == Kind::kIdleState) {
+      if (w.coreInReady[i] && w.coreInValid[i]) {
+        const Job<Kind>& job = w.pendingJob;
+        core.idWord = job.idWord;
+        core.tag = job.tag;
+        Kind::start(core.behaviour, job.job);
+        recordCycle(dispatchCycles, job.tag, cycle);
+      }
+    } else if (core.state() == Kind::kOutState) {
+      if (w.coreOutReady[i]) core.behaviour.finish();
+    } else {
+      core.behaviour.step(read);
     }
   }
 }
 
-void RtlTop::Registers::clockResultManager(const Wires& w) {
+template <class Kind>
+void RtlTop::KindRegisters<Kind>::clockResultManager(const Wires& w) {
   ResultManager& rm = resultManager_;
   for (size_t i = 0; i < rm.resultValid.size(); ++i) {
     if (w.coreOutReady[i] && w.coreOutValid[i]) {
@@ -263,7 +283,9 @@ void RtlTop::Registers::clockResultManager(const Wires& w) {
 }
 
 RtlTop::RtlTop(const WordMemory& memory, const RtlTopConfig& config)
-    : registers_(std::make_unique<Registers>(memory, config)) {}
+    : registers_(withCoreKind(config.core, [&](auto kind) -> std::unique_ptr<Registers> {
+        return std::make_unique<KindRegisters<decltype(kind)>>(memory, config);
+      })) {}
 RtlTop::~RtlTop() = default;
 
 RtlCycle RtlTop::step(const RtlOffer* offer) { return registers_->step(offer); }

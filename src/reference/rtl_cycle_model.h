@@ -17,10 +17,12 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
+#include "kinds/svo/svo_kind.h"
 #include "kinds/svo/traversal_job.h"
 #include "rtu/word_memory.h"
 
@@ -31,13 +33,22 @@ constexpr int kMaxRtlCores = 4096;
 struct RtlTopConfig {
   int cores = 16;  // CORE_CNT
   GoldenConfig golden;
-  int rayStages = 6;           // beyond P_STAGES, for ray records
-  int headerFetchCycles = 16;  // a model's first ray
+  int rayStages = 6;                  // beyond P_STAGES, for ray records
+  int headerFetchCycles = 16;         // a model's first ray
+  std::string core = SvoKind::kName;  // the cores' kind (kinds/registry.h)
 
   // Throws std::invalid_argument unless 1 <= cores <= kMaxRtlCores, the golden configuration is
   // valid, 0 <= rayStages <= 64 and headerFetchCycles >= 0.
   void validate() const;
+  // The configuration of a core of `Kind` (specialised per kind, as RtuConfig's).
+  template <class Kind>
+  typename Kind::Config coreConfig() const;
 };
+
+template <>
+inline SvoKind::Config RtlTopConfig::coreConfig<SvoKind>() const {
+  return golden;
+}
 
 struct RtlTopRun {
   std::vector<TraversalResult> results;  // in the order the host received them
@@ -70,9 +81,11 @@ struct RtlCycle {
   std::optional<Delivery> delivered;  // the result the host took
 };
 
+// The cores are of the kind `config.core`, chosen once when the top is made: the registers of
+// every module are a template over the kind (KindRegisters, in rtl_cycle_model.cpp).
 class RtlTop {
  public:
-  // Throws std::invalid_argument for an invalid configuration.
+  // Throws std::invalid_argument for an invalid configuration or an unknown kind.
   RtlTop(const WordMemory& memory, const RtlTopConfig& config);
   ~RtlTop();
   RtlTop(const RtlTop&) = delete;
@@ -88,6 +101,8 @@ class RtlTop {
 
  private:
   class Registers;
+  template <class Kind>
+  class KindRegisters;
   std::unique_ptr<Registers> registers_;
 };
 

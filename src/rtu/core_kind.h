@@ -1,11 +1,12 @@
 #pragma once
 // The seam between the RTU and a kind of traversal core. The RTU's job manager timing, scheduler,
 // result manager, reorder buffer, host links, recurrence and scene manager never look inside a
-// job; the timing shells (the cycle-accurate core, the loosely-timed core, the golden model, the
-// cache warmer) are templates over a kind. A kind is a struct of types and static members, chosen
-// once at the top (kinds/registry.h) so that nothing below branches on it and no virtual call
-// lies on the per-cycle path. kinds/svo/svo_kind.h is the worked example; docs/architecture.md,
-// "The core-kind seam", lists what a kind declares.
+// job; the shells (the cycle-accurate core, the untimed shell of rtu/golden_shell.h, the analytic
+// run's tracer, the per-cycle RTL reference's core slots) are templates over a kind, the
+// loosely-timed core and the cache warmer to follow. A kind is a struct of types and static
+// members, chosen once at the top (kinds/registry.h) so that nothing below branches on it and no
+// virtual call lies on the per-cycle path. kinds/svo/svo_kind.h is the worked example;
+// docs/architecture.md, "The core-kind seam", lists what a kind declares.
 
 #include <cstdint>
 #include <string>

@@ -5,34 +5,52 @@
 #include <stdexcept>
 #include <utility>
 
-#include "kinds/svo/golden_model.h"
+#include "kinds/registry.h"
 #include "kinds/svo/job_setup.h"
+#include "rtu/golden_shell.h"
 #include "rtu/rtu_recurrence.h"
 #include "run/recurrence_results.h"
 
 namespace rtu {
 namespace {
 
-// Each record's result and its timing inputs: the job manager's set-up and latencies
-// (src/kinds/svo/job_setup.h), the golden model's result and cost.
+// Each record's result and its timing inputs.
+struct Traced {
+  std::vector<TraversalResult> results;
+  std::vector<RecurrenceJob> timing;
+};
+
+// Traces records on a core of `Kind`: the kind's job set-up with the job manager's latencies,
+// then the kind's behaviour in the untimed shell for the result and its cost.
+template <class Kind>
 class RecordTracer {
  public:
   RecordTracer(const WordMemory& memory, const RtuConfig& config)
-      : setup_(memory, config.jobManager), golden_(memory, config.golden()) {}
+      : setup_(memory, config.jobManager), shell_(memory, config.coreConfig<Kind>()) {}
 
   void trace(const HostRecord& record) {
-    const JobSetup::SetUp set = setup_.setUp(record);
-    results.push_back(golden_.trace(set.job));
-    timing.push_back(RecurrenceJob{results.back().cost, set.latency, set.headerFetch});
+    const JobSetUp<typename Kind::Job> set = setup_.setUp(record);
+    TraversalResult& result = traced.results.emplace_back();
+    shell_.run(set.idWord, set.job, result);
+    traced.timing.push_back(RecurrenceJob{result.cost, set.latency, set.headerFetch});
   }
 
-  std::vector<TraversalResult> results;
-  std::vector<RecurrenceJob> timing;
+  Traced traced;
 
  private:
-  JobSetup setup_;
-  GoldenModel golden_;
+  typename Kind::Setup setup_;
+  GoldenShell<Kind> shell_;
 };
+
+template <class Kind, typename Record>
+Traced traceRecords(const WordMemory& memory, const std::vector<Record>& records,
+                    const RtuConfig& config) {
+  RecordTracer<Kind> tracer(memory, config);
+  tracer.traced.results.reserve(records.size());
+  tracer.traced.timing.reserve(records.size());
+  for (const Record& record : records) tracer.trace(record);
+  return std::move(tracer.traced);
+}
 
 }  // namespace
 
@@ -55,10 +73,9 @@ RtuRun analyticRun(const WordMemory& memory, const std::vector<Record>& records,
   if (const auto why = whyNotAnalytic(config))
     throw std::invalid_argument("the analytic model does not apply: " + *why);
   const auto start = std::chrono::steady_clock::now();
-  RecordTracer traced(memory, config);
-  traced.results.reserve(records.size());
-  traced.timing.reserve(records.size());
-  for (const Record& record : records) traced.trace(record);
+  Traced traced = withCoreKind(config.core, [&](auto kind) {
+    return traceRecords<decltype(kind)>(memory, records, config);
+  });
   RecurrenceRun timing =
       runRecurrence(traced.timing, RecurrenceConfig{config.cores, config.scheduler,
                                                     config.hostInput, config.outputLink()});

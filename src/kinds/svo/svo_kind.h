@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "kinds/svo/fixed_point.h"
-#include "kinds/svo/golden_model.h"
+#include "kinds/svo/golden_config.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/state_vocabulary.h"
 #include "kinds/svo/svo_counters.h"

@@ -1,0 +1,54 @@
+#pragma once
+// The SVO core's own settings, and the conversions at its two ends that every model shares: a
+// job's float32 t-values into the core's fixed point, the finished core's result out.
+
+#include <array>
+#include <cstdint>
+
+#include "kinds/svo/fixed_point.h"
+#include "kinds/svo/traversal_core.h"
+#include "kinds/svo/traversal_job.h"
+
+namespace rtu {
+
+struct GoldenConfig {
+  FixedFormat format;
+  FloatConversion conversion = FloatConversion::Rtl;
+  int stackFrames = kRtlStackFrames;
+};
+
+// The job manager's conversion of a job's float32 t-values (appendix C.2.1).
+inline std::array<int64_t, 3> convertToFixed(const std::array<uint32_t, 3>& floatBits,
+                                             const FixedFormat& format,
+                                             FloatConversion conversion) {
+  return {floatToFixed(floatBits[0], format, conversion),
+          floatToFixed(floatBits[1], format, conversion),
+          floatToFixed(floatBits[2], format, conversion)};
+}
+
+// The fixed-point result of a finished core, as the RTL's result_t holds it, written over
+// `result` field by field: a caller that keeps results in a column writes them there directly.
+// (Copying a returned temporary stalled the loosely-timed core: the host cannot forward the
+// fields just stored one by one to the wide loads of the copy.)
+inline void writeResult(uint32_t idWord, const TraversalCore<FixedArith>& core,
+                        TraversalResult& result) {
+  result = TraversalResult{};
+  result.idWord = idWord;
+  result.cost = core.cost();
+  result.stackOverflow = core.stackOverflow();
+  result.tOverflow = core.tOverflow();
+  result.belowResolution = core.belowResolution();
+  result.hit = core.hit();
+  if (core.hit()) {
+    result.tHit = core.tHit();
+    result.normal[core.normalAxis()] = core.arith().one();
+  }
+}
+
+inline TraversalResult makeResult(uint32_t idWord, const TraversalCore<FixedArith>& core) {
+  TraversalResult result;
+  writeResult(idWord, core, result);
+  return result;
+}
+
+}  // namespace rtu

@@ -1,0 +1,45 @@
+#pragma once
+// What the tests need of a core kind. The equivalence tests (the golden model against the
+// cycle-accurate, loosely-timed and analytic runs and the per-cycle RTL reference) and the oracle
+// test are TEMPLATE_LIST_TEST_CASEs over TestedKinds, every kind of the registry, so a new kind
+// inherits them by specialising KindFixture in tests/kinds/<name>_fixture.h (included below).
+// tests/kinds/svo_fixture.h is the worked example; a kind's fixture declares:
+//   Frame                  a test scene's image and a frame of host records on it: memory(), jobs
+//   scenes()               the names of its test scenes
+//   frame(scene, detail, width, height)   a frame of primary rays on a scene built to a detail
+//   rayRecords(frame, width, height)      the frame's rays as ray records against a model of it
+//   instancedRays()        memory() and records against several models (header fetches overlap)
+//   golden(memory, config, jobs)          its golden model's results
+//   otherArithmetic(config)               settings of its own other than the thesis', for which
+//                                         every model must still agree
+//   checkOracle()          its independent oracle against its golden model (architecture.md,
+//                          "Independent oracles")
+
+#include "kinds/registry.h"
+#include "reference/rtl_cycle_model.h"
+#include "sim/rtu_config.h"
+
+namespace rtu {
+
+template <class Kind>
+struct KindFixture;
+
+using TestedKinds = CoreKinds::Tuple;
+
+// The thesis configuration with cores of `Kind`.
+template <class Kind>
+RtuConfig kindConfig() {
+  RtuConfig config;
+  config.core = Kind::kName;
+  return config;
+}
+
+// The per-cycle RTL reference of the RTU `config` describes.
+inline RtlTopConfig rtlTopConfig(const RtuConfig& config) {
+  return RtlTopConfig{config.cores, config.golden(), config.jobManager.rayStages,
+                      config.jobManager.headerFetchCycles, config.core};
+}
+
+}  // namespace rtu
+
+#include "kinds/svo_fixture.h"
