@@ -26,7 +26,7 @@
 #include "sim/lt/lt_l1_cache.h"
 #include "sim/lt/lt_l2_cache.h"
 #include "sim/lt/lt_rom.h"
-#include "sim/lt/lt_traversal_core.h"
+#include "sim/lt/lt_core.h"
 #include "sim/rtu_config.h"
 
 namespace rtu {
@@ -57,7 +57,7 @@ class LtTop : public sc_core::sc_module {
   LtTime time_;
   JobSetup setup_;
   tlm_utils::tlm_quantumkeeper quantum_;
-  // The cores' shared state machine: each runs a job to its end in one call (lt_traversal_core.h).
+  // The cores' shared state machine: each runs a job to its end in one call (lt_core.h).
   TraversalCore<FixedArith> stateMachine_;
   std::vector<std::unique_ptr<LtTraversalCore>> cores_;
   std::unique_ptr<LtRom> rom_;

@@ -1,4 +1,4 @@
-#include "sim/lt/lt_traversal_core.h"
+#include "sim/lt/lt_core.h"
 
 #include <stdexcept>
 #include <string>
