@@ -5,7 +5,14 @@
 // cache warmer) are templates over a kind. A kind is a struct of types and static members, chosen
 // once at the top (kinds/registry.h) so that nothing below branches on it and no virtual call
 // lies on the per-cycle path. kinds/svo/svo_kind.h is the worked example; docs/architecture.md,
-// "The core-kind seam", lists what a kind declares.
+// "The core-kind seam", lists what a kind declares. What the shells rely on besides the types
+// (docs/cycle-semantics.md, "Access width and multi-cycle states"):
+//   kWordsPerRead        a power of two: a reading state reads that many words from memoryAddress()
+//                        rounded down to a multiple of it (one access, within one line), and its
+//                        behaviour's readWord calls stay within them;
+//   stateCycles(b)       the cycles of b's current state, asked before it is stepped;
+//   Behaviour::cost()    the job's states' own cycles (stateCycles each), blocked ones excluded;
+//   setUp(record, config) the job manager's set-up from the kind's Config (the cache warmer's).
 
 #include <cstdint>
 #include <string>

@@ -62,6 +62,10 @@ struct SvoKind {
     return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
                convertToFixed(record.t1Bits, format, conversion), record.root};
   }
+  // The same with the kind's settings, for a shell that sets its jobs up itself (the cache warmer).
+  static Job setUp(const HostRecord& record, const Config& config) {
+    return setUp(record, config.format, config.conversion);
+  }
   static void start(Behaviour& core, const Job& job) {
     core.start(job.t0, job.t1, job.a, job.root);
   }
