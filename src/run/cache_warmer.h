@@ -1,36 +1,63 @@
 #pragma once
 // Functional warming (SMARTS, Wunderlich et al. 2003): the caches' contents brought up to date
-// with rays that are not simulated, by tracing them untimed and touching, for each word a traversal
-// reads, its line in an L1 and, when the L1 did not hold it, in the L2. Nothing is timed or
-// counted. Which core runs a ray depends on timing the warmer does not model, so ray i warms the
-// L1 of core i mod cores, as the cyclic scheduler hands out rays of equal cost.
+// with rays that are not simulated, by tracing them untimed with a core kind's behaviour
+// (rtu/core_kind.h) and touching, for each access a traversal makes (Kind::kWordsPerRead words
+// aligned to that count, so within one line), its line in an L1 and, when the L1 did not hold it,
+// in the L2. Nothing is timed or counted. Which core runs a ray depends on timing the warmer does
+// not model, so ray i warms the L1 of core i mod cores, as the cyclic scheduler hands out rays of
+// equal cost.
 
 #include <cstdint>
 #include <vector>
 
-#include "kinds/svo/golden_model.h"
 #include "sim/memory/cache_contents.h"
+#include "sim/memory/l1_cache_timing.h"
 #include "sim/rtu_config.h"
 
 namespace rtu {
 
+template <class Kind>
 class CacheWarmer {
  public:
   // `config.memory` must be cached.
-  CacheWarmer(WordMemory memory, const RtuConfig& config);
+  CacheWarmer(typename Kind::Memory memory, const RtuConfig& config)
+      : memory_(memory),
+        config_(config.coreConfig<Kind>()),
+        cores_(config.cores),
+        core_(Kind::behaviour(config_)) {
+    contents_.l1.assign(static_cast<size_t>(cores_), CacheArray(config.memory.l1));
+    contents_.l2.assign(1, CacheArray(config.memory.l2));
+  }
 
-  // Traces jobs[next .. end) untimed, touching their lines; `next` is where the last call ended.
-  void warmUpTo(const std::vector<TraversalJob>& jobs, uint64_t end);
+  // Traces records[next .. end) untimed, set up as the job manager sets them up, touching their
+  // lines; `next` is where the last call ended.
+  void warmUpTo(const std::vector<typename Kind::Record>& records, uint64_t end) {
+    for (; next_ < end; ++next_) {
+      const int core = static_cast<int>(next_ % static_cast<uint64_t>(cores_));
+      Kind::start(core_, Kind::setUp(records[next_], config_));
+      while (core_.busy()) {
+        if (core_.readsMemory()) touch(core, core_.memoryAddress());
+        core_.step([this](uint32_t address) { return memory_.read(address); });
+      }
+      core_.finish();
+    }
+  }
   uint64_t next() const { return next_; }
   const CacheContents& contents() const { return contents_; }
 
  private:
-  void touch(int core, uint32_t wordAddress);
+  // The access of the word at `wordAddress`: its first word's line.
+  void touch(int core, uint32_t wordAddress) {
+    const uint64_t byteAddress =
+        L1CacheTiming::byteAddress(wordAddress & ~uint32_t{Kind::kWordsPerRead - 1});
+    if (!contents_.l1[static_cast<size_t>(core)].touch(byteAddress))
+      contents_.l2.front().touch(byteAddress);
+  }
 
-  WordMemory memory_;
-  GoldenConfig golden_;
+  typename Kind::Memory memory_;
+  typename Kind::Config config_;
   int cores_;
-  TraversalCore<FixedArith> core_;
+  typename Kind::Behaviour core_;
   CacheContents contents_;
   uint64_t next_ = 0;
 };

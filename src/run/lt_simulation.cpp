@@ -3,7 +3,9 @@
 #include <chrono>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
+#include "kinds/registry.h"
 #include "run/analytic_run.h"
 #include "run/recurrence_results.h"
 #include "sim/kernel/sc_kernel.h"
@@ -19,6 +21,23 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
   return whyNotAnalytic(anyMemory);
 }
 
+namespace {
+
+// The run of a simulated top: its timing, results and the memory's counts.
+RtuRun runOf(LtTopBase& top, std::vector<TraversalResult> results, const RtuConfig& config) {
+  RtuRun run = recurrenceResults(top.takeTiming(), std::move(results), top.takeBlocked(), config);
+  RtuStatistics& stats = run.statistics;
+  stats.model = "lt";
+  stats.idealMemory = top.idealMemory();
+  if (!stats.idealMemory) {
+    stats.l1 = top.l1Statistics();
+    stats.l2 = top.l2Statistics();
+  }
+  return run;
+}
+
+}  // namespace
+
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunProgress& progress) {
   validate(config);
@@ -26,18 +45,14 @@ RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& 
     throw std::invalid_argument("--model lt does not apply: " + *why);
   freshKernel();
   const auto start = std::chrono::steady_clock::now();
-  auto top = std::make_unique<LtTop>("rtu", config, memory, records);
-  sc_core::sc_start();
-  RtuRun run = recurrenceResults(top->takeTiming(), top->takeResults(), top->takeBlocked(), config);
+  // The cores' kind, chosen once: the top is a template over it.
+  RtuRun run = withCoreKind(config.core, [&](auto kind) {
+    auto top = std::make_unique<LtTop<decltype(kind)>>("rtu", config, memory, records);
+    sc_core::sc_start();
+    return runOf(*top, top->takeResults(), config);
+  });
   if (progress) progress(records.size(), records.size());
-  RtuStatistics& stats = run.statistics;
-  stats.model = "lt";
-  stats.idealMemory = top->idealMemory();
-  if (!stats.idealMemory) {
-    stats.l1 = top->l1Statistics();
-    stats.l2 = top->l2Statistics();
-  }
-  stats.hostSeconds =
+  run.statistics.hostSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "kinds/svo/golden_model.h"
+#include "kinds/svo/svo_kind.h"
 #include "run/cache_warmer.h"
 #include "run/statistics_output.h"
 #include "run/statistics_window.h"
@@ -266,8 +267,9 @@ SampledRun runSampled(const WordMemory& memory, const std::vector<TraversalJob>&
     for (uint64_t first : plan.strata[h].blocks) places.push_back({first, h});
   std::sort(places.begin(), places.end(),
             [](const Place& a, const Place& b) { return a.first < b.first; });
-  std::unique_ptr<CacheWarmer> warmer;
-  if (!config.memory.ideal) warmer = std::make_unique<CacheWarmer>(memory, config);
+  // The frame's jobs are t-value records, the SVO kind's, as the golden model's below.
+  std::unique_ptr<CacheWarmer<SvoKind>> warmer;
+  if (!config.memory.ideal) warmer = std::make_unique<CacheWarmer<SvoKind>>(memory, config);
   for (const Place& place : places) {
     const uint64_t warmup = place.first == 0 ? 0 : plan.warmupRays;
     BlockRun options;

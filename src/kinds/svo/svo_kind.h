@@ -30,6 +30,9 @@ struct SvoKind {
   static constexpr const char* kDescription =
       "sparse voxel octree core of the thesis (Espe 2019), Q-format fixed point";
 
+  // The kind's own record of a job, which a shell that sets its jobs up itself takes (the cache
+  // warmer): the thesis driver's t-value record.
+  using Record = TraversalJob;
   using Job = SvoJob;
   using Result = TraversalResult;
   using Behaviour = TraversalCore<FixedArith>;
@@ -78,6 +81,10 @@ struct SvoKind {
                    FloatConversion conversion) {
     return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
                convertToFixed(record.t1Bits, format, conversion), record.root};
+  }
+  // The same with the kind's settings, for a shell that sets its jobs up itself (the cache warmer).
+  static Job setUp(const Record& record, const Config& config) {
+    return setUp(record, config.format, config.conversion);
   }
   static void start(Behaviour& core, const Job& job) {
     core.start(job.t0, job.t1, job.a, job.root);

@@ -1,6 +1,6 @@
 #include "sim/lt/lt_l1_cache.h"
 
-#include "sim/lt/lt_rom.h"
+#include "sim/lt/lt_word_read.h"
 
 namespace rtu {
 
@@ -14,6 +14,7 @@ LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, Wo
       timing_(config, nullptr, time.periodPicoseconds()),
       hitPicoseconds_(config.hitLatency * time.periodPicoseconds()),
       hitDelay_(time.cycles(config.hitLatency)),
+      lineBytes_(config.lineBytes),
       lineRead_(config.lineBytes) {
   socket.bind(*this);
 }
@@ -21,6 +22,7 @@ LtL1Cache::LtL1Cache(sc_core::sc_module_name name, const CacheConfig& config, Wo
 // The tag store counts picoseconds since the start, the unit of the annotated delay, so that a
 // hit (the common case) converts nothing: it adds the hit latency to the delay.
 void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  if (!acceptWordRead(trans, lineBytes_)) return;
   const uint32_t word = static_cast<uint32_t>(trans.get_address() / 4);
   const uint64_t at = time_.nowPicoseconds() + delay.value();
   const L1Lookup lookup = timing_.lookup(word, at);
@@ -34,14 +36,13 @@ void LtL1Cache::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& d
 }
 
 sc_core::sc_time LtL1Cache::fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request) {
-  const sc_core::sc_time filled =
-      lineRead_(next, lineAddress, timing_.array().config().lineBytes, request);
+  const sc_core::sc_time filled = lineRead_(next, lineAddress, lineBytes_, request);
   timing_.fill(word, time_.nowPicoseconds() + filled.value());
   return filled;
 }
 
 unsigned int LtL1Cache::transport_dbg(tlm::tlm_generic_payload& trans) {
-  serveWordRead(words_, trans);
+  if (acceptWordRead(trans, lineBytes_)) serveWordRead(words_, trans);
   return trans.is_response_ok() ? trans.get_data_length() : 0;
 }
 

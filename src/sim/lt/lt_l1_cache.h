@@ -1,11 +1,12 @@
 #pragma once
-// A core's private L1 as a loosely-timed TLM-2.0 target: a word read at the cycle its delay
-// annotates returns the word (from the read-only image: the cache holds tags, as cache_array.h
-// says) with the delay to the cycle the word is there. Timing: l1_cache_timing.h; a miss reads
-// the line from the L2 through `next`. One core reads it, in its own cycle order, so the L1 is
-// exact; only the shared L2 sees requests out of order. Its tag store counts picoseconds since
-// the start (l1_cache_timing.h allows any unit), those of the delays it is given.
-// It is its socket's interface itself (lt_timing_target.h); its debug access reads the word.
+// A core's private L1 as a loosely-timed TLM-2.0 target: a read of words within one line
+// (lt_word_read.h) at the cycle its delay annotates returns the words (from the read-only image:
+// the cache holds tags, as cache_array.h says) with the delay to the cycle they are there. Timing:
+// l1_cache_timing.h; a miss reads the line from the L2 through `next`. One core reads it, in its
+// own cycle order, so the L1 is exact; only the shared L2 sees requests out of order. Its tag store
+// counts picoseconds since the start (l1_cache_timing.h allows any unit), those of the delays it is
+// given. It is its socket's interface itself (lt_timing_target.h); its debug access reads the
+// words.
 
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -31,8 +32,8 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   unsigned int transport_dbg(tlm::tlm_generic_payload& trans) override;
 
  private:
-  // The line of a missing word, requested from the L2 at the delay `request`, allocated; returns
-  // the delay to the cycle the word is there.
+  // The line of a missing access, requested from the L2 at the delay `request`, allocated; returns
+  // the delay to the cycle its words are there.
   sc_core::sc_time fetch(uint32_t word, uint64_t lineAddress, sc_core::sc_time request);
 
   WordMemory words_;
@@ -40,6 +41,7 @@ class LtL1Cache : public sc_core::sc_module, public LtTimingTarget {
   L1CacheTiming timing_;
   uint64_t hitPicoseconds_;
   sc_core::sc_time hitDelay_;
+  uint32_t lineBytes_;
   LineRead lineRead_;
 };
 

@@ -1,15 +1,17 @@
 #include "sim/lt/lt_rom.h"
 
+#include "sim/lt/lt_word_read.h"
+
 namespace rtu {
 
-LtRom::LtRom(sc_core::sc_module_name name, WordMemory words)
-    : sc_core::sc_module(name), socket("socket"), words_(words) {
+LtRom::LtRom(sc_core::sc_module_name name, WordMemory words, uint32_t lineBytes)
+    : sc_core::sc_module(name), socket("socket"), words_(words), lineBytes_(lineBytes) {
   socket.register_b_transport(this, &LtRom::b_transport);
   socket.register_get_direct_mem_ptr(this, &LtRom::get_direct_mem_ptr);
 }
 
 void LtRom::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time&) {
-  serveWordRead(words_, trans);
+  if (acceptWordRead(trans, lineBytes_)) serveWordRead(words_, trans);
   trans.set_dmi_allowed(true);
 }
 

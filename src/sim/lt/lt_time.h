@@ -87,6 +87,7 @@ class LineRead {
                               sc_core::sc_time delay) {
     payload_.set_address(address);
     payload_.set_data_length(bytes);
+    payload_.set_streaming_width(bytes);
     payload_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     socket->b_transport(payload_, delay);
     return delay;

@@ -1,7 +1,8 @@
 #pragma once
 // The loosely-timed RTU (docs/fidelity.md, "The loosely-timed model"): thesis figure 6.1 with
-// its memory at transaction level. N traversal cores are TLM-2.0 initiators; their memory is the
-// ideal ROM (DMI) or, per core, an L1 target in front of the shared L2 target and the DRAM target.
+// its memory at transaction level. N cores of one kind (LtTop<Kind>, chosen once by the caller:
+// run/lt_simulation.cpp) are TLM-2.0 initiators; their memory is the ideal ROM (DMI) or, per core,
+// an L1 target in front of the shared L2 target and the DRAM target.
 //
 // One thread drives them, temporally decoupled (tlm_utils::tlm_quantumkeeper, after the
 // Accellera lt_td_initiator example): the job manager, scheduler and result manager are the
@@ -13,61 +14,102 @@
 // traversal, and take them in their out-of-order form (src/sim/memory/resource_booking.h).
 
 #include <memory>
+#include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <systemc>
 #include <tlm>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "base/prefault.h"
 #include "kinds/svo/job_setup.h"
 #include "rtu/rtu_recurrence.h"
+#include "sim/ca/rtu_payloads.h"
+#include "sim/lt/lt_core.h"
 #include "sim/lt/lt_dram.h"
 #include "sim/lt/lt_l1_cache.h"
 #include "sim/lt/lt_l2_cache.h"
 #include "sim/lt/lt_rom.h"
-#include "sim/lt/lt_traversal_core.h"
 #include "sim/rtu_config.h"
 
 namespace rtu {
 
-class LtTop : public sc_core::sc_module {
+// What does not depend on the cores' kind: the memory targets, the job set-up, the recurrence and
+// the quantum. The cores are LtTop's, reached once per dispatch through traverseOn.
+class LtTopBase : public sc_core::sc_module {
  public:
-  // `records` must outlive the top.
-  LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-        const std::vector<HostRecord>& records);
-
-  // After the simulation, taken once: the cycles, and each job's result and blocked cycles by
-  // job index.
+  // After the simulation, taken once: the cycles, and each job's blocked cycles by job index.
   RecurrenceRun takeTiming() { return std::move(timing_); }
-  std::vector<TraversalResult> takeResults() { return std::move(results_); }
   std::vector<uint32_t> takeBlocked() { return std::move(blocked_); }
   bool idealMemory() const { return rom_ != nullptr; }
   std::vector<CacheStats> l1Statistics() const;
   L2Stats l2Statistics() const;  // the L2's counts with the DRAM target's
 
+ protected:
+  // `records` must outlive the top; `accessBytes` is a core's access (the ROM's alignment).
+  LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
+            const std::vector<HostRecord>& records, uint32_t accessBytes);
+
+  // Binds a core's socket to its memory: the ROM, or an L1 of its own in front of the L2.
+  void bindCore(tlm::tlm_initiator_socket<>& socket);
+  const LtTime& time() const { return time_; }
+
+  // Runs `job` on core `core` from its first state in `initCycle`, keeping its result.
+  virtual LtTraversal traverseOn(int core, const CoreJob& job, uint64_t initCycle) = 0;
+
  private:
   void drive();
   RecurrenceJob setUp(size_t job);
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
-  void bindCachedMemory(const RtuConfig& config, WordMemory memory);
 
   const RtuConfig& config_;
   const std::vector<HostRecord>& records_;
+  WordMemory memory_;
   LtTime time_;
-  SvoKind::Setup setup_;
+  CoreJobSetup setup_;  // the kind's (kinds/registry.h): one call per job
   tlm_utils::tlm_quantumkeeper quantum_;
-  // The cores' shared state machine: each runs a job to its end in one call (lt_traversal_core.h).
-  TraversalCore<FixedArith> stateMachine_;
-  std::vector<std::unique_ptr<LtTraversalCore>> cores_;
   std::unique_ptr<LtRom> rom_;
   std::vector<std::unique_ptr<LtL1Cache>> l1_;
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
   CoreJob current_;  // the job set up last
   RecurrenceRun timing_;
-  std::vector<TraversalResult> results_;
   std::vector<uint32_t> blocked_;
+};
+
+template <class Kind>
+class LtTop final : public LtTopBase {
+ public:
+  // `records` must outlive the top.
+  LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
+        const std::vector<HostRecord>& records)
+      : LtTopBase(name, config, memory, records, 4 * Kind::kWordsPerRead),
+        behaviour_(Kind::behaviour(config.coreConfig<Kind>())) {
+    results_.reserve(records.size());
+    prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
+    for (int i = 0; i < config.cores; ++i) {
+      cores_.push_back(std::make_unique<LtCore<Kind>>(("core_" + std::to_string(i)).c_str(),
+                                                      behaviour_, time()));
+      bindCore(cores_.back()->memory);
+    }
+  }
+
+  // After the simulation, taken once: each job's result by job index.
+  std::vector<typename Kind::Result> takeResults() { return std::move(results_); }
+
+ private:
+  LtTraversal traverseOn(int core, const CoreJob& job, uint64_t initCycle) override {
+    // The job manager set the job up for this kind: no check (std::get would test and throw).
+    return cores_[static_cast<size_t>(core)]->traverse(
+        job.idWord, *std::get_if<typename Kind::Job>(&job.job), initCycle, results_.emplace_back());
+  }
+
+  // The cores' shared behaviour: each runs a job to its end in one call (lt_core.h).
+  typename Kind::Behaviour behaviour_;
+  std::vector<std::unique_ptr<LtCore<Kind>>> cores_;
+  std::vector<typename Kind::Result> results_;
 };
 
 }  // namespace rtu
