@@ -26,7 +26,7 @@ inline Camera benchCamera() {
 
 struct BenchFrame {
   SvoBuild build;
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
 };
 
 inline BenchFrame benchFrame(const std::string& scene, int depth = 8) {

@@ -19,7 +19,7 @@ namespace {
 constexpr int kRepetitions = 3;
 constexpr double kTargetRaysPerSecond = 5e6;
 
-double bestSecondsToTrace(GoldenModel& model, const std::vector<TraversalJob>& jobs,
+double bestSecondsToTrace(GoldenModel& model, const std::vector<TValueRecord>& jobs,
                           std::vector<TraversalResult>& results) {
   double best = 1e30;
   for (int i = 0; i < kRepetitions; ++i) {
@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   for (const std::string& name : benchScenes(argc, argv)) {
     const BenchFrame frame = benchFrame(name);
     const SvoBuild& build = frame.build;
-    const std::vector<TraversalJob>& jobs = frame.jobs;
+    const std::vector<TValueRecord>& jobs = frame.jobs;
     GoldenModel model(build.image.memory(), GoldenConfig{});
     std::vector<TraversalResult> results;
     const double seconds = bestSecondsToTrace(model, jobs, results);

@@ -31,11 +31,11 @@ int main(int argc, char** argv) {
   const std::string scene = argc > 1 ? argv[1] : "menger";
   const BenchFrame frame = benchFrame(scene, 6);
   const WordMemory memory = frame.build.image.memory();
-  std::vector<RecurrenceJob> timing;
+  std::vector<JobTiming> timing;
   const double golden = secondsOf([&] {
     GoldenModel model(memory, GoldenConfig{});
-    for (const TraversalJob& job : frame.jobs)
-      timing.push_back(RecurrenceJob{model.trace(job).cost, 6, 0});
+    for (const TValueRecord& job : frame.jobs)
+      timing.push_back(JobTiming{model.trace(job).cost, 6, 0});
   });
   std::printf("%s depth 6, %zu rays; golden traversal %.3f s\n", scene.c_str(), frame.jobs.size(),
               golden);

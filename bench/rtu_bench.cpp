@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
   for (const std::string& name : benchScenes(argc, argv)) {
     const BenchFrame frame = benchFrame(name);
     const SvoBuild& build = frame.build;
-    const std::vector<TraversalJob>& jobs = frame.jobs;
+    const std::vector<TValueRecord>& jobs = frame.jobs;
     for (const Mode& mode : modes) {
       RtuConfig config;
       config.memory = mode.memory;

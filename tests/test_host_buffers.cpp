@@ -29,14 +29,14 @@ TEST_CASE("Job buffers round-trip through files in the driver's layout", "[buffe
   Camera camera;
   camera.width = 8;
   camera.height = 5;
-  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, 3);
+  const std::vector<TValueRecord> jobs = makeFrameJobs(camera, 3);
   const std::string path = tempPath("jobs.bin");
   writeJobBuffer(path, jobs);
   REQUIRE(std::filesystem::file_size(path) == jobs.size() * 32);
   const std::vector<uint32_t> words = readWordFile(path, 32, "jobs");
   REQUIRE(words[8 * 13] == (13u | static_cast<uint32_t>(jobs[13].a) << 28));  // id = x + y * w
   REQUIRE(words[8 * 13 + 7] == 3);
-  const std::vector<TraversalJob> back = readJobBuffer(path);
+  const std::vector<TValueRecord> back = readJobBuffer(path);
   REQUIRE(back.size() == jobs.size());
   for (size_t i = 0; i < jobs.size(); ++i) {
     REQUIRE(back[i].idWord() == jobs[i].idWord());
@@ -72,7 +72,7 @@ TEST_CASE("Impossible records are skipped and named, and the rest of the buffer 
   const std::string path = tempPath("jobs_with_nan.bin");
   writeWordFile(path, words);
   std::vector<SkippedRecord> skipped;
-  const std::vector<TraversalJob> jobs = readJobBufferSkipping(path, skipped);
+  const std::vector<TValueRecord> jobs = readJobBufferSkipping(path, skipped);
   REQUIRE(skipped.size() == 2);
   CHECK(skipped[0].record == 4);
   CHECK_THAT(skipped[0].problem, Catch::Contains("record 4") && Catch::Contains("NaN"));
@@ -155,10 +155,10 @@ TEST_CASE("Buffers larger than a read chunk keep record numbers across chunks", 
   Camera camera;
   camera.width = 250;
   camera.height = 160;  // 40,000 records, 1.28 MB: two chunks of 1 MiB
-  const std::vector<TraversalJob> jobs = makeFrameJobs(camera, 7);
+  const std::vector<TValueRecord> jobs = makeFrameJobs(camera, 7);
   const std::string path = tempPath("large_jobs.bin");
   writeJobBuffer(path, jobs);
-  const std::vector<TraversalJob> back = readJobBuffer(path);
+  const std::vector<TValueRecord> back = readJobBuffer(path);
   REQUIRE(back.size() == jobs.size());
   CHECK(back.back().idWord() == jobs.back().idWord());
   CHECK(back.back().t1Bits == jobs.back().t1Bits);

@@ -30,7 +30,7 @@ TEST_CASE("Job set-up: latencies of t-value and ray records, one header fetch pe
   config.headerFetchCycles = 16;
   JobSetup setup(image.memory(), config);
 
-  const TraversalJob tValues = makeFrameJobs(camera, image.root).front();
+  const TValueRecord tValues = makeFrameJobs(camera, image.root).front();
   const JobSetup::SetUp plain = setup.setUp(tValues);
   CHECK(plain.latency == 6);
   CHECK(plain.headerFetch == 0);

@@ -18,7 +18,7 @@ namespace {
 
 struct Frame {
   SvoBuild build;
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
 };
 
 Frame frame(const std::string& scene, int depth, int width, int height) {

@@ -157,8 +157,8 @@ TEST_CASE("Ray records count components below epsilon times the largest as zero"
   parallel.direction = {0.0f, 0.0f, 1.0f};
   RayRecord oneStep = parallel;
   oneStep.direction[0] = std::numeric_limits<float>::denorm_min();
-  const TraversalJob a = rayRecordToJob(parallel, identity);
-  const TraversalJob b = rayRecordToJob(oneStep, identity);
+  const TValueRecord a = rayRecordToJob(parallel, identity);
+  const TValueRecord b = rayRecordToJob(oneStep, identity);
   CHECK(a.t0Bits == b.t0Bits);
   CHECK(a.t1Bits == b.t1Bits);
   CHECK(bitsToFloat(b.t0Bits[0]) == Approx(-1.6f / 1e-4f));
@@ -200,10 +200,10 @@ TEST_CASE("NaN, infinite and zero directions are errors, never an answer",
   CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {0, 0, 0}}, 0), Catch::Contains("zero"));
   // Job records may carry infinite t-values (a parallel ray from a driver without epsilon):
   // t0 = -inf, t1 = +inf on x saturate, the ray's x is lost, and the result is flagged.
-  TraversalJob job = makeTraversalJob(0, Ray{{0.6, 0.1, -3}, {0, 0, 1}}, 0);
+  TValueRecord job = makeTraversalJob(0, Ray{{0.6, 0.1, -3}, {0, 0, 1}}, 0);
   job.t0Bits[0] = floatBits(-std::numeric_limits<float>::infinity());
   job.t1Bits[0] = floatBits(std::numeric_limits<float>::infinity());
-  const std::vector<TraversalJob> decoded = decodeJobRecords(encodeJobRecords({job}));
+  const std::vector<TValueRecord> decoded = decodeJobRecords(encodeJobRecords({job}));
   const SvoBuild build = column(2, {0.625, 0.125});
   const TraversalResult result =
       GoldenModel(build.image.memory(), GoldenConfig{}).trace(decoded[0]);

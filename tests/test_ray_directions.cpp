@@ -49,7 +49,7 @@ TEST_CASE("Ray set-up mirrors negative components and ORs their sign bits", "[ra
   REQUIRE(p.t0[2] == Approx((-1.0 + 3.0) / dz));
   REQUIRE(p.t1[2] == Approx((1.0 + 3.0) / dz));
 
-  const TraversalJob job = makeTraversalJob(9, ray, 17);
+  const TValueRecord job = makeTraversalJob(9, ray, 17);
   REQUIRE(job.a == 0b101);
   REQUIRE(job.idWord() == (9u | 5u << 28));
   REQUIRE(job.root == 17);

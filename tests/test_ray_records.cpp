@@ -158,7 +158,7 @@ TEST_CASE("Malformed ray records are rejected with the record and the reason", "
   REQUIRE_THROWS_WITH(decodeRayRecords(words), Catch::Contains("not a multiple of 8"));
 
   RayRecord tooLarge;
-  tooLarge.id = TraversalJob::kMaxId + 1;
+  tooLarge.id = TValueRecord::kMaxId + 1;
   REQUIRE_THROWS_AS(encodeRayRecords({RayRecord{}, tooLarge}), std::invalid_argument);
   REQUIRE_THROWS_WITH(encodeRayRecords({RayRecord{}, tooLarge}), Catch::Contains("ray record 1"));
   const std::string path = tempPath("short_rays.bin");
@@ -255,7 +255,7 @@ TEST_CASE("The set-up follows eq. 6.6 step by step", "[rays]") {
   header.translation = {0.0f, -1.0f, 0.0f};
   header.inverseScale = {1.0f, 0.5f, 0.5f};
   header.root = 8;
-  const TraversalJob job = rayRecordToJob(record, header, 1e-4f);
+  const TValueRecord job = rayRecordToJob(record, header, 1e-4f);
   // o' = (0.5, -1, 1), d' = (0, 1, -2): x replaced by 2e-4 (epsilon times the largest), z mirrored.
   REQUIRE(job.id == 42);
   REQUIRE(job.root == 8);
@@ -271,7 +271,7 @@ TEST_CASE("The set-up follows eq. 6.6 step by step", "[rays]") {
   // Doubling d halves every t exactly, the near-zero replacement included.
   RayRecord doubled = record;
   for (float& c : doubled.direction) c *= 2.0f;
-  const TraversalJob half = rayRecordToJob(doubled, header, 1e-4f);
+  const TValueRecord half = rayRecordToJob(doubled, header, 1e-4f);
   for (int k = 0; k < 3; ++k) {
     REQUIRE(bitsToFloat(half.t0Bits[k]) == bitsToFloat(job.t0Bits[k]) / 2.0f);
     REQUIRE(bitsToFloat(half.t1Bits[k]) == bitsToFloat(job.t1Bits[k]) / 2.0f);
@@ -301,7 +301,7 @@ TEST_CASE("Extreme valid records and headers never give NaN or t0 > t1", "[rays]
         record.origin = origin;
         record.direction = direction;
         record.validate();
-        const TraversalJob job = rayRecordToJob(record, header, 1e-4f);
+        const TValueRecord job = rayRecordToJob(record, header, 1e-4f);
         for (int k = 0; k < 3; ++k) {
           const float t0 = bitsToFloat(job.t0Bits[k]);
           const float t1 = bitsToFloat(job.t1Bits[k]);
@@ -329,8 +329,8 @@ TEST_CASE("With an identity header, ray records give the driver's t-values", "[r
     double worstSameDirection = 0.0, worst = 0.0;
     for (const RayRecord& record : makeFrameRayRecords(camera, 0)) {
       if (hasNearZeroComponent(record, epsilon)) continue;  // replaced differently: see below
-      const TraversalJob job = rayRecordToJob(record, ModelHeader{}, epsilon);
-      const TraversalJob driver = makeTraversalJob(record.id, asRay(record), 0);
+      const TValueRecord job = rayRecordToJob(record, ModelHeader{}, epsilon);
+      const TValueRecord driver = makeTraversalJob(record.id, asRay(record), 0);
       REQUIRE(job.a == driver.a);
       for (int k = 0; k < 3; ++k) {
         const float r = 1.0f / std::abs(record.direction[k]);

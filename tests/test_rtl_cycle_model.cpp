@@ -59,8 +59,8 @@ std::vector<uint32_t> treeImage() {
 }
 
 // The centre-line job of test_traversal_costs.cpp: t0 = (-8, -8, 2), t1 = (8, 8, 4).
-TraversalJob centreLineJob(uint32_t id, const Tree& tree) {
-  TraversalJob job;
+TValueRecord centreLineJob(uint32_t id, const Tree& tree) {
+  TValueRecord job;
   job.id = id;
   job.t0Bits = {floatBits(-8.0f), floatBits(-8.0f), floatBits(2.0f)};
   job.t1Bits = {floatBits(8.0f), floatBits(8.0f), floatBits(4.0f)};
@@ -68,8 +68,8 @@ TraversalJob centreLineJob(uint32_t id, const Tree& tree) {
   return job;
 }
 
-std::vector<TraversalJob> centreLineJobs(const std::vector<Tree>& trees) {
-  std::vector<TraversalJob> jobs;
+std::vector<TValueRecord> centreLineJobs(const std::vector<Tree>& trees) {
+  std::vector<TValueRecord> jobs;
   for (const Tree& tree : trees)
     jobs.push_back(centreLineJob(static_cast<uint32_t>(jobs.size()), tree));
   return jobs;
@@ -77,7 +77,7 @@ std::vector<TraversalJob> centreLineJobs(const std::vector<Tree>& trees) {
 
 RtlTopRun runTrees(const std::vector<Tree>& trees, int cores) {
   const std::vector<uint32_t> image = treeImage();
-  const std::vector<TraversalJob> jobs = centreLineJobs(trees);
+  const std::vector<TValueRecord> jobs = centreLineJobs(trees);
   // The premise of every hand count: the golden model agrees with the hand-worked costs.
   GoldenModel golden(WordMemory(image), GoldenConfig{});
   for (size_t i = 0; i < jobs.size(); ++i) REQUIRE(golden.trace(jobs[i]).cost == trees[i].cost);
@@ -265,13 +265,13 @@ TEST_CASE("Ray records: the ray stages, and a model's first ray waits for its he
 }
 
 TEST_CASE("No jobs take no cycles", "[rtl]") {
-  const RtlTopRun run = runRtlTop(WordMemory(), std::vector<TraversalJob>{}, RtlTopConfig{});
+  const RtlTopRun run = runRtlTop(WordMemory(), std::vector<TValueRecord>{}, RtlTopConfig{});
   REQUIRE(run.results.empty());
   REQUIRE(run.totalCycles == 0);
 }
 
 TEST_CASE("Impossible configurations are rejected", "[rtl]") {
-  const std::vector<TraversalJob> jobs = centreLineJobs({kFullRoot});
+  const std::vector<TValueRecord> jobs = centreLineJobs({kFullRoot});
   const WordMemory memory;
   RtlTopConfig config;
   for (int cores : {0, -1, kMaxRtlCores + 1}) {

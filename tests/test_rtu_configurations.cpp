@@ -101,10 +101,10 @@ const std::vector<uint32_t>& treeImage() {
 }
 
 // t0 = (-8, -8, 2), t1 = (8, 8, 4): the centre-line job of test_traversal_costs.cpp.
-std::vector<TraversalJob> treeJobs(const std::vector<Tree>& trees) {
-  std::vector<TraversalJob> jobs;
+std::vector<TValueRecord> treeJobs(const std::vector<Tree>& trees) {
+  std::vector<TValueRecord> jobs;
   for (const Tree& tree : trees) {
-    TraversalJob job;
+    TValueRecord job;
     job.id = static_cast<uint32_t>(jobs.size());
     job.t0Bits = {floatBits(-8.0f), floatBits(-8.0f), floatBits(2.0f)};
     job.t1Bits = {floatBits(8.0f), floatBits(8.0f), floatBits(4.0f)};
@@ -823,7 +823,7 @@ TEST_CASE("32 bytes per cycle and full activity are an unlimited link, cycle for
 // 7. Invalid configurations and stack overflow
 
 TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
-  const std::vector<TraversalJob> jobs = treeJobs({kFullRoot});
+  const std::vector<TValueRecord> jobs = treeJobs({kFullRoot});
   const WordMemory memory(treeImage());
   const auto rejects = [&](const RtuConfig& config) {
     INFO(describe(config));
@@ -934,7 +934,7 @@ TEST_CASE("An impossible cache is an error even with ideal memory", "[rtu]") {
 
 TEST_CASE("No jobs: no results and no cycles", "[rtu]") {
   RtuConfig config;
-  const RtuRun run = simulateRtu(WordMemory(treeImage()), std::vector<TraversalJob>{}, config);
+  const RtuRun run = simulateRtu(WordMemory(treeImage()), std::vector<TValueRecord>{}, config);
   CHECK(run.results.empty());
   CHECK(run.totalCycles == 0);
   CHECK(run.statistics.rays == 0);

@@ -14,9 +14,9 @@
 namespace rtu {
 namespace {
 
-std::vector<RecurrenceJob> jobsOfCost(std::vector<uint64_t> costs) {
-  std::vector<RecurrenceJob> jobs;
-  for (uint64_t cost : costs) jobs.push_back(RecurrenceJob{cost, 6, 0});
+std::vector<JobTiming> jobsOfCost(std::vector<uint64_t> costs) {
+  std::vector<JobTiming> jobs;
+  for (uint64_t cost : costs) jobs.push_back(JobTiming{cost, 6, 0});
   return jobs;
 }
 
@@ -141,7 +141,7 @@ TEST_CASE("The recurrence refuses what it cannot model", "[recurrence]") {
   config = RtuConfig{};
   config.hostOutput.activeProbability = 0.5;
   CHECK(whyNotAnalytic(config));
-  REQUIRE_THROWS_WITH(runAnalytic(SvoImage{}.memory(), std::vector<TraversalJob>{}, config),
+  REQUIRE_THROWS_WITH(runAnalytic(SvoImage{}.memory(), std::vector<TValueRecord>{}, config),
                       Catch::Contains("randomly inactive"));
 }
 

@@ -194,7 +194,7 @@ class TempDir {
 
 struct Scene {
   SvoBuild build;
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
   WordMemory memory() const { return build.image.memory(); }
 };
 

@@ -16,7 +16,7 @@ namespace {
 
 struct CachedFrame {
   SvoImage image;
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
   RtuConfig config;
 };
 
@@ -119,7 +119,7 @@ TEST_CASE("Statistics after a prefix: counters subtracted, window's rays and cyc
 TEST_CASE("Snapshots do not change the run and fall on their cycles", "[sampling]") {
   const CachedFrame frame = cachedFrame(5, 40, 30, 4);
   const SvoImage& image = frame.image;
-  const std::vector<TraversalJob>& jobs = frame.jobs;
+  const std::vector<TValueRecord>& jobs = frame.jobs;
   const RtuConfig& config = frame.config;
   const RtuRun plain = simulateRtu(image.memory(), jobs, config);
   BlockRun plan;
@@ -151,7 +151,7 @@ TEST_CASE("Sampled estimate: the 95 % interval covers the full run for 18 of 20 
           "[sampling][slow]") {
   const CachedFrame frame = cachedFrame(6, 640, 360, 8);
   const SvoImage& image = frame.image;
-  const std::vector<TraversalJob>& jobs = frame.jobs;
+  const std::vector<TValueRecord>& jobs = frame.jobs;
   const RtuConfig& config = frame.config;
   const double full = static_cast<double>(simulateRtu(image.memory(), jobs, config).totalCycles);
   SampleSpec spec;

@@ -176,7 +176,7 @@ struct Agreement {
 // frame's rays graze somewhere, 15 % in noise, whose rays cross many empty cells. So grazing is
 // only a necessary condition: a disagreement counts as explained when, in addition, the walk of a
 // ray within that error reproduces the golden model's answer (reproduced below).
-std::array<double, 3> goldenUncertainty(const TraversalJob& job, int depth) {
+std::array<double, 3> goldenUncertainty(const TValueRecord& job, int depth) {
   std::array<double, 3> u{};
   for (int k = 0; k < 3; ++k) {
     const double largest = std::max(std::abs(static_cast<double>(bitsToFloat(job.t0Bits[k]))),
@@ -215,7 +215,7 @@ Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays)
   Agreement a;
   for (const Ray& ray : rays) {
     const ReferenceResult exact = reference.trace(ray, root);
-    const TraversalJob job = makeTraversalJob(0, ray, root, kDefaultDirectionEpsilon);
+    const TValueRecord job = makeTraversalJob(0, ray, root, kDefaultDirectionEpsilon);
     const TraversalResult fixed = golden.trace(job);
     const uint64_t fixedVoxel = golden.lastHitVoxel();
     VoxelWalkOptions options;

@@ -13,8 +13,8 @@ using namespace rtu;
 
 namespace {
 
-TraversalJob centreLineJob() {
-  TraversalJob job;
+TValueRecord centreLineJob() {
+  TValueRecord job;
   job.id = 42;
   job.t0Bits = {floatBits(-8.0f), floatBits(-8.0f), floatBits(2.0f)};
   job.t1Bits = {floatBits(8.0f), floatBits(8.0f), floatBits(4.0f)};
@@ -25,7 +25,7 @@ uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
   return Descriptor::make(far, pointer, valid, leaf).word;
 }
 
-TraversalResult trace(const std::vector<uint32_t>& image, const TraversalJob& job,
+TraversalResult trace(const std::vector<uint32_t>& image, const TValueRecord& job,
                       int stackFrames = kRtlStackFrames) {
   GoldenConfig config;
   config.stackFrames = stackFrames;
@@ -55,7 +55,7 @@ TEST_CASE("Empty root: INIT, EVAL, NEXT (to 7), EVAL, NEXT (end), miss", "[trave
 }
 
 TEST_CASE("A ray that misses the cube: INIT, EVAL, miss", "[traversal]") {
-  TraversalJob job = centreLineJob();
+  TValueRecord job = centreLineJob();
   job.t0Bits = {floatBits(5.0f), floatBits(0.0f), floatBits(0.0f)};
   job.t1Bits = {floatBits(6.0f), floatBits(1.0f), floatBits(1.0f)};  // max t0 5 >= min t1 1
   const TraversalResult result = trace({descriptor(false, 0, 0xFF, 0xFF)}, job);

@@ -10,10 +10,10 @@ namespace rtu {
 namespace {
 
 // How many of the frame's t-values the two float-to-fixed conversions turn into different numbers.
-size_t countConversionDifferences(const std::vector<TraversalJob>& jobs,
+size_t countConversionDifferences(const std::vector<TValueRecord>& jobs,
                                   const FixedFormat& format) {
   size_t differences = 0;
-  for (const TraversalJob& job : jobs)
+  for (const TValueRecord& job : jobs)
     for (const auto* bits : {&job.t0Bits, &job.t1Bits})
       for (uint32_t value : *bits)
         differences += floatToFixed(value, format, FloatConversion::Rtl) !=
@@ -50,7 +50,7 @@ void addAccuracyCommand(CLI::App& app) {
               << " conversion vs float64 reference\n"
               << report.describe();
 
-    const std::vector<TraversalJob> jobs =
+    const std::vector<TValueRecord> jobs =
         makeFrameJobs(frame.camera, scene.image.root, frame.epsilon);
     GoldenConfig rtl = golden;
     rtl.conversion = FloatConversion::Rtl;

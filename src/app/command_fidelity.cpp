@@ -114,7 +114,7 @@ void addFidelityCommand(CLI::App& app) {
     validate(settings.rtu);
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(settings));
     const Scene scene = loadScene(settings.scene);
-    const std::vector<TraversalJob> jobs =
+    const std::vector<TValueRecord> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
     if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())

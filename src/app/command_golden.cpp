@@ -32,7 +32,7 @@ void addGoldenCommand(CLI::App& app) {
     checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
     std::vector<SkippedRecord> skipped;
-    const std::vector<TraversalJob> jobs =
+    const std::vector<TValueRecord> jobs =
         settings.rays.empty()
             ? readJobBufferSkipping(settings.jobs, skipped)
             : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped),

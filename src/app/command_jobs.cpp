@@ -48,7 +48,7 @@ void addJobsCommand(CLI::App& app) {
     if (!*out && !*rays)
       throw std::invalid_argument("give --out (job records), --rays (ray records) or both");
     if (*out) {
-      const std::vector<TraversalJob> jobs =
+      const std::vector<TValueRecord> jobs =
           makeFrameJobs(camera, options->root, configuration.values().epsilon);
       writeJobBuffer(options->out, jobs);
       reportWritten(jobs.size(), "jobs", options->out);

@@ -54,7 +54,7 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
 }
 
 std::vector<TraversalResult> traceWithGolden(const Scene& scene,
-                                             const std::vector<TraversalJob>& jobs,
+                                             const std::vector<TValueRecord>& jobs,
                                              const Configuration& configuration) {
   GoldenModel model(scene.image.memory(), configuration.values().golden());
   const auto start = std::chrono::steady_clock::now();
@@ -69,7 +69,7 @@ std::vector<TraversalResult> traceWithGolden(const Scene& scene,
 }
 
 std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
-                                                 const std::vector<TraversalJob>& jobs,
+                                                 const std::vector<TValueRecord>& jobs,
                                                  const Configuration& configuration,
                                                  const RenderOptions& options) {
   const RtuConfig config = options.outputs.traced(configuration.values().rtu);
@@ -119,7 +119,7 @@ void addRenderCommand(CLI::App& app) {
     const GoldenConfig golden = settings.golden();
     golden.format.validate();
     const Scene scene = loadScene(settings.scene);
-    const std::vector<TraversalJob> jobs =
+    const std::vector<TValueRecord> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
     std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
               << "model       " << toString(settings.model) << ", " << golden.format.describe()

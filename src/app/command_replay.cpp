@@ -46,7 +46,7 @@ void addReplayCommand(CLI::App& app) {
       const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
       // The job manager's own set-up, run ahead once to check every header and tree up front;
       // only the checks read these jobs (the run reads the records), so they go at the block's end.
-      const std::vector<TraversalJob> jobs =
+      const std::vector<TValueRecord> jobs =
           jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
       records.assign(rays.begin(), rays.end());
       warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);

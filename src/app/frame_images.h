@@ -9,7 +9,7 @@
 #include "inputs/camera.h"
 #include "kinds/svo/fixed_point.h"
 #include "kinds/svo/precision.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 

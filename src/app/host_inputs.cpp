@@ -27,7 +27,7 @@ void checkRootTrees(const SvoImage& image, std::vector<uint32_t> roots, int stac
 
 }  // namespace
 
-std::vector<TraversalJob> jobsFromRayRecords(const SvoImage& image,
+std::vector<TValueRecord> jobsFromRayRecords(const SvoImage& image,
                                              const std::vector<RayRecord>& records,
                                              const std::string& path, float epsilon) {
   try {
@@ -47,17 +47,17 @@ void warnSkippedRecords(const std::string& what, const std::string& path,
         << " more records skipped (" << skipped.size() << " in all)\n";
 }
 
-void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+void checkInputTrees(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
                      bool allowOverflow, const RunConfig& settings) {
   std::vector<uint32_t> roots;
-  for (const TraversalJob& job : jobs) addRoot(roots, job.root);
+  for (const TValueRecord& job : jobs) addRoot(roots, job.root);
   checkRootTrees(image, std::move(roots), stackFrames, allowOverflow, settings);
 }
 
 void checkInputTrees(const SvoImage& image, const std::vector<HostRecord>& jobRecords,
                      int stackFrames, bool allowOverflow, const RunConfig& settings) {
   std::vector<uint32_t> roots;
-  for (const HostRecord& record : jobRecords) addRoot(roots, std::get<TraversalJob>(record).root);
+  for (const HostRecord& record : jobRecords) addRoot(roots, std::get<TValueRecord>(record).root);
   checkRootTrees(image, std::move(roots), stackFrames, allowOverflow, settings);
 }
 

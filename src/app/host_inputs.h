@@ -10,13 +10,13 @@
 #include "inputs/host_buffers.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/svo_image.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
 // The job manager's set-up of world-space ray records against the model headers in the image;
 // errors name the ray buffer `path`.
-std::vector<TraversalJob> jobsFromRayRecords(const SvoImage& image,
+std::vector<TValueRecord> jobsFromRayRecords(const SvoImage& image,
                                              const std::vector<RayRecord>& records,
                                              const std::string& path, float epsilon);
 
@@ -28,7 +28,7 @@ void warnSkippedRecords(const std::string& what, const std::string& path,
 
 // checkStackDepth (stack_check.h) on the trees the jobs start from; a malformed tree is an
 // error naming the SVO image and the job or ray buffer of `settings` that points into it.
-void checkInputTrees(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+void checkInputTrees(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
                      bool allowOverflow, const RunConfig& settings);
 // The same on the records of a job buffer (readJobRecordsSkipping).
 void checkInputTrees(const SvoImage& image, const std::vector<HostRecord>& jobRecords,

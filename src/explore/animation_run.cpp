@@ -117,12 +117,12 @@ void AnimationRenderer::traceRows(Work& work, int firstRow, int rowStep) {
 uint64_t AnimationRenderer::frameCycles(
     const std::vector<std::vector<IssuedJob>>& issuedPerRow) const {
   const JobManagerConfig jobManager;
-  std::vector<RecurrenceJob> jobs;
+  std::vector<JobTiming> jobs;
   std::vector<uint8_t> headerFetched(memory_.instanceCount(), 0);
   for (const std::vector<IssuedJob>& row : issuedPerRow)
     for (const IssuedJob& issued : row) {
-      RecurrenceJob job{issued.cost,
-                        static_cast<uint64_t>(jobManager.stages + jobManager.rayStages), 0};
+      JobTiming job{issued.cost, static_cast<uint64_t>(jobManager.stages + jobManager.rayStages),
+                    0};
       if (!headerFetched[issued.instance]) {
         headerFetched[issued.instance] = 1;
         job.headerFetch = static_cast<uint64_t>(jobManager.headerFetchCycles);

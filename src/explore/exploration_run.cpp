@@ -102,7 +102,7 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
   const RunConfig& settings = configuration.values();
   settings.camera.validate();
   validate(settings.rtu);
-  const std::vector<TraversalJob> jobs =
+  const std::vector<TValueRecord> jobs =
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
   checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
   if (settings.model != ModelKind::CycleAccurate) {
@@ -148,7 +148,7 @@ nlohmann::ordered_json failedRow(const Configuration& configuration, const std::
 }
 
 size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-               int jobs, const std::string& label,
+               int workers, const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
                RowModel model) {
   SceneCache scenes;
@@ -160,7 +160,7 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
   const auto work = [&](size_t row) {
     return runRowSafely(configurations[row], scenes, model).dump();
   };
-  runInWorkers(rows, jobs, work, [&](size_t row, const WorkerOutcome& outcome) {
+  runInWorkers(rows, workers, work, [&](size_t row, const WorkerOutcome& outcome) {
     nlohmann::ordered_json result;
     try {
       result = outcome.answered ? nlohmann::ordered_json::parse(outcome.line)

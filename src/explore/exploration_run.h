@@ -50,12 +50,12 @@ nlohmann::ordered_json runRowSafely(const Configuration& configuration, const Sc
 nlohmann::ordered_json failedRow(const Configuration& configuration, const std::string& error,
                                  const std::string& status = "failed");
 
-// Runs configurations[i] for each i in `rows` in up to `jobs` worker processes, after building
+// Runs configurations[i] for each i in `rows` in up to `workers` worker processes, after building
 // their scenes once, with progress on standard error; `done(i, row)` gets each row as it
 // finishes (a failed configuration gives a failed row, a dead worker a lost one). Returns the
 // rows that are not "ok".
 size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-               int jobs, const std::string& label,
+               int workers, const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
                RowModel model = RowModel::Simulation);
 

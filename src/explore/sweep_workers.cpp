@@ -129,21 +129,21 @@ void Progress::finish() {
   if (printed_ && terminal_) std::cerr << "\n";
 }
 
-void runInWorkers(const std::vector<size_t>& rows, int jobs,
+void runInWorkers(const std::vector<size_t>& rows, int workers,
                   const std::function<std::string(size_t)>& work,
                   const std::function<void(size_t, const WorkerOutcome&)>& done) {
   runInWorkers(
-      rows, jobs, [&work](size_t row, const WorkerSay& say) { say(work(row)); }, {}, done);
+      rows, workers, [&work](size_t row, const WorkerSay& say) { say(work(row)); }, {}, done);
 }
 
-void runInWorkers(const std::vector<size_t>& rows, int jobs,
+void runInWorkers(const std::vector<size_t>& rows, int workers,
                   const std::function<void(size_t, const WorkerSay&)>& work,
                   const std::function<void(size_t, const std::string&)>& heard,
                   const std::function<void(size_t, const WorkerOutcome&)>& done) {
   std::vector<Worker> running;
   size_t next = 0;
   while (next < rows.size() || !running.empty()) {
-    while (next < rows.size() && static_cast<int>(running.size()) < std::max(1, jobs))
+    while (next < rows.size() && static_cast<int>(running.size()) < std::max(1, workers))
       running.push_back(startWorker(rows[next++], work));
     std::vector<pollfd> fds;
     for (const Worker& worker : running) fds.push_back({worker.fd, POLLIN, 0});

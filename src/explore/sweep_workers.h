@@ -62,9 +62,9 @@ struct WorkerOutcome {
   std::string failure;    // why it did not answer
 };
 
-// Runs `work(row)` for each row in up to `jobs` workers at once and calls `done(row, outcome)`
-// in the parent as each finishes. `work` returns one line (it must not throw).
-void runInWorkers(const std::vector<size_t>& rows, int jobs,
+// Runs `work(row)` for each row in up to `workers` worker processes at once and calls
+// `done(row, outcome)` in the parent as each finishes. `work` returns one line (must not throw).
+void runInWorkers(const std::vector<size_t>& rows, int workers,
                   const std::function<std::string(size_t)>& work,
                   const std::function<void(size_t, const WorkerOutcome&)>& done);
 
@@ -72,7 +72,7 @@ void runInWorkers(const std::vector<size_t>& rows, int jobs,
 // and the parent calls `heard(row, line)` for each line ('\n' ended) as it arrives, then
 // `done(row, outcome)` with all the text the worker said. `work` must not throw.
 using WorkerSay = std::function<void(const std::string&)>;
-void runInWorkers(const std::vector<size_t>& rows, int jobs,
+void runInWorkers(const std::vector<size_t>& rows, int workers,
                   const std::function<void(size_t, const WorkerSay&)>& work,
                   const std::function<void(size_t, const std::string&)>& heard,
                   const std::function<void(size_t, const WorkerOutcome&)>& done);

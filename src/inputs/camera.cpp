@@ -12,7 +12,7 @@ void Camera::validate() const {
   if (width < 1 || height < 1)
     throw std::invalid_argument("image size must be at least 1x1, got " + std::to_string(width) +
                                 "x" + std::to_string(height));
-  if (pixelCount() > TraversalJob::kMaxId + 1)
+  if (pixelCount() > TValueRecord::kMaxId + 1)
     throw std::invalid_argument("image has " + std::to_string(pixelCount()) +
                                 " pixels; job ids have 28 bits, so at most 268435456");
   if (!(verticalFovDegrees > 0.0 && verticalFovDegrees < 180.0))
@@ -44,9 +44,9 @@ std::vector<Ray> frameRays(const Camera& camera) {
   return rays;
 }
 
-std::vector<TraversalJob> makeFrameJobs(const Camera& camera, uint32_t root, double epsilon) {
+std::vector<TValueRecord> makeFrameJobs(const Camera& camera, uint32_t root, double epsilon) {
   const std::vector<Ray> rays = frameRays(camera);
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
   jobs.reserve(rays.size());
   for (size_t id = 0; id < rays.size(); ++id)
     jobs.push_back(makeTraversalJob(static_cast<uint32_t>(id), rays[id], root, epsilon));

@@ -11,7 +11,7 @@
 
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
@@ -34,7 +34,7 @@ struct Camera {
 
 // Row by row from the top: index = x + y * width.
 std::vector<Ray> frameRays(const Camera& camera);
-std::vector<TraversalJob> makeFrameJobs(const Camera& camera, uint32_t root,
+std::vector<TValueRecord> makeFrameJobs(const Camera& camera, uint32_t root,
                                         double epsilon = kDefaultDirectionEpsilon);
 // The world-space ray records of a frame for the model whose header is at `modelAddress`
 // (directions normalised, so t is a world distance).

@@ -50,16 +50,16 @@ int64_t getWord64(const uint32_t* words) {
 // One codec per record kind: decode(words of record i, i) checks and returns the record, encode
 // writes its 8 words. The vector and file functions below share them.
 struct JobCodec {
-  using Record = TraversalJob;
+  using Record = TValueRecord;
   static constexpr size_t kWords = kRecordWords;
   static constexpr const char* kWhat = "job buffer";
 
-  static TraversalJob decode(const uint32_t* record, size_t i) {
+  static TValueRecord decode(const uint32_t* record, size_t i) {
     static const char* axes = "xyz";
     if (record[0] >> 31)
       throw recordError(i, "bit 31 of the job word is set (ids have 28 bits, a has 3)");
-    TraversalJob job;
-    job.id = record[0] & TraversalJob::kMaxId;
+    TValueRecord job;
+    job.id = record[0] & TValueRecord::kMaxId;
     job.a = static_cast<uint8_t>(record[0] >> 28 & 7);
     for (int k = 0; k < 3; ++k) {
       job.t0Bits[k] = record[1 + k];
@@ -76,8 +76,8 @@ struct JobCodec {
     return job;
   }
 
-  static void encode(const TraversalJob& job, size_t, uint32_t* words) {
-    if (job.id > TraversalJob::kMaxId || job.a > 7)
+  static void encode(const TValueRecord& job, size_t, uint32_t* words) {
+    if (job.id > TValueRecord::kMaxId || job.a > 7)
       throw std::invalid_argument("job id " + std::to_string(job.id) +
                                   " or a does not fit the job word");
     words[0] = job.idWord();
@@ -176,7 +176,7 @@ struct RayCodec {
     try {
       record.validate();
     } catch (const std::runtime_error& error) {
-      if (record.id > TraversalJob::kMaxId) throw recordError(i, error.what());
+      if (record.id > TValueRecord::kMaxId) throw recordError(i, error.what());
       throw valueError(i, error.what());
     }
     return record;
@@ -279,10 +279,10 @@ size_t resultRecordWords(const FixedFormat& format) {
   return resultRecordBytes(format.totalBits) / 4;
 }
 
-std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words) {
+std::vector<TValueRecord> decodeJobRecords(const std::vector<uint32_t>& words) {
   return decodeAll<JobCodec>(words);
 }
-std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs) {
+std::vector<uint32_t> encodeJobRecords(const std::vector<TValueRecord>& jobs) {
   return encodeAll<JobCodec>(jobs);
 }
 std::vector<TraversalResult> decodeResultRecords(const std::vector<uint32_t>& words,
@@ -302,8 +302,8 @@ std::vector<uint32_t> encodeRayRecords(const std::vector<RayRecord>& records) {
   return encodeAll<RayCodec>(records);
 }
 
-std::vector<TraversalJob> readJobBuffer(const std::string& path) { return readAll<JobCodec>(path); }
-std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
+std::vector<TValueRecord> readJobBuffer(const std::string& path) { return readAll<JobCodec>(path); }
+std::vector<TValueRecord> readJobBufferSkipping(const std::string& path,
                                                 std::vector<SkippedRecord>& skipped) {
   return readAll<JobCodec>(path, &skipped);
 }
@@ -311,7 +311,7 @@ std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
                                                std::vector<SkippedRecord>& skipped) {
   return readAll<JobCodec, HostRecord>(path, &skipped);
 }
-void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs) {
+void writeJobBuffer(const std::string& path, const std::vector<TValueRecord>& jobs) {
   writeAll<JobCodec>(path, jobs);
 }
 std::vector<TraversalResult> readResultBuffer(const std::string& path, size_t recordWords) {

@@ -18,7 +18,7 @@
 #include "kinds/svo/fixed_point.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 #include "rtu/host_link.h"
 
 namespace rtu {
@@ -33,8 +33,8 @@ constexpr uint32_t kResultFlagBelowResolution = 4;
 // Throws std::runtime_error naming the record and field for impossible contents: bit 31 of the
 // job word set, a NaN t-value, or t0 > t1 on an axis (after mirroring every direction is
 // positive, so t0 <= t1).
-std::vector<TraversalJob> decodeJobRecords(const std::vector<uint32_t>& words);
-std::vector<uint32_t> encodeJobRecords(const std::vector<TraversalJob>& jobs);
+std::vector<TValueRecord> decodeJobRecords(const std::vector<uint32_t>& words);
+std::vector<uint32_t> encodeJobRecords(const std::vector<TValueRecord>& jobs);
 
 // Result records of `recordWords` words: kRecordWords, or kWideResultWords for formats over 32
 // bits (resultRecordWords). Decoding throws std::runtime_error for hit words other than 0/1,
@@ -56,19 +56,19 @@ struct SkippedRecord {
   std::string problem;  // "record 3: t-value on axis y is NaN"
 };
 
-std::vector<TraversalJob> readJobBuffer(const std::string& path);
+std::vector<TValueRecord> readJobBuffer(const std::string& path);
 // As readJobBuffer and readRayBuffer, but a record with impossible values (NaN or infinite fields,
 // components beyond 2^64, a zero direction, t0 > t1) is left out and noted in `skipped`, so the
 // rest can still be traced. Id bits (a file of another kind) and a file that is not whole records
 // still throw.
-std::vector<TraversalJob> readJobBufferSkipping(const std::string& path,
+std::vector<TValueRecord> readJobBufferSkipping(const std::string& path,
                                                 std::vector<SkippedRecord>& skipped);
 // readJobBufferSkipping straight into the records a run reads, without a job vector in between.
 std::vector<HostRecord> readJobRecordsSkipping(const std::string& path,
                                                std::vector<SkippedRecord>& skipped);
 std::vector<RayRecord> readRayBufferSkipping(const std::string& path,
                                              std::vector<SkippedRecord>& skipped);
-void writeJobBuffer(const std::string& path, const std::vector<TraversalJob>& jobs);
+void writeJobBuffer(const std::string& path, const std::vector<TValueRecord>& jobs);
 std::vector<TraversalResult> readResultBuffer(const std::string& path,
                                               size_t recordWords = kRecordWords);
 // Before a run: the result record words for `format` (8 up to 32 bits, 12 above), so every t and

@@ -315,7 +315,7 @@ RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& rec
   return run;
 }
 
-RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                     const RtlTopConfig& config) {
   return runRtlTop(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config);
 }

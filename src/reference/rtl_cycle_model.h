@@ -23,7 +23,7 @@
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/svo_kind.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
@@ -60,7 +60,7 @@ struct RtlTopRun {
 
 RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config);
-RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                     const RtlTopConfig& config);
 
 // What a host offers the job manager in one cycle; `tag` names the job to the host (no RTL

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 #include "reference/rtl_cycle_model.h"
 #include "rtu/word_memory.h"
 #include "scene/scene_manager.h"

@@ -150,7 +150,7 @@ class Recurrence {
 
   RecurrenceRun run() {
     for (size_t i = 0; i < jobs_; ++i) {
-      const RecurrenceJob job = jobAt_(i);
+      const JobTiming job = jobAt_(i);
       enterPipeline(i, job);
       dispatch(i, job.cost);
     }
@@ -161,7 +161,7 @@ class Recurrence {
 
  private:
   // c_i and A_i.
-  void enterPipeline(size_t i, const RecurrenceJob& job) {
+  void enterPipeline(size_t i, const JobTiming& job) {
     uint64_t accept = i == 0 ? 0 : inputLink_.nextAllowed(run_.acceptCycles[i - 1]);
     accept = std::max(accept, fetchUntil_);
     while (inPipeline_ < i && run_.dispatchCycles[inPipeline_] <= accept) ++inPipeline_;
@@ -265,7 +265,7 @@ RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const Recurrenc
   return Recurrence(jobs, jobAt, config, timer).run();
 }
 
-RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+RecurrenceRun runRecurrence(const std::vector<JobTiming>& jobs, const RecurrenceConfig& config,
                             const TraversalTimer& timer) {
   return runRecurrence(
       jobs.size(), [&jobs](size_t i) { return jobs[i]; }, config, timer);

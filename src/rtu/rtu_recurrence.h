@@ -32,7 +32,7 @@
 
 namespace rtu {
 
-struct RecurrenceJob {
+struct JobTiming {
   uint64_t cost = 0;            // traversal cycles W_i, INIT up to the last state before OUT
   uint64_t pipelineCycles = 6;  // job manager latency (L_i): stages, plus ray set-up and fetch
   uint64_t headerFetch = 0;     // cycles after its acceptance in which no record is accepted
@@ -61,7 +61,7 @@ struct RecurrenceRun {
 
 // The jobs, asked for in order, each once: a caller can set a job up when the recurrence reaches
 // it rather than hold them all.
-using JobSource = std::function<RecurrenceJob(size_t job)>;
+using JobSource = std::function<JobTiming(size_t job)>;
 
 // Times a traversal when its job is dispatched: W_i of job `job` on `core`, INIT in `initCycle`
 // (D_i + 1). The loosely-timed model's memory makes W_i depend on the core and the cycle. Jobs
@@ -72,7 +72,7 @@ using TraversalTimer = std::function<uint64_t(size_t job, int core, uint64_t ini
 // With `timer`, W_i comes from it and the jobs' `cost` is not read.
 RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
                             const TraversalTimer& timer = {});
-RecurrenceRun runRecurrence(const std::vector<RecurrenceJob>& jobs, const RecurrenceConfig& config,
+RecurrenceRun runRecurrence(const std::vector<JobTiming>& jobs, const RecurrenceConfig& config,
                             const TraversalTimer& timer = {});
 
 }  // namespace rtu

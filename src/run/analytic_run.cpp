@@ -17,7 +17,7 @@ namespace {
 // Each record's result and its timing inputs.
 struct Traced {
   std::vector<TraversalResult> results;
-  std::vector<RecurrenceJob> timing;
+  std::vector<JobTiming> timing;
 };
 
 // Traces records on a core of `Kind`: the kind's job set-up with the job manager's latencies,
@@ -32,7 +32,7 @@ class RecordTracer {
     const JobSetUp<typename Kind::Job> set = setup_.setUp(record);
     TraversalResult& result = traced.results.emplace_back();
     shell_.run(set.idWord, set.job, result);
-    traced.timing.push_back(RecurrenceJob{result.cost, set.latency, set.headerFetch});
+    traced.timing.push_back(JobTiming{result.cost, set.latency, set.headerFetch});
   }
 
   Traced traced;
@@ -88,7 +88,7 @@ RtuRun analyticRun(const WordMemory& memory, const std::vector<Record>& records,
 
 }  // namespace
 
-RtuRun runAnalytic(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config) {
   return analyticRun(memory, jobs, config);
 }

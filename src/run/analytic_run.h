@@ -19,7 +19,7 @@ std::optional<std::string> whyNotAnalytic(const RtuConfig& config);
 // Throws std::invalid_argument when whyNotAnalytic says why, or for an impossible configuration.
 RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config);
-RtuRun runAnalytic(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config);
 
 }  // namespace rtu

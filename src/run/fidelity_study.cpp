@@ -41,7 +41,7 @@ std::pair<double, double> relativeErrors(const std::vector<double>& mode,
 
 class Study {
  public:
-  Study(const WordMemory& memory, const std::vector<TraversalJob>& jobs, const RtuConfig& config)
+  Study(const WordMemory& memory, const std::vector<TValueRecord>& jobs, const RtuConfig& config)
       : memory_(memory), jobs_(jobs), config_(config) {
     const auto start = std::chrono::steady_clock::now();
     golden_ = GoldenModel(memory, config.golden()).traceAll(jobs);
@@ -131,7 +131,7 @@ class Study {
   }
 
   const WordMemory& memory_;
-  const std::vector<TraversalJob>& jobs_;
+  const std::vector<TValueRecord>& jobs_;
   const RtuConfig& config_;
   std::vector<TraversalResult> golden_;
   double goldenSeconds_ = 0, referenceSeconds_ = 0;
@@ -142,7 +142,7 @@ class Study {
 }  // namespace
 
 std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
-                                          const std::vector<TraversalJob>& jobs,
+                                          const std::vector<TValueRecord>& jobs,
                                           const RtuConfig& config,
                                           const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample) {

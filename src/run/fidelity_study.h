@@ -34,7 +34,7 @@ struct ModeFidelity {
 // The modes in order: systemc, recurrence (where it applies), lt per quantum, sampled per
 // fraction (with `sample` for seed and block sizes), golden.
 std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
-                                          const std::vector<TraversalJob>& jobs,
+                                          const std::vector<TValueRecord>& jobs,
                                           const RtuConfig& config,
                                           const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample);

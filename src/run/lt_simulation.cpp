@@ -57,7 +57,7 @@ RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& 
   return run;
 }
 
-RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                        const RtuConfig& config, const RunProgress& progress) {
   const std::vector<HostRecord> records(jobs.begin(), jobs.end());
   return runLooselyTimed(memory, records, config, progress);

@@ -19,7 +19,7 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config);
 // impossible; std::runtime_error for an invalid model header.
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunProgress& progress = {});
-RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                        const RtuConfig& config, const RunProgress& progress = {});
 
 }  // namespace rtu

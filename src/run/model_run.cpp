@@ -46,7 +46,7 @@ RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<Hos
   return simulateRtu(memory, records, config, progress);
 }
 
-RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                 const RtuConfig& config, const RunProgress& progress) {
   return runModel(model, memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config,
                   progress);

@@ -23,7 +23,7 @@ const char* toString(ModelKind model);
 // Throws std::invalid_argument when the model cannot run `config` (saying why).
 RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<HostRecord>& records,
                 const RtuConfig& config, const RunProgress& progress = {});
-RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                 const RtuConfig& config, const RunProgress& progress = {});
 
 // The golden model's timing: golden costs in the recurrence, memory as ideal.

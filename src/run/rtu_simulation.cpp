@@ -139,7 +139,7 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
 
 }  // namespace
 
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const RunProgress& progress) {
   return simulateRtu(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, progress);
 }
@@ -150,7 +150,7 @@ RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& reco
   return simulate(memory, records, config, progress, std::move(listeners), BlockRun{});
 }
 
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const BlockRun& block) {
   return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, {}, block);
 }

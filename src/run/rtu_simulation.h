@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 #include "rtu/word_memory.h"
 #include "run/rtu_statistics.h"
 #include "sim/ca/rtu_payloads.h"
@@ -60,10 +60,10 @@ using RunProgress = std::function<void(size_t results, size_t total)>;
 RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const RunProgress& progress = {},
                    std::vector<TraceListener*> listeners = {});
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
 // A sampled block's run.
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const BlockRun& block);
 
 // A scene: each of `rays` (world space) is traced against `scene`'s instances by the scene

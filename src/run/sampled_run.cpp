@@ -57,7 +57,7 @@ struct Block {
   RtuStatistics counted;
 };
 
-std::vector<TraversalJob> slice(const std::vector<TraversalJob>& jobs, uint64_t first,
+std::vector<TValueRecord> slice(const std::vector<TValueRecord>& jobs, uint64_t first,
                                 uint64_t end) {
   return {jobs.begin() + static_cast<ptrdiff_t>(first), jobs.begin() + static_cast<ptrdiff_t>(end)};
 }
@@ -75,7 +75,7 @@ Block between(const RunSnapshot& from, uint64_t toCycle, uint64_t toResults,
 
 // Rays [first, first + count) after up to `warmup` rays before them and followed by `cooldown`
 // rays that keep the cores busy to its end; a block ending the frame runs to the last result.
-Block simulateBlock(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+Block simulateBlock(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                     const RtuConfig& config, uint64_t first, uint64_t count, uint64_t warmup,
                     uint64_t cooldown, BlockRun plan) {
   const uint64_t warmFirst = first - std::min(warmup, first);
@@ -226,7 +226,7 @@ SamplePlan planSample(uint64_t rays, int cores, const SampleSpec& spec) {
   return plan;
 }
 
-SampledRun runSampled(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                       const RtuConfig& config, const SampleSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   SampledRun run;

@@ -84,7 +84,7 @@ struct SampledRun {
 // 95 % intervals; "simulation.model" is "sampled".
 nlohmann::ordered_json sampledStatisticsJson(const SampledRun& run);
 
-SampledRun runSampled(const WordMemory& memory, const std::vector<TraversalJob>& jobs,
+SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                       const RtuConfig& config, const SampleSpec& spec);
 
 // The 97.5 % quantile of Student's t with `degrees` degrees of freedom (Cornish-Fisher expansion:

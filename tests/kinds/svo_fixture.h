@@ -22,7 +22,7 @@ struct KindFixture<SvoKind> {
   struct Frame {
     std::string scene;
     SvoBuild build;
-    std::vector<TraversalJob> jobs;  // job i's id is i
+    std::vector<TValueRecord> jobs;  // job i's id is i
     WordMemory memory() const { return build.image.memory(); }
   };
 
@@ -60,7 +60,7 @@ struct KindFixture<SvoKind> {
   }
 
   static std::vector<TraversalResult> golden(const WordMemory& memory, const RtuConfig& config,
-                                             const std::vector<TraversalJob>& jobs) {
+                                             const std::vector<TValueRecord>& jobs) {
     return GoldenModel(memory, config.golden()).traceAll(jobs);
   }
 

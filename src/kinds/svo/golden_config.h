@@ -6,8 +6,8 @@
 #include <cstdint>
 
 #include "kinds/svo/fixed_point.h"
+#include "kinds/svo/thesis_records.h"
 #include "kinds/svo/traversal_core.h"
-#include "kinds/svo/traversal_job.h"
 
 namespace rtu {
 

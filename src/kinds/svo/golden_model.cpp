@@ -7,16 +7,16 @@ GoldenModel::GoldenModel(WordMemory memory, GoldenConfig config)
   config_.format.validate();
 }
 
-TraversalResult GoldenModel::trace(const TraversalJob& job) {
+TraversalResult GoldenModel::trace(const TValueRecord& job) {
   TraversalResult result;
   shell_.run(job.idWord(), SvoKind::setUp(job, config_.format, config_.conversion), result);
   return result;
 }
 
-std::vector<TraversalResult> GoldenModel::traceAll(const std::vector<TraversalJob>& jobs) {
+std::vector<TraversalResult> GoldenModel::traceAll(const std::vector<TValueRecord>& jobs) {
   std::vector<TraversalResult> results;
   results.reserve(jobs.size());
-  for (const TraversalJob& job : jobs) results.push_back(trace(job));
+  for (const TValueRecord& job : jobs) results.push_back(trace(job));
   return results;
 }
 

@@ -8,7 +8,7 @@
 #include "kinds/svo/golden_config.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/svo_kind.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 #include "rtu/golden_shell.h"
 
 namespace rtu {
@@ -17,8 +17,8 @@ class GoldenModel {
  public:
   GoldenModel(WordMemory memory, GoldenConfig config);
 
-  TraversalResult trace(const TraversalJob& job);
-  std::vector<TraversalResult> traceAll(const std::vector<TraversalJob>& jobs);
+  TraversalResult trace(const TValueRecord& job);
+  std::vector<TraversalResult> traceAll(const std::vector<TValueRecord>& jobs);
   // World-space rays of animated models: each job is set up from its model's header in memory
   // (rayRecordsToJobs), then traced. Throws std::runtime_error for an invalid record or header.
   std::vector<TraversalResult> traceRays(const std::vector<RayRecord>& records, float epsilon);

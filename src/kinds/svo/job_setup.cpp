@@ -7,10 +7,10 @@ JobSetup::JobSetup(WordMemory memory, const JobManagerConfig& config)
 
 JobSetup::SetUp JobSetup::setUp(const HostRecord& record) {
   if (const auto* ray = std::get_if<RayRecord>(&record)) return rayJob(*ray);
-  return tValueJob(std::get<TraversalJob>(record));
+  return tValueJob(std::get<TValueRecord>(record));
 }
 
-JobSetup::SetUp JobSetup::tValueJob(const TraversalJob& job) const {
+JobSetup::SetUp JobSetup::tValueJob(const TValueRecord& job) const {
   return {job, static_cast<uint64_t>(config_.stages), 0};
 }
 

@@ -16,12 +16,12 @@
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/svo_memory.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
 // A host input record: the thesis driver's t-value record, or a world-space ray against a model.
-using HostRecord = std::variant<TraversalJob, RayRecord>;
+using HostRecord = std::variant<TValueRecord, RayRecord>;
 
 struct JobManagerConfig {
   FixedFormat format;
@@ -37,7 +37,7 @@ class JobSetup {
   JobSetup(WordMemory memory, const JobManagerConfig& config);
 
   struct SetUp {
-    TraversalJob job;
+    TValueRecord job;
     uint64_t latency = 0;      // cycles from acceptance to the pipeline's output, stalls aside
     uint64_t headerFetch = 0;  // cycles after acceptance in which no record is accepted
   };
@@ -46,7 +46,7 @@ class JobSetup {
   const JobManagerConfig& config() const { return config_; }
 
  private:
-  SetUp tValueJob(const TraversalJob& job) const;
+  SetUp tValueJob(const TValueRecord& job) const;
   SetUp rayJob(const RayRecord& ray);
 
   WordMemory memory_;

@@ -73,10 +73,10 @@ float bitsToFloat(uint32_t bits) {
   return value;
 }
 
-TraversalJob makeTraversalJob(uint32_t id, const Ray& ray, uint32_t root, double epsilon) {
+TValueRecord makeTraversalJob(uint32_t id, const Ray& ray, uint32_t root, double epsilon) {
   const RayParameters<float> parameters =
       computeRayParameters<float>(ray, static_cast<float>(epsilon));
-  TraversalJob job;
+  TValueRecord job;
   job.id = id;
   job.a = parameters.a;
   job.root = root;

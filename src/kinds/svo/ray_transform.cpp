@@ -63,7 +63,7 @@ float zeroThreshold(const Vec3f& direction, float epsilon) {
 }  // namespace
 
 void RayRecord::validate() const {
-  if (id > TraversalJob::kMaxId) {
+  if (id > TValueRecord::kMaxId) {
     char word[16];
     std::snprintf(word, sizeof word, "0x%08x", id);
     throw std::runtime_error(std::string("job word ") + word +
@@ -87,13 +87,13 @@ RayRecord makeRayRecord(uint32_t id, const Ray& ray, uint32_t modelAddress) {
   return record;
 }
 
-TraversalJob rayRecordToJob(const RayRecord& record, const ModelHeader& header, float epsilon) {
+TValueRecord rayRecordToJob(const RayRecord& record, const ModelHeader& header, float epsilon) {
   if (!(epsilon > 0.0f && epsilon < 1.0f))
     throw std::invalid_argument("direction epsilon must lie in (0, 1)");
   Vec3f origin = modelOrigin(record.origin, header);
   Vec3f direction = modelDirection(record.direction, header);
   const float threshold = zeroThreshold(direction, epsilon);
-  TraversalJob job;
+  TValueRecord job;
   job.id = record.id;
   job.root = header.root;
   for (int k = 0; k < 3; ++k) {
@@ -112,10 +112,10 @@ TraversalJob rayRecordToJob(const RayRecord& record, const ModelHeader& header, 
   return job;
 }
 
-std::vector<TraversalJob> rayRecordsToJobs(const WordMemory& memory,
+std::vector<TValueRecord> rayRecordsToJobs(const WordMemory& memory,
                                            const std::vector<RayRecord>& records, float epsilon) {
   std::map<uint32_t, ModelHeader> headers;
-  std::vector<TraversalJob> jobs;
+  std::vector<TValueRecord> jobs;
   jobs.reserve(records.size());
   for (size_t i = 0; i < records.size(); ++i) {
     const RayRecord& record = records[i];

@@ -35,7 +35,7 @@
 #include "kinds/svo/model_header.h"
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/svo_memory.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
@@ -56,13 +56,13 @@ RayRecord makeRayRecord(uint32_t id, const Ray& ray, uint32_t modelAddress);
 
 // Steps 1 to 6 above. `record` and `header` must be valid (the hardware checks neither); throws
 // std::invalid_argument unless 0 < epsilon < 1.
-TraversalJob rayRecordToJob(const RayRecord& record, const ModelHeader& header,
+TValueRecord rayRecordToJob(const RayRecord& record, const ModelHeader& header,
                             float epsilon = static_cast<float>(kDefaultDirectionEpsilon));
 
 // Reads each model header the records name from `memory` (once per address, as the job manager
 // caches them for a frame) and sets up every job. Throws std::runtime_error naming the record for
 // an invalid record or header.
-std::vector<TraversalJob> rayRecordsToJobs(const WordMemory& memory,
+std::vector<TValueRecord> rayRecordsToJobs(const WordMemory& memory,
                                            const std::vector<RayRecord>& records, float epsilon);
 
 }  // namespace rtu

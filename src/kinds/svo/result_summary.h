@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 

@@ -10,10 +10,10 @@
 
 namespace rtu {
 
-void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+void checkStackDepth(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
                      bool allowOverflow) {
   std::vector<uint32_t> roots;
-  for (const TraversalJob& job : jobs) addRoot(roots, job.root);
+  for (const TValueRecord& job : jobs) addRoot(roots, job.root);
   checkRootDepths(image, std::move(roots), stackFrames, allowOverflow);
 }
 

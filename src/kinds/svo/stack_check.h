@@ -6,14 +6,14 @@
 
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/svo_image.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
 // Throws std::invalid_argument when a tree the jobs use is deeper than `stackFrames` can hold,
 // unless overflow is allowed (then it warns on standard error): the RTL's stack has no check, so
 // such rays would corrupt it; rtusim ends them as flagged misses.
-void checkStackDepth(const SvoImage& image, const std::vector<TraversalJob>& jobs, int stackFrames,
+void checkStackDepth(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
                      bool allowOverflow);
 // The same on the roots the jobs start from, repeats allowed.
 void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,

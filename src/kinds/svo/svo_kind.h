@@ -11,8 +11,8 @@
 #include "kinds/svo/state_vocabulary.h"
 #include "kinds/svo/svo_counters.h"
 #include "kinds/svo/svo_memory.h"
+#include "kinds/svo/thesis_records.h"
 #include "kinds/svo/traversal_core.h"
-#include "kinds/svo/traversal_job.h"
 #include "rtu/core_kind.h"
 
 namespace rtu {
@@ -32,7 +32,7 @@ struct SvoKind {
 
   // The kind's own record of a job, which a shell that sets its jobs up itself takes (the cache
   // warmer): the thesis driver's t-value record.
-  using Record = TraversalJob;
+  using Record = TValueRecord;
   using Job = SvoJob;
   using Result = TraversalResult;
   using Behaviour = TraversalCore<FixedArith>;
@@ -77,7 +77,7 @@ struct SvoKind {
     return Behaviour(FixedArith{config.format}, config.stackFrames);
   }
   // The job manager's set-up of a t-value record (appendix C.2.1: float32 to fixed point).
-  static Job setUp(const TraversalJob& record, const FixedFormat& format,
+  static Job setUp(const TValueRecord& record, const FixedFormat& format,
                    FloatConversion conversion) {
     return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
                convertToFixed(record.t1Bits, format, conversion), record.root};

@@ -17,7 +17,7 @@ HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock, De
   validate(link, "host input");
 }
 
-void HostSource::bind(TransferChannel<HostJob>& out) { out_ = &out; }
+void HostSource::bind(TransferChannel<HostPayload>& out) { out_ = &out; }
 
 void HostSource::end_of_elaboration() {
   // Runs at the start of simulation and whenever simulated time catches up with the next offer.
@@ -36,7 +36,7 @@ void HostSource::decide() {
     wake_.at(cycle - lookAhead_ / 2);  // then it offers records for about half the look-ahead
     return;
   }
-  out_->offer(HostJob{PayloadIds::plain(next_), records_[next_]}, cycle);
+  out_->offer(HostPayload{PayloadIds::plain(next_), records_[next_]}, cycle);
 }
 
 // The link's next slot; a randomly inactive link offers in the first active cycle from there

@@ -26,7 +26,7 @@ class HostSource final : public sc_core::sc_module, public Agent {
   HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
              const std::vector<HostRecord>& records, HostLinkConfig link, uint64_t lookAhead);
 
-  void bind(TransferChannel<HostJob>& out);
+  void bind(TransferChannel<HostPayload>& out);
   void decide() override;
 
  private:
@@ -34,7 +34,7 @@ class HostSource final : public sc_core::sc_module, public Agent {
   uint64_t offerCycle();
 
   const CycleClock& clock_;
-  TransferChannel<HostJob>* out_ = nullptr;
+  TransferChannel<HostPayload>* out_ = nullptr;
   const std::vector<HostRecord>& records_;  // the caller's: they outlive the run
   HostLinkPacer pacer_;
   uint64_t lookAhead_;

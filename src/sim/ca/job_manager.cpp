@@ -20,7 +20,7 @@ JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerCo
   config_.format.validate();
 }
 
-void JobManager::bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out) {
+void JobManager::bind(TransferChannel<HostPayload>& in, TransferChannel<CoreJob>& out) {
   in_ = &in;
   out_ = &out;
   traceReadyAt(0);
@@ -54,7 +54,7 @@ void JobManager::takeDispatch() {
 void JobManager::acceptOffered() {
   const uint64_t cycle = acceptanceCycle(in_->offerCycle());
   if (cycle == kNeverCycle) return;  // the job at the output is due first: wait for its dispatch
-  const HostJob& host = in_->payload();  // take() leaves it in place until the next offer
+  const HostPayload& host = in_->payload();  // take() leaves it in place until the next offer
   in_->take(cycle);
   accept(host, cycle);
 }
@@ -70,7 +70,7 @@ uint64_t JobManager::acceptanceCycle(uint64_t offered) const {
   return cycle;
 }
 
-void JobManager::accept(const HostJob& host, uint64_t cycle) {
+void JobManager::accept(const HostPayload& host, uint64_t cycle) {
   accepted_ = true;
   lastAccepted_ = cycle;
   while (!stalls_.empty() && stalls_.front().to <= cycle) stalls_.pop_front();

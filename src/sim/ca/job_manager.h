@@ -42,7 +42,7 @@ class JobManager final : public Agent {
   JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
              CoreJobSetup setup);
 
-  void bind(TransferChannel<HostJob>& in, TransferChannel<CoreJob>& out);
+  void bind(TransferChannel<HostPayload>& in, TransferChannel<CoreJob>& out);
   void decide() override;
 
   const JobManagerStatistics& statistics() const { return statistics_; }
@@ -63,7 +63,7 @@ class JobManager final : public Agent {
   void takeDispatch();
   void acceptOffered();
   uint64_t acceptanceCycle(uint64_t offered) const;
-  void accept(const HostJob& host, uint64_t cycle);
+  void accept(const HostPayload& host, uint64_t cycle);
   // The trace of in_ready, recomputed at the cycles where it may change.
   bool readyIn(uint64_t cycle) const;
   void traceReadyAt(uint64_t cycle);
@@ -72,7 +72,7 @@ class JobManager final : public Agent {
   const CycleClock& clock_;
   JobManagerConfig config_;
   CoreJobSetup setup_;  // what it computes (the kind's Setup); this module adds when
-  TransferChannel<HostJob>* in_ = nullptr;
+  TransferChannel<HostPayload>* in_ = nullptr;
   TransferChannel<CoreJob>* out_ = nullptr;
   std::deque<InFlight> pipeline_;
   uint64_t stallShift_ = 0;  // the stalls so far (modulo 2^64: only outputOf() is a cycle)

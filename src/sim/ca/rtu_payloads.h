@@ -10,7 +10,7 @@
 #include "kinds/registry.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/traversal_job.h"
+#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
@@ -22,7 +22,7 @@ struct PayloadIds {
   static PayloadIds plain(uint64_t index) { return {index, index}; }
 };
 
-struct HostJob {
+struct HostPayload {
   PayloadIds ids;
   HostRecord record;
   uint64_t id() const { return ids.job; }

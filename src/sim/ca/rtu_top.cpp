@@ -26,7 +26,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   const size_t coreCount = static_cast<size_t>(config.cores);
   const uint64_t jobCount = records.size();
 
-  hostJobs_ = channel<HostJob>("host_jobs", clock_, trace, top + ".job_manager.in");
+  hostJobs_ = channel<HostPayload>("host_jobs", clock_, trace, top + ".job_manager.in");
   pendingJobs_ = channel<CoreJob>("pending_jobs", clock_, trace, top + ".scheduler.in");
   managedResults_ =
       channel<CoreResult>("managed_results", clock_, trace, top + ".result_manager.out");
@@ -44,7 +44,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   memory_->followDispatches(*scheduler_);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
   if (scene) {
-    sceneRays_ = channel<HostJob>("scene_rays", clock_, trace, top + ".scene_manager.in");
+    sceneRays_ = channel<HostPayload>("scene_rays", clock_, trace, top + ".scene_manager.in");
     rayResults_ = channel<CoreResult>("ray_results", clock_, trace, top + ".scene_manager.out");
     sceneManager_ = std::make_unique<SceneManagerModule>(
         "scene_manager", clock_, pump_, *scene, config.sceneManager, config.jobManager.format);

@@ -57,12 +57,12 @@ class RtuTop : public sc_core::sc_module {
 
   CycleClock clock_;
   DecisionPump pump_;
-  std::unique_ptr<Channel<HostJob>> hostJobs_;
+  std::unique_ptr<Channel<HostPayload>> hostJobs_;
   std::unique_ptr<Channel<CoreJob>> pendingJobs_;
   std::vector<std::unique_ptr<Channel<CoreJob>>> coreJobs_;
   std::vector<std::unique_ptr<Channel<CoreResult>>> coreResults_;
   std::unique_ptr<Channel<CoreResult>> managedResults_, orderedResults_;
-  std::unique_ptr<Channel<HostJob>> sceneRays_;
+  std::unique_ptr<Channel<HostPayload>> sceneRays_;
   std::unique_ptr<Channel<CoreResult>> rayResults_;
 
   std::unique_ptr<HostSource> source_;

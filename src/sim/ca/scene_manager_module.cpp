@@ -24,7 +24,8 @@ void SceneManagerModule::end_of_elaboration() {
   spawnReaction("decide", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
-void SceneManagerModule::bind(TransferChannel<HostJob>& raysIn, TransferChannel<HostJob>& jobsOut,
+void SceneManagerModule::bind(TransferChannel<HostPayload>& raysIn,
+                              TransferChannel<HostPayload>& jobsOut,
                               TransferChannel<CoreResult>& resultsIn,
                               TransferChannel<CoreResult>& raysOut) {
   raysIn_ = &raysIn;
@@ -129,7 +130,7 @@ void SceneManagerModule::takeRay(uint64_t now) {
   if (!raysIn_->offering() || raysIn_->offerCycle() > now || takeFrom_ > now ||
       heldIn(now) >= static_cast<uint64_t>(config_.raysInFlight))
     return;
-  const HostJob host = raysIn_->payload();
+  const HostPayload host = raysIn_->payload();
   const RayRecord* record = std::get_if<RayRecord>(&host.record);
   if (!record)
     throw std::invalid_argument("scene manager: host record " + std::to_string(host.ids.ray) +
@@ -159,7 +160,7 @@ void SceneManagerModule::issue(uint64_t now) {
     if (!wantsJob(ray) || ray.readyFrom > now) continue;
     RayRecord job = ray.record;
     job.modelAddress = instances_[ray.candidates[ray.next].instance].headerAddress;
-    jobsOut_->offer(HostJob{PayloadIds{ray.id, nextJob_++}, job}, now);
+    jobsOut_->offer(HostPayload{PayloadIds{ray.id, nextJob_++}, job}, now);
     ++ray.next;
     ray.outstanding = true;
     ++jobsOutstanding_;

@@ -55,7 +55,7 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
                      std::vector<SceneInstance> instances, SceneManagerConfig config,
                      FixedFormat format);
 
-  void bind(TransferChannel<HostJob>& raysIn, TransferChannel<HostJob>& jobsOut,
+  void bind(TransferChannel<HostPayload>& raysIn, TransferChannel<HostPayload>& jobsOut,
             TransferChannel<CoreResult>& resultsIn, TransferChannel<CoreResult>& raysOut);
   void decide() override;
 
@@ -95,8 +95,8 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
   std::vector<SceneInstance> instances_;
   SceneManagerConfig config_;
   FixedFormat format_;  // of the t-values the cores report
-  TransferChannel<HostJob>* raysIn_ = nullptr;
-  TransferChannel<HostJob>* jobsOut_ = nullptr;
+  TransferChannel<HostPayload>* raysIn_ = nullptr;
+  TransferChannel<HostPayload>* jobsOut_ = nullptr;
   TransferChannel<CoreResult>* resultsIn_ = nullptr;
   TransferChannel<CoreResult>* raysOut_ = nullptr;
   std::deque<Ray> rays_;                          // held, oldest first

@@ -52,10 +52,10 @@ void LtTopBase::drive() {
       [this](size_t job, int core, uint64_t initCycle) { return traverse(job, core, initCycle); });
 }
 
-RecurrenceJob LtTopBase::setUp(size_t job) {
+JobTiming LtTopBase::setUp(size_t job) {
   const CoreKindJobSetUp set = setup_(records_[job]);
   current_ = CoreJob{PayloadIds::plain(job), set.idWord, set.job};
-  return RecurrenceJob{0, set.latency, set.headerFetch};
+  return JobTiming{0, set.latency, set.headerFetch};
 }
 
 // Dispatches come in cycle order: the thread's local time is the latest, synchronised with the

@@ -61,7 +61,7 @@ class LtTopBase : public sc_core::sc_module {
 
  private:
   void drive();
-  RecurrenceJob setUp(size_t job);
+  JobTiming setUp(size_t job);
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
 
   const RtuConfig& config_;

@@ -1,15 +1,20 @@
 #pragma once
-// The job a traversal core receives and the result it returns (thesis appendix C.6, job_t and
-// result_t), independent of how they travel: host buffers, ready-valid channels or TLM payloads.
+// The thesis' records of a job and its result (appendix C.6, job_t and result_t), independent of
+// how they travel: host buffers, ready-valid channels or TLM payloads. The words "job" name, in
+// rtusim: a TValueRecord (the host's t-value record of a ray), a HostRecord (that or a world-space
+// ray, kinds/svo/job_setup.h), a HostPayload (a host record on its way to the job manager), a
+// kind's Job (what the job manager hands a core: SvoJob) inside a CoreJob (its payload), and a
+// JobTiming (a job as the recurrence times it). Worker processes and Slurm array tasks are
+// "workers" and "tasks".
 
 #include <array>
 #include <cstdint>
 
 namespace rtu {
 
-// A traversal job with the t-parameters still in float32, as the host driver sends them
-// (appendix F): the job manager converts them to fixed point.
-struct TraversalJob {
+// The host's t-value record of a ray: the traversal job with the t-parameters still in float32,
+// as the host driver sends them (appendix F): the job manager converts them to fixed point.
+struct TValueRecord {
   uint32_t id = 0;  // 28 bits: the driver packs `a` into bits 30:28 beside it
   uint8_t a = 0;    // direction coefficient: bit k set when direction k was negative
   std::array<uint32_t, 3> t0Bits{};  // float32 bit patterns of t0x, t0y, t0z
@@ -31,7 +36,7 @@ struct TraversalResult {
   bool tOverflow = false;           // t-values beyond the format's range (wrapped or saturated)
   bool belowResolution = false;     // descended into nodes narrower than the format's step
 
-  uint32_t id() const { return idWord & TraversalJob::kMaxId; }
+  uint32_t id() const { return idWord & TValueRecord::kMaxId; }
   bool operator==(const TraversalResult& other) const {
     return idWord == other.idWord && hit == other.hit && tHit == other.tHit &&
            normal == other.normal && cost == other.cost && stackOverflow == other.stackOverflow &&
