@@ -14,7 +14,8 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE= -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" "${launcher[@]}" >/dev/null
+  -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" -DRTUSIM_BENCH=OFF \
+  "${launcher[@]}" >/dev/null
 cmake --build build-sanitize -j "$(nproc)"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:halt_on_error=1:strict_string_checks=1"

@@ -15,6 +15,8 @@
 //   checkOracle()          its independent oracle against its golden model (architecture.md,
 //                          "Independent oracles")
 
+#include <catch2/catch.hpp>
+
 #include "kinds/registry.h"
 #include "reference/rtl_cycle_model.h"
 #include "sim/rtu_config.h"
@@ -38,6 +40,15 @@ RtuConfig kindConfig() {
 inline RtlTopConfig rtlTopConfig(const RtuConfig& config) {
   return RtlTopConfig{config.cores, config.golden(), config.jobManager.rayStages,
                       config.jobManager.headerFetchCycles, config.core};
+}
+
+// A run's results and every cycle against the RTL transcription's (run: RtuRun, the SystemC
+// model's or the analytic run's).
+template <class Run>
+void checkEqualsRtl(const Run& run, const RtlTopRun& rtl) {
+  CHECK(run.totalCycles == rtl.totalCycles);
+  CHECK(run.arrivalCycles == rtl.resultCycles);
+  CHECK(run.results == rtl.results);
 }
 
 }  // namespace rtu
