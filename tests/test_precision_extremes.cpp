@@ -58,7 +58,7 @@ Outcome trace(const SvoBuild& build, const Ray& ray, FixedFormat format = kThesi
   GoldenModel golden(build.image.memory(),
                      GoldenConfig{format, FloatConversion::Rtl, kMaxStackFrames});
   ReferenceModel reference(build.image.memory());
-  return {golden.trace(makeTraversalJob(0, ray, build.image.root)),
+  return {golden.trace(makeTValueRecord(0, ray, build.image.root)),
           reference.trace(ray, build.image.root)};
 }
 
@@ -193,14 +193,14 @@ TEST_CASE("NaN, infinite and zero directions are errors, never an answer",
           "[precision][extremes]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {nan, 0, 1}}, 0),
+  CHECK_THROWS_WITH(makeTValueRecord(0, Ray{{0, 0, -3}, {nan, 0, 1}}, 0),
                     Catch::Contains("finite"));
-  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{inf, 0, -3}, {0, 0, 1}}, 0),
+  CHECK_THROWS_WITH(makeTValueRecord(0, Ray{{inf, 0, -3}, {0, 0, 1}}, 0),
                     Catch::Contains("finite"));
-  CHECK_THROWS_WITH(makeTraversalJob(0, Ray{{0, 0, -3}, {0, 0, 0}}, 0), Catch::Contains("zero"));
+  CHECK_THROWS_WITH(makeTValueRecord(0, Ray{{0, 0, -3}, {0, 0, 0}}, 0), Catch::Contains("zero"));
   // Job records may carry infinite t-values (a parallel ray from a driver without epsilon):
   // t0 = -inf, t1 = +inf on x saturate, the ray's x is lost, and the result is flagged.
-  TValueRecord job = makeTraversalJob(0, Ray{{0.6, 0.1, -3}, {0, 0, 1}}, 0);
+  TValueRecord job = makeTValueRecord(0, Ray{{0.6, 0.1, -3}, {0, 0, 1}}, 0);
   job.t0Bits[0] = floatBits(-std::numeric_limits<float>::infinity());
   job.t1Bits[0] = floatBits(std::numeric_limits<float>::infinity());
   const std::vector<TValueRecord> decoded = decodeJobRecords(encodeJobRecords({job}));
@@ -254,7 +254,7 @@ DeepCount traceDeep(int depth, FixedFormat format) {
     for (int j = 0; j < 8; ++j) {
       const glm::dvec3 target = lower + size * glm::dvec3((i + 0.5) / 8, (j + 0.5) / 8, 0.5);
       const Ray ray{eye, target - eye};
-      const TraversalResult fixed = golden.trace(makeTraversalJob(0, ray, 0));
+      const TraversalResult fixed = golden.trace(makeTValueRecord(0, ray, 0));
       ++count.rays;
       count.hits += fixed.hit;
       count.flagged += fixed.belowResolution;

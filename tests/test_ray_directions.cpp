@@ -49,7 +49,7 @@ TEST_CASE("Ray set-up mirrors negative components and ORs their sign bits", "[ra
   REQUIRE(p.t0[2] == Approx((-1.0 + 3.0) / dz));
   REQUIRE(p.t1[2] == Approx((1.0 + 3.0) / dz));
 
-  const TValueRecord job = makeTraversalJob(9, ray, 17);
+  const TValueRecord job = makeTValueRecord(9, ray, 17);
   REQUIRE(job.a == 0b101);
   REQUIRE(job.idWord() == (9u | 5u << 28));
   REQUIRE(job.root == 17);
@@ -64,7 +64,7 @@ TEST_CASE("All eight octants give the same traversal on a symmetric scene", "[ra
   for (int octant = 0; octant < 8; ++octant) {
     glm::dvec3 flip(octant & 1 ? -1 : 1, octant & 2 ? -1 : 1, octant & 4 ? -1 : 1);
     const Ray ray{eye * flip, (target - eye) * flip};
-    const TraversalResult result = model.trace(makeTraversalJob(0, ray, 0));
+    const TraversalResult result = model.trace(makeTValueRecord(0, ray, 0));
     INFO("octant " << octant);
     REQUIRE(result.hit);
     REQUIRE(result.idWord >> 28 == static_cast<uint32_t>(7 - octant));  // a: negative directions
@@ -89,7 +89,7 @@ TEST_CASE("Axis-parallel rays hit the sphere where geometry says", "[rays]") {
       glm::dvec3 direction(0.0);
       direction[axis] = sign;
       const Ray ray{origin, direction};
-      const TraversalResult result = model.trace(makeTraversalJob(0, ray, 0));
+      const TraversalResult result = model.trace(makeTValueRecord(0, ray, 0));
       const ReferenceResult exact = reference.trace(ray, 0);
       INFO("axis " << axis << " sign " << sign);
       REQUIRE(result.hit);

@@ -330,7 +330,7 @@ TEST_CASE("With an identity header, ray records give the driver's t-values", "[r
     for (const RayRecord& record : makeFrameRayRecords(camera, 0)) {
       if (hasNearZeroComponent(record, epsilon)) continue;  // replaced differently: see below
       const TValueRecord job = rayRecordToJob(record, ModelHeader{}, epsilon);
-      const TValueRecord driver = makeTraversalJob(record.id, asRay(record), 0);
+      const TValueRecord driver = makeTValueRecord(record.id, asRay(record), 0);
       REQUIRE(job.a == driver.a);
       for (int k = 0; k < 3; ++k) {
         const float r = 1.0f / std::abs(record.direction[k]);
@@ -376,7 +376,7 @@ TEST_CASE("Rays along the axes hit as with the driver's set-up", "[rays]") {
   const glm::dvec3 axes[] = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}, {-1, 0, 0}};
   for (const glm::dvec3& axis : axes) {
     const Ray ray{-3.0 * axis + glm::dvec3(0.01, 0.02, 0.03), axis};
-    const TraversalResult driver = golden.trace(makeTraversalJob(0, ray, 0));
+    const TraversalResult driver = golden.trace(makeTValueRecord(0, ray, 0));
     const TraversalResult mine = golden.traceRays({makeRayRecord(0, ray, model.header)}, 1e-4f)[0];
     REQUIRE(driver.hit);
     REQUIRE(mine.hit);

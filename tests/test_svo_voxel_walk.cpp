@@ -63,7 +63,7 @@ void checkHandCase(const std::vector<uint32_t>& words, uint32_t root, glm::dvec3
   const VoxelWalkResult unit =
       walkVoxels(memory, root, origin, jobLineDirection(direction, kDefaultDirectionEpsilon));
   GoldenModel golden(memory, GoldenConfig{});
-  const TraversalResult fixed = golden.trace(makeTraversalJob(0, Ray{origin, direction}, root));
+  const TraversalResult fixed = golden.trace(makeTValueRecord(0, Ray{origin, direction}, root));
   REQUIRE(fixed.hit == expected.hit);
   REQUIRE(unit.hit == expected.hit);
   if (expected.hit) {
@@ -215,7 +215,7 @@ Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays)
   Agreement a;
   for (const Ray& ray : rays) {
     const ReferenceResult exact = reference.trace(ray, root);
-    const TValueRecord job = makeTraversalJob(0, ray, root, kDefaultDirectionEpsilon);
+    const TValueRecord job = makeTValueRecord(0, ray, root, kDefaultDirectionEpsilon);
     const TraversalResult fixed = golden.trace(job);
     const uint64_t fixedVoxel = golden.lastHitVoxel();
     VoxelWalkOptions options;

@@ -49,7 +49,7 @@ std::vector<TValueRecord> makeFrameJobs(const Camera& camera, uint32_t root, dou
   std::vector<TValueRecord> jobs;
   jobs.reserve(rays.size());
   for (size_t id = 0; id < rays.size(); ++id)
-    jobs.push_back(makeTraversalJob(static_cast<uint32_t>(id), rays[id], root, epsilon));
+    jobs.push_back(makeTValueRecord(static_cast<uint32_t>(id), rays[id], root, epsilon));
   return jobs;
 }
 

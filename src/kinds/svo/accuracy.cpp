@@ -34,7 +34,7 @@ AccuracyReport measureAccuracy(const WordMemory& memory, uint32_t root,
   double errorSum = 0.0;
   size_t bothHit = 0;
   for (const Ray& ray : rays) {
-    const TraversalResult fixed = golden.trace(makeTraversalJob(0, ray, root, epsilon));
+    const TraversalResult fixed = golden.trace(makeTValueRecord(0, ray, root, epsilon));
     const ReferenceResult exact = reference.trace(ray, root);
     report.fixedCost += fixed.cost;
     report.referenceCost += exact.cost;

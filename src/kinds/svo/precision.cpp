@@ -32,7 +32,7 @@ FormatPrecision compare(const WordMemory& memory, const PrecisionStudy& study,
   double errorSum = 0.0, cost = 0.0, referenceCost = 0.0;
   for (size_t i = 0; i < study.rays.size(); ++i) {
     const Ray& ray = study.rays[i];
-    const TraversalResult fixed = golden.trace(makeTraversalJob(0, ray, study.root, study.epsilon));
+    const TraversalResult fixed = golden.trace(makeTValueRecord(0, ray, study.root, study.epsilon));
     const ReferenceResult& exact = reference[i];
     cost += fixed.cost;
     referenceCost += exact.cost;

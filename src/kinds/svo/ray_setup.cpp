@@ -73,7 +73,7 @@ float bitsToFloat(uint32_t bits) {
   return value;
 }
 
-TValueRecord makeTraversalJob(uint32_t id, const Ray& ray, uint32_t root, double epsilon) {
+TValueRecord makeTValueRecord(uint32_t id, const Ray& ray, uint32_t root, double epsilon) {
   const RayParameters<float> parameters =
       computeRayParameters<float>(ray, static_cast<float>(epsilon));
   TValueRecord job;

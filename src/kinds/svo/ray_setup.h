@@ -37,7 +37,7 @@ template <class Real>
 RayParameters<Real> computeRayParameters(const Ray& ray, Real epsilon);
 
 // The float32 job the thesis driver would send for `ray` (appendix F, get_ray_job).
-TValueRecord makeTraversalJob(uint32_t id, const Ray& ray, uint32_t root,
+TValueRecord makeTValueRecord(uint32_t id, const Ray& ray, uint32_t root,
                               double epsilon = kDefaultDirectionEpsilon);
 
 uint32_t floatBits(float value);
