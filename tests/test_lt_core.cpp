@@ -64,7 +64,7 @@ class LatencyTarget : public sc_core::sc_module {
 void elaborate() {
   sc_core::sc_report_handler::set_actions(sc_core::SC_ID_NO_SC_START_ACTIVITY_,
                                           sc_core::SC_DO_NOTHING);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
+  simulateFor(sc_core::SC_ZERO_TIME);
 }
 
 struct ToyRun {

@@ -48,7 +48,7 @@ RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& 
   // The cores' kind, chosen once: the top is a template over it.
   RtuRun run = withCoreKind(config.core, [&](auto kind) {
     auto top = std::make_unique<LtTop<decltype(kind)>>("rtu", config, memory, records);
-    sc_core::sc_start();
+    simulate();
     return runOf(*top, top->takeResults(), config);
   });
   if (progress) progress(records.size(), records.size());

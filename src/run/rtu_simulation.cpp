@@ -32,12 +32,12 @@ class RunLoop {
   // False when the run stopped at its last snapshot.
   bool run() {
     if (!progress_ && !trace_ && plan_.afterResults.empty()) {
-      sc_core::sc_start();
+      simulate();
       return true;
     }
     uint64_t nextProgress = kProgressCycles;
     do {
-      sc_core::sc_start(clock_.period() * static_cast<double>(slice()));
+      simulateFor(clock_.period() * static_cast<double>(slice()));
       const uint64_t now = clock_.now();
       // Modules record no cycle before the current one any more (src/trace/cycle_trace.h).
       if (trace_) trace_->flush(now);
