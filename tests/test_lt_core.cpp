@@ -135,48 +135,75 @@ TEST_CASE("LT targets: reads of whole words within a line, others refused", "[lt
   const LtTime time(CycleClock::atMegahertz(100));
   MemoryConfig memory;
   memory.ideal = false;
-  memory.l1.lineBytes = 4;  // shorter than the toy core's 8-byte access
-  LtL1Cache l1("l1", memory.l1, WordMemory(words), time);
+  memory.l1.lineBytes = 16;
+  LtL1Cache l1("l1", memory.l1, 8, WordMemory(words), time);  // the toy core's 8-byte access
+  LtL1Cache narrowL1("narrow_l1", memory.l1, 4, WordMemory(words), time);
   LtL2Cache l2("l2", memory, time);
   LtDram dram("dram", memory.dram, memory.l2.lineBytes, time);
   l1.next.bind(l2.socket);
+  narrowL1.next.bind(l2.socket);
   l2.dram.bind(dram.socket);
   ToyBehaviour behaviour;
   LtCore<ToyKind> core("core", behaviour, time);
-  core.memory.bind(l1.socket);
+  LtCore<ToyKind> l1Core("l1_core", behaviour, time);  // binds the L1's socket
+  core.memory.bind(narrowL1.socket);
+  l1Core.memory.bind(l1.socket);
   elaborate();
 
+  uint32_t data[4] = {};
+  tlm::tlm_generic_payload read;
+  read.set_read();
+  read.set_data_ptr(reinterpret_cast<unsigned char*>(data));
+  const auto status = [&](auto& target, uint64_t address, uint32_t bytes) {
+    read.set_address(address);
+    read.set_data_length(bytes);
+    read.set_streaming_width(bytes);
+    read.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+    target.b_transport(read, delay);
+    return read.get_response_status();
+  };
   SECTION("the L2 serves words within its 64-byte line") {
-    uint32_t data[4] = {};
-    tlm::tlm_generic_payload read;
-    read.set_read();
-    read.set_data_ptr(reinterpret_cast<unsigned char*>(data));
-    const auto status = [&](uint64_t address, uint32_t bytes) {
-      read.set_address(address);
-      read.set_data_length(bytes);
-      read.set_streaming_width(bytes);
-      read.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-      sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-      l2.b_transport(read, delay);
-      return read.get_response_status();
-    };
-    CHECK(status(48, 16) == tlm::TLM_OK_RESPONSE);           // bytes 48-63
-    CHECK(status(56, 16) == tlm::TLM_BURST_ERROR_RESPONSE);  // 56-71 crosses into line 64
-    CHECK(status(48, 6) == tlm::TLM_BURST_ERROR_RESPONSE);   // part of a word
-    CHECK(status(50, 8) == tlm::TLM_BURST_ERROR_RESPONSE);   // not word-aligned
-    CHECK(status(48, 0) == tlm::TLM_BURST_ERROR_RESPONSE);   // empty
+    CHECK(status(l2, 48, 16) == tlm::TLM_OK_RESPONSE);           // bytes 48-63
+    CHECK(status(l2, 56, 16) == tlm::TLM_BURST_ERROR_RESPONSE);  // 56-71 crosses into line 64
+    CHECK(status(l2, 48, 6) == tlm::TLM_BURST_ERROR_RESPONSE);   // part of a word
+    CHECK(status(l2, 50, 8) == tlm::TLM_BURST_ERROR_RESPONSE);   // not word-aligned
+    CHECK(status(l2, 48, 0) == tlm::TLM_BURST_ERROR_RESPONSE);   // empty
     read.set_write();
-    CHECK(status(48, 4) == tlm::TLM_COMMAND_ERROR_RESPONSE);
+    CHECK(status(l2, 48, 4) == tlm::TLM_COMMAND_ERROR_RESPONSE);
   }
-  SECTION("the L1 refuses the core's access across its line, and the core says so") {
+  SECTION("an L1 serves its core's access alone") {
+    CHECK(status(l1, 40, 8) == tlm::TLM_OK_RESPONSE);  // words 10-11
+    CHECK(data[0] == 110);
+    CHECK(data[1] == 111);
+    CHECK(status(l1, 36, 8) == tlm::TLM_BURST_ERROR_RESPONSE);   // not aligned to the access
+    CHECK(status(l1, 40, 4) == tlm::TLM_BURST_ERROR_RESPONSE);   // part of the access
+    CHECK(status(l1, 32, 16) == tlm::TLM_BURST_ERROR_RESPONSE);  // two accesses
+    read.set_write();
+    CHECK(status(l1, 40, 8) == tlm::TLM_COMMAND_ERROR_RESPONSE);
+    CHECK(l1.statistics().accesses == 1);  // the refused ones were not timed
+  }
+  SECTION("an L1 refuses a wider access than its core's, and the core says so") {
     ToyResult result;
-    // S1's access: words 8-9, bytes 32-39, across the 4-byte lines 32 and 36.
+    // S1's access: words 8-9, bytes 32-39, to an L1 made for 4-byte accesses.
     CHECK_THROWS_WITH(core.traverse(0, 8, 10, result),
                       Catch::Contains("core: memory read of 8 bytes at byte address 32 failed: "
-                                      "TLM_BURST_ERROR_RESPONSE") &&
-                          Catch::Contains("line"));
-    CHECK(l1.statistics().accesses == 0);  // refused before it was timed
+                                      "TLM_BURST_ERROR_RESPONSE"));
+    CHECK(narrowL1.statistics().accesses == 0);  // refused before it was timed
   }
+}
+
+TEST_CASE("An L1 is made only for accesses within its line", "[lt][lt_core]") {
+  freshKernel();
+  const std::vector<uint32_t> words = image();
+  const LtTime time(CycleClock::atMegahertz(100));
+  CacheConfig l1;
+  l1.lineBytes = 4;
+  CHECK_THROWS_WITH(LtL1Cache("l1", l1, 8, WordMemory(words), time),
+                    "an L1 of 4-byte lines cannot serve accesses of 8 bytes");
+  CHECK_THROWS_AS(LtL1Cache("l1", l1, 2, WordMemory(words), time), std::invalid_argument);
+  l1.lineBytes = 16;
+  CHECK_THROWS_AS(LtL1Cache("l1", l1, 12, WordMemory(words), time), std::invalid_argument);
 }
 
 TEST_CASE("Cache warmer: one touch per two-word access, in its core's L1", "[lt_core]") {

@@ -13,6 +13,7 @@ LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, Word
       config_(config),
       records_(records),
       memory_(memory),
+      accessBytes_(accessBytes),
       time_(CycleClock::atMegahertz(config.clockMhz)),
       setup_(makeCoreJobSetup(config.core, memory, config.jobManager)) {
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
@@ -34,7 +35,7 @@ void LtTopBase::bindCore(tlm::tlm_initiator_socket<>& socket) {
     return;
   }
   l1_.push_back(std::make_unique<LtL1Cache>(("l1_" + std::to_string(l1_.size())).c_str(),
-                                            config_.memory.l1, memory_, time_));
+                                            config_.memory.l1, accessBytes_, memory_, time_));
   socket.bind(l1_.back()->socket);
   l1_.back()->next.bind(l2_->socket);
 }

@@ -48,7 +48,8 @@ class LtTopBase : public sc_core::sc_module {
   L2Stats l2Statistics() const;  // the L2's counts with the DRAM target's
 
  protected:
-  // `records` must outlive the top; `accessBytes` is a core's access (the ROM's alignment).
+  // `records` must outlive the top; `accessBytes` is a core's access (what the ROM and an L1
+  // serve).
   LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
             const std::vector<HostRecord>& records, uint32_t accessBytes);
 
@@ -67,6 +68,7 @@ class LtTopBase : public sc_core::sc_module {
   const RtuConfig& config_;
   const std::vector<HostRecord>& records_;
   WordMemory memory_;
+  uint32_t accessBytes_;
   LtTime time_;
   CoreJobSetup setup_;  // the kind's (kinds/registry.h): one call per job
   tlm_utils::tlm_quantumkeeper quantum_;

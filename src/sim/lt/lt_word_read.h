@@ -1,7 +1,8 @@
 #pragma once
 // The reads the loosely-timed targets serve: whole 32-bit words within one aligned line (a core
 // reads Kind::kWordsPerRead words aligned to that count, docs/cycle-semantics.md "Access width and
-// multi-cycle states"; an L1 reads its line from the L2, the L2 its line from the DRAM). A target
+// multi-cycle states"; an L1 reads its line from the L2, the L2 its line from the DRAM), and from
+// an L1 its core's access alone. A target
 // answers any other payload with an error response before it times anything: a write with
 // TLM_COMMAND_ERROR_RESPONSE; an empty payload, one of part of a word or one that crosses a line
 // with TLM_BURST_ERROR_RESPONSE (TLM-2.0's answer to a length the target cannot serve). The
@@ -23,8 +24,7 @@ namespace rtu {
 }
 
 // Whether `trans` is such a read within one line of `lineBytes` (a power of two); sets the error
-// response when it is not. Inline, and one test in all (TLM_READ_COMMAND is 0): the L1 checks
-// every access of a cached run's cores.
+// response when it is not. Inline, and one test in all (TLM_READ_COMMAND is 0).
 inline bool acceptWordRead(tlm::tlm_generic_payload& trans, uint64_t lineBytes) {
   const uint64_t first = trans.get_address(), length = trans.get_data_length();
   const uint64_t notRead = static_cast<uint64_t>(trans.get_command()) ^ tlm::TLM_READ_COMMAND;
@@ -32,6 +32,18 @@ inline bool acceptWordRead(tlm::tlm_generic_payload& trans, uint64_t lineBytes) 
   // (an empty payload wraps to the largest length).
   const bool inLine = length - 1 < lineBytes - (first & (lineBytes - 1));
   if ((notRead | ((first | length) & 3) | !inLine) == 0) return true;
+  refuseWordRead(trans);
+  return false;
+}
+
+// Whether `trans` is a read of exactly `accessBytes` (a power of two, a word or more) aligned to
+// them: the one access a target made for its initiator's serves (an L1, its core's; so within one
+// of its lines, as the configuration checks). Sets the error response when it is not, as
+// acceptWordRead. Cheaper than acceptWordRead: the L1 checks every access of a cached run.
+inline bool acceptAccess(tlm::tlm_generic_payload& trans, uint64_t accessBytes) {
+  const uint64_t first = trans.get_address(), length = trans.get_data_length();
+  const uint64_t notRead = static_cast<uint64_t>(trans.get_command()) ^ tlm::TLM_READ_COMMAND;
+  if ((notRead | (first & (accessBytes - 1)) | (length ^ accessBytes)) == 0) return true;
   refuseWordRead(trans);
   return false;
 }
