@@ -7,14 +7,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "geometry/ray.h"
 #include "kinds/svo/thesis_records.h"
 
 namespace rtu {
-
-struct Ray {
-  glm::dvec3 origin{0.0};
-  glm::dvec3 direction{0.0, 0.0, 1.0};
-};
 
 // Replaces exact zero direction components after normalisation (project thesis trick, 4.1.3).
 constexpr double kDefaultDirectionEpsilon = 1e-4;

@@ -10,6 +10,8 @@
 #include <array>
 #include <cstdint>
 
+#include "rtu/ray_record.h"
+
 namespace rtu {
 
 // The host's t-value record of a ray: the traversal job with the t-parameters still in float32,
@@ -21,7 +23,7 @@ struct TValueRecord {
   std::array<uint32_t, 3> t1Bits{};
   uint32_t root = 0;  // word address of the root descriptor
 
-  static constexpr uint32_t kMaxId = (1u << 28) - 1;
+  static constexpr uint32_t kMaxId = kMaxRayId;
   // The first word of the host record; the RTL carries it unchanged into the result.
   uint32_t idWord() const { return id | static_cast<uint32_t>(a) << 28; }
 };
