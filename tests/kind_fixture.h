@@ -9,7 +9,7 @@
 //   frame(scene, detail, width, height)   a frame of primary rays on a scene built to a detail
 //   rayRecords(frame, width, height)      the frame's rays as ray records against a model of it
 //   instancedRays()        memory() and records against several models (header fetches overlap)
-//   golden(memory, config, jobs)          its golden model's results
+//   golden(memory, config, jobs)          its golden model's results, as a run's (CoreKindResult)
 //   otherArithmetic(config)               settings of its own other than the thesis', for which
 //                                         every model must still agree
 //   checkOracle()          its independent oracle against its golden model (architecture.md,
@@ -17,6 +17,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "kinds/core_result.h"
 #include "kinds/registry.h"
 #include "reference/rtl_cycle_model.h"
 #include "sim/rtu_config.h"

@@ -49,7 +49,7 @@ TEMPLATE_LIST_TEST_CASE("LT: per-ray results equal the golden model's", "[lt]", 
   using Fixture = KindFixture<TestType>;
   for (const std::string& scene : Fixture::scenes()) {
     const auto f = Fixture::frame(scene, 6, 48, 32);
-    const std::vector<TraversalResult> golden =
+    const std::vector<CoreKindResult> golden =
         Fixture::golden(f.memory(), kindConfig<TestType>(), f.jobs);
     for (int cores : {1, 4, 16, 64})
       for (bool cached : {false, true})

@@ -88,7 +88,7 @@ RtlTopRun runTrees(const std::vector<Tree>& trees, int cores) {
 
 std::vector<uint32_t> resultIds(const RtlTopRun& run) {
   std::vector<uint32_t> ids;
-  for (const TraversalResult& result : run.results) ids.push_back(result.id());
+  for (const CoreKindResult& result : run.results) ids.push_back(svoResult(result).id());
   return ids;
 }
 
@@ -105,8 +105,8 @@ TEST_CASE("One job on one core takes 9 + cost cycles", "[rtl]") {
   REQUIRE(hit.resultCycles == Cycles{10});
   REQUIRE(hit.totalCycles == 11);
   REQUIRE(hit.results.size() == 1);
-  REQUIRE(hit.results[0].hit);
-  REQUIRE(hit.results[0].cost == 2);
+  REQUIRE(resultHit(hit.results[0]));
+  REQUIRE(resultCost(hit.results[0]) == 2);
 
   const RtlTopRun deep = runTrees({kFiveLevels}, 1);  // c = 17
   REQUIRE(deep.dispatchCycles == Cycles{6});
@@ -195,7 +195,7 @@ TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever 
     const auto frame = Fixture::frame(scene, 6, 32, 24);
     const auto& jobs = frame.jobs;
     for (RtuConfig config : {thesis, other}) {
-      const std::vector<TraversalResult> expected = Fixture::golden(frame.memory(), config, jobs);
+      const std::vector<CoreKindResult> expected = Fixture::golden(frame.memory(), config, jobs);
       for (int cores : {1, 2, 4, 16}) {
         config.cores = cores;
         INFO(scene << ", " << config.jobManager.format.describe() << ", " << config.stackFrames
@@ -206,7 +206,8 @@ TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever 
 
         // Frame job ids are the job indices: each must come back exactly once, as golden says.
         std::map<uint32_t, size_t> position;
-        for (size_t i = 0; i < run.results.size(); ++i) position[run.results[i].id()] = i;
+        for (size_t i = 0; i < run.results.size(); ++i)
+          position[resultIdWord(run.results[i]) & TValueRecord::kMaxId] = i;
         REQUIRE(position.size() == jobs.size());
         for (size_t job = 0; job < jobs.size(); ++job) {
           REQUIRE(position.count(static_cast<uint32_t>(job)) == 1);
@@ -217,7 +218,7 @@ TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever 
           const uint64_t dispatch = run.dispatchCycles[job];
           const uint64_t out = run.resultCycles[i];
           REQUIRE(dispatch >= run.acceptCycles[job] + 6);
-          REQUIRE(out >= dispatch + expected[job].cost + 2);
+          REQUIRE(out >= dispatch + resultCost(expected[job]) + 2);
           REQUIRE((out - dispatch) % static_cast<uint64_t>(cores) == 0);
         }
         // The job manager is a FIFO and every handshake takes a cycle.
@@ -231,8 +232,8 @@ TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever 
           // The pipeline is full while the core works, so each job holds the core for its cost
           // + 2 cycles back to back, starting in 6, and the last result leaves one cycle later.
           const uint64_t busy = std::accumulate(expected.begin(), expected.end(), uint64_t{0},
-                                                [](uint64_t sum, const TraversalResult& r) {
-                                                  return sum + r.cost + 2;
+                                                [](uint64_t sum, const CoreKindResult& r) {
+                                                  return sum + resultCost(r) + 2;
                                                 });
           REQUIRE(run.totalCycles == 6 + busy + 1);
         }
@@ -259,7 +260,7 @@ TEST_CASE("Ray records: the ray stages, and a model's first ray waits for its he
   config.cores = 1;
   const RtlTopRun run = runRtlTop(scene.memory.memory(), records, config);
   REQUIRE(run.results.size() == 3);
-  const uint64_t w0 = run.results[0].cost, w1 = run.results[1].cost;
+  const uint64_t w0 = resultCost(run.results[0]), w1 = resultCost(run.results[1]);
   CHECK(run.acceptCycles == Cycles{0, 17, 18});
   CHECK(run.dispatchCycles == Cycles{28, 30 + w0, std::max(47 + w0, 32 + w0 + w1)});
 }

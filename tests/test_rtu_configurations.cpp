@@ -224,30 +224,29 @@ bool isPermutation(const Cycles& indices, size_t n) {
 
 // Results against the golden model: every field exact; the cost exact with ideal memory, else
 // the golden cost plus the cycles the core spent BLOCKED on memory.
-void checkResults(const RtuRun& run, const std::vector<TraversalResult>& expected,
+void checkResults(const RtuRun& run, const std::vector<CoreKindResult>& expected,
                   const RtuConfig& config) {
   REQUIRE(run.results.size() == expected.size());
   REQUIRE(run.jobIndices.size() == expected.size());
   REQUIRE(run.arrivalCycles.size() == expected.size());
   REQUIRE(isPermutation(run.jobIndices, expected.size()));
-  const std::vector<TraversalResult> ordered = resultsInJobOrder(run);
+  const std::vector<CoreKindResult> ordered = resultsInJobOrder(run);
   std::vector<uint64_t> blockedOf(expected.size());
   for (size_t i = 0; i < run.results.size(); ++i)
     blockedOf[run.jobIndices[i]] = run.blockedCycles[i];
   uint64_t extra = 0, mismatches = 0, cheaper = 0;
   for (size_t k = 0; k < expected.size(); ++k) {
     // The cost is the state count, as golden's; cycles BLOCKED on memory are counted beside it.
-    const TraversalResult& got = ordered[k];
-    if (got.cost < expected[k].cost) {
+    const CoreKindResult& got = ordered[k];
+    if (resultCost(got) < resultCost(expected[k])) {
       ++cheaper;
       continue;
     }
     extra += blockedOf[k];
     if (got != expected[k]) {
       ++mismatches;
-      UNSCOPED_INFO("job " << k << ": hit " << got.hit << "/" << expected[k].hit << ", t "
-                           << got.tHit << "/" << expected[k].tHit << ", overflow "
-                           << got.stackOverflow << "/" << expected[k].stackOverflow);
+      UNSCOPED_INFO("job " << k << ": hit " << resultHit(got) << "/" << resultHit(expected[k])
+                           << ", cost " << resultCost(got) << "/" << resultCost(expected[k]));
     }
   }
   CHECK(mismatches == 0);
@@ -262,9 +261,10 @@ void checkResults(const RtuRun& run, const std::vector<TraversalResult>& expecte
   }
   const uint64_t goldenCost =
       std::accumulate(expected.begin(), expected.end(), uint64_t{0},
-                      [](uint64_t sum, const TraversalResult& r) { return sum + r.cost; });
-  const uint64_t goldenOverflows = static_cast<uint64_t>(std::count_if(
-      expected.begin(), expected.end(), [](const TraversalResult& r) { return r.stackOverflow; }));
+                      [](uint64_t sum, const CoreKindResult& r) { return sum + resultCost(r); });
+  CoreStatistics golden;  // the kinds' counters of the golden results
+  for (const CoreKindResult& r : expected) countResult(r, golden);
+  const uint64_t goldenOverflows = golden.stackOverflows;
   CHECK(run.statistics.coreTimes.size() == static_cast<size_t>(config.cores));
   CHECK(extra == blocked);
   if (config.memory.ideal) CHECK(blocked == 0);
@@ -290,7 +290,7 @@ void checkTiming(const RtuRun& run, const RtuConfig& config) {
     if (run.arrivalCycles[i] <= run.arrivalCycles[i - 1]) ++notIncreasing;
   for (size_t i = 0; i < n; ++i)
     if (run.arrivalCycles[i] < run.jobIndices[i] + static_cast<uint64_t>(config.jobManager.stages) +
-                                   2 + run.results[i].cost + run.blockedCycles[i])
+                                   2 + resultCost(run.results[i]) + run.blockedCycles[i])
       ++tooEarly;
   CHECK(notIncreasing == 0);
   CHECK(tooEarly == 0);
@@ -381,7 +381,7 @@ void checkMemory(const RtuRun& run, const RtuConfig& config, uint64_t reads) {
   CHECK(blocked >= s.l2.cache.misses);
 }
 
-void checkRun(const RtuRun& run, const std::vector<TraversalResult>& expected,
+void checkRun(const RtuRun& run, const std::vector<CoreKindResult>& expected,
               const RtuConfig& config, uint64_t reads) {
   checkResults(run, expected, config);
   checkTiming(run, config);
@@ -398,7 +398,7 @@ Cycles arrivalByJob(const RtuRun& run) {
 uint64_t sumOfCostsPlusTwo(const RtuRun& run) {
   uint64_t sum = 0;
   for (size_t i = 0; i < run.results.size(); ++i)
-    sum += run.results[i].cost + run.blockedCycles[i] + 2;
+    sum += resultCost(run.results[i]) + run.blockedCycles[i] + 2;
   return sum;
 }
 
@@ -411,7 +411,7 @@ TEMPLATE_LIST_TEST_CASE("Every configuration returns the golden model's results"
                         TestedKinds) {
   for (const auto& scene : frameScenes<TestType>()) {
     const RtuConfig base = kindConfig<TestType>();
-    const std::vector<TraversalResult> expected =
+    const std::vector<CoreKindResult> expected =
         KindFixture<TestType>::golden(scene.memory(), base, scene.jobs);
     const uint64_t reads = wordsRead<TestType>(scene.memory(), scene.jobs, base);
     for (const NamedMemory& memory : memories()) {
@@ -456,7 +456,7 @@ TEMPLATE_LIST_TEST_CASE("Other arithmetic, stack depths and job manager depths",
         }
         INFO(scene.scene << ", " << stages << " job manager stages, "
                          << config.jobManager.format.describe() << ": " << describe(config));
-        const std::vector<TraversalResult> expected =
+        const std::vector<CoreKindResult> expected =
             Fixture::golden(scene.memory(), config, scene.jobs);
         const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
         checkRun(run, expected, config, wordsRead<TestType>(scene.memory(), scene.jobs, config));
@@ -576,8 +576,8 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
   uint64_t seed = 1;
   for (const char* name : {"sphere", "noise"}) {
     const SvoFrame& scene = sceneNamed(name);
-    const std::vector<TraversalResult> expected =
-        GoldenModel(scene.memory(), RtuConfig{}.golden()).traceAll(scene.jobs);
+    const std::vector<CoreKindResult> expected =
+        KindFixture<SvoKind>::golden(scene.memory(), RtuConfig{}, scene.jobs);
     const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{});
     for (const NamedMemory& memory : {memories()[0], memories()[1]}) {
       for (int cores : {1, 4, 16}) {
@@ -607,7 +607,7 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
                 const uint64_t k = run.jobIndices[i];
                 const uint64_t crossing = (32 * k + 2) / 3;  // ceil(32 k / 3)
                 if (run.arrivalCycles[i] <
-                    crossing + 8 + run.results[i].cost + run.blockedCycles[i])
+                    crossing + 8 + resultCost(run.results[i]) + run.blockedCycles[i])
                   ++early;
               }
               CHECK(early == 0);
@@ -647,8 +647,8 @@ TEST_CASE("Random and paced host links lose, duplicate and reorder nothing", "[r
 TEST_CASE("The reorder buffer delivers results in job order", "[rtu]") {
   for (const char* name : {"sphere", "terrain", "noise"}) {
     const SvoFrame& scene = sceneNamed(name);
-    const std::vector<TraversalResult> expected =
-        GoldenModel(scene.memory(), RtuConfig{}.golden()).traceAll(scene.jobs);
+    const std::vector<CoreKindResult> expected =
+        KindFixture<SvoKind>::golden(scene.memory(), RtuConfig{}, scene.jobs);
     const uint64_t reads = wordsRead(scene.memory(), scene.jobs, RtuConfig{});
     for (int capacity : {1, 4, 64}) {
       for (int cores : {1, 4, 16}) {
@@ -952,16 +952,17 @@ TEST_CASE("A two-frame stack overflows on a deep scene", "[rtu]") {
       config.stackFrames = 2;
       if (cached) config.memory = MemoryConfig{};
       INFO(describe(config));
-      const std::vector<TraversalResult> expected =
-          GoldenModel(scene.memory(), config.golden()).traceAll(scene.jobs);
+      const std::vector<CoreKindResult> expected =
+          KindFixture<SvoKind>::golden(scene.memory(), config, scene.jobs);
+      const std::vector<TraversalResult> svoExpected = svoResults(expected);
       const uint64_t overflows = static_cast<uint64_t>(
-          std::count_if(expected.begin(), expected.end(),
+          std::count_if(svoExpected.begin(), svoExpected.end(),
                         [](const TraversalResult& r) { return r.stackOverflow; }));
       REQUIRE(overflows > 0);
       const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
       checkRun(run, expected, config, wordsRead(scene.memory(), scene.jobs, config));
       uint64_t flagged = 0;
-      for (const TraversalResult& r : run.results) {
+      for (const TraversalResult& r : svoResults(run.results)) {
         if (!r.stackOverflow) continue;
         ++flagged;
         CHECK_FALSE(r.hit);

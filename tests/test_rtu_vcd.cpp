@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "inputs/camera.h"
+#include "kinds/core_result.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
@@ -300,7 +301,7 @@ void checkTrace(const Traced& t, int cores) {
   std::vector<uint64_t> arrivalOf(rays), occupiedOf(rays);
   for (size_t i = 0; i < rays; ++i) {
     arrivalOf[run.jobIndices[i]] = run.arrivalCycles[i];
-    occupiedOf[run.jobIndices[i]] = run.results[i].cost + run.blockedCycles[i];
+    occupiedOf[run.jobIndices[i]] = resultCost(run.results[i]) + run.blockedCycles[i];
   }
   for (size_t k = 0; k < rays; ++k) {
     INFO("job " << k << " on core " << all[k].core << ", dispatched " << all[k].cycle);

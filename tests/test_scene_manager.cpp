@@ -12,6 +12,7 @@
 
 #include "explore/animation_run.h"
 #include "inputs/camera.h"
+#include "kinds/core_result.h"
 #include "kinds/svo/svo_builder.h"
 #include "scene/scene_memory.h"
 
@@ -77,11 +78,12 @@ std::vector<SceneHit> traceFrame(SceneManager manager, const Camera& camera) {
 
 // What a picture shows: which instance, at which t, through which face.
 bool samePicture(const SceneHit& a, const SceneHit& b) {
-  return a.instance == b.instance && a.result.hit == b.result.hit &&
-         a.result.tHit == b.result.tHit && a.result.normal == b.result.normal;
+  return a.instance == b.instance && svoResult(a.result).hit == svoResult(b.result).hit &&
+         svoResult(a.result).tHit == svoResult(b.result).tHit &&
+         svoResult(a.result).normal == svoResult(b.result).normal;
 }
 
-double tOf(const SceneHit& hit) { return FixedFormat{}.toDouble(hit.result.tHit); }
+double tOf(const SceneHit& hit) { return FixedFormat{}.toDouble(svoResult(hit.result).tHit); }
 
 Camera smallCamera(glm::dvec3 position, glm::dvec3 lookAt) {
   Camera camera;
@@ -114,7 +116,7 @@ TEST_CASE("A ray through two instances returns the nearer, whatever their order 
   const SceneHit hit =
       manager.trace(makeRayRecord(7, Ray{glm::dvec3(0.0), glm::dvec3(0, 0, 1)}, 0));
   REQUIRE(hit.instance == 1);
-  CHECK(hit.result.id() == 7);
+  CHECK(svoResult(hit.result).id() == 7);
   // The ball of radius 0.8 at z = 3 is entered at t = 2.2, give or take one voxel (2/32).
   CHECK(std::abs(tOf(hit) - 2.2) <= 2.0 / 32.0);
   CHECK(hit.jobs == 1);  // the far ball's sphere starts beyond the hit
@@ -165,8 +167,8 @@ TEST_CASE("A transformed instance renders like the same model voxelized in place
   const double voxelB = std::sqrt(3.0) * 2.0 * kWorldCube / 128.0;
   size_t bothHit = 0, disagree = 0;
   for (size_t i = 0; i < a.size(); ++i) {
-    disagree += a[i].result.hit != b[i].result.hit;
-    if (!a[i].result.hit || !b[i].result.hit) continue;
+    disagree += svoResult(a[i].result).hit != svoResult(b[i].result).hit;
+    if (!svoResult(a[i].result).hit || !svoResult(b[i].result).hit) continue;
     ++bothHit;
     const Ray ray = camera.primaryRay(static_cast<int>(i % 64), static_cast<int>(i / 64));
     CHECK(distanceToBox(ray.origin + tOf(a[i]) * ray.direction) <= voxelA);

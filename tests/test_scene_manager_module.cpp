@@ -4,6 +4,7 @@
 // count, latency and with or without a reorder buffer.
 #include <catch2/catch.hpp>
 
+#include "kinds/core_result.h"
 #include "run/rtu_simulation.h"
 #include "scene/scene_manager.h"
 #include "three_balls_scene.h"
@@ -43,14 +44,15 @@ TEST_CASE(
   REQUIRE(run.results.size() == rays.size());
   for (size_t i = 0; i < run.results.size(); ++i) {
     const SceneHit& want = expected[run.jobIndices[i]];
-    const TraversalResult& got = run.results[i];
+    const TraversalResult& got = svoResult(run.results[i]);
+    const TraversalResult& wanted = svoResult(want.result);
     CAPTURE(run.jobIndices[i]);
-    REQUIRE(got.hit == want.result.hit);
-    REQUIRE(got.idWord == want.result.idWord);
-    REQUIRE(got.cost == want.result.cost);
+    REQUIRE(got.hit == wanted.hit);
+    REQUIRE(got.idWord == wanted.idWord);
+    REQUIRE(got.cost == wanted.cost);
     if (got.hit) {
-      REQUIRE(got.tHit == want.result.tHit);
-      REQUIRE(got.normal == want.result.normal);
+      REQUIRE(got.tHit == wanted.tHit);
+      REQUIRE(got.normal == wanted.normal);
     }
   }
   REQUIRE(run.statistics.scene.has_value());

@@ -89,6 +89,24 @@ struct ToyKind {
   static void writeResult(uint32_t idWord, const Behaviour& core, Result& result) {
     result = ToyResult{idWord, core.sum(), core.cost()};
   }
+
+  // What the kind-agnostic machinery asks of a result (kinds/core_result.h): a toy job hits when
+  // it read a word other than zero, at the distance of the sum it read; it counts odd sums.
+  struct Counters {
+    uint64_t oddSums = 0;
+  };
+  static uint32_t resultIdWord(const Result& result) { return result.idWord; }
+  static bool resultHit(const Result& result) { return result.sum != 0; }
+  static uint32_t resultCost(const Result& result) { return result.cost; }
+  static void setResultCost(Result& result, uint32_t cost) { result.cost = cost; }
+  static bool resultBelowResolution(const Result& result) { return result.sum == 1; }
+  static void countResult(const Result& result, Counters& counters) {
+    counters.oddSums += result.sum % 2;
+  }
+  static Result miss(uint32_t idWord) { return ToyResult{idWord, 0, 0}; }
+  static bool hitAhead(const Result& result) { return resultHit(result); }
+  static bool nearer(const Result& a, const Result& b) { return a.sum < b.sum; }
+  static double hitDistance(const Result& result, const JobManagerConfig&) { return result.sum; }
 };
 
 template <>

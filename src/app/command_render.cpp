@@ -9,6 +9,7 @@
 #include "app/run_outputs.h"
 #include "app/schema_flags.h"
 #include "explore/sweep_workers.h"
+#include "kinds/core_result.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/result_summary.h"
 #include "kinds/svo/stack_check.h"
@@ -80,7 +81,8 @@ std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
   RunProgressLine progress("render", "rays");
   const RtuRun run = runModel(configuration.values().model, scene.image.memory(), records, planned,
                               progress.callback());
-  std::vector<TraversalResult> results = resultsInJobOrder(run);
+  // The frame's images are the SVO kind's outputs.
+  std::vector<TraversalResult> results = svoResults(resultsInJobOrder(run));
   std::cout << ResultSummary::of(results).describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";

@@ -8,6 +8,7 @@
 #include "app/schema_flags.h"
 #include "explore/sweep_workers.h"
 #include "inputs/host_buffers.h"
+#include "kinds/core_result.h"
 #include "kinds/svo/result_summary.h"
 #include "kinds/svo/svo_image.h"
 #include "run/rtu_simulation.h"
@@ -61,8 +62,10 @@ void addReplayCommand(CLI::App& app) {
     RunProgressLine progress("replay", "rays");
     const RtuRun run =
         runModel(settings.model, image.memory(), records, planned, progress.callback());
-    writeResultBuffer(options->out, run.results, recordWords);
-    std::cout << ResultSummary::of(run.results).describe();
+    // The thesis' result buffer is the SVO kind's output.
+    const std::vector<TraversalResult> results = svoResults(run.results);
+    writeResultBuffer(options->out, results, recordWords);
+    std::cout << ResultSummary::of(results).describe();
     reportRun(run, configuration, options->outputs, std::cout);
     std::cout << "wrote       " << options->out << "\n";
     if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";

@@ -4,6 +4,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "kinds/core_result.h"
+
 namespace rtu {
 
 namespace {
@@ -20,7 +22,7 @@ glm::dvec3 sky(const glm::dvec3& direction) {
 // R S, which is R S^-1.
 glm::dvec3 worldNormal(const SceneHit& hit, const ModelPlacement& placement,
                        const glm::dvec3& direction) {
-  const auto& normal = hit.result.normal;
+  const auto& normal = svoResult(hit.result).normal;  // the scene's models are SVO images
   glm::dvec3 axis(0.0);
   axis[normal[0] ? 0 : normal[1] ? 1 : 2] = 1.0;
   glm::dvec3 world = glm::normalize(placement.rotation * (axis / placement.scale));

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <thread>
 
+#include "kinds/core_result.h"
 #include "kinds/svo/job_setup.h"
 #include "rtu/rtu_recurrence.h"
 #include "run/lt_simulation.h"
@@ -29,7 +30,7 @@ void count(FrameStatistics& statistics, const SceneHit& hit) {
   statistics.culled += hit.culled;
   statistics.skipped += hit.skipped;
   statistics.earlyTerminations += hit.skipped > 0;
-  statistics.traversalCycles += hit.result.cost;
+  statistics.traversalCycles += resultCost(hit.result);
 }
 
 }  // namespace

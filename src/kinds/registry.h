@@ -4,6 +4,7 @@
 // withCoreKind (as pbrt-v4's CreateAccelerator chooses an accelerator), so nothing below branches
 // on the kind.
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -21,8 +22,10 @@ namespace rtu {
 
 template <class... Kinds>
 struct CoreKindList {
-  // What the job manager hands a core, whichever kind it is.
+  // What the job manager hands a core, and what a core returns, whichever kind it is (each kind's
+  // own types, distinct from every other kind's).
   using Job = std::variant<typename Kinds::Job...>;
+  using Result = std::variant<typename Kinds::Result...>;
   // The kinds as a type list (Catch2's TEMPLATE_LIST_TEST_CASE runs a test for each).
   using Tuple = std::tuple<Kinds...>;
   // Every kind's own counters, held by a core's statistics (kinds/core_statistics.h).
@@ -37,11 +40,27 @@ struct CoreKindList {
     }
   };
   static std::vector<std::string> names() { return {Kinds::kName...}; }
+
+  // Calls `visit(Kind{}, own)` with the kind whose result `result` holds and that result (const
+  // as `result` is): how kind-agnostic code reaches a result's kind (kinds/core_result.h). One
+  // test of the variant's index per kind but the last, none with one kind; no virtual call. (A
+  // result is never valueless: results are plain records, made without throwing.)
+  template <size_t I = 0, class Variant, class Visit>
+  static decltype(auto) visitResult(Variant& result, Visit&& visit) {
+    using Kind = std::tuple_element_t<I, Tuple>;
+    if constexpr (I + 1 < sizeof...(Kinds)) {
+      if (result.index() != I) return visitResult<I + 1>(result, std::forward<Visit>(visit));
+    }
+    auto* own = std::get_if<I>(&result);
+    if (own == nullptr) __builtin_unreachable();  // the last kind left: the result is its
+    return visit(Kind{}, *own);
+  }
 };
 
 using CoreKinds = CoreKindList<SvoKind>;  // a new kind: one more name here
 
 using CoreKindJob = CoreKinds::Job;
+using CoreKindResult = CoreKinds::Result;
 using CoreKindJobSetUp = JobSetUp<CoreKindJob>;
 
 // Calls `use(Kind{})` with the kind named `name`; throws std::invalid_argument naming the kinds

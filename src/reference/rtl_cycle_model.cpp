@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kinds/core_result.h"
 #include "kinds/registry.h"
 
 namespace rtu {
@@ -192,7 +193,8 @@ typename RtlTop::KindRegisters<Kind>::Wires RtlTop::KindRegisters<Kind>::evaluat
     w.coreOutValid[i] = core.state() == Kind::kOutState;
     if (w.coreOutValid[i]) {
       w.coreOutResult[i].tag = core.tag;
-      Kind::writeResult(core.idWord, core.behaviour, w.coreOutResult[i].result);
+      Kind::writeResult(core.idWord, core.behaviour,
+                        emplaceResult<Kind>(w.coreOutResult[i].result));
     }
   }
 

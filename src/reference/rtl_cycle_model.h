@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "kinds/registry.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/svo_kind.h"
@@ -51,7 +52,7 @@ inline SvoKind::Config RtlTopConfig::coreConfig<SvoKind>() const {
 }
 
 struct RtlTopRun {
-  std::vector<TraversalResult> results;  // in the order the host received them
+  std::vector<CoreKindResult> results;   // in the order the host received them
   std::vector<uint64_t> resultCycles;    // cycle of each result's handshake with the host
   std::vector<uint64_t> acceptCycles;    // per job index: its host -> job manager handshake
   std::vector<uint64_t> dispatchCycles;  // per job index: its scheduler -> core handshake
@@ -75,7 +76,7 @@ struct RtlCycle {
   uint64_t cycle = 0;
   bool accepted = false;  // the offer was taken
   struct Delivery {
-    TraversalResult result;
+    CoreKindResult result;  // of the cores' kind
     uint64_t tag = 0;
   };
   std::optional<Delivery> delivered;  // the result the host took

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <optional>
 
+#include "kinds/core_result.h"
+
 namespace rtu {
 namespace {
 
@@ -14,7 +16,7 @@ struct HeldRay {
   uint64_t readyFrom = 0;  // entry + latency
   std::optional<uint64_t> doneFrom;
   bool outstanding = false;
-  TraversalResult merged;
+  CoreKindResult merged;
   int nearest = -1;
 };
 
@@ -26,7 +28,8 @@ class SceneCycles {
       : rays_(rays),
         instances_(instances),
         scene_(scene),
-        format_(rtu.golden.format),
+        jobManager_{rtu.golden.format, rtu.golden.conversion},
+        miss_(coreKindMiss(rtu.core)),
         top_(memory, rtu) {
     scene_.validate();
   }
@@ -65,18 +68,18 @@ class SceneCycles {
     ray.outstanding = false;
     --jobsOutstanding_;
     const uint32_t instance = ray.candidates[ray.issued - 1].instance;
-    const uint32_t cost = ray.merged.cost + delivery.result.cost;
+    const uint32_t cost = resultCost(ray.merged) + resultCost(delivery.result);
     if (nearerSceneHit(delivery.result, instance, ray.merged, ray.nearest)) {
       ray.merged = delivery.result;
       ray.nearest = static_cast<int>(instance);
     }
-    ray.merged.cost = cost;
+    setResultCost(ray.merged, cost);
     if (ray.issued == ray.candidates.size() || endsEarly(ray)) finish(ray, now);
   }
 
   bool endsEarly(const HeldRay& ray) const {
     return scene_.options.earlyTermination && ray.nearest >= 0 &&
-           hitEndsRayBefore(format_.toDouble(ray.merged.tHit), ray.candidates[ray.issued].near);
+           hitEndsRayBefore(hitDistance(ray.merged, jobManager_), ray.candidates[ray.issued].near);
   }
 
   void finish(HeldRay& ray, uint64_t from) {
@@ -97,7 +100,7 @@ class SceneCycles {
     uint32_t culled = 0;
     ray.candidates = sceneCandidates(ray.record, instances_, scene_.options, culled);
     ray.readyFrom = now + static_cast<uint64_t>(scene_.latency);
-    ray.merged.idWord = ray.record.id;
+    ray.merged = miss_(ray.record.id);
     ++run_.statistics.rays;
     run_.statistics.culled += culled;
     if (ray.candidates.empty()) finish(ray, ray.readyFrom);
@@ -144,7 +147,8 @@ class SceneCycles {
   const std::vector<RayRecord>& rays_;
   const std::vector<SceneInstance>& instances_;
   SceneManagerConfig scene_;
-  FixedFormat format_;
+  JobManagerConfig jobManager_;  // how the cores' t-values were set up: the hits' distances
+  CoreKindMiss miss_;            // the cores' kind's
   RtlTop top_;
   // Registers.
   size_t nextRay_ = 0;         // the ray the host offers

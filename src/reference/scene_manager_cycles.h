@@ -17,7 +17,6 @@
 #include <vector>
 
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/thesis_records.h"
 #include "reference/rtl_cycle_model.h"
 #include "rtu/word_memory.h"
 #include "scene/scene_manager.h"
@@ -28,7 +27,7 @@ namespace rtu {
 struct SceneCyclesRun {
   // Per merged result, in the order the host received them:
   std::vector<uint64_t> rays;  // the ray's index in the input
-  std::vector<TraversalResult> results;
+  std::vector<CoreKindResult> results;
   std::vector<int> instances;  // the instance hit, -1 on a miss
   std::vector<uint64_t> arrivalCycles;
   std::vector<uint64_t> issueCycles;  // per job, in issue order: the cycle the job manager took it

@@ -1,13 +1,14 @@
 #pragma once
 // The seam between the RTU and a kind of traversal core. The RTU's job manager timing, scheduler,
 // result manager, reorder buffer, host links, recurrence and scene manager never look inside a
-// job; the shells (the cycle-accurate core, the loosely-timed core and top, the cache warmer, the
-// untimed shell of rtu/golden_shell.h, the analytic run's tracer, the per-cycle RTL reference's
-// core slots) are templates over a kind. A kind is a struct of types and static members, chosen
-// once at the top (kinds/registry.h) so that nothing below branches on it and no virtual call
-// lies on the per-cycle path. kinds/svo/svo_kind.h is the worked example; docs/architecture.md,
-// "The core-kind seam", lists what a kind declares. What the shells rely on besides the types
-// (docs/cycle-semantics.md, "Access width and multi-cycle states"):
+// job, and ask a result only what the kind answers (below); the shells (the cycle-accurate core,
+// the loosely-timed core and top, the cache warmer, the untimed shell of rtu/golden_shell.h, the
+// analytic run's tracer, the per-cycle RTL reference's core slots) are templates over a kind. A
+// kind is a struct of types and static members, chosen once at the top (kinds/registry.h) so that
+// nothing below branches on it and no virtual call lies on the per-cycle path. kinds/svo/svo_kind.h
+// is the worked example; docs/architecture.md, "The core-kind seam", lists what a kind declares.
+// What the shells rely on besides the types (docs/cycle-semantics.md, "Access width and multi-cycle
+// states"):
 //   kWordsPerRead        a power of two: a reading state reads that many words from memoryAddress()
 //                        rounded down to a multiple of it (one access, within one line), and its
 //                        behaviour's readWord calls stay within them;
@@ -15,6 +16,22 @@
 //   Behaviour::cost()    the job's states' own cycles (stateCycles each), blocked ones excluded;
 //   Setup                the job manager's set-up of a host record (JobSetUp below);
 //   setUp(record, config) a t-value record's set-up from the kind's Config (the cache warmer's).
+// What the kind-agnostic machinery asks of a Result (the payloads, the host sink and the runs carry
+// it as a CoreKindResult, kinds/registry.h; kinds/core_result.h asks through these):
+//   resultIdWord(r)      the id word the job's set-up gave it, carried back unchanged;
+//   resultHit(r)         whether the job hit anything;
+//   resultCost(r), setResultCost(r, cost)  its cost in cycles (Behaviour::cost()), and the scene
+//                        manager's replacement of it by the sum over a ray's jobs;
+//   resultBelowResolution(r)  flagged for reaching below the arithmetic's resolution (the run's
+//                        below_resolution; false for a kind without such a limit);
+//   countResult(r, counters)  its Counters counted from the result alone (the recurrence's runs,
+//                        which have no behaviour), as count(behaviour, counters) counts them;
+//   miss(idWord)         a miss carrying idWord at no cost (a scene's ray before any hit);
+//   hitAhead(r)          a hit ahead of the ray's origin: what a scene counts as a hit;
+//   nearer(a, b)         hit a strictly nearer than hit b (neither: as near; the scene manager
+//                        then takes the lower instance);
+//   hitDistance(r, jobManagerConfig)  how far along the ray a hit lies, in the units of its
+//                        direction, as the job manager set the job up (early termination).
 
 #include <cstdint>
 #include <string>

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "kinds/core_result.h"
 #include "kinds/registry.h"
 #include "kinds/svo/job_setup.h"
 #include "rtu/golden_shell.h"
@@ -16,7 +17,7 @@ namespace {
 
 // Each record's result and its timing inputs.
 struct Traced {
-  std::vector<TraversalResult> results;
+  std::vector<CoreKindResult> results;
   std::vector<JobTiming> timing;
 };
 
@@ -30,9 +31,9 @@ class RecordTracer {
 
   void trace(const HostRecord& record) {
     const JobSetUp<typename Kind::Job> set = setup_.setUp(record);
-    TraversalResult& result = traced.results.emplace_back();
+    typename Kind::Result& result = emplaceBackResult<Kind>(traced.results);
     shell_.run(set.idWord, set.job, result);
-    traced.timing.push_back(JobTiming{result.cost, set.latency, set.headerFetch});
+    traced.timing.push_back(JobTiming{Kind::resultCost(result), set.latency, set.headerFetch});
   }
 
   Traced traced;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "kinds/core_result.h"
 #include "kinds/svo/golden_model.h"
 #include "run/analytic_run.h"
 #include "run/lt_simulation.h"
@@ -20,7 +21,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 std::vector<double> rayCycles(const RtuRun& run) {
   std::vector<double> cycles(run.results.size());
   for (size_t i = 0; i < run.results.size(); ++i)
-    cycles[run.jobIndices[i]] = static_cast<double>(run.results[i].cost) + run.blockedCycles[i];
+    cycles[run.jobIndices[i]] =
+        static_cast<double>(resultCost(run.results[i])) + run.blockedCycles[i];
   return cycles;
 }
 
@@ -44,7 +46,9 @@ class Study {
   Study(const WordMemory& memory, const std::vector<TValueRecord>& jobs, const RtuConfig& config)
       : memory_(memory), jobs_(jobs), config_(config) {
     const auto start = std::chrono::steady_clock::now();
-    golden_ = GoldenModel(memory, config.golden()).traceAll(jobs);
+    // The jobs are t-value records, the SVO kind's, as its golden model's.
+    const auto golden = GoldenModel(memory, config.golden()).traceAll(jobs);
+    golden_.assign(golden.begin(), golden.end());
     goldenSeconds_ = secondsSince(start);
   }
 
@@ -95,7 +99,7 @@ class Study {
   ModeFidelity golden() {
     ModeFidelity m = base("golden", goldenSeconds_);
     std::vector<double> costs(golden_.size());
-    for (size_t i = 0; i < golden_.size(); ++i) costs[i] = golden_[i].cost;
+    for (size_t i = 0; i < golden_.size(); ++i) costs[i] = resultCost(golden_[i]);
     const auto [mean, p99] = relativeErrors(costs, referenceCycles_);
     m.perRayErrorMean = mean;
     m.perRayErrorP99 = p99;
@@ -133,7 +137,7 @@ class Study {
   const WordMemory& memory_;
   const std::vector<TValueRecord>& jobs_;
   const RtuConfig& config_;
-  std::vector<TraversalResult> golden_;
+  std::vector<CoreKindResult> golden_;
   double goldenSeconds_ = 0, referenceSeconds_ = 0;
   RtuStatistics reference_;
   std::vector<double> referenceCycles_;

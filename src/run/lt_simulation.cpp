@@ -24,8 +24,8 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
 namespace {
 
 // The run of a simulated top: its timing, results and the memory's counts.
-RtuRun runOf(LtTopBase& top, std::vector<TraversalResult> results, const RtuConfig& config) {
-  RtuRun run = recurrenceResults(top.takeTiming(), std::move(results), top.takeBlocked(), config);
+RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
+  RtuRun run = recurrenceResults(top.takeTiming(), top.takeResults(), top.takeBlocked(), config);
   RtuStatistics& stats = run.statistics;
   stats.model = "lt";
   stats.idealMemory = top.idealMemory();
@@ -49,7 +49,7 @@ RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& 
   RtuRun run = withCoreKind(config.core, [&](auto kind) {
     auto top = std::make_unique<LtTop<decltype(kind)>>("rtu", config, memory, records);
     simulate();
-    return runOf(*top, top->takeResults(), config);
+    return runOf(*top, config);
   });
   if (progress) progress(records.size(), records.size());
   run.statistics.hostSeconds =

@@ -5,6 +5,8 @@
 #include <tuple>
 #include <utility>
 
+#include "kinds/core_result.h"
+
 namespace rtu {
 namespace {
 
@@ -57,7 +59,7 @@ uint64_t maxBuffersFull(RecurrenceRun& run) {
 }
 
 // Sorts the run's handover column (maxBuffersFull).
-RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult>& results,
+RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<CoreKindResult>& results,
                            const std::vector<uint32_t>& blocked, const RtuConfig& config) {
   RtuStatistics stats = RtuStatistics::of(config);
   stats.rays = results.size();
@@ -66,16 +68,16 @@ RtuStatistics statisticsOf(RecurrenceRun& run, const std::vector<TraversalResult
   IdleCores idleCores(config.cores);
   std::array<uint64_t, 256> shortWaits{};  // jobs by wait: no map look-up per job
   for (size_t j = 0; j < results.size(); ++j) {
-    const TraversalResult& result = results[j];
+    const CoreKindResult& result = results[j];
+    const uint32_t cost = resultCost(result);
     const uint64_t blockedCycles = blocked.empty() ? 0 : blocked[j];
     CoreStatistics& core = stats.coreTimes[static_cast<size_t>(run.cores[j])];
     ++core.jobs;
-    core.busyCycles += result.cost;
+    core.busyCycles += cost;
     core.blockedCycles += blockedCycles;
     core.outCycles +=
-        run.handoverCycles[j] + 1 - (run.dispatchCycles[j] + 1 + result.cost + blockedCycles);
-    core.stackOverflows += result.stackOverflow;
-    core.tOverflows += result.tOverflow;
+        run.handoverCycles[j] + 1 - (run.dispatchCycles[j] + 1 + cost + blockedCycles);
+    countResult(result, core);
     stats.count(result, blockedCycles);
     const uint64_t wait = run.dispatchCycles[j] - run.pendingCycles[j];
     stats.jobManagerStallCycles += wait;
@@ -115,7 +117,7 @@ void arrangeInHostOrder(const std::vector<size_t>& hostOrder, Columns&... column
 
 }  // namespace
 
-RtuRun recurrenceResults(RecurrenceRun timing, std::vector<TraversalResult> results,
+RtuRun recurrenceResults(RecurrenceRun timing, std::vector<CoreKindResult> results,
                          std::vector<uint32_t> blocked, const RtuConfig& config) {
   RtuRun run;
   run.totalCycles = timing.totalCycles;

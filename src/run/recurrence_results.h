@@ -16,7 +16,7 @@ namespace rtu {
 // blocked) empty for ideal memory. The statistics' model, memory counts and host seconds are the
 // caller's to fill.
 // Taken by value: the columns are rearranged in place (callers move them in).
-RtuRun recurrenceResults(RecurrenceRun timing, std::vector<TraversalResult> results,
+RtuRun recurrenceResults(RecurrenceRun timing, std::vector<CoreKindResult> results,
                          std::vector<uint32_t> blocked, const RtuConfig& config);
 
 }  // namespace rtu

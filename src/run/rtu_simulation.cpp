@@ -162,8 +162,8 @@ RtuRun simulateScene(const WordMemory& memory, const std::vector<RayRecord>& ray
                   BlockRun{}, &scene);
 }
 
-std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run) {
-  std::vector<TraversalResult> ordered(run.results.size());
+std::vector<CoreKindResult> resultsInJobOrder(const RtuRun& run) {
+  std::vector<CoreKindResult> ordered(run.results.size());
   for (size_t i = 0; i < run.results.size(); ++i) ordered[run.jobIndices[i]] = run.results[i];
   return ordered;
 }

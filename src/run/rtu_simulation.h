@@ -36,7 +36,7 @@ struct BlockRun {
 };
 
 struct RtuRun {
-  std::vector<TraversalResult> results;  // in the order the host received them
+  std::vector<CoreKindResult> results;   // in the order the host received them
   std::vector<uint64_t> jobIndices;      // the host record (ray) each result answers
   std::vector<uint64_t> arrivalCycles;   // the cycle of each result's handshake with the host
   std::vector<int> instances;            // a scene: the instance each result hit (-1: none)
@@ -73,6 +73,6 @@ RtuRun simulateScene(const WordMemory& memory, const std::vector<RayRecord>& ray
                      const RunProgress& progress = {});
 
 // Results ordered by job index, as the golden model returns them.
-std::vector<TraversalResult> resultsInJobOrder(const RtuRun& run);
+std::vector<CoreKindResult> resultsInJobOrder(const RtuRun& run);
 
 }  // namespace rtu

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "kinds/core_result.h"
 #include "run/statistics_output.h"
 #include "sim/ca/rtu_top.h"
 
@@ -35,10 +36,11 @@ RtuStatistics RtuStatistics::of(const RtuConfig& config) {
   return stats;
 }
 
-void RtuStatistics::count(const TraversalResult& result, uint64_t blocked) {
-  totalCost += result.cost;
-  maxCost = std::max<uint64_t>(maxCost, result.cost);
-  belowResolution += result.belowResolution;
+void RtuStatistics::count(const CoreKindResult& result, uint64_t blocked) {
+  const uint32_t cost = resultCost(result);
+  totalCost += cost;
+  maxCost = std::max<uint64_t>(maxCost, cost);
+  belowResolution += resultBelowResolution(result);
   totalBlocked += blocked;
   maxBlocked = std::max(maxBlocked, blocked);
 }

@@ -14,6 +14,7 @@
 
 #include "base/statistics.h"
 #include "kinds/core_statistics.h"
+#include "kinds/registry.h"
 #include "scene/scene_manager_timing.h"
 #include "sim/memory/l2_cache_timing.h"
 #include "sim/rtu_config.h"
@@ -21,7 +22,6 @@
 namespace rtu {
 
 class RtuTop;
-struct TraversalResult;
 
 struct RtuStatistics {
   uint64_t rays = 0;
@@ -50,7 +50,7 @@ struct RtuStatistics {
   // The settings of a run of `config` (clock, cores, policy, host links), nothing counted yet.
   static RtuStatistics of(const RtuConfig& config);
   // Counts one result: its cost, cycles blocked on memory and flags.
-  void count(const TraversalResult& result, uint64_t blocked);
+  void count(const CoreKindResult& result, uint64_t blocked);
 
   // Shares of the cores' time (cores x total cycles); they add up to 1.
   struct CoreTimeShares {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kinds/core_result.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/svo_kind.h"
 #include "run/cache_warmer.h"
@@ -158,9 +159,10 @@ struct Sample {
   }
 };
 
-double meanCost(const std::vector<TraversalResult>& golden, uint64_t first, uint64_t count) {
+double meanCost(const std::vector<CoreKindResult>& golden, uint64_t first, uint64_t count) {
   double sum = 0;
-  for (uint64_t i = first; i < first + count; ++i) sum += static_cast<double>(golden[i].cost);
+  for (uint64_t i = first; i < first + count; ++i)
+    sum += static_cast<double>(resultCost(golden[i]));
   return count == 0 ? 0 : sum / static_cast<double>(count);
 }
 
@@ -282,7 +284,8 @@ SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>&
     count(measured, place.stratum == kFixed, place.stratum == kFixed ? 0 : place.stratum);
   }
 
-  const std::vector<TraversalResult> golden = GoldenModel(memory, config.golden()).traceAll(jobs);
+  const auto svoGolden = GoldenModel(memory, config.golden()).traceAll(jobs);
+  const std::vector<CoreKindResult> golden(svoGolden.begin(), svoGolden.end());
   for (const SamplePlan::Stratum& stratum : plan.strata) {
     sample.rays.push_back(static_cast<double>(stratum.rays));
     sample.stratumCost.push_back(meanCost(golden, stratum.first, stratum.rays));

@@ -16,12 +16,6 @@ glm::dvec3 toVector(const std::array<float, 3>& v) { return glm::dvec3(v[0], v[1
 // t-values and their conversion to fixed point round, by a few ulps of t and one step.
 double roundingAllowance(double near) { return 1e-4 * (1.0 + std::abs(near)); }
 
-TraversalResult missFor(uint32_t rayId) {
-  TraversalResult miss;
-  miss.idWord = rayId;
-  return miss;
-}
-
 }  // namespace
 
 SphereSpan raySphereSpan(const RayRecord& ray, const BoundingSphere& sphere) {
@@ -59,18 +53,18 @@ std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
 
 bool hitEndsRayBefore(double tHit, double near) { return tHit < near - roundingAllowance(near); }
 
-bool nearerSceneHit(const TraversalResult& result, uint32_t instance, const TraversalResult& best,
+bool nearerSceneHit(const CoreKindResult& result, uint32_t instance, const CoreKindResult& best,
                     int bestInstance) {
-  if (!result.hit || result.tHit < 0) return false;
-  if (bestInstance < 0) return true;
-  return result.tHit != best.tHit ? result.tHit < best.tHit
-                                  : instance < static_cast<uint32_t>(bestInstance);
+  if (!hitAhead(result)) return false;
+  if (bestInstance < 0 || nearer(result, best)) return true;
+  return !nearer(best, result) && instance < static_cast<uint32_t>(bestInstance);
 }
 
 SceneManager::SceneManager(WordMemory memory, const GoldenConfig& golden,
                            std::vector<SceneInstance> instances, SceneManagerOptions options,
                            float epsilon)
     : model_(memory, golden),
+      jobManager_{golden.format, golden.conversion},
       instances_(std::move(instances)),
       options_(options),
       epsilon_(epsilon) {
@@ -80,29 +74,30 @@ SceneManager::SceneManager(WordMemory memory, const GoldenConfig& golden,
 }
 
 SceneHit SceneManager::trace(const RayRecord& ray, std::vector<IssuedJob>* issued) {
+  // The golden model traverses: the SVO kind's miss until a hit.
   SceneHit best;
-  best.result = missFor(ray.id);
+  best.result = kindMiss<SvoKind>(ray.id);
   uint32_t cost = 0;
   const std::vector<SceneCandidate> candidates =
       sceneCandidates(ray, instances_, options_, best.culled);
   for (size_t next = 0; next < candidates.size(); ++next) {
     const SceneCandidate& candidate = candidates[next];
     if (options_.earlyTermination && best.instance >= 0 &&
-        hitEndsRayBefore(model_.config().format.toDouble(best.result.tHit), candidate.near)) {
+        hitEndsRayBefore(hitDistance(best.result, jobManager_), candidate.near)) {
       best.skipped = static_cast<uint32_t>(candidates.size() - next);
       break;
     }
-    const TraversalResult result =
+    const CoreKindResult result =
         model_.trace(rayRecordToJob(ray, headers_[candidate.instance], epsilon_));
     ++best.jobs;
-    cost += result.cost;
-    if (issued) issued->push_back({candidate.instance, result.cost, ray.id});
+    cost += resultCost(result);
+    if (issued) issued->push_back({candidate.instance, resultCost(result), ray.id});
     if (nearerSceneHit(result, candidate.instance, best.result, best.instance)) {
       best.result = result;
       best.instance = static_cast<int>(candidate.instance);
     }
   }
-  best.result.cost = cost;
+  setResultCost(best.result, cost);
   return best;
 }
 

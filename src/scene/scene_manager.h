@@ -19,6 +19,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "kinds/core_result.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/ray_transform.h"
 #include "rtu/word_memory.h"
@@ -61,8 +62,10 @@ std::vector<SceneCandidate> sceneCandidates(const RayRecord& ray,
 // Whether a hit at `tHit` (world units) ends the ray before a candidate whose sphere begins at
 // `near`.
 bool hitEndsRayBefore(double tHit, double near);
-// Whether `result` of `instance` is nearer than `best` of `bestInstance` (-1: no hit so far).
-bool nearerSceneHit(const TraversalResult& result, uint32_t instance, const TraversalResult& best,
+// Whether `result` of `instance` is nearer than `best` of `bestInstance` (-1: no hit so far), both
+// results of the same kind: a hit ahead of the ray's origin (hitAhead) and nearer than the best
+// (nearer), on equal distances of the lower instance.
+bool nearerSceneHit(const CoreKindResult& result, uint32_t instance, const CoreKindResult& best,
                     int bestInstance);
 
 // One job the manager issued, for a timing model of the frame.
@@ -75,7 +78,7 @@ struct IssuedJob {
 struct SceneHit {
   // The nearest hit's result (its id word carries the ray id and that job's a bits), or a miss
   // with the ray id. Either way `cost` is the sum over every job issued for the ray.
-  TraversalResult result;
+  CoreKindResult result;
   int instance = -1;  // the instance hit, -1 on a miss
   uint32_t jobs = 0;
   uint32_t culled = 0;   // instances whose sphere the ray misses
@@ -99,6 +102,7 @@ class SceneManager {
 
  private:
   GoldenModel model_;
+  JobManagerConfig jobManager_;  // the golden model's t-values, for the hits' distances
   std::vector<SceneInstance> instances_;
   std::vector<ModelHeader> headers_;
   SceneManagerOptions options_;

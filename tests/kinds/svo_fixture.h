@@ -59,9 +59,10 @@ struct KindFixture<SvoKind> {
     return rays;
   }
 
-  static std::vector<TraversalResult> golden(const WordMemory& memory, const RtuConfig& config,
-                                             const std::vector<TValueRecord>& jobs) {
-    return GoldenModel(memory, config.golden()).traceAll(jobs);
+  static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
+                                            const std::vector<TValueRecord>& jobs) {
+    const std::vector<TraversalResult> golden = GoldenModel(memory, config.golden()).traceAll(jobs);
+    return std::vector<CoreKindResult>(golden.begin(), golden.end());
   }
 
   // Q28.12 converted exactly, and a stack shallow enough to overflow.

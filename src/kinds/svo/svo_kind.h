@@ -99,6 +99,32 @@ struct SvoKind {
     counters.stackOverflows += core.stackOverflow();
     counters.tOverflows += core.tOverflow();
   }
+
+  // What the RTU's kind-agnostic machinery asks of a result (rtu/core_kind.h lists them;
+  // kinds/core_result.h asks them of a CoreKindResult). The recurrence's runs count the kind's
+  // counters from the results, as a timed core counts them from the behaviour.
+  static uint32_t resultIdWord(const Result& result) { return result.idWord; }
+  static bool resultHit(const Result& result) { return result.hit; }
+  static uint32_t resultCost(const Result& result) { return result.cost; }
+  static void setResultCost(Result& result, uint32_t cost) { result.cost = cost; }
+  static bool resultBelowResolution(const Result& result) { return result.belowResolution; }
+  static void countResult(const Result& result, Counters& counters) {
+    counters.stackOverflows += result.stackOverflow;
+    counters.tOverflows += result.tOverflow;
+  }
+  // The scene manager's: a ray's miss before any job returned, whether a hit lies ahead of the
+  // ray's origin (t >= 0), which of two hits is nearer (t in fixed point, exactly) and how far
+  // along the ray a hit lies, in the units of its direction (t in the job manager's format).
+  static Result miss(uint32_t idWord) {
+    Result result;
+    result.idWord = idWord;
+    return result;
+  }
+  static bool hitAhead(const Result& result) { return result.hit && result.tHit >= 0; }
+  static bool nearer(const Result& a, const Result& b) { return a.tHit < b.tHit; }
+  static double hitDistance(const Result& result, const JobManagerConfig& config) {
+    return config.format.toDouble(result.tHit);
+  }
 };
 
 }  // namespace rtu

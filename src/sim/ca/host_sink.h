@@ -22,7 +22,7 @@ class HostSink final : public Agent {
   // The results received, a column per field, so a run takes them over without a copy.
   struct Arrivals {
     std::vector<uint64_t> cycles;
-    std::vector<TraversalResult> results;
+    std::vector<CoreKindResult> results;
     std::vector<uint64_t> rays;  // each result's ids.ray
     std::vector<uint64_t> jobs;  // and ids.job
     std::vector<uint32_t> blockedCycles;

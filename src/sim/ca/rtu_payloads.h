@@ -10,7 +10,6 @@
 #include "kinds/registry.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
-#include "kinds/svo/thesis_records.h"
 
 namespace rtu {
 
@@ -38,10 +37,11 @@ struct CoreJob {
   uint64_t id() const { return ids.job; }
 };
 
-// The RTL's result_t.
+// The RTL's result_t: the result of the cores' kind (for SVO the thesis' record, TraversalResult),
+// looked into only through kinds/core_result.h.
 struct CoreResult {
   PayloadIds ids;
-  TraversalResult result;      // its cost counts traversal states only, as the golden model's
+  CoreKindResult result;       // its cost counts the kind's states only, as the golden model's
   uint32_t blockedCycles = 0;  // cycles the core spent BLOCKED on memory for this ray
   int instance = -1;           // a scene manager's merged result: the instance hit (-1: none)
   uint64_t id() const { return ids.job; }

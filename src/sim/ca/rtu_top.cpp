@@ -46,8 +46,8 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   if (scene) {
     sceneRays_ = channel<HostPayload>("scene_rays", clock_, trace, top + ".scene_manager.in");
     rayResults_ = channel<CoreResult>("ray_results", clock_, trace, top + ".scene_manager.out");
-    sceneManager_ = std::make_unique<SceneManagerModule>(
-        "scene_manager", clock_, pump_, *scene, config.sceneManager, config.jobManager.format);
+    sceneManager_ =
+        std::make_unique<SceneManagerModule>("scene_manager", clock_, pump_, *scene, config);
     sceneRays_->connect(*source_, HostSource::kOutPort, *sceneManager_,
                         SceneManagerModule::kRaysInPort);
     hostJobs_->connect(*sceneManager_, SceneManagerModule::kJobsOutPort, *jobManager_,

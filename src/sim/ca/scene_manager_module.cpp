@@ -9,14 +9,15 @@ namespace rtu {
 
 SceneManagerModule::SceneManagerModule(sc_core::sc_module_name name, const CycleClock& clock,
                                        DecisionPump& pump, std::vector<SceneInstance> instances,
-                                       SceneManagerConfig config, FixedFormat format)
+                                       const RtuConfig& config)
     : sc_core::sc_module(name),
       Agent(pump),
       clock_(clock),
       wake_(clock),
       instances_(std::move(instances)),
-      config_(config),
-      format_(format) {
+      config_(config.sceneManager),
+      jobManager_(config.jobManager),
+      miss_(coreKindMiss(config.core)) {
   config_.validate();
 }
 
@@ -85,18 +86,18 @@ void SceneManagerModule::merge(const CoreResult& result, uint64_t cycle) {
   ray.outstanding = false;
   --jobsOutstanding_;
   const uint32_t instance = ray.candidates[ray.next - 1].instance;
-  const uint32_t cost = ray.merged.result.cost + result.result.cost;
+  const uint32_t cost = resultCost(ray.merged.result) + resultCost(result.result);
   ray.merged.blockedCycles += result.blockedCycles;
   if (nearerSceneHit(result.result, instance, ray.merged.result, ray.nearest)) {
     ray.merged.result = result.result;
     ray.nearest = static_cast<int>(instance);
     ray.merged.instance = ray.nearest;
   }
-  ray.merged.result.cost = cost;
+  setResultCost(ray.merged.result, cost);
   const bool allIssued = ray.next == ray.candidates.size();
   const bool ended =
       !allIssued && config_.options.earlyTermination && ray.nearest >= 0 &&
-      hitEndsRayBefore(format_.toDouble(ray.merged.result.tHit), ray.candidates[ray.next].near);
+      hitEndsRayBefore(hitDistance(ray.merged.result, jobManager_), ray.candidates[ray.next].near);
   if (allIssued || ended) finish(ray, cycle + 1);
 }
 
@@ -144,7 +145,7 @@ void SceneManagerModule::takeRay(uint64_t now) {
   ray.candidates = sceneCandidates(ray.record, instances_, config_.options, culled);
   ray.readyFrom = now + static_cast<uint64_t>(config_.latency);
   ray.merged.ids = PayloadIds::plain(ray.id);
-  ray.merged.result.idWord = record->id;
+  ray.merged.result = miss_(record->id);
   ++statistics_.rays;
   statistics_.culled += culled;
   rays_.push_back(ray);

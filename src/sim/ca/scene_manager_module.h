@@ -34,7 +34,7 @@
 
 #include <systemc>
 
-#include "kinds/svo/fixed_point.h"
+#include "kinds/core_result.h"
 #include "scene/scene_manager.h"
 #include "scene/scene_manager_timing.h"
 #include "sim/ca/rtu_payloads.h"
@@ -42,6 +42,7 @@
 #include "sim/kernel/decision_pump.h"
 #include "sim/kernel/module_process.h"
 #include "sim/kernel/transfer_channel.h"
+#include "sim/rtu_config.h"
 
 namespace rtu {
 
@@ -51,9 +52,10 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
   // results, merged results to the host.
   static constexpr int kRaysInPort = 0, kJobsOutPort = 1, kResultsInPort = 2, kRaysOutPort = 3;
 
+  // Of `config`: the scene manager's settings, the cores' kind (its miss) and the job manager's
+  // (the distance of a hit).
   SceneManagerModule(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-                     std::vector<SceneInstance> instances, SceneManagerConfig config,
-                     FixedFormat format);
+                     std::vector<SceneInstance> instances, const RtuConfig& config);
 
   void bind(TransferChannel<HostPayload>& raysIn, TransferChannel<HostPayload>& jobsOut,
             TransferChannel<CoreResult>& resultsIn, TransferChannel<CoreResult>& raysOut);
@@ -94,7 +96,8 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
   CycleWake wake_;
   std::vector<SceneInstance> instances_;
   SceneManagerConfig config_;
-  FixedFormat format_;  // of the t-values the cores report
+  JobManagerConfig jobManager_;  // how the t-values the cores report were set up
+  CoreKindMiss miss_;            // the cores' kind's
   TransferChannel<HostPayload>* raysIn_ = nullptr;
   TransferChannel<HostPayload>* jobsOut_ = nullptr;
   TransferChannel<CoreResult>* resultsIn_ = nullptr;

@@ -28,6 +28,7 @@
 
 #include <systemc>
 
+#include "kinds/core_result.h"
 #include "kinds/core_statistics.h"
 #include "sim/ca/core_memory_if.h"
 #include "sim/ca/rtu_payloads.h"
@@ -208,8 +209,9 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   void offerResult() {
     outCycle_ = localCycle_;
     traceState(outCycle_, Kind::kOutState);
-    CoreResult result{ids_, {}, static_cast<uint32_t>(blocked_)};
-    Kind::writeResult(idWord_, core_, result.result);
+    CoreResult result{ids_, CoreKindResult(std::in_place_type<typename Kind::Result>),
+                      static_cast<uint32_t>(blocked_)};
+    Kind::writeResult(idWord_, core_, *std::get_if<typename Kind::Result>(&result.result));
     statistics_.busyCycles += core_.cost();
     statistics_.blockedCycles += blocked_;
     Kind::count(core_, statistics_);

@@ -16,6 +16,8 @@ LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, Word
       accessBytes_(accessBytes),
       time_(CycleClock::atMegahertz(config.clockMhz)),
       setup_(makeCoreJobSetup(config.core, memory, config.jobManager)) {
+  results_.reserve(records.size());
+  prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
                                                    static_cast<double>(config.ltQuantum));
   if (config.memory.ideal) {

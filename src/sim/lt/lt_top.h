@@ -23,7 +23,7 @@
 #include <tlm>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
-#include "base/prefault.h"
+#include "kinds/core_result.h"
 #include "kinds/svo/job_setup.h"
 #include "rtu/rtu_recurrence.h"
 #include "sim/ca/rtu_payloads.h"
@@ -40,8 +40,10 @@ namespace rtu {
 // the quantum. The cores are LtTop's, reached once per dispatch through traverseOn.
 class LtTopBase : public sc_core::sc_module {
  public:
-  // After the simulation, taken once: the cycles, and each job's blocked cycles by job index.
+  // After the simulation, taken once: the cycles, and by job index each job's result and blocked
+  // cycles.
   RecurrenceRun takeTiming() { return std::move(timing_); }
+  std::vector<CoreKindResult> takeResults() { return std::move(results_); }
   std::vector<uint32_t> takeBlocked() { return std::move(blocked_); }
   bool idealMemory() const { return rom_ != nullptr; }
   std::vector<CacheStats> l1Statistics() const;
@@ -56,8 +58,13 @@ class LtTopBase : public sc_core::sc_module {
   // Binds a core's socket to its memory: the ROM, or an L1 of its own in front of the L2.
   void bindCore(tlm::tlm_initiator_socket<>& socket);
   const LtTime& time() const { return time_; }
+  // The next job's result, of `Kind`, for its core to write.
+  template <class Kind>
+  typename Kind::Result& nextResult() {
+    return emplaceBackResult<Kind>(results_);
+  }
 
-  // Runs `job` on core `core` from its first state in `initCycle`, keeping its result.
+  // Runs `job` on core `core` from its first state in `initCycle`, writing nextResult().
   virtual LtTraversal traverseOn(int core, const CoreJob& job, uint64_t initCycle) = 0;
 
  private:
@@ -78,6 +85,7 @@ class LtTopBase : public sc_core::sc_module {
   std::unique_ptr<LtDram> dram_;
   CoreJob current_;  // the job set up last
   RecurrenceRun timing_;
+  std::vector<CoreKindResult> results_;
   std::vector<uint32_t> blocked_;
 };
 
@@ -89,8 +97,6 @@ class LtTop final : public LtTopBase {
         const std::vector<HostRecord>& records)
       : LtTopBase(name, config, memory, records, 4 * Kind::kWordsPerRead),
         behaviour_(Kind::behaviour(config.coreConfig<Kind>())) {
-    results_.reserve(records.size());
-    prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
     for (int i = 0; i < config.cores; ++i) {
       cores_.push_back(std::make_unique<LtCore<Kind>>(("core_" + std::to_string(i)).c_str(),
                                                       behaviour_, time()));
@@ -98,20 +104,17 @@ class LtTop final : public LtTopBase {
     }
   }
 
-  // After the simulation, taken once: each job's result by job index.
-  std::vector<typename Kind::Result> takeResults() { return std::move(results_); }
-
  private:
   LtTraversal traverseOn(int core, const CoreJob& job, uint64_t initCycle) override {
     // The job manager set the job up for this kind: no check (std::get would test and throw).
     return cores_[static_cast<size_t>(core)]->traverse(
-        job.idWord, *std::get_if<typename Kind::Job>(&job.job), initCycle, results_.emplace_back());
+        job.idWord, *std::get_if<typename Kind::Job>(&job.job), initCycle,
+        this->template nextResult<Kind>());
   }
 
   // The cores' shared behaviour: each runs a job to its end in one call (lt_core.h).
   typename Kind::Behaviour behaviour_;
   std::vector<std::unique_ptr<LtCore<Kind>>> cores_;
-  std::vector<typename Kind::Result> results_;
 };
 
 }  // namespace rtu
