@@ -361,7 +361,7 @@ std::vector<Setting> makeSchema() {
   // The kind of core, then each kind's own settings.
   s.push_back(choice(
       "core", "--core", CoreKinds::names(), model | arith,
-      "the kind of traversal core: svo (the thesis' sparse voxel octree core)",
+      "the kind of traversal core (" + CoreKinds::described() + ")",
       [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
   addSvoSettings(s);
   // The workload.

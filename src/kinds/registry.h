@@ -40,6 +40,13 @@ struct CoreKindList {
     }
   };
   static std::vector<std::string> names() { return {Kinds::kName...}; }
+  // "name: description" of each kind, separated by "; " (the schema's text for `core`).
+  static std::string described() {
+    std::string text;
+    ((text += (text.empty() ? "" : "; ") + std::string(Kinds::kName) + ": " + Kinds::kDescription),
+     ...);
+    return text;
+  }
 
   // Calls `visit(Kind{}, own)` with the kind whose result `result` holds and that result (const
   // as `result` is): how kind-agnostic code reaches a result's kind (kinds/core_result.h). One
