@@ -17,14 +17,14 @@ TEST_CASE("Aabb: grows from empty, its area and centre", "[aabb]") {
   CHECK_FALSE(box.empty());
   CHECK(box.area() == 0);  // a point
   box.grow({2, 4, 7});
-  CHECK(box.extent() == std::array<double, 3>{1, 2, 4});
+  CHECK(box.extent() == glm::dvec3{1, 2, 4});
   CHECK(box.area() == 2 * (1 * 2 + 2 * 4 + 4 * 1));
-  CHECK(box.centre() == std::array<double, 3>{1.5, 3, 5});
+  CHECK(box.centre() == glm::dvec3{1.5, 3, 5});
   Aabb<double> other;
   other.grow({-1, 2, 3});
   other.merge(Aabb<double>{});  // an empty box changes nothing
   box.merge(other);
-  CHECK(box.lower == std::array<double, 3>{-1, 2, 3});
+  CHECK(box.lower == glm::dvec3{-1, 2, 3});
   CHECK(box.contains(other));
   CHECK_FALSE(other.contains(box));
 }
@@ -35,8 +35,8 @@ TEST_CASE("Aabb: rounded outward to float32, it still encloses the double box", 
     box.grow({0.5, -2, 1024});
     box.grow({0.75, 3, 2048});
     const Aabb<float> out = roundOutward(box);
-    CHECK(out.lower == std::array<float, 3>{0.5f, -2, 1024});
-    CHECK(out.upper == std::array<float, 3>{0.75f, 3, 2048});
+    CHECK(out.lower == glm::vec3{0.5f, -2, 1024});
+    CHECK(out.upper == glm::vec3{0.75f, 3, 2048});
   }
   SECTION("0.1 rounds to nearest upward in float32, so as a lower bound it steps down") {
     Aabb<double> box;
@@ -54,7 +54,7 @@ TEST_CASE("Aabb: rounded outward to float32, it still encloses the double box", 
       box.grow({uniform(random), uniform(random), uniform(random)});
       box.grow({uniform(random), uniform(random), uniform(random)});
       const Aabb<float> out = roundOutward(box);
-      for (size_t k = 0; k < 3; ++k) {
+      for (int k = 0; k < 3; ++k) {
         CHECK(static_cast<double>(out.lower[k]) <= box.lower[k]);
         CHECK(static_cast<double>(out.upper[k]) >= box.upper[k]);
         // at most one float step beyond the nearest

@@ -30,10 +30,7 @@ std::vector<std::optional<TriangleHit<double>>> allTests(const Vec3<double>& o,
                                                          const Vec3<double>& d,
                                                          const Triangle<double>& tri,
                                                          double tMin = 0, double tMax = 1e30) {
-  const auto f = [](const Vec3<double>& v) {
-    return Vec3<float>{static_cast<float>(v[0]), static_cast<float>(v[1]),
-                       static_cast<float>(v[2])};
-  };
+  const auto f = [](const Vec3<double>& v) { return Vec3<float>(v); };
   const auto widen = [](const std::optional<TriangleHit<float>>& h) {
     return h ? std::optional<TriangleHit<double>>(TriangleHit<double>{h->t, h->u, h->v})
              : std::nullopt;
@@ -115,7 +112,7 @@ TEST_CASE("Triangle tests: a float edge function that rounds to 0 is decided in 
   const Vec3<float> right{2, -2, 0}, left{-2, 2, 0};
   CHECK_FALSE(watertight<float>(o, d, right, b, c, 0, 10));
   CHECK(watertight<float>(o, d, left, c, b, 0, 10));
-  const auto wide = [](const Vec3<float>& v) { return Vec3<double>{v[0], v[1], v[2]}; };
+  const auto wide = [](const Vec3<float>& v) { return Vec3<double>(v); };
   CHECK_FALSE(watertight<double>(wide(o), wide(d), wide(right), wide(b), wide(c), 0, 10));
   CHECK(watertight<double>(wide(o), wide(d), wide(left), wide(c), wide(b), 0, 10));
 }

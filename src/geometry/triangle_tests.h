@@ -17,16 +17,18 @@
 //                 absolute epsilon (it would depend on the scene's scale). Not watertight: a ray
 //                 through a shared edge may miss both triangles.
 
-#include <array>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <utility>
 
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 namespace rtu {
 
+// GLM's vectors: each product and sum rounded on its own, dot products as (x x' + y y') + z z'.
 template <class T>
-using Vec3 = std::array<T, 3>;
+using Vec3 = glm::vec<3, T>;
 
 template <class T>
 struct TriangleHit {
@@ -35,33 +37,7 @@ struct TriangleHit {
 
 namespace triangle_detail {
 
-template <class T>
-Vec3<T> minus(const Vec3<T>& a, const Vec3<T>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-
-template <class T>
-Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
-  Vec3<T> c;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const T first = a[j] * b[k];
-    const T second = a[k] * b[j];
-    c[i] = first - second;
-  }
-  return c;
-}
-
-template <class T>
-T dot(const Vec3<T>& a, const Vec3<T>& b) {
-  T sum = a[0] * b[0];
-  const T second = a[1] * b[1];
-  sum = sum + second;
-  const T third = a[2] * b[2];
-  return sum + third;
-}
-
-// a x b - a y b' of the sheared 2D edge function, in its own precision.
+// a_x b_y - a_y b_x, the sheared 2D edge function, in T.
 template <class T>
 T edge(T ax, T ay, T bx, T by) {
   const T first = ax * by;
@@ -95,11 +71,10 @@ template <class T>
 std::optional<TriangleHit<T>> watertight(const ShearedRay<T>& ray, const Vec3<T>& v0,
                                          const Vec3<T>& v1, const Vec3<T>& v2, T tMin, T tMax) {
   using triangle_detail::edge;
-  using triangle_detail::minus;
-  const Vec3<T> a = minus(v0, ray.origin), b = minus(v1, ray.origin), c = minus(v2, ray.origin);
+  const Vec3<T> a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
   const auto sheared = [&ray](const Vec3<T>& p, T s, int k) {
-    const T shift = s * p[static_cast<size_t>(ray.kz)];
-    return p[static_cast<size_t>(k)] - shift;
+    const T shift = s * p[ray.kz];
+    return p[k] - shift;
   };
   const T ax = sheared(a, ray.sx, ray.kx), ay = sheared(a, ray.sy, ray.ky);
   const T bx = sheared(b, ray.sx, ray.kx), by = sheared(b, ray.sy, ray.ky);
@@ -117,7 +92,7 @@ std::optional<TriangleHit<T>> watertight(const ShearedRay<T>& ray, const Vec3<T>
   T det = u + v;
   det = det + w;
   if (det == 0) return std::nullopt;
-  const size_t kz = static_cast<size_t>(ray.kz);
+  const int kz = ray.kz;
   const T az = ray.sz * a[kz], bz = ray.sz * b[kz], cz = ray.sz * c[kz];
   T scaled = u * az;
   const T second = v * bz;
@@ -142,23 +117,20 @@ std::optional<TriangleHit<T>> watertight(const Vec3<T>& origin, const Vec3<T>& d
 inline std::optional<TriangleHit<float>> mollerTrumbore(
     const Vec3<float>& origin, const Vec3<float>& direction, const Vec3<float>& v0,
     const Vec3<float>& v1, const Vec3<float>& v2, float tMin, float tMax) {
-  using triangle_detail::cross;
-  using triangle_detail::dot;
-  using triangle_detail::minus;
-  const Vec3<float> e1 = minus(v1, v0), e2 = minus(v2, v0);
-  const Vec3<float> p = cross(direction, e2);
-  const float det = dot(e1, p);
+  const Vec3<float> e1 = v1 - v0, e2 = v2 - v0;
+  const Vec3<float> p = glm::cross(direction, e2);
+  const float det = glm::dot(e1, p);
   if (det == 0.0f) return std::nullopt;
   const float inverse = 1.0f / det;
-  const Vec3<float> s = minus(origin, v0);
-  const float u = dot(s, p) * inverse;
+  const Vec3<float> s = origin - v0;
+  const float u = glm::dot(s, p) * inverse;
   if (u < 0.0f || u > 1.0f) return std::nullopt;
-  const Vec3<float> q = cross(s, e1);
-  const float v = dot(direction, q) * inverse;
+  const Vec3<float> q = glm::cross(s, e1);
+  const float v = glm::dot(direction, q) * inverse;
   if (v < 0.0f) return std::nullopt;
   const float sum = u + v;
   if (sum > 1.0f) return std::nullopt;
-  const float t = dot(e2, q) * inverse;
+  const float t = glm::dot(e2, q) * inverse;
   if (t < tMin || t > tMax) return std::nullopt;
   return TriangleHit<float>{t, u, v};
 }
