@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 namespace rtu {
@@ -60,18 +59,6 @@ RayParameters<Real> computeRayParameters(const Ray& ray, Real epsilon) {
 
 template RayParameters<float> computeRayParameters(const Ray&, float);
 template RayParameters<double> computeRayParameters(const Ray&, double);
-
-uint32_t floatBits(float value) {
-  uint32_t bits;
-  std::memcpy(&bits, &value, sizeof bits);
-  return bits;
-}
-
-float bitsToFloat(uint32_t bits) {
-  float value;
-  std::memcpy(&value, &bits, sizeof value);
-  return value;
-}
 
 TValueRecord makeTValueRecord(uint32_t id, const Ray& ray, uint32_t root, double epsilon) {
   const RayParameters<float> parameters =

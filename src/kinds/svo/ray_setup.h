@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "base/float_bits.h"
 #include "geometry/ray.h"
 #include "kinds/svo/thesis_records.h"
 
@@ -35,8 +36,5 @@ RayParameters<Real> computeRayParameters(const Ray& ray, Real epsilon);
 // The float32 job the thesis driver would send for `ray` (appendix F, get_ray_job).
 TValueRecord makeTValueRecord(uint32_t id, const Ray& ray, uint32_t root,
                               double epsilon = kDefaultDirectionEpsilon);
-
-uint32_t floatBits(float value);
-float bitsToFloat(uint32_t bits);
 
 }  // namespace rtu

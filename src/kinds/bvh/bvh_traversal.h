@@ -1,0 +1,344 @@
+#pragma once
+// The golden traversal of seed 003's BVH (Langr 2016, section 3.2.6, lines 675-681) for one ray,
+// as the behaviour of a future BVH core: a state machine advanced by step(readWord), one state per
+// step, each reading state one 4-word access (kWordsPerRead) of the memory image. Templated on the
+// node layout, as madmann91/bvh and Embree template theirs, and on the primitive intersector.
+//
+// The seed's rule: both child boxes are tested at the parent; a hit child goes on, the other, if
+// also hit, is pushed; neither hit pops; a leaf tests all its triangles; the traversal ends when
+// the stack is empty, and a box whose entry lies beyond the nearest hit so far is skipped. What
+// the seed leaves open is a setting or a reading (docs/triangles.md): which hit child goes first
+// (ChildOrder), and that a hit replaces the best only when strictly nearer, so of equal t the
+// first in traversal order wins.
+//
+// States, one step each:
+//   ROOT0, ROOT1   the root node's words 0-3 and 4-7
+//   ROOT_TEST      the root's box against the ray (1 box test): miss -> OUT
+//   LEFT0, LEFT1,  the current inner node's children's words (2 accesses each)
+//   RIGHT0, RIGHT1
+//   DECIDE         both child boxes tested (2 box tests): go to the nearer hit child and push
+//                  the other if hit too; neither -> POP
+//   REF            the leaf's next triangle reference (1 word)
+//   TRI0-TRI2      the triangle's 12 words
+//   TEST           the triangle test; the leaf's last -> POP
+//   POP            OUT when the stack is empty; otherwise the newest entry, skipped (POP again)
+//                  when it begins beyond the nearest hit
+// A node reached from DECIDE or POP is entered without another fetch: its child or leaf words
+// came with its parent's fetch (or the stack entry).
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+
+#include "base/float_bits.h"
+#include "geometry/aabb.h"
+#include "geometry/triangle_tests.h"
+#include "kinds/bvh/bvh_ray.h"
+#include "rtu/traversal_stack.h"
+
+namespace rtu {
+
+enum class BvhState : uint8_t {
+  Idle,
+  Root0,
+  Root1,
+  RootTest,
+  Left0,
+  Left1,
+  Right0,
+  Right1,
+  Decide,
+  Ref,
+  Tri0,
+  Tri1,
+  Tri2,
+  Test,
+  Pop,
+  Out
+};
+
+// Which of two hit children the traversal enters first; the other is pushed.
+enum class ChildOrder : uint8_t {
+  Entry,  // the smaller entry distance, the left child on ties
+  Axis,   // by the ray's sign on the axis that separates the children's centres most
+};
+
+// Where the image's sections start, in words (each a multiple of 4, so that a node and a triangle
+// record begin an access).
+struct BvhSections {
+  uint32_t nodes = 0, refs = 0, triangles = 0;
+};
+
+struct BvhJob {
+  BvhRay ray;
+  BvhSections image;
+};
+
+// A triangle record: v0, v1, v2 as float32 x, y, z, then the source triangle's id, then 2 zero
+// words.
+constexpr uint32_t kBvhTriangleWords = 12;
+
+// What one ray's traversal counted.
+struct BvhRayCounts {
+  uint32_t nodes = 0;  // node records fetched
+  uint32_t boxTests = 0;
+  uint32_t triangleTests = 0;
+  uint32_t pushes = 0, pops = 0;
+  uint32_t dropped = 0;  // stack entries lost to a push onto a full stack
+};
+
+template <class Layout, class Intersector>
+class BvhTraversal {
+ public:
+  using Words = typename Layout::Words;
+  static constexpr uint32_t kWordsPerRead = 4;
+
+  BvhTraversal(int stackDepth, ChildOrder order) : stack_(stackDepth), order_(order) {}
+
+  void start(const BvhJob& job) {
+    ray_ = job.ray;
+    image_ = job.image;
+    intersector_.prepare(ray_);
+    stack_.clear();
+    counts_ = {};
+    cost_ = 0;
+    hit_ = false;
+    tBest_ = ray_.tMax;
+    state_ = BvhState::Root0;
+  }
+
+  BvhState state() const { return state_; }
+  bool busy() const { return state_ != BvhState::Idle && state_ != BvhState::Out; }
+  bool readsMemory() const {
+    switch (state_) {
+      case BvhState::Root0:
+      case BvhState::Root1:
+      case BvhState::Left0:
+      case BvhState::Left1:
+      case BvhState::Right0:
+      case BvhState::Right1:
+      case BvhState::Ref:
+      case BvhState::Tri0:
+      case BvhState::Tri1:
+      case BvhState::Tri2: return true;
+      default: return false;
+    }
+  }
+  // The first word the current state reads: an access of kWordsPerRead words starts there, except
+  // in REF, which reads the one word within its access.
+  uint32_t memoryAddress() const {
+    switch (state_) {
+      case BvhState::Root0: return nodeAddress(0);
+      case BvhState::Root1: return nodeAddress(0) + 4;
+      case BvhState::Left0: return nodeAddress(Layout::left(current_));
+      case BvhState::Left1: return nodeAddress(Layout::left(current_)) + 4;
+      case BvhState::Right0: return nodeAddress(Layout::right(current_));
+      case BvhState::Right1: return nodeAddress(Layout::right(current_)) + 4;
+      case BvhState::Ref: return image_.refs + nextRef_;
+      case BvhState::Tri0: return triangleAddress();
+      case BvhState::Tri1: return triangleAddress() + 4;
+      case BvhState::Tri2: return triangleAddress() + 8;
+      default: return 0;
+    }
+  }
+
+  template <class ReadWord>
+  void step(ReadWord&& readWord) {
+    ++cost_;
+    switch (state_) {
+      case BvhState::Root0:
+        fetch(readWord, current_, 0);
+        state_ = BvhState::Root1;
+        break;
+      case BvhState::Root1:
+        fetch(readWord, current_, 4);
+        state_ = BvhState::RootTest;
+        break;
+      case BvhState::RootTest: testRoot(); break;
+      case BvhState::Left0:
+        fetch(readWord, left_, 0);
+        state_ = BvhState::Left1;
+        break;
+      case BvhState::Left1:
+        fetch(readWord, left_, 4);
+        state_ = BvhState::Right0;
+        break;
+      case BvhState::Right0:
+        fetch(readWord, right_, 0);
+        state_ = BvhState::Right1;
+        break;
+      case BvhState::Right1:
+        fetch(readWord, right_, 4);
+        state_ = BvhState::Decide;
+        break;
+      case BvhState::Decide: decide(); break;
+      case BvhState::Ref:
+        triangle_ = readWord(memoryAddress());
+        state_ = BvhState::Tri0;
+        break;
+      case BvhState::Tri0:
+        readTriangle(readWord, 0);
+        state_ = BvhState::Tri1;
+        break;
+      case BvhState::Tri1:
+        readTriangle(readWord, 4);
+        state_ = BvhState::Tri2;
+        break;
+      case BvhState::Tri2:
+        readTriangle(readWord, 8);
+        state_ = BvhState::Test;
+        break;
+      case BvhState::Test: test(); break;
+      case BvhState::Pop: pop(); break;
+      default: --cost_; throw std::logic_error("BVH traversal stepped while idle or done");
+    }
+  }
+  void finish() { state_ = BvhState::Idle; }
+
+  bool hit() const { return hit_; }
+  float t() const { return tBest_; }
+  float u() const { return u_; }
+  float v() const { return v_; }
+  uint32_t primitive() const { return primitive_; }  // the hit triangle's source id
+  uint32_t cost() const { return cost_; }
+  BvhRayCounts counts() const {
+    BvhRayCounts counts = counts_;
+    counts.dropped = static_cast<uint32_t>(stack_.dropped());
+    return counts;
+  }
+
+ private:
+  // A pushed child: its child or leaf words and where the ray enters its box.
+  struct Entry {
+    uint32_t word6 = 0, word7 = 0;
+    float tEntry = 0;
+  };
+  struct BoxHit {
+    bool hit = false;
+    float tEntry = 0;
+  };
+
+  uint32_t nodeAddress(uint32_t node) const { return image_.nodes + node * Layout::kWords; }
+  uint32_t triangleAddress() const { return image_.triangles + triangle_ * kBvhTriangleWords; }
+
+  template <class ReadWord>
+  void fetch(ReadWord& readWord, Words& node, uint32_t offset) {
+    const uint32_t address = memoryAddress();
+    for (uint32_t i = 0; i < kWordsPerRead; ++i) node[offset + i] = readWord(address + i);
+    if (offset == 0) ++counts_.nodes;
+  }
+  template <class ReadWord>
+  void readTriangle(ReadWord& readWord, uint32_t offset) {
+    const uint32_t address = memoryAddress();
+    for (uint32_t i = 0; i < kWordsPerRead; ++i) triangleWords_[offset + i] = readWord(address + i);
+  }
+
+  // The float32 slab test against [tMin, tBest]: each distance one rounded product, no fused
+  // multiply-add; a hit when the entry is not beyond the exit.
+  BoxHit slab(const Aabb<float>& box) {
+    ++counts_.boxTests;
+    float tNear = ray_.tMin, tFar = tBest_;
+    for (int k = 0; k < 3; ++k) {
+      const float lower = box.lower[k] - ray_.origin[k];
+      const float upper = box.upper[k] - ray_.origin[k];
+      const float t0 = lower * ray_.inverse[k], t1 = upper * ray_.inverse[k];
+      tNear = std::max(tNear, std::min(t0, t1));
+      tFar = std::min(tFar, std::max(t0, t1));
+    }
+    return BoxHit{tNear <= tFar, tNear};
+  }
+
+  void testRoot() {
+    if (slab(Layout::box(current_)).hit)
+      enter(current_[6], current_[7]);
+    else
+      state_ = BvhState::Out;
+  }
+
+  // Goes into the node whose child or leaf words are `word6`, `word7`.
+  void enter(uint32_t word6, uint32_t word7) {
+    current_[6] = word6;
+    current_[7] = word7;
+    if (Layout::leaf(current_)) {
+      nextRef_ = Layout::first(current_);
+      refsLeft_ = Layout::count(current_);
+      state_ = refsLeft_ > 0 ? BvhState::Ref : BvhState::Pop;
+    } else {
+      state_ = BvhState::Left0;
+    }
+  }
+
+  void decide() {
+    const BoxHit l = slab(Layout::box(left_)), r = slab(Layout::box(right_));
+    if (l.hit && r.hit) {
+      const bool leftFirst = leftBeforeRight(l, r);
+      const Words& near = leftFirst ? left_ : right_;
+      const Words& far = leftFirst ? right_ : left_;
+      stack_.push(Entry{far[6], far[7], leftFirst ? r.tEntry : l.tEntry});
+      ++counts_.pushes;
+      enter(near[6], near[7]);
+    } else if (l.hit || r.hit) {
+      const Words& only = l.hit ? left_ : right_;
+      enter(only[6], only[7]);
+    } else {
+      state_ = BvhState::Pop;
+    }
+  }
+
+  bool leftBeforeRight(const BoxHit& l, const BoxHit& r) const {
+    if (order_ == ChildOrder::Entry) return l.tEntry <= r.tEntry;
+    const Vec3<float> separation = Layout::box(right_).centre() - Layout::box(left_).centre();
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(separation[k]) > std::abs(separation[axis])) axis = k;
+    // Entering along the axis's direction meets the child with the smaller centre first.
+    return (ray_.direction[axis] >= 0) == (separation[axis] >= 0);
+  }
+
+  void test() {
+    ++counts_.triangleTests;
+    const auto vertex = [this](int i) {
+      return Vec3<float>(bitsToFloat(triangleWords_[3 * i]), bitsToFloat(triangleWords_[3 * i + 1]),
+                         bitsToFloat(triangleWords_[3 * i + 2]));
+    };
+    const auto found =
+        intersector_.intersect(ray_, vertex(0), vertex(1), vertex(2), ray_.tMin, tBest_);
+    if (found && (!hit_ || found->t < tBest_)) {
+      hit_ = true;
+      tBest_ = found->t;
+      u_ = found->u;
+      v_ = found->v;
+      primitive_ = triangleWords_[9];
+    }
+    ++nextRef_;
+    state_ = --refsLeft_ > 0 ? BvhState::Ref : BvhState::Pop;
+  }
+
+  void pop() {
+    if (stack_.empty()) {
+      state_ = BvhState::Out;
+      return;
+    }
+    const Entry entry = stack_.pop();
+    ++counts_.pops;
+    if (entry.tEntry <= tBest_) enter(entry.word6, entry.word7);  // else POP again
+  }
+
+  RingStack<Entry> stack_;
+  ChildOrder order_;
+  Intersector intersector_;
+  BvhRay ray_;
+  BvhSections image_;
+  BvhState state_ = BvhState::Idle;
+  Words current_{}, left_{}, right_{};
+  uint32_t nextRef_ = 0, refsLeft_ = 0, triangle_ = 0;
+  std::array<uint32_t, kBvhTriangleWords> triangleWords_{};
+  bool hit_ = false;
+  float tBest_ = 0, u_ = 0, v_ = 0;
+  uint32_t primitive_ = 0;
+  uint32_t cost_ = 0;
+  BvhRayCounts counts_;
+};
+
+}  // namespace rtu
