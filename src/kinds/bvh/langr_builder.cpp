@@ -27,6 +27,9 @@ void checkConfig(const LangrConfig& config) {
 void checkMesh(const TriangleMesh& mesh) {
   if (mesh.triangles.empty())
     throw std::invalid_argument("langr builder: the mesh has no triangles");
+  if (mesh.triangles.size() > std::numeric_limits<uint32_t>::max())
+    throw std::invalid_argument("langr builder: " + std::to_string(mesh.triangles.size()) +
+                                " triangles, more than 32-bit references can name");
   for (const glm::dvec3& vertex : mesh.vertices)
     for (int k = 0; k < 3; ++k)
       if (!(std::abs(vertex[k]) <= kMaxCoordinate))

@@ -33,9 +33,9 @@ struct LangrBuild {
 };
 
 // Builds the tree over all of `mesh`'s triangles. Throws std::invalid_argument for a mesh without
-// triangles, a vertex index out of range, a coordinate that is not finite or beyond 2^1000 in
-// magnitude (the binning arithmetic must not overflow), or a config with fewer than 2 bins or a
-// leaf threshold of 0 (either would never end).
+// triangles or with more than 2^32 - 1, a vertex index out of range, a coordinate that is not
+// finite or beyond 2^1000 in magnitude (the binning arithmetic must not overflow), or a config with
+// fewer than 2 bins or a leaf threshold of 0 (either would never end).
 LangrBuild buildLangr(const TriangleMesh& mesh, const LangrConfig& config = {});
 
 }  // namespace rtu
