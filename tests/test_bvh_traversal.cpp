@@ -38,8 +38,8 @@ struct HandImage {
 
   HandImage() {
     appendNode(words, {0, 0, 1}, {3, 3, 3}, 1, 2);
-    appendNode(words, {0, 0, 1}, {2, 2, 1}, 0, LangrNode::kLeafBit | 1);
-    appendNode(words, {1, 0, 2}, {3, 3, 3}, 1, LangrNode::kLeafBit | 2);
+    appendNode(words, {0, 0, 1}, {2, 2, 1}, 0, kBvhLeafBit | 1);
+    appendNode(words, {1, 0, 2}, {3, 3, 3}, 1, kBvhLeafBit | 2);
     words.insert(words.end(), {0, 2, 1, 0});
     appendTriangle(words, {{{0, 0, 1}, {2, 0, 1}, {0, 2, 1}}}, 100);
     appendTriangle(words, {{{1, 1, 3}, {3, 1, 3}, {1, 3, 3}}}, 101);
@@ -164,7 +164,7 @@ TEST_CASE("BVH traversal: of equal hits in a leaf, the first referenced wins", "
   HandImage image;
   // A root leaf of references 1, 0 over two triangles in the plane z = 1 that overlap.
   image.words.clear();
-  appendNode(image.words, {0, 0, 1}, {3, 3, 1}, 0, LangrNode::kLeafBit | 2);  // the root, a leaf
+  appendNode(image.words, {0, 0, 1}, {3, 3, 1}, 0, kBvhLeafBit | 2);  // the root, a leaf
   image.words.resize(24, 0);
   image.words.insert(image.words.end(), {1, 0, 0, 0});
   appendTriangle(image.words, {{{0, 0, 1}, {2, 0, 1}, {0, 2, 1}}}, 100);

@@ -34,6 +34,7 @@
 #include "base/float_bits.h"
 #include "geometry/aabb.h"
 #include "geometry/triangle_tests.h"
+#include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_ray.h"
 #include "rtu/traversal_stack.h"
 
@@ -64,20 +65,20 @@ enum class ChildOrder : uint8_t {
   Axis,   // by the ray's sign on the axis that separates the children's centres most
 };
 
-// Where the image's sections start, in words (each a multiple of 4, so that a node and a triangle
-// record begin an access).
+// Where the image's sections start, in words (bvh_image.h places each on a multiple of 4, so that
+// a node and a triangle record begin an access).
 struct BvhSections {
   uint32_t nodes = 0, refs = 0, triangles = 0;
 };
+
+inline BvhSections sectionsOf(const BvhHeader& header) {
+  return BvhSections{header.nodeBase, header.refBase, header.triangleBase};
+}
 
 struct BvhJob {
   BvhRay ray;
   BvhSections image;
 };
-
-// A triangle record: v0, v1, v2 as float32 x, y, z, then the source triangle's id, then 2 zero
-// words.
-constexpr uint32_t kBvhTriangleWords = 12;
 
 // What one ray's traversal counted.
 struct BvhRayCounts {
