@@ -1,6 +1,4 @@
 // .binvox import: orientation, padding, node classification, round trips and malformed files.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -12,24 +10,12 @@
 
 #include "kinds/svo/binvox.h"
 #include "kinds/svo/svo_builder.h"
+#include "temp_path.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;
 
 namespace {
-
-// A path in the temp directory, unique to this process, removed at the end of the test.
-class TempPath {
- public:
-  explicit TempPath(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("rtusim-binvox-" + std::to_string(getpid()) + "-" + name)) {}
-  ~TempPath() { std::filesystem::remove(path_); }
-  std::string str() const { return path_.string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 // A binvox file written byte by byte: `header` verbatim, then the run bytes.
 void writeRaw(const std::string& path, const std::string& header,

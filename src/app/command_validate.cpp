@@ -4,34 +4,62 @@
 
 #include "app/commands.h"
 #include "app/placement_flags.h"
+#include "base/binary_file.h"
+#include "kinds/bvh/bvh_file.h"
+#include "kinds/bvh/bvh_validator.h"
 #include "kinds/svo/svo_image.h"
 #include "kinds/svo/svo_validator.h"
 
 namespace rtu {
+namespace {
+
+struct ValidateOptions {
+  std::string file;
+  uint32_t root = 0;
+  SvoLimits limits;
+};
+
+void validateSvoFile(const ValidateOptions& options, std::vector<uint32_t> words) {
+  const SvoImage image{std::move(words), options.root};
+  SvoReport report;
+  try {
+    report = validateSvo(image, options.limits);
+  } catch (const SvoFormatError& error) {
+    throw std::runtime_error("SVO image '" + options.file + "': " + error.what());
+  }
+  std::cout << options.file << ": valid, " << describe(report) << "\n";
+}
+
+void validateBvhFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
+  const std::vector<BvhProblem> problems = validateBvh(words);
+  if (!problems.empty())
+    throw std::runtime_error(describeBvhProblems("'" + options.file + "'", problems));
+  const BvhHeader header = decodeHeader(words.data());
+  std::cout << options.file << ": valid BVH image, " << header.nodeCount << " nodes, "
+            << header.triangleCount << " triangles, " << words.size() * sizeof(uint32_t)
+            << " bytes\n";
+}
+
+}  // namespace
 
 void addValidateCommand(CLI::App& app) {
-  struct Options {
-    std::string file;
-    uint32_t root = 0;
-    SvoLimits limits;
-  };
-  auto options = std::make_shared<Options>();
-  CLI::App* command = app.add_subcommand("validate", "check an SVO memory image");
-  command->add_option("file", options->file, ".svo file")->required()->check(CLI::ExistingFile);
-  command->add_option("--root", options->root, "word address of the root descriptor")
+  auto options = std::make_shared<ValidateOptions>();
+  CLI::App* command = app.add_subcommand(
+      "validate", "check a memory image: an SVO, or a BVH (recognised by its header)");
+  command->add_option("file", options->file, ".svo or .bvh file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--root", options->root, "SVO: word address of the root descriptor")
       ->capture_default_str()
       ->check(kNotNegative);
-  command->add_option("--max-depth", options->limits.maxDepth, "deepest octree level allowed")
+  command->add_option("--max-depth", options->limits.maxDepth, "SVO: deepest octree level allowed")
       ->capture_default_str();
   command->callback([options] {
-    const SvoImage image = readSvoFile(options->file, options->root);
-    SvoReport report;
-    try {
-      report = validateSvo(image, options->limits);
-    } catch (const SvoFormatError& error) {
-      throw std::runtime_error("SVO image '" + options->file + "': " + error.what());
-    }
-    std::cout << options->file << ": valid, " << describe(report) << "\n";
+    std::vector<uint32_t> words = readWordFile(options->file, sizeof(uint32_t), "memory image");
+    if (looksLikeBvhImage(words))
+      validateBvhFile(*options, words);
+    else
+      validateSvoFile(*options, std::move(words));
   });
 }
 

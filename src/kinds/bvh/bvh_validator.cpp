@@ -213,4 +213,12 @@ std::vector<BvhProblem> validateBvh(const std::vector<uint32_t>& words) {
   return problems.take();
 }
 
+std::string describeBvhProblems(const std::string& what, const std::vector<BvhProblem>& problems,
+                                size_t shown) {
+  std::string message = what + " is not a sound BVH image:";
+  for (size_t i = 0; i < problems.size() && i < shown; ++i) message += "\n  " + problems[i].what;
+  if (problems.size() > shown) message += "\n  ...";
+  return message;
+}
+
 }  // namespace rtu

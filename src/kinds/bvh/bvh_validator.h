@@ -27,4 +27,9 @@ struct BvhProblem {
 constexpr size_t kMaxBvhProblems = 100;
 std::vector<BvhProblem> validateBvh(const std::vector<uint32_t>& words);
 
+// The validator's problems as one message: "<what> is not a sound BVH image:" then at most `shown`
+// problems, one per line.
+std::string describeBvhProblems(const std::string& what, const std::vector<BvhProblem>& problems,
+                                size_t shown = 10);
+
 }  // namespace rtu
