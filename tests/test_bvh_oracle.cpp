@@ -1,11 +1,11 @@
 // The BVH's golden traversal against the independent oracle (geometry/triangle_oracle.h) on real
 // meshes: every ray of four views, random rays, and rays aimed at vertices and edges, traced
-// through the langr build's image with each triangle test, against the float64 brute force over
-// the same float32 triangles. Agreement (docs/triangles.md, "Checking against the oracle"): both
-// miss, or both hit the same triangle, or hit two at the same t within 4 float32 ulp (a shared
-// edge or vertex, or coincident triangles). A disagreement is explained when the ray's line passes
-// within 4 float32 ulp of the scene's scale of an edge of a disputed triangle: there float32
-// arithmetic may decide the other way (measured: at most 0.55 ulp on these meshes).
+// through the langr and the binned builds' images with each triangle test, against the float64
+// brute force over the same float32 triangles. Agreement (docs/triangles.md, "Checking against the
+// oracle"): both miss, or both hit the same triangle, or hit two at the same t within 4 float32 ulp
+// (a shared edge or vertex, or coincident triangles). A disagreement is explained when the ray's
+// line passes within 4 float32 ulp of the scene's scale of an edge of a disputed triangle: there
+// float32 arithmetic may decide the other way (measured: at most 0.55 ulp on these meshes).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include "geometry/triangle_oracle.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "kinds/bvh/langr_builder.h"
+#include "kinds/bvh/sah_builder.h"
 #include "rtu/golden_shell.h"
 
 namespace rtu {
@@ -57,8 +58,8 @@ struct Agreement {
 
 class OracleCheck {
  public:
-  explicit OracleCheck(const TriangleMesh& mesh)
-      : image_(layOut(buildLangr(mesh).tree, mesh)),
+  OracleCheck(const TriangleMesh& mesh, const BuildTree& tree)
+      : image_(layOut(tree, mesh)),
         held_(roundedToFloat(mesh)),
         sections_(sectionsOf(BvhImageView(image_.words).header())),
         meshScale_(std::max(largestCoordinate(meshBounds(held_).lower),
@@ -110,7 +111,8 @@ class OracleCheck {
 TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_oracle]") {
   const char* name = GENERATE("spider.obj", "WusonOBJ.obj");
   const TriangleMesh& mesh = assimpObjModel(name);
-  const OracleCheck check(mesh);
+  const bool langr = GENERATE(true, false);
+  const OracleCheck check(mesh, langr ? buildLangr(mesh).tree : buildSah(mesh).tree);
   const Aabb<double> box = meshBounds(mesh);
   SECTION("views and random rays: no disagreement") {
     std::vector<Ray> rays = viewRays(box, 4, 32, 32);
@@ -125,9 +127,10 @@ TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_or
     const std::vector<Ray> rays = aimedRays(mesh, 2000, 1);
     const Agreement watertight = check.compare<WatertightIntersector>(rays);
     const Agreement mt = check.compare<MollerTrumboreIntersector>(rays);
-    INFO(name << ": watertight same " << watertight.same << " ties " << watertight.ties
-              << " explained " << watertight.explained << "; Moller-Trumbore same " << mt.same
-              << " ties " << mt.ties << " explained " << mt.explained);
+    INFO(name << (langr ? " langr" : " binned") << ": watertight same " << watertight.same
+              << " ties " << watertight.ties << " explained " << watertight.explained
+              << "; Moller-Trumbore same " << mt.same << " ties " << mt.ties << " explained "
+              << mt.explained);
     CHECK(watertight.unexplained == 0);
     CHECK(mt.unexplained == 0);
     // Most aimed rays still agree: float32 decides otherwise at 3-6 % of them with the watertight

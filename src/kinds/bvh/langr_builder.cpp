@@ -10,11 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include "kinds/bvh/build_primitives.h"
+
 namespace rtu {
 namespace {
-
-// Coordinates up to 2^1000 keep every sum, difference and the bins' product finite.
-constexpr double kMaxCoordinate = 0x1p1000;
 
 void checkConfig(const LangrConfig& config) {
   if (config.bins < 2)
@@ -22,41 +21,6 @@ void checkConfig(const LangrConfig& config) {
                                 std::to_string(config.bins));
   if (config.leafThreshold < 1)
     throw std::invalid_argument("langr builder: the leaf threshold must be at least 1");
-}
-
-void checkMesh(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty())
-    throw std::invalid_argument("langr builder: the mesh has no triangles");
-  if (mesh.triangles.size() > std::numeric_limits<uint32_t>::max())
-    throw std::invalid_argument("langr builder: " + std::to_string(mesh.triangles.size()) +
-                                " triangles, more than 32-bit references can name");
-  for (const glm::dvec3& vertex : mesh.vertices)
-    for (int k = 0; k < 3; ++k)
-      if (!(std::abs(vertex[k]) <= kMaxCoordinate))
-        throw std::invalid_argument("langr builder: a vertex coordinate (" +
-                                    std::to_string(vertex[k]) +
-                                    ") is not finite or beyond 2^1000 in magnitude");
-  for (size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (uint32_t index : mesh.triangles[t])
-      if (index >= mesh.vertices.size())
-        throw std::invalid_argument("langr builder: triangle " + std::to_string(t) +
-                                    " names vertex " + std::to_string(index) + " of " +
-                                    std::to_string(mesh.vertices.size()));
-}
-
-Aabb<double> triangleBox(const TriangleMesh& mesh, const std::array<uint32_t, 3>& triangle) {
-  Aabb<double> box;
-  for (uint32_t index : triangle) box.grow(mesh.vertices[index]);
-  return box;
-}
-
-// The first axis of greatest extent: x, then y, then z (B6).
-int widestAxis(const Aabb<double>& box) {
-  const glm::dvec3 extent = box.extent();
-  int axis = 0;
-  if (extent.y > extent[axis]) axis = 1;
-  if (extent.z > extent[axis]) axis = 2;
-  return axis;
 }
 
 // One bin of Algorithm 4 (L796-806): after the sweeps, `left` holds the bins up to it and
@@ -75,18 +39,13 @@ struct Split {
 
 class LangrBuilder {
  public:
-  LangrBuilder(const TriangleMesh& mesh, const LangrConfig& config) : config_(config) {
-    boxes_.reserve(mesh.triangles.size());
-    centres_.reserve(mesh.triangles.size());
-    for (const auto& triangle : mesh.triangles) {
-      boxes_.push_back(triangleBox(mesh, triangle));
-      centres_.push_back(boxes_.back().centre());  // the AABB centre, in double (L728, B3)
-    }
-  }
+  // The triangles' AABB centres, in double (L728, B3).
+  LangrBuilder(const TriangleMesh& mesh, const LangrConfig& config)
+      : config_(config), primitives_(buildPrimitives(mesh, "langr")) {}
 
   // Algorithm 3 (L745-786).
   LangrBuild build() {
-    const auto n = static_cast<uint32_t>(boxes_.size());
+    const auto n = static_cast<uint32_t>(primitives_.boxes.size());
     BuildTree& tree = result_.tree;
     // The seed makes the reference array only when it splits; a root leaf reads it as 0..n-1.
     tree.refs.resize(n);
@@ -143,8 +102,8 @@ class LangrBuilder {
   Split divide(uint32_t first, uint32_t count) {
     const std::vector<uint32_t>& refs = result_.tree.refs;
     Aabb<double> centres;
-    for (uint32_t i = first; i < first + count; ++i) centres.grow(centres_[refs[i]]);
-    const int axis = widestAxis(centres);
+    for (uint32_t i = first; i < first + count; ++i) centres.grow(primitives_.centres[refs[i]]);
+    const int axis = widestAxis(centres);  // the first of equal extents (B6)
     const double lower = centres.lower[axis];
     const double extent = centres.upper[axis] - lower;
     if (extent == 0) return medianSplit(first, count);  // all centres coincide (B2)
@@ -152,10 +111,11 @@ class LangrBuilder {
     std::vector<uint32_t> binOf(count);                 // the seed's triangle.binIndex (L796)
     for (uint32_t i = 0; i < count; ++i) {
       const uint32_t triangle = refs[first + i];
-      binOf[i] = binIndex(centres_[triangle][axis], lower, extent);
+      binOf[i] = binIndex(primitives_.centres[triangle][axis], lower, extent);
       Bin& bin = bins[binOf[i]];
-      bin.leftBox.merge(boxes_[triangle]);  // the bins bound triangles, not centres (L797-798)
-      bin.rightBox.merge(boxes_[triangle]);
+      bin.leftBox.merge(
+          primitives_.boxes[triangle]);  // the bins bound triangles, not centres (L797-798)
+      bin.rightBox.merge(primitives_.boxes[triangle]);
       ++bin.triangles;
     }
     sweep(bins);
@@ -226,14 +186,11 @@ class LangrBuilder {
   }
 
   Aabb<double> boxOf(uint32_t first, uint32_t count) const {
-    Aabb<double> box;
-    for (uint32_t i = first; i < first + count; ++i) box.merge(boxes_[result_.tree.refs[i]]);
-    return box;
+    return primitives_.boxOf(result_.tree.refs, first, count);
   }
 
   const LangrConfig& config_;
-  std::vector<Aabb<double>> boxes_;  // each triangle's AABB
-  std::vector<glm::dvec3> centres_;  // and its centre
+  BuildPrimitives primitives_;
   LangrBuild result_;
 };
 
@@ -241,7 +198,6 @@ class LangrBuilder {
 
 LangrBuild buildLangr(const TriangleMesh& mesh, const LangrConfig& config) {
   checkConfig(config);
-  checkMesh(mesh);
   return LangrBuilder(mesh, config).build();
 }
 

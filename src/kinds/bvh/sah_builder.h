@@ -1,0 +1,41 @@
+#pragma once
+// Top-down BVH builders by the surface area heuristic, as production ray tracers build them (not
+// a seed's): `binned` (the default of `rtusim build --accel bvh`, as Embree's and tinybvh's
+// binned builders: a fixed number of bins over the centres' extent on each of the three axes) and
+// `sweep` (every split between consecutive centres on each axis: the best object split, slower).
+// Unlike langr, a node may stay a leaf when splitting does not pay:
+//   split cost  C_box + C_tri (A_left n_left + A_right n_right) / A_node
+//   leaf cost   C_tri n
+// and a node is a leaf when it holds at most maxLeafSize triangles and its leaf cost is not above
+// its best split cost, or when it holds one triangle. A node over maxLeafSize whose centres all
+// coincide is halved in reference order (counted as a forced median). Children are allocated as
+// an adjacent pair after their parent's subtree so far (depth first, left first), and each split
+// keeps the order of the references on either side.
+
+#include <cstdint>
+
+#include "geometry/accel_quality.h"
+#include "geometry/triangle_mesh.h"
+#include "kinds/bvh/build_tree.h"
+
+namespace rtu {
+
+enum class SahSplitSearch { Binned, Sweep };
+
+struct SahBuilderConfig {
+  SahSplitSearch search = SahSplitSearch::Binned;
+  uint32_t bins = 32;  // binned only
+  uint32_t maxLeafSize = 8;
+  SahCosts costs{1.0, 1.0};
+};
+
+struct SahBuild {
+  BuildTree tree;
+  uint32_t forcedMedians = 0;
+};
+
+// Throws std::invalid_argument for a mesh buildPrimitives refuses, fewer than 2 bins or a maximum
+// leaf size of 0.
+SahBuild buildSah(const TriangleMesh& mesh, const SahBuilderConfig& config = {});
+
+}  // namespace rtu
