@@ -1,6 +1,6 @@
 // The BVH's golden traversal against the independent oracle (geometry/triangle_oracle.h) on real
 // meshes: every ray of four views, random rays, and rays aimed at vertices and edges, traced
-// through the langr and the binned builds' images with each triangle test, against the float64
+// through the langr, binned and lbvh builds' images with each triangle test, against the float64
 // brute force over the same float32 triangles. Agreement (docs/triangles.md, "Checking against the
 // oracle"): both miss, or both hit the same triangle, or hit two at the same t within 4 float32 ulp
 // (a shared edge or vertex, or coincident triangles). A disagreement is explained when the ray's
@@ -16,6 +16,7 @@
 #include "geometry/triangle_oracle.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "kinds/bvh/langr_builder.h"
+#include "kinds/bvh/lbvh_builder.h"
 #include "kinds/bvh/sah_builder.h"
 #include "rtu/golden_shell.h"
 
@@ -111,8 +112,10 @@ class OracleCheck {
 TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_oracle]") {
   const char* name = GENERATE("spider.obj", "WusonOBJ.obj");
   const TriangleMesh& mesh = assimpObjModel(name);
-  const bool langr = GENERATE(true, false);
-  const OracleCheck check(mesh, langr ? buildLangr(mesh).tree : buildSah(mesh).tree);
+  const std::string builder = GENERATE("langr", "binned", "lbvh");
+  const OracleCheck check(mesh, builder == "langr"    ? buildLangr(mesh).tree
+                                : builder == "binned" ? buildSah(mesh).tree
+                                                      : buildLbvh(mesh).tree);
   const Aabb<double> box = meshBounds(mesh);
   SECTION("views and random rays: no disagreement") {
     std::vector<Ray> rays = viewRays(box, 4, 32, 32);
@@ -127,8 +130,8 @@ TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_or
     const std::vector<Ray> rays = aimedRays(mesh, 2000, 1);
     const Agreement watertight = check.compare<WatertightIntersector>(rays);
     const Agreement mt = check.compare<MollerTrumboreIntersector>(rays);
-    INFO(name << (langr ? " langr" : " binned") << ": watertight same " << watertight.same
-              << " ties " << watertight.ties << " explained " << watertight.explained
+    INFO(name << ' ' << builder << ": watertight same " << watertight.same << " ties "
+              << watertight.ties << " explained " << watertight.explained
               << "; Moller-Trumbore same " << mt.same << " ties " << mt.ties << " explained "
               << mt.explained);
     CHECK(watertight.unexplained == 0);

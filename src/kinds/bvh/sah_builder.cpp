@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kinds/bvh/build_primitives.h"
+#include "kinds/bvh/top_down_build.h"
 
 namespace rtu {
 namespace {
@@ -34,21 +35,14 @@ class SahBuilder {
       : config_(config), primitives_(buildPrimitives(mesh, builderName(config))) {}
 
   SahBuild build() {
-    const auto n = static_cast<uint32_t>(primitives_.boxes.size());
-    BuildTree& tree = result_.tree;
-    tree.refs.resize(n);
-    std::iota(tree.refs.begin(), tree.refs.end(), 0u);
-    tree.nodes.reserve(2 * size_t{n});
-    tree.nodes.push_back({primitives_.boxOf(tree.refs, 0, n), 0, n});
-    std::vector<uint32_t> pending{0};
-    while (!pending.empty()) {
-      const uint32_t node = pending.back();
-      pending.pop_back();
-      if (!subdivide(node)) continue;
-      pending.push_back(tree.nodes[node].right);  // the left child first
-      pending.push_back(tree.nodes[node].left);
-    }
-    return std::move(result_);
+    std::vector<uint32_t> refs(primitives_.boxes.size());
+    std::iota(refs.begin(), refs.end(), 0u);
+    SahBuild result;
+    result.tree = buildTopDown(primitives_, std::move(refs),
+                               [&](std::vector<uint32_t>& refs, const BuildNode& node) {
+                                 return divide(refs, node, result.forcedMedians);
+                               });
+    return result;
   }
 
  private:
@@ -56,46 +50,30 @@ class SahBuilder {
     return config.search == SahSplitSearch::Binned ? "binned" : "sweep";
   }
 
-  // Splits the node into two children, or leaves it a leaf; whether it split.
-  bool subdivide(uint32_t index) {
-    const BuildNode node = result_.tree.nodes[index];
-    if (node.count == 1) return false;
-    Split split = bestSplit(node);
+  // The left child's count after reordering the node's references, or 0 to leave it a leaf.
+  uint32_t divide(std::vector<uint32_t>& refs, const BuildNode& node, uint32_t& forcedMedians) {
+    if (node.count == 1) return 0;
+    const Split split = bestSplit(refs, node);
     const double leafCost = config_.costs.triangle * node.count;
-    if (node.count <= config_.maxLeafSize && leafCost <= split.cost) return false;
-    uint32_t leftCount = node.count / 2;  // no split found: all centres coincide
-    if (split.axis < 0)
-      ++result_.forcedMedians;
-    else
-      leftCount = partition(node, split);
-    addChildren(index, leftCount);
-    return true;
+    if (node.count <= config_.maxLeafSize && leafCost <= split.cost) return 0;
+    if (split.axis >= 0) return partition(refs, node, split);
+    ++forcedMedians;  // no split found: all centres coincide
+    return node.count / 2;
   }
 
-  void addChildren(uint32_t index, uint32_t leftCount) {
-    BuildTree& tree = result_.tree;
-    const uint32_t first = tree.nodes[index].first, count = tree.nodes[index].count;
-    const auto left = static_cast<uint32_t>(tree.nodes.size());
-    tree.nodes.push_back({primitives_.boxOf(tree.refs, first, leftCount), first, leftCount});
-    tree.nodes.push_back({primitives_.boxOf(tree.refs, first + leftCount, count - leftCount),
-                          first + leftCount, count - leftCount});
-    tree.nodes[index].left = left;
-    tree.nodes[index].right = left + 1;
-  }
-
-  Split bestSplit(const BuildNode& node) {
+  Split bestSplit(const std::vector<uint32_t>& refs, const BuildNode& node) {
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
-      ranks(node, axis, ranks_);
-      considerSplits(node, axis, best);
+      ranks(refs, node, axis, ranks_);
+      considerSplits(refs, node, axis, best);
     }
     return best;
   }
 
   // Each reference's rank on `axis`: its bin, or its position in centre order (ties by triangle
   // index); references of equal rank never go to different sides.
-  void ranks(const BuildNode& node, int axis, std::vector<uint32_t>& out) const {
-    const std::vector<uint32_t>& refs = result_.tree.refs;
+  void ranks(const std::vector<uint32_t>& refs, const BuildNode& node, int axis,
+             std::vector<uint32_t>& out) const {
     out.resize(node.count);
     if (config_.search == SahSplitSearch::Binned) {
       Aabb<double> centres;
@@ -128,12 +106,13 @@ class SahBuilder {
   }
 
   // Sweeps the ranks on `axis` and keeps any split cheaper than `best`.
-  void considerSplits(const BuildNode& node, int axis, Split& best) {
+  void considerSplits(const std::vector<uint32_t>& refs, const BuildNode& node, int axis,
+                      Split& best) {
     const uint32_t slots = config_.search == SahSplitSearch::Binned ? config_.bins : node.count;
     std::vector<Aabb<double>> boxes(slots);
     std::vector<uint32_t> counts(slots, 0);
     for (uint32_t i = 0; i < node.count; ++i) {
-      boxes[ranks_[i]].merge(primitives_.boxes[result_.tree.refs[node.first + i]]);
+      boxes[ranks_[i]].merge(primitives_.boxes[refs[node.first + i]]);
       ++counts[ranks_[i]];
     }
     // Right sides from the back: the box and count of slots >= s.
@@ -161,9 +140,8 @@ class SahBuilder {
 
   // Moves the references of rank below the split's limit on its axis to the front, keeping the
   // order on either side. Returns the left count.
-  uint32_t partition(const BuildNode& node, const Split& split) {
-    ranks(node, split.axis, ranks_);
-    std::vector<uint32_t>& refs = result_.tree.refs;
+  uint32_t partition(std::vector<uint32_t>& refs, const BuildNode& node, const Split& split) {
+    ranks(refs, node, split.axis, ranks_);
     std::vector<uint32_t> left, right;
     for (uint32_t i = 0; i < node.count; ++i)
       (ranks_[i] < split.rankLimit ? left : right).push_back(refs[node.first + i]);
@@ -175,7 +153,6 @@ class SahBuilder {
   const SahBuilderConfig& config_;
   BuildPrimitives primitives_;
   std::vector<uint32_t> ranks_;  // scratch: the current node's references' ranks on one axis
-  SahBuild result_;
 };
 
 }  // namespace
