@@ -2,11 +2,11 @@
 // The bit widths of seed 004's fixed-point ray tracing (S4 = seeds/004_ad38b106ad170843.txt,
 // Hanika 2007): n, m, E, T and C, with the two parameter sets of the seed as named variants.
 // Every quantity's format follows from them (docs/triangles.md, "Fixed point (seed 004)"):
-//   vertices, pp, pq, origin  n-bit unsigned grid integers (S4 §2.1.2 p.25 L276-281)
-//   d                         (n+3)-bit signed integer, no fraction (L281, §2.1.4 L301)
+//   vertices, pp, pq, origin  n-bit unsigned grid integers (S4 §2.1.2 p.25 L280)
+//   d                         (n+3)-bit signed integer, no fraction (L281, §2.1.4 L299)
 //   np, nq, direction ω       m-bit signed, scale 2^(m-1): [-1, 1) (L285)
-//   e1p, e1q, e2p, e2q        m-bit signed, scale 2^(m-1+E): the open (-2^-E, 2^-E) (§2.1.3 L291)
-//   idir                      (m+C)-bit signed, C fractional bits (§2.4 p.30 L425-431)
+//   e1p, e1q, e2p, e2q        m-bit signed, scale 2^(m-1+E): the open (-2^-E, 2^-E) (§2.1.3 L293)
+//   idir                      (m+C)-bit signed, C fractional bits (§2.4 p.30 L415-419)
 
 #include <cstdint>
 #include <stdexcept>
@@ -28,10 +28,10 @@ struct FixedFormat {
 };
 
 // Plan reading C1: the text's C99 prototype has n = 32 - 3 = 29, m = 32, E = 10, T = 0 (S4 §2.1.4
-// L299-301, §2.2 L351); it names no C for the C99 code (Fig. 2.9 sweeps it), so the hardware's 16
+// L299-301, §2.2 L354); it names no C for the C99 code (Fig. 2.9 sweeps it), so the hardware's 16
 // is taken. The VHDL type-checks only with m = n + 2, so n = 30 (spec 004 §8.1); C = 16 from
 // Listing A.3's 48-bit idir; E = 10 as in the text (edge_shift's value is not printed); T = 0
-// (S4 §4.2 L674).
+// (S4 §4.2 L673).
 inline constexpr FixedFormat kC99Format{29, 32, 10, 0, 16, FixedListing::C99};
 inline constexpr FixedFormat kVhdlFormat{30, 32, 10, 0, 16, FixedListing::Vhdl};
 

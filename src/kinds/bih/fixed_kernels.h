@@ -1,6 +1,6 @@
 #pragma once
 // Seed 004's fixed-point ray/triangle test, Badouel's in Wald's projected form (S4 §2 p.23,
-// Eqs. 2.1 and 2.2 L216-235): t = (d - O_r - O_p np - O_q nq) / (ω_r + ω_p np + ω_q nq), then
+// Eqs. 2.1 and 2.2 L221-242): t = (d - O_r - O_p np - O_q nq) / (ω_r + ω_p np + ω_q nq), then
 // k_p = O_p + t ω_p - pp, k_q likewise, u = e1p k_q - e1q k_p, v = e2q k_p - e2p k_q. u weighs
 // x2 and v weighs x1 (spec 004 §3.1), so rtusim's barycentrics (hit = (1-u-v) v0 + u v1 + v v2)
 // are (v, u) / 2^(m-1+E) (rtusimBarycentrics). Two kernels, as each of the seed's listings

@@ -1,10 +1,10 @@
 #pragma once
-// The scene on seed 004's n-bit integer grid (S4 §2.1.2 p.25 L276-285): moved to the positive
+// The scene on seed 004's n-bit integer grid (S4 §2.1.2 p.25 L276-287): moved to the positive
 // octant and scaled by one factor so that the box's lower corner is 0 and its longest side spans
 // 2^n - 1 grid units; vertices rounded to grid integers. A ray is clipped to the scene box in
 // double before it is quantised ("rays starting outside the bounding box ... must be clipped to
-// the bounding box prior to quantization", L285), so its origin is a grid point; its direction
-// becomes m-bit fixed point and its inverse direction (m+C)-bit (§2.4 L425-431).
+// the bounding box prior to quantization", L287), so its origin is a grid point; its direction
+// becomes m-bit fixed point and its inverse direction (m+C)-bit (§2.4 L415-419).
 
 #include <array>
 #include <cstdint>
@@ -25,7 +25,7 @@ using GridPoint = std::array<int64_t, 3>;
 struct GridRay {
   GridPoint origin{};  // n-bit grid coordinates of the clipped origin
   GridPoint omega{};   // m-bit signed, scale 2^(m-1), the L2-unit direction (plan reading C3)
-  GridPoint idir{};    // the inverse direction, (m+C) bits (C14; see SceneGrid::quantise)
+  GridPoint idir{};    // the inverse direction, (m+C) bits (inverseDirection)
   double tClip = 0;    // where the world ray enters the box, in units of its direction
   double worldPerGridUnit = 0;  // 1 / (scale |d|): a grid unit of t in units of the direction
   // A grid t as t along the world ray: t_clip + t_grid / (scale |d|).

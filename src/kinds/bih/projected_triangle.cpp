@@ -19,7 +19,7 @@ Vector cross(const Vector& a, const Vector& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// The smallest index of the largest |n_k| (S4 L198).
+// The smallest index of the largest |n_k| (S4 §2 L200).
 uint32_t dominantAxis(const Vector& normal) {
   uint32_t r = 0;
   for (uint32_t k = 1; k < 3; ++k)

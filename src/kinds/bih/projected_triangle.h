@@ -7,7 +7,7 @@
 //
 // Every field is computed exactly from the integers (n in 64 bits, the quotients in 128) and
 // rounded once to its format (fixed_format.h), half to even (plan reading C4; the seed leaves the
-// rounding open, "careful rounding" for d, L301). Edges are clamped to the open (-2^-E, 2^-E),
+// rounding open, "careful rounding" for d, L299-305). Edges are clamped to the open (-2^-E, 2^-E),
 // i.e. to ±(2^(m-1) - 1) codes (§2.1.3 L289-295); np, nq = +1, not representable at scale
 // 2^(m-1), saturate to 2^(m-1) - 1 (C2). Both are reported so a mesh's clamped triangles and
 // saturated normals can be counted.

@@ -1,8 +1,9 @@
 #pragma once
 // The VHDL's divider `t_div` (S4 §3.2 p.38-39 L510-533; Listing A.1 p.51): w-bit two's-complement
 // numerator a and denominator b, a non-restoring divider of w - 1 add/subtract steps that only
-// computes quotients below 2^(w-1) and raises an error bit otherwise, "requiring a < b" (L529).
-// In the triangle unit w = n + 3 and b is at scale 2^(m-1) = 2^(w-2), so q is t in grid units.
+// computes quotients below 2^(w-1) and raises an error bit otherwise, "requiring a < b" (L517,
+// L527). In the triangle unit w = n + 3 and b is at scale 2^(m-1) = 2^(w-2), so q is t in grid
+// units.
 //
 // Two models (plan reading C12: the listing's loop header and the first stage's update were lost
 // in the OCR):
