@@ -6,12 +6,11 @@
 
 #include <stdexcept>
 
+#include "bih_formats.h"
 #include "kinds/bih/fixed_kernels.h"
 
 namespace rtu {
 namespace {
-
-constexpr FixedFormat kFourBit{4, 6, 2, 0, 2, FixedListing::Vhdl};
 
 GridRay gridRay(const GridPoint& origin, const GridPoint& omega) {
   GridRay ray;

@@ -6,12 +6,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bih_formats.h"
 #include "kinds/bih/grid.h"
 
 namespace rtu {
 namespace {
-
-constexpr FixedFormat kFourBit{4, 6, 2, 0, 2, FixedListing::Vhdl};
 
 SceneGrid wideBox(const FixedFormat& format = kFourBit) {
   Aabb<double> box;

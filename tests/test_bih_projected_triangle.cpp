@@ -4,14 +4,12 @@
 
 #include <stdexcept>
 
+#include "bih_formats.h"
 #include "geometry/ray_sets.h"
 #include "kinds/bih/projected_triangle.h"
 
 namespace rtu {
 namespace {
-
-// n = 4, m = 6, E = 2: normals at scale 2^5 = 32, edges at scale 2^7 = 128 and clamped to ±31.
-constexpr FixedFormat kFourBit{4, 6, 2, 0, 2, FixedListing::Vhdl};
 
 // x0 + 4096 (3, 4, 2) and x0 + 4096 (1, 5, 8): n = 4096^2 ((3,4,2) x (1,5,8)) =
 // 2^24 (4*8 - 2*5, 2*1 - 3*8, 3*5 - 4*1) = 2^24 (22, -22, 11).
