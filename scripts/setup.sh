@@ -4,7 +4,7 @@
 packages=(cmake g++ make libsystemc-dev libglm-dev libopenimageio-dev catch2 libcli11-dev
           nlohmann-json3-dev libassimp-dev pkg-config libtomlplusplus-dev python3-matplotlib
           slurm-wlm munge verilator zlib1g-dev gtkwave xvfb imagemagick
-          webp assimp-testmodels time clang-format)
+          webp assimp-testmodels time clang-format libembree-dev)
 
 missing=()
 for package in "${packages[@]}"; do

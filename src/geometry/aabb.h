@@ -24,10 +24,10 @@ struct Aabb {
     lower = glm::min(lower, point);
     upper = glm::max(upper, point);
   }
+  // An empty box's infinite bounds leave the minimum and maximum unchanged: no test needed.
   void merge(const Aabb& box) {
-    if (box.empty()) return;
-    grow(box.lower);
-    grow(box.upper);
+    lower = glm::min(lower, box.lower);
+    upper = glm::max(upper, box.upper);
   }
   Point extent() const { return upper - lower; }
   // 2 (xy + yz + zx); 0 for an empty box.

@@ -144,8 +144,9 @@ class BvhTraversal {
     }
   }
 
+  // Forced inline: a state does little, so the call would cost a good part of it.
   template <class ReadWord>
-  void step(ReadWord&& readWord) {
+  [[gnu::always_inline]] inline void step(ReadWord&& readWord) {
     ++cost_;
     switch (state_) {
       case BvhState::Root0:

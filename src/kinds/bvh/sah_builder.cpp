@@ -63,33 +63,42 @@ class SahBuilder {
 
   Split bestSplit(const std::vector<uint32_t>& refs, const BuildNode& node) {
     Split best;
+    const Aabb<double> centres = centresOf(refs, node);
     for (int axis = 0; axis < 3; ++axis) {
-      ranks(refs, node, axis, ranks_);
+      ranks(refs, node, centres, axis, ranks_);
       considerSplits(refs, node, axis, best);
     }
     return best;
   }
 
+  Aabb<double> centresOf(const std::vector<uint32_t>& refs, const BuildNode& node) const {
+    Aabb<double> centres;
+    for (uint32_t i = 0; i < node.count; ++i)
+      centres.grow(primitives_.centres[refs[node.first + i]]);
+    return centres;
+  }
+
+  // Embree's number of bins for a node of `count` references: min(bins, 4 + count / 20), so small
+  // nodes sweep few bins.
+  uint32_t binsFor(uint32_t count) const { return std::min(config_.bins, 4 + count / 20); }
+
   // Each reference's rank on `axis`: its bin, or its position in centre order (ties by triangle
   // index); references of equal rank never go to different sides.
-  void ranks(const std::vector<uint32_t>& refs, const BuildNode& node, int axis,
-             std::vector<uint32_t>& out) const {
+  void ranks(const std::vector<uint32_t>& refs, const BuildNode& node, const Aabb<double>& centres,
+             int axis, std::vector<uint32_t>& out) {
     out.resize(node.count);
     if (config_.search == SahSplitSearch::Binned) {
-      Aabb<double> centres;
-      for (uint32_t i = 0; i < node.count; ++i)
-        centres.grow(primitives_.centres[refs[node.first + i]]);
+      const uint32_t bins = binsFor(node.count);
       const double lower = centres.lower[axis], extent = centres.upper[axis] - lower;
+      const double scale = extent > 0 ? bins / extent : 0;  // bins per unit of the centres' extent
       for (uint32_t i = 0; i < node.count; ++i) {
-        const double scaled =
-            extent > 0
-                ? config_.bins * (primitives_.centres[refs[node.first + i]][axis] - lower) / extent
-                : 0;
-        out[i] = std::min(static_cast<uint32_t>(scaled), config_.bins - 1);
+        const double scaled = (primitives_.centres[refs[node.first + i]][axis] - lower) * scale;
+        out[i] = std::min(static_cast<uint32_t>(scaled), bins - 1);
       }
       return;
     }
-    std::vector<uint32_t> order(node.count);
+    std::vector<uint32_t>& order = order_;
+    order.resize(node.count);
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
       const uint32_t ta = refs[node.first + a], tb = refs[node.first + b];
@@ -108,16 +117,21 @@ class SahBuilder {
   // Sweeps the ranks on `axis` and keeps any split cheaper than `best`.
   void considerSplits(const std::vector<uint32_t>& refs, const BuildNode& node, int axis,
                       Split& best) {
-    const uint32_t slots = config_.search == SahSplitSearch::Binned ? config_.bins : node.count;
-    std::vector<Aabb<double>> boxes(slots);
-    std::vector<uint32_t> counts(slots, 0);
+    const uint32_t slots = config_.search == SahSplitSearch::Binned ? binsFor(node.count)
+                                                                    : node.count;
+    std::vector<Aabb<double>>& boxes = slotBoxes_;
+    std::vector<uint32_t>& counts = slotCounts_;
+    boxes.assign(slots, Aabb<double>{});
+    counts.assign(slots, 0);
     for (uint32_t i = 0; i < node.count; ++i) {
       boxes[ranks_[i]].merge(primitives_.boxes[refs[node.first + i]]);
       ++counts[ranks_[i]];
     }
     // Right sides from the back: the box and count of slots >= s.
-    std::vector<Aabb<double>> rightBox(slots + 1);
-    std::vector<uint32_t> rightCount(slots + 1, 0);
+    std::vector<Aabb<double>>& rightBox = rightBoxes_;
+    std::vector<uint32_t>& rightCount = rightCounts_;
+    rightBox.assign(slots + 1, Aabb<double>{});
+    rightCount.assign(slots + 1, 0);
     for (uint32_t s = slots; s-- > 0;) {
       rightBox[s] = rightBox[s + 1];
       rightBox[s].merge(boxes[s]);
@@ -141,18 +155,25 @@ class SahBuilder {
   // Moves the references of rank below the split's limit on its axis to the front, keeping the
   // order on either side. Returns the left count.
   uint32_t partition(std::vector<uint32_t>& refs, const BuildNode& node, const Split& split) {
-    ranks(refs, node, split.axis, ranks_);
-    std::vector<uint32_t> left, right;
+    ranks(refs, node, centresOf(refs, node), split.axis, ranks_);
+    const auto begin = refs.begin() + node.first;
+    order_.assign(begin, begin + node.count);  // a copy, read while refs are rewritten
+    uint32_t left = 0;
     for (uint32_t i = 0; i < node.count; ++i)
-      (ranks_[i] < split.rankLimit ? left : right).push_back(refs[node.first + i]);
-    std::copy(left.begin(), left.end(), refs.begin() + node.first);
-    std::copy(right.begin(), right.end(), refs.begin() + node.first + left.size());
-    return static_cast<uint32_t>(left.size());
+      if (ranks_[i] < split.rankLimit) begin[left++] = order_[i];
+    uint32_t right = left;
+    for (uint32_t i = 0; i < node.count; ++i)
+      if (ranks_[i] >= split.rankLimit) begin[right++] = order_[i];
+    return left;
   }
 
   const SahBuilderConfig& config_;
   BuildPrimitives primitives_;
-  std::vector<uint32_t> ranks_;  // scratch: the current node's references' ranks on one axis
+  // Scratch, kept between nodes so that no node allocates: the references' ranks on one axis,
+  // an order or copy of them, and each slot's box and count and those of the slots from it on.
+  std::vector<uint32_t> ranks_, order_;
+  std::vector<Aabb<double>> slotBoxes_, rightBoxes_;
+  std::vector<uint32_t> slotCounts_, rightCounts_;
 };
 
 }  // namespace

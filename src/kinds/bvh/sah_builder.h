@@ -1,7 +1,8 @@
 #pragma once
 // Top-down BVH builders by the surface area heuristic, as production ray tracers build them (not
 // a seed's): `binned` (the default of `rtusim build --accel bvh`, as Embree's and tinybvh's
-// binned builders: a fixed number of bins over the centres' extent on each of the three axes) and
+// binned builders: on each of the three axes, min(bins, 4 + n / 20) bins over the extent of the
+// node's n centres, Embree's count, so small nodes sweep few bins) and
 // `sweep` (every split between consecutive centres on each axis: the best object split, slower).
 // Unlike langr, a node may stay a leaf when splitting does not pay:
 //   split cost  C_box + C_tri (A_left n_left + A_right n_right) / A_node
@@ -24,7 +25,7 @@ enum class SahSplitSearch { Binned, Sweep };
 
 struct SahBuilderConfig {
   SahSplitSearch search = SahSplitSearch::Binned;
-  uint32_t bins = 32;  // binned only
+  uint32_t bins = 32;  // binned only: the most bins of a node
   uint32_t maxLeafSize = 8;
   SahCosts costs{1.0, 1.0};
 };
