@@ -3,13 +3,15 @@
 // ray record (rtu/ray_record.h), which every kind's set-up takes, or a kind's own record
 // (Kind::Record, when it declares one: the SVO kind's t-value record). A kind's Setup offers a
 // setUp overload for each record it takes; setUpHostRecord picks it, and refuses a record the
-// kind has none for. Every record type names itself (`kName`) for that refusal.
+// kind has none for (checkTakesRecords refuses it before a run). Every record type names itself
+// (`kName`) for that refusal.
 
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "rtu/core_kind.h"
 #include "rtu/ray_record.h"
@@ -76,6 +78,20 @@ JobSetUp<typename Kind::Job> setUpHostRecord(typename Kind::Setup& setup,
           throw refusedRecord<Kind, Record>();
       },
       record);
+}
+
+// Throws refusedRecord's std::invalid_argument for the first of `records` (HostRecordOf values)
+// the kind takes no overload for: a run checks its records before it starts. No test at all for
+// a kind that takes every record.
+template <class Kind, class HostRecord>
+void checkTakesRecords(const std::vector<HostRecord>& records) {
+  for (const HostRecord& record : records)
+    std::visit(
+        [](const auto& own) {
+          using Record = std::decay_t<decltype(own)>;
+          if constexpr (!kTakesRecord<Kind, Record>) throw refusedRecord<Kind, Record>();
+        },
+        record);
 }
 
 }  // namespace rtu

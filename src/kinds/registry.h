@@ -129,6 +129,12 @@ auto withCoreKind(const std::string& name, Use&& use) {
   return withCoreKindOf(CoreKinds{}, name, std::forward<Use>(use));
 }
 
+// Throws std::invalid_argument naming the record and the kind when the kind named `core` takes no
+// set-up overload for one of `records`; the runs call it before they start.
+inline void checkCoreTakes(const std::string& core, const std::vector<HostRecord>& records) {
+  withCoreKind(core, [&records](auto kind) { checkTakesRecords<decltype(kind)>(records); });
+}
+
 // The job manager's set-up of host records for the kind named `core` (its Kind::Setup, from its
 // settings in `configs`), behind one call per job: the job manager stays kind-agnostic, and
 // nothing per cycle goes through it. A record the kind takes no overload for throws

@@ -295,6 +295,7 @@ const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_-
 // The thesis' host: job i + 1 offered from the cycle after job i was taken.
 RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config) {
+  checkCoreTakes(config.core, records);
   RtlTop top(memory, config);
   RtlTopRun run;
   size_t next = 0;

@@ -96,6 +96,7 @@ RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jo
 
 RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config) {
+  checkCoreTakes(config.core, records);
   return analyticRun(memory, records, config);
 }
 
