@@ -36,8 +36,7 @@ void addGoldenCommand(CLI::App& app) {
         settings.rays.empty()
             ? readJobBufferSkipping(settings.jobs, skipped)
             : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped),
-                                 settings.rays,
-                                 static_cast<float>(settings.rtu.coreConfig<SvoKind>().epsilon));
+                                 settings.rays, golden.epsilon);
     warnSkippedRecords(settings.rays.empty() ? "job buffer" : "ray buffer",
                        settings.rays.empty() ? settings.jobs : settings.rays, skipped, std::cout);
     checkInputTrees(image, jobs, golden.stackFrames, /*allowOverflow=*/true, settings);

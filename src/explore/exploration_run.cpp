@@ -36,12 +36,10 @@ void SceneCache::build(const std::vector<Configuration>& configurations) {
   std::map<std::string, Use> uses;
   for (const Configuration& configuration : configurations) {
     const RunConfig& settings = configuration.values();
-    auto [use, added] =
-        uses.emplace(sceneKey(settings.scene),
-                     Use{&settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                         settings.allowStackOverflow});
-    use->second.stackFrames =
-        std::max(use->second.stackFrames, settings.rtu.coreConfig<SvoKind>().stackFrames);
+    const int stackFrames = settings.rtu.coreConfig<SvoKind>().stackFrames;
+    auto [use, added] = uses.emplace(sceneKey(settings.scene), Use{&settings.scene, stackFrames,
+                                                                   settings.allowStackOverflow});
+    use->second.stackFrames = std::max(use->second.stackFrames, stackFrames);
     use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
   }
   for (const auto& [key, use] : uses) {
