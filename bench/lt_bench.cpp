@@ -100,9 +100,10 @@ int main(int argc, char** argv) {
     const WordMemory memory = frame.build.image.memory();
     const std::vector<HostRecord> records(frame.jobs.begin(), frame.jobs.end());
     const double rays = static_cast<double>(frame.jobs.size());
-    const double goldenCpu = fastestOf(repeat, [&] {
-                               return GoldenModel(memory, cached.golden()).traceAll(frame.jobs);
-                             }).first;
+    const double goldenCpu =
+        fastestOf(repeat, [&] {
+          return GoldenModel(memory, cached.coreConfig<SvoKind>()).traceAll(frame.jobs);
+        }).first;
     for (const Memory& mem : memories) {
       const auto [caCpu, ca] =
           fastestOf(1, [&] { return simulateRtu(memory, frame.jobs, mem.config); });

@@ -39,7 +39,7 @@ RtuConfig kindConfig() {
 
 // The per-cycle RTL reference of the RTU `config` describes.
 inline RtlTopConfig rtlTopConfig(const RtuConfig& config) {
-  return RtlTopConfig{config.cores, config.golden(), config.jobManager.rayStages,
+  return RtlTopConfig{config.cores, config.coreConfigs, config.jobManager.rayStages,
                       config.jobManager.headerFetchCycles, config.core};
 }
 

@@ -41,7 +41,7 @@ TEST_CASE("Settings reach the run configuration by hierarchical name", "[config]
   CHECK(v.rtu.memory.l2.replacement == Replacement::Fifo);
   CHECK(v.rtu.scheduler == SchedulerPolicy::RoundRobin);
   CHECK(v.camera.position == glm::dvec3(1, 2, 3));
-  CHECK(v.rtu.jobManager.conversion == FloatConversion::Exact);
+  CHECK(v.rtu.coreConfig<SvoKind>().conversion == FloatConversion::Exact);
   CHECK(c.source("cores") == ConfigSource::CommandLine);
   CHECK(c.source("width") == ConfigSource::Default);
 }

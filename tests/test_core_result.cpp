@@ -72,7 +72,7 @@ TEST_CASE("Kind-agnostic results: the scene manager's questions of a toy kind", 
   CHECK_FALSE(nearer<ToyKinds>(far, near));
   CHECK_FALSE(nearer<ToyKinds>(near, alsoNear));  // as near: neither is nearer
   CHECK_FALSE(nearer<ToyKinds>(alsoNear, near));
-  CHECK(hitDistance<ToyKinds>(far, JobManagerConfig{}) == 8.0);
+  CHECK(hitDistance<ToyKinds>(far, ToyKinds::Configs{}) == 8.0);
 
   // Two results of different kinds have no order.
   const AnyResult svo = kindMiss<SvoKind, ToyKinds>(1);
@@ -94,7 +94,7 @@ TEST_CASE("Kind-agnostic results: the SVO kind's answers through the same list",
   CHECK_FALSE(hitAhead<ToyKinds>(result));
   CHECK(resultCost<ToyKinds>(result) == 17);
   CHECK(resultBelowResolution<ToyKinds>(result));
-  CHECK(hitDistance<ToyKinds>(result, JobManagerConfig{}) == -3.0);
+  CHECK(hitDistance<ToyKinds>(result, ToyKinds::Configs{}) == -3.0);
   ToyKinds::Counters counters;
   countResult<ToyKinds>(result, counters);
   CHECK(counters.stackOverflows == 1);

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "inputs/camera.h"
+#include "kinds/svo/golden_config.h"
 #include "kinds/svo/job_setup.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
@@ -24,11 +25,8 @@ TEST_CASE("Job set-up: latencies of t-value and ray records, one header fetch pe
   const std::vector<RayRecord> firstRays = makeFrameRayRecords(camera, first);
   const std::vector<RayRecord> secondRays = makeFrameRayRecords(camera, second);
 
-  JobManagerConfig config;
-  config.stages = 6;
-  config.rayStages = 4;
-  config.headerFetchCycles = 16;
-  JobSetup setup(image.memory(), config);
+  const JobManagerTiming timing{6, 4, 16};
+  JobSetup setup(image.memory(), timing, GoldenConfig{}.epsilon);
 
   const TValueRecord tValues = makeFrameJobs(camera, image.root).front();
   const JobSetup::SetUp plain = setup.setUp(tValues);

@@ -198,8 +198,8 @@ TEMPLATE_LIST_TEST_CASE("Every ray's result equals the golden model's, whatever 
       const std::vector<CoreKindResult> expected = Fixture::golden(frame.memory(), config, jobs);
       for (int cores : {1, 2, 4, 16}) {
         config.cores = cores;
-        INFO(scene << ", " << config.jobManager.format.describe() << ", " << config.stackFrames
-                   << " frames, " << cores << " cores");
+        INFO(scene << ", " << config.coreConfig<SvoKind>().format.describe() << ", "
+                   << config.coreConfig<SvoKind>().stackFrames << " frames, " << cores << " cores");
         const RtlTopRun run = runRtlTop(frame.memory(), jobs, rtlTopConfig(config));
         REQUIRE(run.results.size() == jobs.size());
         REQUIRE(run.resultCycles.size() == jobs.size());
@@ -280,10 +280,10 @@ TEST_CASE("Impossible configurations are rejected", "[rtl]") {
     REQUIRE_THROWS_AS(runRtlTop(memory, jobs, config), std::invalid_argument);
   }
   config = RtlTopConfig{};
-  config.golden.stackFrames = 0;
+  config.coreConfig<SvoKind>().stackFrames = 0;
   REQUIRE_THROWS_AS(runRtlTop(memory, jobs, config), std::invalid_argument);
   config = RtlTopConfig{};
-  config.golden.format = FixedFormat{64, 16};
+  config.coreConfig<SvoKind>().format = FixedFormat{64, 16};
   REQUIRE_THROWS_AS(runRtlTop(memory, jobs, config), std::invalid_argument);
   config = RtlTopConfig{};
   config.cores = kMaxRtlCores;

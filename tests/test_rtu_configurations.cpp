@@ -189,7 +189,8 @@ std::string describe(const RtuConfig& c) {
       << ", input " << c.hostInput.bytesPerCycle << " B/c p=" << c.hostInput.activeProbability
       << " seed " << c.hostInput.seed << ", output " << c.hostOutput.bytesPerCycle
       << " B/c p=" << c.hostOutput.activeProbability << " seed " << c.hostOutput.seed
-      << ", reorder " << c.reorderCapacity << ", " << c.stackFrames << " frames";
+      << ", reorder " << c.reorderCapacity << ", " << c.coreConfig<SvoKind>().stackFrames
+      << " frames";
   return out.str();
 }
 
@@ -198,7 +199,7 @@ std::string describe(const RtuConfig& c) {
 template <class Kind = SvoKind, class Record>
 uint64_t wordsRead(const WordMemory& memory, const std::vector<Record>& records,
                    const RtuConfig& config) {
-  typename Kind::Setup setup(memory, config.jobManager);
+  typename Kind::Setup setup(memory, config.jobManager, config.coreConfig<Kind>());
   typename Kind::Behaviour behaviour = Kind::behaviour(config.coreConfig<Kind>());
   uint64_t reads = 0;
   const auto read = [&](uint32_t address) {
@@ -206,7 +207,7 @@ uint64_t wordsRead(const WordMemory& memory, const std::vector<Record>& records,
     return memory.read(address);
   };
   for (const Record& record : records) {
-    Kind::start(behaviour, setup.setUp(HostRecord{record}).job);
+    Kind::start(behaviour, setUpHostRecord<Kind>(setup, HostRecord{record}).job);
     while (behaviour.busy()) behaviour.step(read);
     behaviour.finish();
   }
@@ -455,7 +456,8 @@ TEMPLATE_LIST_TEST_CASE("Other arithmetic, stack depths and job manager depths",
           config.memory = MemoryConfig{};
         }
         INFO(scene.scene << ", " << stages << " job manager stages, "
-                         << config.jobManager.format.describe() << ": " << describe(config));
+                         << config.coreConfig<SvoKind>().format.describe() << ": "
+                         << describe(config));
         const std::vector<CoreKindResult> expected =
             Fixture::golden(scene.memory(), config, scene.jobs);
         const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
@@ -849,7 +851,7 @@ TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
   rejects(config);
   for (int frames : {0, -1, kMaxStackFrames + 1}) {
     config = RtuConfig{};
-    config.stackFrames = frames;
+    config.coreConfig<SvoKind>().stackFrames = frames;
     rejects(config);
   }
   // Below 1 MHz 2^64 ps would not hold kMaxCycles; 1e-12 MHz overflowed picosecond time.
@@ -880,7 +882,7 @@ TEST_CASE("Impossible RTU configurations are rejected", "[rtu]") {
   CHECK_NOTHROW(simulateRtu(memory, jobs, config));
   config = RtuConfig{};
   config.cores = 1;
-  config.stackFrames = 1;
+  config.coreConfig<SvoKind>().stackFrames = 1;
   config.reorderCapacity = 1;
   config.memory = MemoryConfig{};
   config.memory.l1.sizeBytes = config.memory.l1.lineBytes * config.memory.l1.ways;
@@ -949,7 +951,7 @@ TEST_CASE("A two-frame stack overflows on a deep scene", "[rtu]") {
     for (int cores : {1, 16}) {
       RtuConfig config;
       config.cores = cores;
-      config.stackFrames = 2;
+      config.coreConfig<SvoKind>().stackFrames = 2;
       if (cached) config.memory = MemoryConfig{};
       INFO(describe(config));
       const std::vector<CoreKindResult> expected =

@@ -153,7 +153,7 @@ TEST_CASE("Result records over 32 bits take 48 bytes on a paced output link", "[
     RtuConfig config;
     config.cores = 16;
     config.hostOutput.bytesPerCycle = 8;
-    config.jobManager.format = format;
+    config.coreConfig<SvoKind>().format = format;
     const RtuRun simulated = simulateRtu(memory, records.tValueRecords, config);
     uint64_t smallest = ~0ull;
     for (size_t i = 1; i < simulated.arrivalCycles.size(); ++i)

@@ -16,7 +16,7 @@ namespace rtu {
 namespace {
 
 RtlTopConfig rtlConfig(const RtuConfig& config) {
-  return RtlTopConfig{config.cores, config.golden(), config.jobManager.rayStages,
+  return RtlTopConfig{config.cores, config.coreConfigs, config.jobManager.rayStages,
                       config.jobManager.headerFetchCycles};
 }
 

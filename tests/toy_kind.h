@@ -77,7 +77,9 @@ struct ToyKind {
   using Result = ToyResult;
   using Behaviour = ToyBehaviour;
   using Memory = WordMemory;
-  struct Config {};
+  struct Config {
+    void validate() const {}
+  };
 
   static constexpr int kWordsPerRead = 2;
   static uint32_t stateCycles(const Behaviour& core) { return core.stateCycles(); }
@@ -106,12 +108,7 @@ struct ToyKind {
   static Result miss(uint32_t idWord) { return ToyResult{idWord, 0, 0}; }
   static bool hitAhead(const Result& result) { return resultHit(result); }
   static bool nearer(const Result& a, const Result& b) { return a.sum < b.sum; }
-  static double hitDistance(const Result& result, const JobManagerConfig&) { return result.sum; }
+  static double hitDistance(const Result& result, const Config&) { return result.sum; }
 };
-
-template <>
-inline ToyKind::Config RtuConfig::coreConfig<ToyKind>() const {
-  return {};
-}
 
 }  // namespace rtu

@@ -37,7 +37,7 @@ void addAccuracyCommand(CLI::App& app) {
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& frame = configuration.values();
-    const GoldenConfig golden = frame.golden();
+    const GoldenConfig golden = frame.rtu.coreConfig<SvoKind>();
     golden.format.validate();
     frame.camera.validate();
     const Scene scene = loadScene(frame.scene);

@@ -132,7 +132,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   const std::vector<SceneModel> models =
       loadModels(scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
 
-  AnimationOptions run{rtu.golden(),
+  AnimationOptions run{rtu.coreConfig<SvoKind>(),
                        {!options.traceAll, !options.traceAll},
                        !options.noHitBuffer,
                        options.threads,

@@ -116,7 +116,8 @@ void addFidelityCommand(CLI::App& app) {
     const Scene scene = loadScene(settings.scene);
     const std::vector<TValueRecord> jobs =
         makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-    checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
+    checkStackDepth(scene.image, jobs, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                    settings.allowStackOverflow);
     if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
       throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
     for (double fraction : options->fractions) {

@@ -27,7 +27,7 @@ void addGoldenCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     checkOneInputBuffer(settings);
-    const GoldenConfig golden = settings.golden();
+    const GoldenConfig golden = settings.rtu.coreConfig<SvoKind>();
     const size_t recordWords = resultRecordWords(golden.format);
     checkOutputPaths({{"--out", options->out}}, inputPaths(settings));
     const SvoImage image = readSvoFile(settings.scene.svoFile);
@@ -36,8 +36,7 @@ void addGoldenCommand(CLI::App& app) {
         settings.rays.empty()
             ? readJobBufferSkipping(settings.jobs, skipped)
             : jobsFromRayRecords(image, readRayBufferSkipping(settings.rays, skipped),
-                                 settings.rays,
-                                 static_cast<float>(settings.rtu.jobManager.epsilon));
+                                 settings.rays, golden.epsilon);
     warnSkippedRecords(settings.rays.empty() ? "job buffer" : "ray buffer",
                        settings.rays.empty() ? settings.jobs : settings.rays, skipped, std::cout);
     checkInputTrees(image, jobs, golden.stackFrames, /*allowOverflow=*/true, settings);

@@ -78,7 +78,7 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
                      std::to_string(frame.camera.height),
                      std::to_string(p.format.totalBits),
                      std::to_string(p.format.fractionBits),
-                     toString(frame.golden().conversion),
+                     toString(frame.rtu.coreConfig<SvoKind>().conversion),
                      std::to_string(p.rays),
                      std::to_string(p.referenceHits),
                      std::to_string(p.falseHits),
@@ -138,7 +138,7 @@ void addPrecisionCommand(CLI::App& app) {
     PrecisionStudy study;
     study.rays = frameRays(frame.camera);
     study.root = scene.image.root;
-    study.conversion = frame.golden().conversion;
+    study.conversion = frame.rtu.coreConfig<SvoKind>().conversion;
     study.epsilon = frame.epsilon;
     const std::vector<FormatPrecision> results =
         measurePrecision(scene.image.memory(), study, formats);

@@ -57,7 +57,7 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
 std::vector<TraversalResult> traceWithGolden(const Scene& scene,
                                              const std::vector<TValueRecord>& jobs,
                                              const Configuration& configuration) {
-  GoldenModel model(scene.image.memory(), configuration.values().golden());
+  GoldenModel model(scene.image.memory(), configuration.values().rtu.coreConfig<SvoKind>());
   const auto start = std::chrono::steady_clock::now();
   std::vector<TraversalResult> results = model.traceAll(jobs);
   const double seconds =
@@ -74,7 +74,8 @@ std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
                                                  const Configuration& configuration,
                                                  const RenderOptions& options) {
   const RtuConfig config = options.outputs.traced(configuration.values().rtu);
-  checkStackDepth(scene.image, jobs, config.stackFrames, configuration.values().allowStackOverflow);
+  checkStackDepth(scene.image, jobs, config.coreConfig<SvoKind>().stackFrames,
+                  configuration.values().allowStackOverflow);
   const std::vector<HostRecord> records(jobs.begin(), jobs.end());
   const RtuConfig planned =
       plannedTrace(scene.image.memory(), records, config, options.outputs, std::cout);
@@ -113,12 +114,12 @@ void addRenderCommand(CLI::App& app) {
     settings.camera.validate();
     if (!untimed) {
       validate(options->outputs.traced(settings.rtu));
-      checkBuiltSceneFitsStack(settings.scene, settings.rtu.stackFrames,
+      checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
                                settings.allowStackOverflow);
     }
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    const GoldenConfig golden = settings.golden();
+    const GoldenConfig golden = settings.rtu.coreConfig<SvoKind>();
     golden.format.validate();
     const Scene scene = loadScene(settings.scene);
     const std::vector<TValueRecord> jobs =

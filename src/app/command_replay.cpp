@@ -36,7 +36,8 @@ void addReplayCommand(CLI::App& app) {
     checkOutputsOfModel(options->outputs, settings.model);
     const RtuConfig config = options->outputs.traced(settings.rtu);
     validate(config);
-    const size_t recordWords = resultRecordWords(config.jobManager.format);
+    const GoldenConfig& svo = config.coreConfig<SvoKind>();
+    const size_t recordWords = resultRecordWords(svo.format);
     std::vector<NamedPath> outputs = options->outputs.paths();
     outputs.insert(outputs.begin(), NamedPath{"--out", options->out});
     checkOutputPaths(outputs, inputPaths(settings));
@@ -48,14 +49,14 @@ void addReplayCommand(CLI::App& app) {
       // The job manager's own set-up, run ahead once to check every header and tree up front;
       // only the checks read these jobs (the run reads the records), so they go at the block's end.
       const std::vector<TValueRecord> jobs =
-          jobsFromRayRecords(image, rays, settings.rays, config.jobManager.epsilon);
+          jobsFromRayRecords(image, rays, settings.rays, svo.epsilon);
       records.assign(rays.begin(), rays.end());
       warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
-      checkInputTrees(image, jobs, config.stackFrames, settings.allowStackOverflow, settings);
+      checkInputTrees(image, jobs, svo.stackFrames, settings.allowStackOverflow, settings);
     } else {
       records = readJobRecordsSkipping(settings.jobs, skipped);
       warnSkippedRecords("job buffer", settings.jobs, skipped, std::cout);
-      checkInputTrees(image, records, config.stackFrames, settings.allowStackOverflow, settings);
+      checkInputTrees(image, records, svo.stackFrames, settings.allowStackOverflow, settings);
     }
     const RtuConfig planned =
         plannedTrace(image.memory(), records, config, options->outputs, std::cout);

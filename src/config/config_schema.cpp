@@ -252,29 +252,30 @@ void addCache(std::vector<Setting>& schema, const std::string& level,
   }
 }
 
-// The SVO kind's settings (kinds/svo): its stack and number format. With another kind of core
-// they have no effect.
+// The SVO kind's settings (kinds/svo, RtuConfig::coreConfig<SvoKind>()): its stack and number
+// format. With another kind of core they have no effect.
 void addSvoSettings(std::vector<Setting>& schema) {
   constexpr unsigned arith = kUseArithmetic;
   std::vector<Setting> added;
   added.push_back(integer("stack_frames", "--stack-frames", "frames", 1, kMaxStackFrames, arith,
-                          "traversal stack depth (RTL: 11)",
-                          [](RunConfig& c) -> int& { return c.rtu.stackFrames; }));
+                          "traversal stack depth (RTL: 11)", [](RunConfig& c) -> int& {
+                            return c.rtu.coreConfig<SvoKind>().stackFrames;
+                          }));
   added.push_back(flag("allow_stack_overflow", "--allow-stack-overflow", arith,
                        "run even when a tree is deeper than the stack (such rays are flagged)",
                        [](RunConfig& c) -> bool& { return c.allowStackOverflow; }));
-  added.push_back(integer("format.total_bits", "--total-bits", "bits", 8, 48, arith,
-                          "fixed-point word width",
-                          [](RunConfig& c) -> int& { return c.rtu.jobManager.format.totalBits; }));
+  added.push_back(
+      integer("format.total_bits", "--total-bits", "bits", 8, 48, arith, "fixed-point word width",
+              [](RunConfig& c) -> int& { return c.rtu.coreConfig<SvoKind>().format.totalBits; }));
   added.push_back(integer("format.fraction_bits", "--fraction-bits", "bits", 1, 46, arith,
                           "fixed-point fraction bits", [](RunConfig& c) -> int& {
-                            return c.rtu.jobManager.format.fractionBits;
+                            return c.rtu.coreConfig<SvoKind>().format.fractionBits;
                           }));
   added.push_back(choice(
       "format.conversion", "--conversion", {"rtl", "exact"}, arith,
       "float-to-fixed conversion: rtl (as the hardware computes it) or exact",
-      [](RunConfig& c) -> FloatConversion& { return c.rtu.jobManager.conversion; }, conversionName,
-      parseFloatConversion));
+      [](RunConfig& c) -> FloatConversion& { return c.rtu.coreConfig<SvoKind>().conversion; },
+      conversionName, parseFloatConversion));
   for (Setting& s : added) {
     s.ignoredBecause = [](const RunConfig& c) {
       return c.rtu.core == SvoKind::kName ? std::string() : "the core kind is " + c.rtu.core;
@@ -350,10 +351,11 @@ std::vector<Setting> makeSchema() {
   s.push_back(integer("job_manager.header_fetch", "--jm-header-fetch", "cycles", 0,
                       kMaxLatencyCycles, model, "cycles to fetch a model header, once per model",
                       [](C& c) -> int& { return c.rtu.jobManager.headerFetchCycles; }));
+  // The SVO kind's set-up of ray records reads it; its key and place stay the job manager's.
   s.push_back(
       real("job_manager.epsilon", "--ray-epsilon", "", 0, 1, buffers,
            "ray records: direction components below epsilon times the largest count as zero",
-           [](C& c) -> float& { return c.rtu.jobManager.epsilon; }));
+           [](C& c) -> float& { return c.rtu.coreConfig<SvoKind>().epsilon; }));
   s.back().formerFlag = "--epsilon";
   s.back().ignoredBecause = [](const C& c) {
     return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();

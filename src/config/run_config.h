@@ -22,8 +22,6 @@ struct RunConfig {
   std::string jobs, rays;                     // host input buffers of `replay` and `golden`
   bool allowStackOverflow = false;
   SampleSpec sample;  // fps and sweep rows
-
-  GoldenConfig golden() const { return rtu.golden(); }
 };
 
 }  // namespace rtu

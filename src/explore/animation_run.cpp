@@ -4,7 +4,7 @@
 #include <thread>
 
 #include "kinds/core_result.h"
-#include "kinds/svo/job_setup.h"
+#include "rtu/job_manager_timing.h"
 #include "rtu/rtu_recurrence.h"
 #include "run/lt_simulation.h"
 #include "run/rtu_simulation.h"
@@ -117,7 +117,7 @@ void AnimationRenderer::traceRows(Work& work, int firstRow, int rowStep) {
 // waits for its header, as the job manager fetches it once per frame.
 uint64_t AnimationRenderer::frameCycles(
     const std::vector<std::vector<IssuedJob>>& issuedPerRow) const {
-  const JobManagerConfig jobManager;
+  const JobManagerTiming jobManager;
   std::vector<JobTiming> jobs;
   std::vector<uint8_t> headerFetched(memory_.instanceCount(), 0);
   for (const std::vector<IssuedJob>& row : issuedPerRow)

@@ -36,10 +36,10 @@ void SceneCache::build(const std::vector<Configuration>& configurations) {
   std::map<std::string, Use> uses;
   for (const Configuration& configuration : configurations) {
     const RunConfig& settings = configuration.values();
-    auto [use, added] =
-        uses.emplace(sceneKey(settings.scene),
-                     Use{&settings.scene, settings.rtu.stackFrames, settings.allowStackOverflow});
-    use->second.stackFrames = std::max(use->second.stackFrames, settings.rtu.stackFrames);
+    const int stackFrames = settings.rtu.coreConfig<SvoKind>().stackFrames;
+    auto [use, added] = uses.emplace(sceneKey(settings.scene), Use{&settings.scene, stackFrames,
+                                                                   settings.allowStackOverflow});
+    use->second.stackFrames = std::max(use->second.stackFrames, stackFrames);
     use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
   }
   for (const auto& [key, use] : uses) {
@@ -104,7 +104,8 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
   validate(settings.rtu);
   const std::vector<TValueRecord> jobs =
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-  checkStackDepth(scene.image, jobs, settings.rtu.stackFrames, settings.allowStackOverflow);
+  checkStackDepth(scene.image, jobs, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                  settings.allowStackOverflow);
   if (settings.model != ModelKind::CycleAccurate) {
     if (settings.sample.enabled())
       throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "kinds/registry.h"
 #include "kinds/svo/fixed_point.h"
-#include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/thesis_records.h"
 #include "rtu/host_link.h"

@@ -95,11 +95,12 @@ bool nearer(const typename Kinds::Result& a, const typename Kinds::Result& b) {
 }
 
 // How far along the ray the hit lies, in the units of the ray's direction (world units for a
-// world-space ray), as the job manager configured by `config` set the job up.
+// world-space ray), as its kind's job set-up with its settings in `configs` set the job up.
 template <class Kinds = CoreKinds>
-double hitDistance(const typename Kinds::Result& result, const JobManagerConfig& config) {
-  return Kinds::visitResult(result, [&config](auto kind, const auto& own) {
-    return decltype(kind)::hitDistance(own, config);
+double hitDistance(const typename Kinds::Result& result, const typename Kinds::Configs& configs) {
+  return Kinds::visitResult(result, [&configs](auto kind, const auto& own) {
+    using Kind = decltype(kind);
+    return Kind::hitDistance(own, Kinds::template configOf<Kind>(configs));
   });
 }
 

@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "base/statistics.h"
+#include "kinds/host_record.h"
 #include "kinds/svo/svo_kind.h"
+#include "rtu/job_manager_timing.h"
 
 namespace rtu {
 
@@ -26,8 +28,34 @@ struct CoreKindList {
   // own types, distinct from every other kind's).
   using Job = std::variant<typename Kinds::Job...>;
   using Result = std::variant<typename Kinds::Result...>;
+  // What the host sends the job manager: any kind's own record or a world-space ray
+  // (kinds/host_record.h).
+  using HostRecord = HostRecordOf<Kinds...>;
   // The kinds as a type list (Catch2's TEMPLATE_LIST_TEST_CASE runs a test for each).
   using Tuple = std::tuple<Kinds...>;
+  // Every kind's own settings, one each whichever kind a run chooses (configOf reaches one).
+  using Configs = std::tuple<typename Kinds::Config...>;
+
+  template <class Kind>
+  static constexpr bool kHolds = (std::is_same_v<Kind, Kinds> || ...);
+  // `Kind`'s settings in `configs` (a Configs, const or not). A kind outside the list (a test's)
+  // has its defaults, read-only.
+  template <class Kind, class ConfigTuple>
+  static auto& configOf(ConfigTuple& configs) {
+    if constexpr (kHolds<Kind>) {
+      return std::get<indexOf<Kind>()>(configs);
+    } else {
+      static_assert(std::is_const_v<ConfigTuple>, "only a listed kind's settings can be set");
+      static const typename Kind::Config defaults{};
+      return defaults;
+    }
+  }
+  // Throws std::invalid_argument naming the setting for any kind's settings its core cannot have
+  // (Config::validate), whichever kind a run chooses, as memory settings are checked with ideal
+  // memory.
+  static void validateConfigs(const Configs& configs) {
+    (configOf<Kinds>(configs).validate(), ...);
+  }
   // Every kind's own counters, held by a core's statistics (kinds/core_statistics.h).
   struct Counters : Kinds::Counters... {
     static const StatisticGroup<Counters>& declaration() {
@@ -62,10 +90,20 @@ struct CoreKindList {
     if (own == nullptr) __builtin_unreachable();  // the last kind left: the result is its
     return visit(Kind{}, *own);
   }
+
+ private:
+  template <class Kind>
+  static constexpr size_t indexOf() {
+    size_t index = 0;
+    (void)((std::is_same_v<Kind, Kinds> ? true : (++index, false)) || ...);
+    return index;
+  }
 };
 
 using CoreKinds = CoreKindList<SvoKind>;  // a new kind: one more name here
 
+using HostRecord = CoreKinds::HostRecord;
+using CoreKindConfigs = CoreKinds::Configs;
 using CoreKindJob = CoreKinds::Job;
 using CoreKindResult = CoreKinds::Result;
 using CoreKindJobSetUp = JobSetUp<CoreKindJob>;
@@ -91,18 +129,28 @@ auto withCoreKind(const std::string& name, Use&& use) {
   return withCoreKindOf(CoreKinds{}, name, std::forward<Use>(use));
 }
 
-// The job manager's set-up of host records for the kind named `core` (its Kind::Setup), behind
-// one call per job: the job manager stays kind-agnostic, and nothing per cycle goes through it.
+// Throws std::invalid_argument naming the record and the kind when the kind named `core` takes no
+// set-up overload for one of `records`; the runs call it before they start.
+inline void checkCoreTakes(const std::string& core, const std::vector<HostRecord>& records) {
+  withCoreKind(core, [&records](auto kind) { checkTakesRecords<decltype(kind)>(records); });
+}
+
+// The job manager's set-up of host records for the kind named `core` (its Kind::Setup, from its
+// settings in `configs`), behind one call per job: the job manager stays kind-agnostic, and
+// nothing per cycle goes through it. A record the kind takes no overload for throws
+// std::invalid_argument (setUpHostRecord).
 using CoreJobSetup = std::function<CoreKindJobSetUp(const HostRecord&)>;
 
 inline CoreJobSetup makeCoreJobSetup(const std::string& core, WordMemory memory,
-                                     const JobManagerConfig& config) {
+                                     const JobManagerTiming& timing,
+                                     const CoreKindConfigs& configs) {
   return withCoreKind(core, [&](auto kind) -> CoreJobSetup {
-    return
-        [setup = typename decltype(kind)::Setup(memory, config)](const HostRecord& record) mutable {
-          auto set = setup.setUp(record);
-          return CoreKindJobSetUp{CoreKindJob{set.job}, set.idWord, set.latency, set.headerFetch};
-        };
+    using Kind = decltype(kind);
+    return [setup = typename Kind::Setup(memory, timing, CoreKinds::configOf<Kind>(configs))](
+               const HostRecord& record) mutable {
+      auto set = setUpHostRecord<Kind>(setup, record);
+      return CoreKindJobSetUp{CoreKindJob{set.job}, set.idWord, set.latency, set.headerFetch};
+    };
   });
 }
 

@@ -14,10 +14,7 @@ void RtlTopConfig::validate() const {
   if (cores < 1 || cores > kMaxRtlCores)
     throw std::invalid_argument("core count must be 1 to " + std::to_string(kMaxRtlCores) +
                                 ", got " + std::to_string(cores));
-  golden.format.validate();
-  if (golden.stackFrames < 1 || golden.stackFrames > kMaxStackFrames)
-    throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
-                                " frames, got " + std::to_string(golden.stackFrames));
+  CoreKinds::validateConfigs(coreConfigs);
   if (rayStages < 0 || rayStages > 64 || headerFetchCycles < 0)
     throw std::invalid_argument("ray stages must be 0 to 64 and header fetch cycles not negative, "
                                 "got " +
@@ -151,8 +148,8 @@ RtlTop::KindRegisters<Kind>::KindRegisters(const WordMemory& memory, const RtlTo
     : memory_(memory),
       config_(config),
       setup_(memory,
-             JobManagerConfig{config.golden.format, config.golden.conversion, kJobManagerStages,
-                              config.rayStages, config.headerFetchCycles}) {
+             JobManagerTiming{kJobManagerStages, config.rayStages, config.headerFetchCycles},
+             config.coreConfig<Kind>()) {
   config_.validate();
   const size_t cores = static_cast<size_t>(config_.cores);
   const Core<Kind> idle{Kind::behaviour(config_.coreConfig<Kind>())};
@@ -235,7 +232,7 @@ void RtlTop::KindRegisters<Kind>::clockJobManager(const Wires& w) {
 
 template <class Kind>
 void RtlTop::KindRegisters<Kind>::accept(const RtlOffer& offer) {
-  const JobSetUp<typename Kind::Job> set = setup_.setUp(offer.record);
+  const JobSetUp<typename Kind::Job> set = setUpHostRecord<Kind>(setup_, offer.record);
   const Job<Kind> job{offer.tag, set.idWord, set.job};
   // In the pipeline from the next cycle, at the output `latency` cycles after this one.
   uint64_t remaining = set.latency - 1;
@@ -298,6 +295,7 @@ const std::vector<uint64_t>& RtlTop::dispatchCycles() const { return registers_-
 // The thesis' host: job i + 1 offered from the cycle after job i was taken.
 RtlTopRun runRtlTop(const WordMemory& memory, const std::vector<HostRecord>& records,
                     const RtlTopConfig& config) {
+  checkCoreTakes(config.core, records);
   RtlTop top(memory, config);
   RtlTopRun run;
   size_t next = 0;

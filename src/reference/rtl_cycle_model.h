@@ -5,7 +5,7 @@
 // then updates every register of every module, as the clock edge does. Speed is no concern: it is
 // the reference the event-driven SystemC model is checked against, cycle count and result.
 //
-// The job manager also takes ray records (src/kinds/svo/job_setup.h), as the SystemC one does: a
+// The job manager also takes ray records (the kind's Setup), as the SystemC one does: a
 // ray passes `rayStages` more stages and, the first against a model, waits `headerFetchCycles` for
 // its header, in which no record is accepted (docs/cycle-semantics.md "Job manager").
 //
@@ -21,8 +21,6 @@
 #include <vector>
 
 #include "kinds/registry.h"
-#include "kinds/svo/golden_model.h"
-#include "kinds/svo/job_setup.h"
 #include "kinds/svo/svo_kind.h"
 #include "kinds/svo/thesis_records.h"
 #include "rtu/word_memory.h"
@@ -32,24 +30,25 @@ namespace rtu {
 constexpr int kMaxRtlCores = 4096;
 
 struct RtlTopConfig {
-  int cores = 16;  // CORE_CNT
-  GoldenConfig golden;
+  int cores = 16;                     // CORE_CNT
+  CoreKindConfigs coreConfigs;        // every kind's own settings (kinds/registry.h)
   int rayStages = 6;                  // beyond P_STAGES, for ray records
   int headerFetchCycles = 16;         // a model's first ray
   std::string core = SvoKind::kName;  // the cores' kind (kinds/registry.h)
 
-  // Throws std::invalid_argument unless 1 <= cores <= kMaxRtlCores, the golden configuration is
+  // Throws std::invalid_argument unless 1 <= cores <= kMaxRtlCores, every kind's settings are
   // valid, 0 <= rayStages <= 64 and headerFetchCycles >= 0.
   void validate() const;
-  // The configuration of a core of `Kind` (specialised per kind, as RtuConfig's).
+  // The settings of a core of `Kind`, as RtuConfig's.
   template <class Kind>
-  typename Kind::Config coreConfig() const;
+  const typename Kind::Config& coreConfig() const {
+    return CoreKinds::configOf<Kind>(coreConfigs);
+  }
+  template <class Kind>
+  typename Kind::Config& coreConfig() {
+    return CoreKinds::configOf<Kind>(coreConfigs);
+  }
 };
-
-template <>
-inline SvoKind::Config RtlTopConfig::coreConfig<SvoKind>() const {
-  return golden;
-}
 
 struct RtlTopRun {
   std::vector<CoreKindResult> results;   // in the order the host received them

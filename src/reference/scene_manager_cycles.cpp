@@ -28,7 +28,7 @@ class SceneCycles {
       : rays_(rays),
         instances_(instances),
         scene_(scene),
-        jobManager_{rtu.golden.format, rtu.golden.conversion},
+        coreConfigs_(rtu.coreConfigs),
         miss_(coreKindMiss(rtu.core)),
         top_(memory, rtu) {
     scene_.validate();
@@ -79,7 +79,7 @@ class SceneCycles {
 
   bool endsEarly(const HeldRay& ray) const {
     return scene_.options.earlyTermination && ray.nearest >= 0 &&
-           hitEndsRayBefore(hitDistance(ray.merged, jobManager_), ray.candidates[ray.issued].near);
+           hitEndsRayBefore(hitDistance(ray.merged, coreConfigs_), ray.candidates[ray.issued].near);
   }
 
   void finish(HeldRay& ray, uint64_t from) {
@@ -147,7 +147,7 @@ class SceneCycles {
   const std::vector<RayRecord>& rays_;
   const std::vector<SceneInstance>& instances_;
   SceneManagerConfig scene_;
-  JobManagerConfig jobManager_;  // how the cores' t-values were set up: the hits' distances
+  CoreKindConfigs coreConfigs_;  // how the cores' kind set their jobs up: the hits' distances
   CoreKindMiss miss_;            // the cores' kind's
   RtlTop top_;
   // Registers.

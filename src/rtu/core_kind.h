@@ -14,8 +14,16 @@
 //                        behaviour's readWord calls stay within them;
 //   stateCycles(b)       the cycles of b's current state, asked before it is stepped;
 //   Behaviour::cost()    the job's states' own cycles (stateCycles each), blocked ones excluded;
-//   Setup                the job manager's set-up of a host record (JobSetUp below);
-//   setUp(record, config) a t-value record's set-up from the kind's Config (the cache warmer's).
+//   Config               its own settings, with validate() (throws std::invalid_argument naming the
+//                        setting); the RTU's configuration holds every registered kind's
+//                        (RtuConfig::coreConfig<Kind>());
+//   Setup                the job manager's set-up of a host record (JobSetUp below), made from
+//                        (memory, JobManagerTiming, Config): setUp(const RayRecord&) and, for a
+//                        kind with its own Record, setUp(const Record&); a record it has no
+//                        overload for is refused (kinds/host_record.h);
+//   Record, setUp(record, config)  the kind's own record, if any (naming itself by kName), and
+//                        its set-up from the kind's Config alone (the cache warmer's);
+//   resultRecordBytes(config)  a result's record on the host output link.
 // What the kind-agnostic machinery asks of a Result (the payloads, the host sink and the runs carry
 // it as a CoreKindResult, kinds/registry.h; kinds/core_result.h asks through these):
 //   resultIdWord(r)      the id word the job's set-up gave it, carried back unchanged;
@@ -30,8 +38,8 @@
 //   hitAhead(r)          a hit ahead of the ray's origin: what a scene counts as a hit;
 //   nearer(a, b)         hit a strictly nearer than hit b (neither: as near; the scene manager
 //                        then takes the lower instance);
-//   hitDistance(r, jobManagerConfig)  how far along the ray a hit lies, in the units of its
-//                        direction, as the job manager set the job up (early termination).
+//   hitDistance(r, config)  how far along the ray a hit lies, in the units of its direction, as
+//                        the kind's set-up with its Config set the job up (early termination).
 
 #include <cstdint>
 #include <string>

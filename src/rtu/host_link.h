@@ -10,13 +10,7 @@
 
 namespace rtu {
 
-constexpr uint64_t kHostRecordBytes = 32;  // 8 words, input and output alike
-// Result records of formats over 32 bits: 12 words, t and the normal 64 bits each
-// (docs/inputs-jobs.md).
-constexpr uint64_t kWideResultRecordBytes = 48;
-inline uint64_t resultRecordBytes(int totalBits) {
-  return totalBits > 32 ? kWideResultRecordBytes : kHostRecordBytes;
-}
+constexpr uint64_t kHostRecordBytes = 32;  // 8 words (a kind's results may take more)
 
 struct HostLinkConfig {
   double bytesPerCycle = 0.0;      // 0: unlimited

@@ -23,6 +23,8 @@ struct RayRecord {
   std::array<float, 3> direction{0.0f, 0.0f, 1.0f};
   uint32_t modelAddress = 0;  // word address of the model header
 
+  static constexpr const char* kName = "ray record";
+
   // Throws std::runtime_error for an id over 28 bits, a NaN or infinite component, a component
   // beyond kMaxModelCoordinate, or a zero direction.
   void validate() const;

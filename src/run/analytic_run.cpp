@@ -7,7 +7,6 @@
 
 #include "kinds/core_result.h"
 #include "kinds/registry.h"
-#include "kinds/svo/job_setup.h"
 #include "rtu/golden_shell.h"
 #include "rtu/rtu_recurrence.h"
 #include "run/recurrence_results.h"
@@ -27,10 +26,11 @@ template <class Kind>
 class RecordTracer {
  public:
   RecordTracer(const WordMemory& memory, const RtuConfig& config)
-      : setup_(memory, config.jobManager), shell_(memory, config.coreConfig<Kind>()) {}
+      : setup_(memory, config.jobManager, config.coreConfig<Kind>()),
+        shell_(memory, config.coreConfig<Kind>()) {}
 
   void trace(const HostRecord& record) {
-    const JobSetUp<typename Kind::Job> set = setup_.setUp(record);
+    const JobSetUp<typename Kind::Job> set = setUpHostRecord<Kind>(setup_, record);
     typename Kind::Result& result = emplaceBackResult<Kind>(traced.results);
     shell_.run(set.idWord, set.job, result);
     traced.timing.push_back(JobTiming{Kind::resultCost(result), set.latency, set.headerFetch});
@@ -96,6 +96,7 @@ RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jo
 
 RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config) {
+  checkCoreTakes(config.core, records);
   return analyticRun(memory, records, config);
 }
 

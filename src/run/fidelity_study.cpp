@@ -47,7 +47,7 @@ class Study {
       : memory_(memory), jobs_(jobs), config_(config) {
     const auto start = std::chrono::steady_clock::now();
     // The jobs are t-value records, the SVO kind's, as its golden model's.
-    const auto golden = GoldenModel(memory, config.golden()).traceAll(jobs);
+    const auto golden = GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
     golden_.assign(golden.begin(), golden.end());
     goldenSeconds_ = secondsSince(start);
   }

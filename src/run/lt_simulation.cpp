@@ -41,6 +41,7 @@ RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                        const RtuConfig& config, const RunProgress& progress) {
   validate(config);
+  checkCoreTakes(config.core, records);
   if (const auto why = whyNotLooselyTimed(config))
     throw std::invalid_argument("--model lt does not apply: " + *why);
   freshKernel();

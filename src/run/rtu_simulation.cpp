@@ -94,6 +94,7 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
                 std::vector<TraceListener*> listeners, const BlockRun& plan,
                 const std::vector<SceneInstance>* scene = nullptr) {
   validate(config);
+  checkCoreTakes(config.core, records);
   freshKernel();
   std::unique_ptr<TimelineWriter> timeline;
   if (config.timeline.wanted()) {

@@ -284,7 +284,7 @@ SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>&
     count(measured, place.stratum == kFixed, place.stratum == kFixed ? 0 : place.stratum);
   }
 
-  const auto svoGolden = GoldenModel(memory, config.golden()).traceAll(jobs);
+  const auto svoGolden = GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
   const std::vector<CoreKindResult> golden(svoGolden.begin(), svoGolden.end());
   for (const SamplePlan::Stratum& stratum : plan.strata) {
     sample.rays.push_back(static_cast<double>(stratum.rays));

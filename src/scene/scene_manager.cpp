@@ -64,10 +64,10 @@ SceneManager::SceneManager(WordMemory memory, const GoldenConfig& golden,
                            std::vector<SceneInstance> instances, SceneManagerOptions options,
                            float epsilon)
     : model_(memory, golden),
-      jobManager_{golden.format, golden.conversion},
       instances_(std::move(instances)),
       options_(options),
       epsilon_(epsilon) {
+  CoreKinds::configOf<SvoKind>(coreConfigs_) = golden;
   headers_.reserve(instances_.size());
   for (const SceneInstance& instance : instances_)
     headers_.push_back(readModelHeader(memory, instance.headerAddress));
@@ -83,7 +83,7 @@ SceneHit SceneManager::trace(const RayRecord& ray, std::vector<IssuedJob>* issue
   for (size_t next = 0; next < candidates.size(); ++next) {
     const SceneCandidate& candidate = candidates[next];
     if (options_.earlyTermination && best.instance >= 0 &&
-        hitEndsRayBefore(hitDistance(best.result, jobManager_), candidate.near)) {
+        hitEndsRayBefore(hitDistance(best.result, coreConfigs_), candidate.near)) {
       best.skipped = static_cast<uint32_t>(candidates.size() - next);
       break;
     }

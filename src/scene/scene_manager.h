@@ -102,7 +102,7 @@ class SceneManager {
 
  private:
   GoldenModel model_;
-  JobManagerConfig jobManager_;  // the golden model's t-values, for the hits' distances
+  CoreKindConfigs coreConfigs_;  // the golden model's settings, for the hits' distances
   std::vector<SceneInstance> instances_;
   std::vector<ModelHeader> headers_;
   SceneManagerOptions options_;

@@ -50,20 +50,26 @@ void checkAccessFitsLines(const RtuConfig& config) {
 
 }  // namespace
 
+HostLinkConfig RtuConfig::outputLink() const {
+  HostLinkConfig link = hostOutput;
+  link.recordBytes = withCoreKind(core, [this](auto kind) {
+    using Kind = decltype(kind);
+    return Kind::resultRecordBytes(coreConfig<Kind>());
+  });
+  return link;
+}
+
 void validate(const RtuConfig& config) {
   if (config.cores < 1 || config.cores > kMaxCores)
     throw std::invalid_argument("the RTU needs 1 to " + std::to_string(kMaxCores) + " cores, got " +
                                 std::to_string(config.cores));
-  if (config.stackFrames < 1 || config.stackFrames > kMaxStackFrames)
-    throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
-                                " frames, got " + std::to_string(config.stackFrames));
+  CoreKinds::validateConfigs(config.coreConfigs);
   if (!(config.clockMhz >= kMinClockMhz && config.clockMhz <= kMaxClockMhz))  // NaN fails too
     throw std::invalid_argument("clock must be 1 MHz to 1 THz (1 .. 1e6 MHz), got " +
                                 std::to_string(config.clockMhz) + " MHz");
   config.sceneManager.validate();
   if (config.reorderCapacity < 0)
     throw std::invalid_argument("reorder buffer capacity must not be negative");
-  config.jobManager.format.validate();
   validate(config.memory);  // settings are checked even when ideal memory ignores them
   checkCacheTagsFit(config);
   checkAccessFitsLines(config);

@@ -7,9 +7,8 @@
 #include <string>
 
 #include "kinds/registry.h"
-#include "kinds/svo/golden_model.h"
-#include "kinds/svo/job_setup.h"
 #include "rtu/host_link.h"
+#include "rtu/job_manager_timing.h"
 #include "rtu/scheduling_policy.h"
 #include "scene/scene_manager_timing.h"
 #include "sim/memory/memory_config.h"
@@ -23,8 +22,8 @@ struct RtuConfig {
   int cores = 16;
   SchedulerPolicy scheduler = SchedulerPolicy::CyclicFirstAvailable;
   MemoryConfig memory = idealMemory();
-  JobManagerConfig jobManager;
-  int stackFrames = kRtlStackFrames;
+  JobManagerTiming jobManager;
+  CoreKindConfigs coreConfigs;  // every kind's own settings (SVO's: format, stack, ...)
   HostLinkConfig hostInput, hostOutput;
   int reorderCapacity = 0;          // 0: no reorder buffer
   SceneManagerConfig sceneManager;  // used when the run traces a scene
@@ -38,24 +37,18 @@ struct RtuConfig {
     memory.ideal = true;
     return memory;
   }
-  GoldenConfig golden() const {
-    return GoldenConfig{jobManager.format, jobManager.conversion, stackFrames};
-  }
-  // The configuration of a core of `Kind`, from the kind's settings (specialised per kind).
+  // The settings of a core of `Kind` (a test's kind outside the registry: its defaults).
   template <class Kind>
-  typename Kind::Config coreConfig() const;
-  // The output link as results cross it: records of the format's width (48 bytes over 32 bits).
-  HostLinkConfig outputLink() const {
-    HostLinkConfig link = hostOutput;
-    link.recordBytes = resultRecordBytes(jobManager.format.totalBits);
-    return link;
+  const typename Kind::Config& coreConfig() const {
+    return CoreKinds::configOf<Kind>(coreConfigs);
   }
+  template <class Kind>
+  typename Kind::Config& coreConfig() {
+    return CoreKinds::configOf<Kind>(coreConfigs);
+  }
+  // The output link as results of the chosen kind cross it (SVO: 48-byte records over 32 bits).
+  HostLinkConfig outputLink() const;
 };
-
-template <>
-inline SvoKind::Config RtuConfig::coreConfig<SvoKind>() const {
-  return golden();
-}
 
 // Throws std::invalid_argument with a message naming the setting for impossible configurations.
 void validate(const RtuConfig& config);

@@ -61,15 +61,16 @@ struct KindFixture<SvoKind> {
 
   static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
                                             const std::vector<TValueRecord>& jobs) {
-    const std::vector<TraversalResult> golden = GoldenModel(memory, config.golden()).traceAll(jobs);
+    const std::vector<TraversalResult> golden =
+        GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
     return std::vector<CoreKindResult>(golden.begin(), golden.end());
   }
 
   // Q28.12 converted exactly, and a stack shallow enough to overflow.
   static void otherArithmetic(RtuConfig& config) {
-    config.jobManager.format = FixedFormat{28, 12};
-    config.jobManager.conversion = FloatConversion::Exact;
-    config.stackFrames = 3;
+    config.coreConfig<SvoKind>().format = FixedFormat{28, 12};
+    config.coreConfig<SvoKind>().conversion = FloatConversion::Exact;
+    config.coreConfig<SvoKind>().stackFrames = 3;
   }
 
   // The voxel walk against the golden model (test_svo_voxel_walk.cpp).

@@ -4,17 +4,32 @@
 
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include "kinds/svo/fixed_point.h"
+#include "kinds/svo/ray_setup.h"
 #include "kinds/svo/thesis_records.h"
 #include "kinds/svo/traversal_core.h"
 
 namespace rtu {
 
+// The SVO kind's Config (kinds/svo/svo_kind.h): the core's number format and stack, and its job
+// set-up's conversion of t-values and treatment of near-zero ray directions.
 struct GoldenConfig {
   FixedFormat format;
   FloatConversion conversion = FloatConversion::Rtl;
   int stackFrames = kRtlStackFrames;
+  // Ray records: direction components below epsilon times the largest count as zero.
+  float epsilon = static_cast<float>(kDefaultDirectionEpsilon);
+
+  // Throws std::invalid_argument naming the setting for a stack or format the core cannot have.
+  void validate() const {
+    if (stackFrames < 1 || stackFrames > kMaxStackFrames)
+      throw std::invalid_argument("stack depth must be 1 to " + std::to_string(kMaxStackFrames) +
+                                  " frames, got " + std::to_string(stackFrames));
+    format.validate();
+  }
 };
 
 // The job manager's conversion of a job's float32 t-values (appendix C.2.1).

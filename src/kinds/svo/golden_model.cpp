@@ -9,7 +9,7 @@ GoldenModel::GoldenModel(WordMemory memory, GoldenConfig config)
 
 TraversalResult GoldenModel::trace(const TValueRecord& job) {
   TraversalResult result;
-  shell_.run(job.idWord(), SvoKind::setUp(job, config_.format, config_.conversion), result);
+  shell_.run(job.idWord(), SvoKind::setUp(job, config_), result);
   return result;
 }
 

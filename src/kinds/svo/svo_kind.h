@@ -14,6 +14,7 @@
 #include "kinds/svo/thesis_records.h"
 #include "kinds/svo/traversal_core.h"
 #include "rtu/core_kind.h"
+#include "rtu/job_manager_timing.h"
 
 namespace rtu {
 
@@ -56,35 +57,34 @@ struct SvoKind {
     return StateVocabulary{kCoreStateNames, 3, kIdleState, kOutState, kBlockedState};
   }
 
-  // The job manager's set-up (thesis 6.2.1, appendix C.2): a host record through the pipeline of
-  // kinds/svo/job_setup.h, then its t-values to fixed point (appendix C.2.1).
+  // The job manager's set-up (thesis 6.2.1, appendix C.2) of either record the SVO core takes (a
+  // t-value record or a world-space ray): through the pipeline of kinds/svo/job_setup.h, then its
+  // t-values to fixed point (appendix C.2.1).
   class Setup {
    public:
-    Setup(WordMemory memory, const JobManagerConfig& config) : records_(memory, config) {}
+    Setup(WordMemory memory, const JobManagerTiming& timing, const Config& config)
+        : records_(memory, timing, config.epsilon), config_(config) {}
+    JobSetUp<Job> setUp(const TValueRecord& record) { return converted(records_.setUp(record)); }
     // Throws std::runtime_error for a model header that is not valid.
-    JobSetUp<Job> setUp(const HostRecord& record) {
-      const JobSetup::SetUp set = records_.setUp(record);
-      const JobManagerConfig& config = records_.config();
-      return {SvoKind::setUp(set.job, config.format, config.conversion), set.job.idWord(),
-              set.latency, set.headerFetch};
-    }
+    JobSetUp<Job> setUp(const RayRecord& record) { return converted(records_.setUp(record)); }
 
    private:
+    JobSetUp<Job> converted(const JobSetup::SetUp& set) const {
+      return {SvoKind::setUp(set.job, config_), set.job.idWord(), set.latency, set.headerFetch};
+    }
+
     JobSetup records_;
+    Config config_;
   };
 
   static Behaviour behaviour(const Config& config) {
     return Behaviour(FixedArith{config.format}, config.stackFrames);
   }
-  // The job manager's set-up of a t-value record (appendix C.2.1: float32 to fixed point).
-  static Job setUp(const TValueRecord& record, const FixedFormat& format,
-                   FloatConversion conversion) {
-    return Job{record.a, convertToFixed(record.t0Bits, format, conversion),
-               convertToFixed(record.t1Bits, format, conversion), record.root};
-  }
-  // The same with the kind's settings, for a shell that sets its jobs up itself (the cache warmer).
+  // The job manager's set-up of a t-value record (appendix C.2.1: float32 to fixed point), also
+  // for a shell that sets its jobs up itself (the cache warmer).
   static Job setUp(const Record& record, const Config& config) {
-    return setUp(record, config.format, config.conversion);
+    return Job{record.a, convertToFixed(record.t0Bits, config.format, config.conversion),
+               convertToFixed(record.t1Bits, config.format, config.conversion), record.root};
   }
   static void start(Behaviour& core, const Job& job) {
     core.start(job.t0, job.t1, job.a, job.root);
@@ -122,8 +122,12 @@ struct SvoKind {
   }
   static bool hitAhead(const Result& result) { return result.hit && result.tHit >= 0; }
   static bool nearer(const Result& a, const Result& b) { return a.tHit < b.tHit; }
-  static double hitDistance(const Result& result, const JobManagerConfig& config) {
+  static double hitDistance(const Result& result, const Config& config) {
     return config.format.toDouble(result.tHit);
+  }
+  // The output link's record of a result (48 bytes over 32 bits).
+  static uint64_t resultRecordBytes(const Config& config) {
+    return rtu::resultRecordBytes(config.format.totalBits);
   }
 };
 

@@ -2,7 +2,7 @@
 // The thesis' records of a job and its result (appendix C.6, job_t and result_t), independent of
 // how they travel: host buffers, ready-valid channels or TLM payloads. The words "job" name, in
 // rtusim: a TValueRecord (the host's t-value record of a ray), a HostRecord (that or a world-space
-// ray, kinds/svo/job_setup.h), a HostPayload (a host record on its way to the job manager), a
+// ray, kinds/host_record.h), a HostPayload (a host record on its way to the job manager), a
 // kind's Job (what the job manager hands a core: SvoJob) inside a CoreJob (its payload), and a
 // JobTiming (a job as the recurrence times it). Worker processes and Slurm array tasks are
 // "workers" and "tasks".
@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 
+#include "rtu/host_link.h"
 #include "rtu/ray_record.h"
 
 namespace rtu {
@@ -24,9 +25,17 @@ struct TValueRecord {
   uint32_t root = 0;  // word address of the root descriptor
 
   static constexpr uint32_t kMaxId = kMaxRayId;
+  static constexpr const char* kName = "t-value record";
   // The first word of the host record; the RTL carries it unchanged into the result.
   uint32_t idWord() const { return id | static_cast<uint32_t>(a) << 28; }
 };
+
+// Result records of formats over 32 bits: 12 words, t and the normal 64 bits each
+// (docs/inputs-jobs.md); 8 words, as a job's, up to 32 bits.
+constexpr uint64_t kWideResultRecordBytes = 48;
+inline uint64_t resultRecordBytes(int totalBits) {
+  return totalBits > 32 ? kWideResultRecordBytes : kHostRecordBytes;
+}
 
 struct TraversalResult {
   uint32_t idWord = 0;  // the job's first word, a bits included, exactly as the RTL returns it

@@ -7,17 +7,16 @@
 
 namespace rtu {
 
-JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
+JobManager::JobManager(DecisionPump& pump, const CycleClock& clock, const JobManagerTiming& timing,
                        CoreJobSetup setup)
-    : Agent(pump), clock_(clock), config_(config), setup_(std::move(setup)) {
-  if (config_.stages < 1 || config_.stages > 64 || config_.rayStages < 0 || config_.rayStages > 64)
+    : Agent(pump), clock_(clock), setup_(std::move(setup)) {
+  if (timing.stages < 1 || timing.stages > 64 || timing.rayStages < 0 || timing.rayStages > 64)
     throw std::invalid_argument("job manager pipeline must have 1 to 64 stages (0 to 64 more for "
                                 "rays), got " +
-                                std::to_string(config_.stages) + " and " +
-                                std::to_string(config_.rayStages));
-  if (config_.headerFetchCycles < 0)
+                                std::to_string(timing.stages) + " and " +
+                                std::to_string(timing.rayStages));
+  if (timing.headerFetchCycles < 0)
     throw std::invalid_argument("model header fetch cycles must not be negative");
-  config_.format.validate();
 }
 
 void JobManager::bind(TransferChannel<HostPayload>& in, TransferChannel<CoreJob>& out) {

@@ -38,8 +38,9 @@ class JobManager final : public Agent {
   // Its ports on the transfer channels (TransferChannel::connect).
   static constexpr int kInPort = 0, kOutPort = 0;
 
-  // `setup` is the cores' kind's (kinds/registry.h, makeCoreJobSetup).
-  JobManager(DecisionPump& pump, const CycleClock& clock, JobManagerConfig config,
+  // `setup` is the cores' kind's (kinds/registry.h, makeCoreJobSetup), with the latencies of
+  // `timing`, which is checked here.
+  JobManager(DecisionPump& pump, const CycleClock& clock, const JobManagerTiming& timing,
              CoreJobSetup setup);
 
   void bind(TransferChannel<HostPayload>& in, TransferChannel<CoreJob>& out);
@@ -70,7 +71,6 @@ class JobManager final : public Agent {
   void retraceReady();
 
   const CycleClock& clock_;
-  JobManagerConfig config_;
   CoreJobSetup setup_;  // what it computes (the kind's Setup); this module adds when
   TransferChannel<HostPayload>* in_ = nullptr;
   TransferChannel<CoreJob>* out_ = nullptr;

@@ -8,7 +8,6 @@
 #include <variant>
 
 #include "kinds/registry.h"
-#include "kinds/svo/job_setup.h"
 #include "kinds/svo/ray_transform.h"
 
 namespace rtu {

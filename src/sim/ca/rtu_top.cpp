@@ -34,7 +34,8 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   source_ = std::make_unique<HostSource>("host_source", clock_, pump_, records, config.hostInput,
                                          kLookAheadCycles);
   jobManager_ = std::make_unique<JobManager>(
-      pump_, clock_, config.jobManager, makeCoreJobSetup(config.core, memory, config.jobManager));
+      pump_, clock_, config.jobManager,
+      makeCoreJobSetup(config.core, memory, config.jobManager, config.coreConfigs));
   scheduler_ = std::make_unique<Scheduler>(pump_, config.scheduler, config.cores);
   // The cores' kind decides when an idle core reads first; the cores are made by makeTimedCore.
   const uint64_t firstRead =

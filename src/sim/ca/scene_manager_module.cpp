@@ -16,7 +16,7 @@ SceneManagerModule::SceneManagerModule(sc_core::sc_module_name name, const Cycle
       wake_(clock),
       instances_(std::move(instances)),
       config_(config.sceneManager),
-      jobManager_(config.jobManager),
+      coreConfigs_(config.coreConfigs),
       miss_(coreKindMiss(config.core)) {
   config_.validate();
 }
@@ -97,7 +97,7 @@ void SceneManagerModule::merge(const CoreResult& result, uint64_t cycle) {
   const bool allIssued = ray.next == ray.candidates.size();
   const bool ended =
       !allIssued && config_.options.earlyTermination && ray.nearest >= 0 &&
-      hitEndsRayBefore(hitDistance(ray.merged.result, jobManager_), ray.candidates[ray.next].near);
+      hitEndsRayBefore(hitDistance(ray.merged.result, coreConfigs_), ray.candidates[ray.next].near);
   if (allIssued || ended) finish(ray, cycle + 1);
 }
 

@@ -96,7 +96,7 @@ class SceneManagerModule : public sc_core::sc_module, public Agent {
   CycleWake wake_;
   std::vector<SceneInstance> instances_;
   SceneManagerConfig config_;
-  JobManagerConfig jobManager_;  // how the t-values the cores report were set up
+  CoreKindConfigs coreConfigs_;  // how the cores' kind set their jobs up: the hits' distances
   CoreKindMiss miss_;            // the cores' kind's
   TransferChannel<HostPayload>* raysIn_ = nullptr;
   TransferChannel<HostPayload>* jobsOut_ = nullptr;

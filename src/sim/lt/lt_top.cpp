@@ -15,7 +15,7 @@ LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, Word
       memory_(memory),
       accessBytes_(accessBytes),
       time_(CycleClock::atMegahertz(config.clockMhz)),
-      setup_(makeCoreJobSetup(config.core, memory, config.jobManager)) {
+      setup_(makeCoreJobSetup(config.core, memory, config.jobManager, config.coreConfigs)) {
   results_.reserve(records.size());
   prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *

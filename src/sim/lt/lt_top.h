@@ -24,7 +24,6 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "kinds/core_result.h"
-#include "kinds/svo/job_setup.h"
 #include "rtu/rtu_recurrence.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/lt/lt_core.h"
