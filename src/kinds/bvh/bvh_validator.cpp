@@ -1,32 +1,13 @@
 #include "kinds/bvh/bvh_validator.h"
 
 #include <cmath>
-#include <utility>
 
 #include "kinds/bvh/bvh_image.h"
 
 namespace rtu {
 namespace {
 
-// The problems found so far, at most kMaxBvhProblems and then one entry saying so.
-class Problems {
- public:
-  void add(uint64_t word, const std::string& what) {
-    if (list_.size() > kMaxBvhProblems) return;
-    if (list_.size() == kMaxBvhProblems) {
-      list_.push_back({0, "BVH: more than " + std::to_string(kMaxBvhProblems) +
-                              " problems; the rest are not listed"});
-      return;
-    }
-    list_.push_back(
-        {static_cast<uint32_t>(word), "BVH word " + std::to_string(word) + ": " + what});
-  }
-  bool empty() const { return list_.empty(); }
-  std::vector<BvhProblem> take() { return std::move(list_); }
-
- private:
-  std::vector<BvhProblem> list_;
-};
+using Problems = ImageProblems;
 
 std::string nodeName(uint32_t index) { return "node " + std::to_string(index); }
 std::string triangleName(uint32_t index) { return "triangle " + std::to_string(index); }
@@ -208,17 +189,9 @@ class Validator {
 }  // namespace
 
 std::vector<BvhProblem> validateBvh(const std::vector<uint32_t>& words) {
-  Problems problems;
+  Problems problems("BVH");
   if (checkHeader(words, problems)) Validator(words, problems).run();
   return problems.take();
-}
-
-std::string describeBvhProblems(const std::string& what, const std::vector<BvhProblem>& problems,
-                                size_t shown) {
-  std::string message = what + " is not a sound BVH image:";
-  for (size_t i = 0; i < problems.size() && i < shown; ++i) message += "\n  " + problems[i].what;
-  if (problems.size() > shown) message += "\n  ...";
-  return message;
 }
 
 }  // namespace rtu

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "rtu/image_problems.h"
+
 namespace rtu {
 
-struct BvhProblem {
-  uint32_t word = 0;  // the address of the word found wrong (a record's first for a whole record)
-  std::string what;   // "BVH word 23: node 0: ...", naming the node, reference or triangle
-};
+using BvhProblem =
+    ImageProblem;  // "BVH word 23: node 0: ...", naming the node, reference or triangle
 
 // Every problem found, in the order found: a header that is not this format or whose sections are
 // not where bvhSections places them for its counts, or a size other than the header's (then
@@ -24,12 +24,14 @@ struct BvhProblem {
 // other than exactly once, a triangle record whose word 9 is not its index or whose words 10-11
 // are not 0. At most kMaxBvhProblems are listed; a last entry then says more were left out.
 // Empty for a sound image.
-constexpr size_t kMaxBvhProblems = 100;
+constexpr size_t kMaxBvhProblems = kMaxImageProblems;
 std::vector<BvhProblem> validateBvh(const std::vector<uint32_t>& words);
 
 // The validator's problems as one message: "<what> is not a sound BVH image:" then at most `shown`
 // problems, one per line.
-std::string describeBvhProblems(const std::string& what, const std::vector<BvhProblem>& problems,
-                                size_t shown = 10);
+inline std::string describeBvhProblems(const std::string& what,
+                                       const std::vector<BvhProblem>& problems, size_t shown = 10) {
+  return describeImageProblems(what, "BVH", problems, shown);
+}
 
 }  // namespace rtu

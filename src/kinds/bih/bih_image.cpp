@@ -1,0 +1,139 @@
+#include "kinds/bih/bih_image.h"
+
+#include <algorithm>
+
+namespace rtu {
+namespace {
+
+// The header's words 0-14, in order.
+constexpr std::array<uint32_t BihHeader::*, 15> kHeaderFields = {
+    &BihHeader::magic,         &BihHeader::kind,       &BihHeader::version,
+    &BihHeader::flags,         &BihHeader::nodeBase,   &BihHeader::nodeCount,
+    &BihHeader::listBase,      &BihHeader::listCount,  &BihHeader::triangleBase,
+    &BihHeader::triangleCount, &BihHeader::totalWords, &BihHeader::upperX,
+    &BihHeader::upperY,        &BihHeader::upperZ,     &BihHeader::format};
+
+constexpr uint64_t kMaxWords = (uint64_t{1} << 32) - 1;  // the size in header word 10
+constexpr int kFieldBits = 6;
+constexpr uint32_t kVhdlBit = uint32_t{1} << 30;
+
+uint64_t alignedToAccess(uint64_t words) { return (words + 3) / 4 * 4; }
+
+void checkCount(uint64_t count, uint64_t limit, const std::string& what, const std::string& why) {
+  if (count > limit)
+    throw BihCapacityError(std::to_string(count) + " " + what + ", more than " +
+                           std::to_string(limit) + " (" + why + ")");
+}
+
+void warnAbove(std::vector<std::string>& warnings, uint64_t count, uint64_t limit,
+               const std::string& what) {
+  if (count > limit)
+    warnings.push_back("BIH image: " + std::to_string(count) + " " + what +
+                       ", more than the seed's " + std::to_string(limit) +
+                       " (Listing A.3: 4x1Kx36 block RAM with the stack at 992-1023)");
+}
+
+BihNode nodeOf(const BihBuildNode& node) {
+  if (node.leaf) return {kBihLeafAxis, node.index, node.count, 0};
+  return {node.axis, node.index, static_cast<uint32_t>(node.clip0),
+          static_cast<uint32_t>(node.clip1)};
+}
+
+uint32_t indexMask(BihIndexWidth width) { return (uint32_t{1} << indexBits(width)) - 1; }
+
+}  // namespace
+
+BihHeader bihSections(uint64_t nodes, uint64_t entries, uint64_t triangles, BihIndexWidth width) {
+  if (nodes == 0) throw BihCapacityError("a tree needs a root node");
+  const uint64_t indices = uint64_t{1} << indexBits(width);
+  const std::string bits = std::to_string(indexBits(width)) + "-bit node indices" +
+                           (width == BihIndexWidth::Seed ? "; the wide index has 29" : "");
+  checkCount(nodes, indices, "nodes", bits);
+  checkCount(entries, indices, "list entries", bits);
+  checkCount(triangles, uint64_t{1} << kBihTriangleNumberBits, "triangles",
+             "triangle numbers have 29 bits");
+  const uint64_t listBase = kBihHeaderWords + kBihNodeWords * nodes;
+  const uint64_t triangleBase = alignedToAccess(listBase + entries);
+  const uint64_t totalWords = triangleBase + kBihTriangleWords * triangles;
+  checkCount(totalWords, kMaxWords, "words", "word addresses have 32 bits");
+  BihHeader header;
+  header.flags = width == BihIndexWidth::Wide ? kBihWideFlag : 0;
+  header.nodeBase = kBihHeaderWords;
+  header.nodeCount = static_cast<uint32_t>(nodes);
+  header.listBase = static_cast<uint32_t>(listBase);
+  header.listCount = static_cast<uint32_t>(entries);
+  header.triangleBase = static_cast<uint32_t>(triangleBase);
+  header.triangleCount = static_cast<uint32_t>(triangles);
+  header.totalWords = static_cast<uint32_t>(totalWords);
+  return header;
+}
+
+std::vector<std::string> bihCapacityWarnings(const BihHeader& header) {
+  std::vector<std::string> warnings;
+  warnAbove(warnings, header.nodeCount, kBihSeedNodes, "nodes");
+  warnAbove(warnings, header.listCount, kBihSeedEntries, "list entries");
+  return warnings;
+}
+
+BihImage layOut(const BihBuild& build, const ProjectedMesh& projected, const SceneGrid& grid,
+                BihIndexWidth width) {
+  BihHeader header =
+      bihSections(build.nodes.size(), build.list.size(), projected.triangles.size(), width);
+  const GridPoint upper = sceneUpper(grid);
+  header.upperX = static_cast<uint32_t>(upper[0]);
+  header.upperY = static_cast<uint32_t>(upper[1]);
+  header.upperZ = static_cast<uint32_t>(upper[2]);
+  header.format = encodeFormat(grid.format());
+  BihImage image{std::vector<uint32_t>(header.totalWords, 0), bihCapacityWarnings(header)};
+  uint32_t* words = image.words.data();
+  const auto headerWords = encodeHeader(header);
+  std::copy(headerWords.begin(), headerWords.end(), words);
+  for (size_t a = 0; a < build.nodes.size(); ++a) {
+    const auto node = encodeNode(nodeOf(build.nodes[a]), width);
+    std::copy(node.begin(), node.end(), words + header.nodeBase + kBihNodeWords * a);
+  }
+  std::copy(build.list.begin(), build.list.end(), words + header.listBase);
+  for (size_t t = 0; t < projected.triangles.size(); ++t) {
+    const auto record = toWords(projected.triangles[t]);
+    std::copy(record.begin(), record.end(), words + header.triangleBase + kBihTriangleWords * t);
+  }
+  return image;
+}
+
+uint32_t encodeFormat(const FixedFormat& f) {
+  uint32_t word = 0;
+  const int fields[5] = {f.n, f.m, f.E, f.T, f.C};
+  for (int i = 0; i < 5; ++i) word |= static_cast<uint32_t>(fields[i]) << (kFieldBits * i);
+  return word | (f.listing == FixedListing::Vhdl ? kVhdlBit : 0);
+}
+
+FixedFormat decodeFormat(uint32_t word) {
+  const auto field = [word](int i) {
+    return static_cast<int>((word >> (kFieldBits * i)) & ((1u << kFieldBits) - 1));
+  };
+  return FixedFormat{field(0), field(1),
+                     field(2), field(3),
+                     field(4), (word & kVhdlBit) != 0 ? FixedListing::Vhdl : FixedListing::C99};
+}
+
+std::array<uint32_t, kBihHeaderWords> encodeHeader(const BihHeader& header) {
+  std::array<uint32_t, kBihHeaderWords> words{};
+  for (size_t i = 0; i < kHeaderFields.size(); ++i) words[i] = header.*kHeaderFields[i];
+  return words;
+}
+
+BihHeader decodeBihHeader(const uint32_t* words) {
+  BihHeader header;
+  for (size_t i = 0; i < kHeaderFields.size(); ++i) header.*kHeaderFields[i] = words[i];
+  return header;
+}
+
+std::array<uint32_t, kBihNodeWords> encodeNode(const BihNode& node, BihIndexWidth width) {
+  return {node.axis | (node.index & indexMask(width)) << 3, node.clip0, node.clip1, 0};
+}
+
+BihNode decodeNode(const uint32_t* words, BihIndexWidth width) {
+  return {words[0] & 3u, (words[0] >> 3) & indexMask(width), words[1], words[2]};
+}
+
+}  // namespace rtu

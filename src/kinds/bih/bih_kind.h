@@ -1,0 +1,52 @@
+#pragma once
+// Seed 004's BIH core as a core kind (rtu/core_kind.h), untimed for now: the golden traversal of
+// bih_traversal.h, run by the untimed shell (rtu/golden_shell.h), with the kernel chosen once at
+// the top. Issue 28 registers the kind and adds its job set-up (clip to the box, quantise),
+// timing and counters; what is here is what its golden model needs.
+
+#include <cstdint>
+
+#include "kinds/bih/bih_intersectors.h"
+#include "kinds/bih/bih_traversal.h"
+#include "rtu/word_memory.h"
+
+namespace rtu {
+
+struct BihConfig {
+  bool earlyOut = false;  // S4 §3.4 L577: not implemented in the seed; an option here
+};
+
+// One ray's outcome: the nearest hit (t in grid units, the source triangle's id, the seed's u and
+// v), its cost in states, and what it counted.
+struct BihResult {
+  uint32_t idWord = 0;
+  bool hit = false;
+  int64_t t = 0, u = 0, v = 0;
+  uint32_t primitive = 0;
+  uint32_t cost = 0;
+  BihRayCounts counts;
+};
+
+template <class Intersector>
+struct BihKind {
+  static constexpr const char* kName = "bih";
+  using Job = BihJob;
+  using Result = BihResult;
+  using Behaviour = BihTraversal<Intersector>;
+  using Memory = WordMemory;
+  using Config = BihConfig;
+  static constexpr int kWordsPerRead = Behaviour::kWordsPerRead;
+
+  static Behaviour behaviour(const Config& config) { return Behaviour(config.earlyOut); }
+  static void start(Behaviour& traversal, const Job& job) { traversal.start(job); }
+  static void writeResult(uint32_t idWord, const Behaviour& traversal, Result& result) {
+    result = Result{idWord, traversal.hit(), 0, 0, 0, 0, traversal.cost(), traversal.counts()};
+    if (!result.hit) return;
+    result.t = traversal.t();
+    result.u = traversal.u();
+    result.v = traversal.v();
+    result.primitive = traversal.primitive();
+  }
+};
+
+}  // namespace rtu
