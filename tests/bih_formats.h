@@ -7,12 +7,12 @@
 
 namespace rtu {
 
-inline constexpr FixedFormat kFourBit{4, 6, 2, 0, 2, FixedListing::Vhdl};
+inline constexpr FixedTriangleFormat kFourBit{4, 6, 2, 0, 2, FixedListing::Vhdl};
 
 // The BIH hand cases' grid, also n = 4, with arithmetic wide enough that their triangles' edges
 // (1/3 to 1/7 of a unit) are neither clamped nor coarse: m = 16 (directions at scale 2^15), E = 1
 // (edges at scale 2^16, clamped only at 1/2), C = 4, the C99 listing (idir = 2^20 / ω: a ray's
 // BIH distances are twice its grid distances, and an axis it does not move along has 2^20).
-inline constexpr FixedFormat kFourBitC99{4, 16, 1, 0, 4, FixedListing::C99};
+inline constexpr FixedTriangleFormat kFourBitC99{4, 16, 1, 0, 4, FixedListing::C99};
 
 }  // namespace rtu

@@ -50,7 +50,7 @@ struct KernelHit {
 
 class FixedOracleCheck {
  public:
-  FixedOracleCheck(const TriangleMesh& mesh, const FixedFormat& format)
+  FixedOracleCheck(const TriangleMesh& mesh, const FixedTriangleFormat& format)
       : format_(format), grid_(meshBounds(mesh), format), projected_(projectMesh(mesh, grid_)) {
     held_.triangles = mesh.triangles;
     for (const auto& v : mesh.vertices) {
@@ -189,7 +189,7 @@ class FixedOracleCheck {
     ++(explained ? a.explained : clamped ? a.clamped : a.unexplained);
   }
 
-  FixedFormat format_;
+  FixedTriangleFormat format_;
   SceneGrid grid_;
   ProjectedMesh projected_;
   TriangleMesh held_;

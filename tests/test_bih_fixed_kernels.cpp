@@ -122,7 +122,7 @@ TEST_CASE("BIH kernels: t = 0: C99 misses, the VHDL hits when den > 0", "[bih]")
 TEST_CASE("BIH kernels: C99's T and its int t", "[bih]") {
   // T = 1: den = -32 >> 1 = -16; num = -32 >> 1 = -16, masked to a multiple of 2^(m-1) = 32:
   // -32; t = -32 / -16 = 2. The numerator keeps multiples of 2^T grid units, so t = 1 becomes 2.
-  FixedFormat dropOne = kFourBit;
+  FixedTriangleFormat dropOne = kFourBit;
   dropOne.T = 1;
   CHECK(c99Test(dropOne, gridRay({2, 2, 15}, kDown), flatTriangle(14), kC99NoHitYet).t == 2);
   // den = 1 code and d - O_z = 2^27: t = 2^27 * 32 / 1 = 2^32 does not fit the listing's int.

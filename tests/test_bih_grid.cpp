@@ -12,7 +12,7 @@
 namespace rtu {
 namespace {
 
-SceneGrid wideBox(const FixedFormat& format = kFourBit) {
+SceneGrid wideBox(const FixedTriangleFormat& format = kFourBit) {
   Aabb<double> box;
   box.grow({0, 0, 0});
   box.grow({30, 10, 10});
@@ -63,7 +63,7 @@ TEST_CASE("BIH grid: the inverse direction of each listing", "[bih]") {
   CHECK(inverseDirection(-32, kFourBit) == -4);  // -1.0 exactly
   CHECK(inverseDirection(0, kFourBit) == 127);   // as ω = 1 code: 128, saturated
   // C99 as printed: 2^(m+C) / ω = 256 / ω, twice the VHDL's scale, no saturation.
-  FixedFormat c99 = kFourBit;
+  FixedTriangleFormat c99 = kFourBit;
   c99.listing = FixedListing::C99;
   CHECK(inverseDirection(31, c99) == 8);  // 256 / 31 = 8.26
   CHECK(inverseDirection(0, c99) == 256);
@@ -73,10 +73,10 @@ TEST_CASE("BIH grid: formats outside the records' widths are refused", "[bih]") 
   Aabb<double> box;
   box.grow({0, 0, 0});
   box.grow({1, 1, 1});
-  FixedFormat wide = kC99Format;
+  FixedTriangleFormat wide = kC99Format;
   wide.n = 31;
   CHECK_THROWS_AS(SceneGrid(box, wide), std::invalid_argument);
-  FixedFormat vhdl = kVhdlFormat;
+  FixedTriangleFormat vhdl = kVhdlFormat;
   vhdl.m = 31;  // the VHDL needs m = n + 2
   CHECK_THROWS_AS(SceneGrid(box, vhdl), std::invalid_argument);
   CHECK_NOTHROW(SceneGrid(box, kC99Format));

@@ -32,7 +32,7 @@ bool ranBarycentrics(const FixedTest& test) {
   return test.verdict == FixedVerdict::Hit || test.verdict == FixedVerdict::Outside;
 }
 
-void classify(const FixedTest& c99, const FixedTest& vhdl, const FixedFormat& f,
+void classify(const FixedTest& c99, const FixedTest& vhdl, const FixedTriangleFormat& f,
               PairCounts& counts) {
   ++counts.pairs;
   if (c99.hit() == vhdl.hit()) {
@@ -58,7 +58,7 @@ void classify(const FixedTest& c99, const FixedTest& vhdl, const FixedFormat& f,
 
 // Random grid triangles, and rays from a random grid point towards a point of the triangle's
 // plane at barycentrics uniform in [-0.05, 1.05]^2 (so about a tenth pass just outside an edge).
-PairCounts comparePairs(const FixedFormat& format, int count, uint64_t seed) {
+PairCounts comparePairs(const FixedTriangleFormat& format, int count, uint64_t seed) {
   std::mt19937_64 random(seed);
   const int64_t side = int64_t(1) << format.n;
   const auto coordinate = [&] { return static_cast<int64_t>(random() % uint64_t(side)); };

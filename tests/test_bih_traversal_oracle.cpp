@@ -14,7 +14,7 @@ namespace {
 
 class TraversalCheck {
  public:
-  TraversalCheck(const TriangleMesh& mesh, const FixedFormat& format)
+  TraversalCheck(const TriangleMesh& mesh, const FixedTriangleFormat& format)
       : oracle_(mesh, format),
         image_(layOut(buildBih(triangleBoxes(mesh, oracle_.grid(), oracle_.projected()),
                                sceneUpper(oracle_.grid())),
@@ -54,7 +54,7 @@ std::vector<Ray> spiderRays(const TriangleMesh& mesh) {
 TEST_CASE("BIH traversal agrees with the oracle and with the brute-force kernel on spider",
           "[bih]") {
   const TriangleMesh& mesh = assimpObjModel("spider.obj");
-  FixedFormat format = kC99Format;
+  FixedTriangleFormat format = kC99Format;
   format.C = GENERATE(16, 30);
   const TraversalCheck check(mesh, format);
   const std::vector<Ray> rays = spiderRays(mesh);

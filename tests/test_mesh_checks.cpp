@@ -47,6 +47,9 @@ TEST_CASE("Mesh checks: degenerate triangles, repeated or collinear vertices", "
   CHECK(defects.duplicate.empty());
   CHECK(refusal(mesh, MeshDefectPolicy::Refuse) ==
         "square.obj: 2 degenerate (zero-area) triangles: triangle (2, 3)");
+  TriangleMesh copy = mesh;
+  CHECK_THROWS_AS(checkTriangleMesh(copy, "square.obj", MeshDefectPolicy::Refuse),
+                  DroppableMeshDefects);
   CHECK(checkTriangleMesh(mesh, "square.obj", MeshDefectPolicy::Drop) == 2);
   CHECK(mesh.triangles == square().triangles);
 }

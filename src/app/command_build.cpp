@@ -1,44 +1,118 @@
+#include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
+#include "app/accel_build.h"
 #include "app/commands.h"
 #include "app/output_paths.h"
 #include "app/placement_flags.h"
 #include "app/schema_flags.h"
+#include "base/binary_file.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
+namespace {
+
+struct BuildOptions {
+  std::string out;
+  std::string stats;
+  bool modelHeader = false;
+  ModelPlacement placement;
+  glm::dvec3 rotationDegrees{0.0};
+};
+
+void buildSvo(const RunConfig& config, BuildOptions& options) {
+  Scene scene = loadScene(config.scene);
+  std::string headerReport;
+  if (options.modelHeader) {
+    options.placement.rotation = rotationFromEulerDegrees(options.rotationDegrees);
+    headerReport = "model header at word " +
+                   std::to_string(appendModelHeader(scene.image, options.placement)) + "\n";
+  }
+  writeSvoFile(options.out, scene.image);
+  std::cout << scene.name << ": " << scene.summary << ", root at word " << scene.image.root << "\n"
+            << headerReport << "wrote " << options.out << "\n";
+}
+
+std::string describe(const AccelQuality& q) {
+  char text[256];
+  std::snprintf(
+      text, sizeof text,
+      "%llu nodes, %llu leaves (%llu empty), depth %llu, %.2f triangles per leaf (at most "
+      "%llu), SAH %.2f (seed's costs %.2f), %llu bytes, built in %.1f ms",
+      static_cast<unsigned long long>(q.nodes), static_cast<unsigned long long>(q.leaves),
+      static_cast<unsigned long long>(q.emptyLeaves), static_cast<unsigned long long>(q.depth),
+      q.trianglesPerLeafMean, static_cast<unsigned long long>(q.trianglesPerLeafMax), q.sah,
+      q.sahSeed, static_cast<unsigned long long>(q.bytes), 1e3 * q.buildSeconds);
+  return text;
+}
+
+// The quality figures as JSON, with what was built from what.
+void writeStats(const std::string& path, const RunConfig& config, const TriangleScene& scene,
+                const AccelBuild& build) {
+  nlohmann::json stats = build.quality;
+  stats["accel"] = config.accel.structure;
+  if (config.accel.structure == "bvh") stats["builder"] = config.accel.builder;
+  stats["scene"] = scene.name;
+  stats["dropped_triangles"] = scene.dropped;
+  std::ofstream out(path);
+  out << stats.dump(2) << "\n";
+  out.close();
+  if (!out) throw std::runtime_error("cannot write the statistics '" + path + "'");
+}
+
+void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {
+  const MeshDefectPolicy policy = config.accel.dropBadTriangles ? MeshDefectPolicy::Drop
+                                                                : MeshDefectPolicy::Refuse;
+  TriangleScene scene;
+  try {
+    scene = loadTriangleScene(config.scene, policy);
+  } catch (const DroppableMeshDefects& error) {
+    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
+  }
+  const AccelBuild build = buildAccel(scene.mesh, config.accel);
+  writeWordFile(options.out, build.words);
+  if (!options.stats.empty()) writeStats(options.stats, config, scene, build);
+  std::cout << scene.name << ": " << scene.mesh.triangles.size() << " triangles";
+  if (scene.dropped) std::cout << " (" << scene.dropped << " degenerate or duplicate dropped)";
+  std::cout << "\n" << build.description << ": " << describe(build.quality) << "\n";
+  for (const std::string& warning : build.warnings) std::cerr << "warning: " << warning << "\n";
+  std::cout << "wrote " << options.out << "\n";
+}
+
+}  // namespace
 
 void addBuildCommand(CLI::App& app) {
-  struct Options {
-    std::string out;
-    bool modelHeader = false;
-    ModelPlacement placement;
-    glm::dvec3 rotationDegrees{0.0};
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<BuildOptions>();
   CLI::App* command = app.add_subcommand(
-      "build", "build an SVO memory image from a procedural scene, a mesh or a .binvox file");
-  auto request = addConfigOptions(*command, kUseScene);
-  command->add_option("--out", options->out, "output .svo file")->required();
+      "build",
+      "build a memory image: an SVO (--accel svo) from a procedural scene, a mesh or a .binvox "
+      "file, or a BVH or BIH (--accel bvh|bih) over a mesh's triangles or a voxel scene's faces");
+  auto request = addConfigOptions(*command, kUseScene | kUseAccel);
+  command->add_option("--out", options->out, "output image (.svo, .bvh or .bih)")->required();
+  command->add_option("--stats", options->stats,
+                      "BVH or BIH: write the quality figures as JSON (nodes, leaves, SAH, ...)");
   CLI::Option* header = command->add_flag(
       "--model-header", options->modelHeader,
-      "append an animated model's header (16 words) after the image and print its word address");
+      "SVO: append an animated model's header (16 words) after the image and print its word "
+      "address");
   addPlacementOptions(*command, options->placement, options->rotationDegrees, header);
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
-    checkOutputPaths({{"--out", options->out}}, inputPaths(configuration.values()));
-    Scene scene = loadScene(configuration.values().scene);
-    std::string headerReport;
-    if (options->modelHeader) {
-      options->placement.rotation = rotationFromEulerDegrees(options->rotationDegrees);
-      headerReport = "model header at word " +
-                     std::to_string(appendModelHeader(scene.image, options->placement)) + "\n";
+    const RunConfig& config = configuration.values();
+    checkOutputPaths({{"--out", options->out}, {"--stats", options->stats}}, inputPaths(config));
+    if (config.accel.structure == "svo") {
+      if (!options->stats.empty())
+        throw std::invalid_argument("--stats: quality figures are written for --accel bvh or bih");
+      buildSvo(config, *options);
+    } else {
+      if (options->modelHeader)
+        throw std::invalid_argument("--model-header: only an SVO image (--accel svo) takes one");
+      buildTriangleStructure(config, *options);
     }
-    writeSvoFile(options->out, scene.image);
-    std::cout << scene.name << ": " << scene.summary << ", root at word " << scene.image.root
-              << "\n"
-              << headerReport << "wrote " << options->out << "\n";
   });
 }
 

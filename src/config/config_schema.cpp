@@ -208,10 +208,51 @@ std::string ignoredWithSceneFile(const RunConfig& c) {
 std::string ignoredWithoutBuiltTree(const RunConfig& c) {
   if (!c.scene.svoFile.empty()) return "svo is given";
   if (!c.scene.binvoxFile.empty()) return "binvox is given";
+  if (!c.scene.meshFile.empty() && c.accel.structure != "svo")
+    return "mesh is given and accel is " + c.accel.structure;
   return "";
 }
 
 std::string modelKindName(const ModelKind& model) { return toString(model); }
+
+std::function<std::string(const RunConfig&)> ignoredUnlessAccel(const std::string& structure) {
+  return [structure](const RunConfig& c) {
+    return c.accel.structure == structure ? std::string() : "accel is " + c.accel.structure;
+  };
+}
+
+// What `build` makes: the structure, then each triangle structure's own settings.
+void addAccelSettings(std::vector<Setting>& schema) {
+  using C = RunConfig;
+  schema.push_back(choice(
+      "accel", "--accel", {"svo", "bvh", "bih"}, kUseAccel,
+      "the structure to build: svo (the thesis' octree), bvh (seed 003) or bih (seed 004) over "
+      "the scene's triangles (a voxel scene's faces)",
+      [](C& c) -> std::string& { return c.accel.structure; }, sameText, sameText));
+  schema.push_back(choice(
+      "accel.builder", "--builder", {"langr", "binned", "sweep", "lbvh"}, kUseAccel,
+      "BVH builder: langr (seed 003's Algorithms 3-4), binned (SAH, 32 bins), sweep (full-sweep "
+      "SAH) or lbvh (Morton codes)",
+      [](C& c) -> std::string& { return c.accel.builder; }, sameText, sameText));
+  schema.back().ignoredBecause = ignoredUnlessAccel("bvh");
+  schema.push_back(flag("accel.drop_bad_triangles", "--drop-bad-triangles", kUseAccel,
+                        "drop degenerate and duplicate triangles instead of refusing the mesh",
+                        [](C& c) -> bool& { return c.accel.dropBadTriangles; }));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "svo" ? std::string("accel is svo") : std::string();
+  };
+  schema.push_back(choice(
+      "accel.bih_format", "--bih-format", {"c99", "vhdl"}, kUseAccel,
+      "BIH number formats: seed 004's C99 listing (n = 29) or its VHDL (n = 30)",
+      [](C& c) -> std::string& { return c.accel.bihFormat; }, sameText, sameText));
+  schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+  schema.push_back(choice(
+      "accel.bih_index", "--bih-index", {"seed", "wide"}, kUseAccel,
+      "BIH node indices: the seed's 10 bits (at most 1,024 nodes and list entries) or wide (29 "
+      "bits)",
+      [](C& c) -> std::string& { return c.accel.bihIndex; }, sameText, sameText));
+  schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+}
 
 std::string ignoredUnlessLooselyTimed(const RunConfig& c) {
   return c.model == ModelKind::LooselyTimed ? "" : std::string("model is ") + toString(c.model);
@@ -386,11 +427,13 @@ std::vector<Setting> makeSchema() {
   s.push_back(text(SettingKind::Path, "svo", "--svo", scene | buffers,
                    "SVO memory image (.svo, little-endian u32 words)",
                    [](C& c) -> std::string& { return c.scene.svoFile; }));
-  s.push_back(text(SettingKind::Path, "mesh", "--mesh", scene,
-                   "triangle mesh to voxelize (OBJ or PLY)",
-                   [](C& c) -> std::string& { return c.scene.meshFile; }));
+  s.push_back(
+      text(SettingKind::Path, "mesh", "--mesh", scene,
+           "triangle mesh to voxelize, or to build a triangle structure over (OBJ, PLY, OFF)",
+           [](C& c) -> std::string& { return c.scene.meshFile; }));
   s.push_back(text(SettingKind::Path, "binvox", "--binvox", scene, "voxel file to import (.binvox)",
                    [](C& c) -> std::string& { return c.scene.binvoxFile; }));
+  addAccelSettings(s);
   s.push_back(text(SettingKind::Path, "jobs", "--jobs", buffers,
                    "host input buffer (8 u32 per job record)",
                    [](C& c) -> std::string& { return c.jobs; }));

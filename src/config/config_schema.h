@@ -23,6 +23,7 @@ enum SettingUse : unsigned {
   kUseBuffers = 1u << 4,      // job or ray buffers and the .svo they run on
   kUseSampling = 1u << 5,     // sampled simulation of fps and sweep rows
   kUseModelChoice = 1u << 6,  // which model answers: golden, lt or ca
+  kUseAccel = 1u << 7,        // the acceleration structure `build` makes and its builder
 };
 
 struct Setting {

@@ -13,10 +13,21 @@
 
 namespace rtu {
 
+// The acceleration structure `build` makes, and how (issue 27): the thesis' octree, seed 003's
+// BVH or seed 004's BIH over the scene's triangles.
+struct AccelSpec {
+  std::string structure = "svo";   // svo | bvh | bih
+  std::string builder = "binned";  // bvh: langr | binned | sweep | lbvh
+  bool dropBadTriangles = false;   // degenerate and duplicate triangles dropped, not refused
+  std::string bihFormat = "c99";   // bih: the seed's c99 or vhdl number formats
+  std::string bihIndex = "seed";   // bih: the seed's 10-bit node indices, or wide (29 bits)
+};
+
 struct RunConfig {
   RtuConfig rtu;
   ModelKind model = ModelKind::CycleAccurate;  // which model answers (replay, render, fps, sweep)
   SceneSpec scene;
+  AccelSpec accel;
   Camera camera;
   double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
   std::string jobs, rays;                     // host input buffers of `replay` and `golden`

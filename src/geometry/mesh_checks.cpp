@@ -77,7 +77,7 @@ void refuseFatal(const std::string& source, const MeshDefects& defects) {
                             defects.indexOutOfRange));
 }
 
-void refuseDroppable(const std::string& source, const MeshDefects& defects) {
+[[noreturn]] void refuseDroppable(const std::string& source, const MeshDefects& defects) {
   std::string problem;
   if (!defects.degenerate.empty())
     problem = describe("degenerate (zero-area) triangles: triangle", defects.degenerate);
@@ -85,7 +85,7 @@ void refuseDroppable(const std::string& source, const MeshDefects& defects) {
     problem += (problem.empty() ? "" : "; ") +
                describe("duplicate triangles (the same vertices as an earlier one): triangle",
                         defects.duplicate);
-  refuse(source, problem);
+  throw DroppableMeshDefects(source + ": " + problem);
 }
 
 size_t dropTriangles(TriangleMesh& mesh, const MeshDefects& defects) {

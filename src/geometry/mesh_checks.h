@@ -8,6 +8,7 @@
 // meshes carry a few of both, so those two may be dropped instead (MeshDefectPolicy::Drop).
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,17 @@ MeshDefects findMeshDefects(const TriangleMesh& mesh);
 
 enum class MeshDefectPolicy { Refuse, Drop };
 
+// The refusal of degenerate or duplicate triangles under MeshDefectPolicy::Refuse: what Drop
+// would have removed, so a caller can say how to go on.
+class DroppableMeshDefects : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Throws std::runtime_error naming `source`, the kind of defect, how many and the first indices
-// when `mesh` is empty or has a fatal defect, or (policy Refuse) a degenerate or duplicate
-// triangle; with Drop those are removed and `mesh` keeps the rest in order. Returns the number of
-// triangles dropped.
+// when `mesh` is empty or has a fatal defect, or (policy Refuse: DroppableMeshDefects) a
+// degenerate or duplicate triangle; with Drop those are removed and `mesh` keeps the rest in order.
+// Returns the number of triangles dropped.
 size_t checkTriangleMesh(TriangleMesh& mesh, const std::string& source, MeshDefectPolicy policy);
 
 }  // namespace rtu

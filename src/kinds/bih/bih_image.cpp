@@ -100,20 +100,20 @@ BihImage layOut(const BihBuild& build, const ProjectedMesh& projected, const Sce
   return image;
 }
 
-uint32_t encodeFormat(const FixedFormat& f) {
+uint32_t encodeFormat(const FixedTriangleFormat& f) {
   uint32_t word = 0;
   const int fields[5] = {f.n, f.m, f.E, f.T, f.C};
   for (int i = 0; i < 5; ++i) word |= static_cast<uint32_t>(fields[i]) << (kFieldBits * i);
   return word | (f.listing == FixedListing::Vhdl ? kVhdlBit : 0);
 }
 
-FixedFormat decodeFormat(uint32_t word) {
+FixedTriangleFormat decodeFormat(uint32_t word) {
   const auto field = [word](int i) {
     return static_cast<int>((word >> (kFieldBits * i)) & ((1u << kFieldBits) - 1));
   };
-  return FixedFormat{field(0), field(1),
-                     field(2), field(3),
-                     field(4), (word & kVhdlBit) != 0 ? FixedListing::Vhdl : FixedListing::C99};
+  return FixedTriangleFormat{
+      field(0), field(1), field(2),
+      field(3), field(4), (word & kVhdlBit) != 0 ? FixedListing::Vhdl : FixedListing::C99};
 }
 
 std::array<uint32_t, kBihHeaderWords> encodeHeader(const BihHeader& header) {

@@ -58,7 +58,7 @@ struct BihHeader {
   uint32_t triangleCount = 0;
   uint32_t totalWords = 0;
   uint32_t upperX = 0, upperY = 0, upperZ = 0;  // the scene box on the grid, [0, upper] (C15)
-  uint32_t format = 0;                          // the records' FixedFormat (encodeFormat)
+  uint32_t format = 0;                          // the records' FixedTriangleFormat (encodeFormat)
 
   BihIndexWidth width() const {
     return (flags & kBihWideFlag) != 0 ? BihIndexWidth::Wide : BihIndexWidth::Seed;
@@ -108,8 +108,8 @@ BihImage layOut(const BihBuild& build, const ProjectedMesh& projected, const Sce
                 BihIndexWidth width = BihIndexWidth::Seed);
 
 // n, m, E, T, C in 6-bit fields from bit 0 up, the listing in bit 30 (1 = Vhdl).
-uint32_t encodeFormat(const FixedFormat& format);
-FixedFormat decodeFormat(uint32_t word);
+uint32_t encodeFormat(const FixedTriangleFormat& format);
+FixedTriangleFormat decodeFormat(uint32_t word);
 
 std::array<uint32_t, kBihHeaderWords> encodeHeader(const BihHeader& header);
 BihHeader decodeBihHeader(const uint32_t* words);  // from 16 words

@@ -12,8 +12,8 @@ namespace rtu {
 
 struct C99Intersector {
   static constexpr const char* kName = "c99";
-  FixedTest test(const FixedFormat& format, const GridRay& ray, const ProjectedTriangle& triangle,
-                 int64_t tBest) const {
+  FixedTest test(const FixedTriangleFormat& format, const GridRay& ray,
+                 const ProjectedTriangle& triangle, int64_t tBest) const {
     return c99Test(format, ray, triangle, tBest);
   }
 };
@@ -21,8 +21,8 @@ struct C99Intersector {
 struct VhdlIntersector {
   static constexpr const char* kName = "vhdl";
   VhdlOptions options;
-  FixedTest test(const FixedFormat& format, const GridRay& ray, const ProjectedTriangle& triangle,
-                 int64_t tBest) const {
+  FixedTest test(const FixedTriangleFormat& format, const GridRay& ray,
+                 const ProjectedTriangle& triangle, int64_t tBest) const {
     FixedTest result = vhdlTest(format, ray, triangle, options);
     if (result.hit() && result.t > tBest) result.verdict = FixedVerdict::NotAhead;
     return result;

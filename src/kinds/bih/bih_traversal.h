@@ -67,7 +67,7 @@ struct BihScene {
   uint32_t nodes = 0, list = 0, triangles = 0;
   BihIndexWidth width = BihIndexWidth::Seed;
   GridPoint upper{};
-  FixedFormat format;
+  FixedTriangleFormat format;
 };
 
 inline BihScene sceneOf(const BihHeader& header) {

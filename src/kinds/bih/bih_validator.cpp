@@ -16,9 +16,9 @@ void checkHeaderWord(ImageProblems& problems, uint32_t word, const std::string& 
 }
 
 bool checkFormat(const BihHeader& header, ImageProblems& problems) {
-  const FixedFormat format = decodeFormat(header.format);
+  const FixedTriangleFormat format = decodeFormat(header.format);
   try {
-    validateFixedFormat(format);
+    validateFixedTriangleFormat(format);
   } catch (const std::invalid_argument& error) {
     problems.add(14, error.what());
     return false;
@@ -218,7 +218,7 @@ class Validator {
 
   const std::vector<uint32_t>& words_;
   const BihHeader header_;
-  const FixedFormat format_;
+  const FixedTriangleFormat format_;
   ImageProblems& problems_;
   std::vector<bool> reached_;
   std::vector<uint32_t> leavesOfEntry_;      // leaves whose range holds each list entry

@@ -13,7 +13,8 @@
 namespace rtu {
 
 // Every problem found, in the order found (at most kMaxImageProblems, then an entry saying so):
-//   header   not this format, a reserved word or flag set, a format validateFixedFormat refuses,
+//   header   not this format, a reserved word or flag set, a format validateFixedTriangleFormat
+//   refuses,
 //            a scene box beyond the grid, sections not where bihSections places them, a size
 //            other than the header's (then nothing further is read);
 //   nodes    a child outside the nodes or reached a second time, a node reached from no parent,

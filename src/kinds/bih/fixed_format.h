@@ -18,7 +18,7 @@ namespace rtu {
 // scale (grid.h) and is the kernel that format is meant for (fixed_kernels.h).
 enum class FixedListing { C99, Vhdl };
 
-struct FixedFormat {
+struct FixedTriangleFormat {
   int n = 29;  // grid bits
   int m = 32;  // vector bits
   int E = 10;  // edge shift: edges are clamped to (-2^-E, 2^-E)
@@ -32,14 +32,14 @@ struct FixedFormat {
 // is taken. The VHDL type-checks only with m = n + 2, so n = 30 (spec 004 §8.1); C = 16 from
 // Listing A.3's 48-bit idir; E = 10 as in the text (edge_shift's value is not printed); T = 0
 // (S4 §4.2 L673).
-inline constexpr FixedFormat kC99Format{29, 32, 10, 0, 16, FixedListing::C99};
-inline constexpr FixedFormat kVhdlFormat{30, 32, 10, 0, 16, FixedListing::Vhdl};
+inline constexpr FixedTriangleFormat kC99Format{29, 32, 10, 0, 16, FixedListing::C99};
+inline constexpr FixedTriangleFormat kVhdlFormat{30, 32, 10, 0, 16, FixedListing::Vhdl};
 
 // Throws std::invalid_argument naming the parameter unless the widths fit rtusim's records and
 // 64-bit intermediates: 1 <= n <= 30 (the origin n+1 bits, d n+3 bits), 2 <= m <= 32 (one word per
 // code), 0 <= E <= 63 - m, 0 <= T <= m - 2, 0 <= C <= 62 - m. A Vhdl format must
 // have m = n + 2 and T = 0: the listing's widths assume both (A.2, spec 004 §8.1).
-inline void validateFixedFormat(const FixedFormat& f) {
+inline void validateFixedTriangleFormat(const FixedTriangleFormat& f) {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw std::invalid_argument("fixed-point format: " + what);
   };

@@ -27,7 +27,7 @@ FixedTest verdict(FixedVerdict v, int64_t t = 0) {
 
 }  // namespace
 
-FixedTest c99Test(const FixedFormat& f, const GridRay& ray, const ProjectedTriangle& tri,
+FixedTest c99Test(const FixedTriangleFormat& f, const GridRay& ray, const ProjectedTriangle& tri,
                   int64_t tBest) {
   const Permuted o = permute(ray, tri);
   const int shift = f.m - 1;
@@ -50,7 +50,7 @@ FixedTest c99Test(const FixedFormat& f, const GridRay& ray, const ProjectedTrian
   return out;
 }
 
-FixedTest vhdlTest(const FixedFormat& f, const GridRay& ray, const ProjectedTriangle& tri,
+FixedTest vhdlTest(const FixedTriangleFormat& f, const GridRay& ray, const ProjectedTriangle& tri,
                    const VhdlOptions& options) {
   if (f.m != f.n + 2 || f.T != 0)
     throw std::invalid_argument("the VHDL kernel needs m = n + 2 and T = 0");
@@ -86,7 +86,8 @@ FixedTest vhdlTest(const FixedFormat& f, const GridRay& ray, const ProjectedTria
   return out;
 }
 
-std::pair<double, double> rtusimBarycentrics(const FixedTest& test, const FixedFormat& format) {
+std::pair<double, double> rtusimBarycentrics(const FixedTest& test,
+                                             const FixedTriangleFormat& format) {
   const int scale = format.m - 1 + format.E;
   return {std::ldexp(static_cast<double>(test.v), -scale),
           std::ldexp(static_cast<double>(test.u), -scale)};

@@ -73,13 +73,14 @@ struct VhdlOptions {
 // The largest t the C99 listing's `int` holds: the natural tBest before any hit.
 inline constexpr int64_t kC99NoHitYet = INT32_MAX;
 
-FixedTest c99Test(const FixedFormat& format, const GridRay& ray, const ProjectedTriangle& triangle,
-                  int64_t tBest);
+FixedTest c99Test(const FixedTriangleFormat& format, const GridRay& ray,
+                  const ProjectedTriangle& triangle, int64_t tBest);
 // Throws std::invalid_argument when format.m != n + 2 or T != 0.
-FixedTest vhdlTest(const FixedFormat& format, const GridRay& ray, const ProjectedTriangle& triangle,
-                   const VhdlOptions& options = {});
+FixedTest vhdlTest(const FixedTriangleFormat& format, const GridRay& ray,
+                   const ProjectedTriangle& triangle, const VhdlOptions& options = {});
 
 // rtusim's (u, v): the weights of v1 and v2, i.e. the seed's (v, u) / 2^(m-1+E).
-std::pair<double, double> rtusimBarycentrics(const FixedTest& test, const FixedFormat& format);
+std::pair<double, double> rtusimBarycentrics(const FixedTest& test,
+                                             const FixedTriangleFormat& format);
 
 }  // namespace rtu

@@ -41,9 +41,9 @@ std::optional<std::pair<double, double>> clip(const Aabb<double>& box, const Ray
 
 }  // namespace
 
-SceneGrid::SceneGrid(const Aabb<double>& box, const FixedFormat& format)
+SceneGrid::SceneGrid(const Aabb<double>& box, const FixedTriangleFormat& format)
     : format_(format), box_(box), scale_(0) {
-  validateFixedFormat(format);
+  validateFixedTriangleFormat(format);
   if (box.empty() || !finite(box.lower) || !finite(box.upper) || !(longestSide(box) > 0))
     throw std::invalid_argument("scene grid: the scene box must be finite and not a point");
   scale_ = static_cast<double>(pow2(format.n) - 1) / longestSide(box);
@@ -60,7 +60,7 @@ GridPoint SceneGrid::quantise(const glm::dvec3& p) const {
   return grid;
 }
 
-int64_t inverseDirection(int64_t omega, const FixedFormat& format) {
+int64_t inverseDirection(int64_t omega, const FixedTriangleFormat& format) {
   const Int128 divisor = omega == 0 ? 1 : omega;
   if (format.listing == FixedListing::C99)
     return static_cast<int64_t>(pow2(format.m + format.C) / divisor);

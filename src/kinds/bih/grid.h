@@ -38,10 +38,10 @@ class SceneGrid {
  public:
   // The grid of `box` (the scene's vertices' box, geometry/ray_sets.h meshBounds). Throws
   // std::invalid_argument for an empty or flat-to-a-point box, a bound that is not finite, or a
-  // format validateFixedFormat refuses.
-  SceneGrid(const Aabb<double>& box, const FixedFormat& format);
+  // format validateFixedTriangleFormat refuses.
+  SceneGrid(const Aabb<double>& box, const FixedTriangleFormat& format);
 
-  const FixedFormat& format() const { return format_; }
+  const FixedTriangleFormat& format() const { return format_; }
   const Aabb<double>& box() const { return box_; }
   // Grid units per world unit: (2^n - 1) / the box's longest side.
   double scale() const { return scale_; }
@@ -56,7 +56,7 @@ class SceneGrid {
   std::optional<GridRay> quantise(const Ray& ray) const;
 
  private:
-  FixedFormat format_;
+  FixedTriangleFormat format_;
   Aabb<double> box_;
   double scale_;
 };
@@ -67,6 +67,6 @@ class SceneGrid {
 // L427-428), i.e. 2^(C+1)/ω, t doubled; the listing keeps it in a long long. ω = 0 (+0 and -0
 // alike) is taken as the smallest positive code, so an axis the ray does not move along gets the
 // largest positive inverse.
-int64_t inverseDirection(int64_t omega, const FixedFormat& format);
+int64_t inverseDirection(int64_t omega, const FixedTriangleFormat& format);
 
 }  // namespace rtu

@@ -28,14 +28,14 @@ uint32_t dominantAxis(const Vector& normal) {
 }
 
 // num / den at scale 2^(m-1), rounded; +1 saturates to the largest code (C2).
-int32_t normalCode(int64_t num, int64_t den, const FixedFormat& f, bool& saturated) {
+int32_t normalCode(int64_t num, int64_t den, const FixedTriangleFormat& f, bool& saturated) {
   const Int128 code = roundHalfEven(Int128(num) * pow2(f.m - 1), den);
   saturated = saturated || code > pow2(f.m - 1) - 1;
   return static_cast<int32_t>(clampTo(code, -pow2(f.m - 1), pow2(f.m - 1) - 1));
 }
 
 // num / den at scale 2^(m-1+E), rounded, then clamped into the open (-2^-E, 2^-E).
-int32_t edgeCode(int64_t num, int64_t den, const FixedFormat& f, bool& clamped) {
+int32_t edgeCode(int64_t num, int64_t den, const FixedTriangleFormat& f, bool& clamped) {
   const Int128 code = roundHalfEven(Int128(num) * pow2(f.m - 1 + f.E), den);
   const Int128 highest = pow2(f.m - 1) - 1;
   clamped = clamped || code > highest || code < -highest;
@@ -44,7 +44,8 @@ int32_t edgeCode(int64_t num, int64_t den, const FixedFormat& f, bool& clamped) 
 
 }  // namespace
 
-Projection project(const std::array<GridPoint, 3>& x, const FixedFormat& format, uint32_t source) {
+Projection project(const std::array<GridPoint, 3>& x, const FixedTriangleFormat& format,
+                   uint32_t source) {
   const Vector e1 = difference(x[1], x[0]), e2 = difference(x[2], x[0]);
   const Vector normal = cross(e1, e2);
   const uint32_t r = dominantAxis(normal), p = (r + 1) % 3, q = (r + 2) % 3;
@@ -125,7 +126,7 @@ ProjectedTriangle fromWords(const std::array<uint32_t, kProjectedTriangleWords>&
   return t;
 }
 
-std::array<uint8_t, 36> toC99Accels(const ProjectedTriangle& t, const FixedFormat& format) {
+std::array<uint8_t, 36> toC99Accels(const ProjectedTriangle& t, const FixedTriangleFormat& format) {
   if (format.n > 29)
     throw std::invalid_argument("the C99 accels_t holds n <= 29 (pp has 29 bits, d 32)");
   const uint32_t words[9] = {static_cast<uint32_t>(static_cast<int32_t>(t.d)),

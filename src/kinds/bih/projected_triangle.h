@@ -43,7 +43,7 @@ struct Projection {
   bool saturatedNormal = false;  // np or nq was +1 and saturated
 };
 
-Projection project(const std::array<GridPoint, 3>& vertices, const FixedFormat& format,
+Projection project(const std::array<GridPoint, 3>& vertices, const FixedTriangleFormat& format,
                    uint32_t source);
 
 struct ProjectedMesh {
@@ -65,6 +65,7 @@ ProjectedTriangle fromWords(const std::array<uint32_t, kProjectedTriangleWords>&
 // The seed's 36-byte C99 `accels_t` (S4 §2.1.4 p.27 L305-330), little endian as on x86 with GCC's
 // bit fields LSB first: d (int32); r in bits 1:0 and pp in bits 30:2 of one word; pq; np; nq;
 // e1q; e2q; e1p; e2p. Throws std::invalid_argument unless format.n <= 29 (pp has 29 bits, d 32).
-std::array<uint8_t, 36> toC99Accels(const ProjectedTriangle& triangle, const FixedFormat& format);
+std::array<uint8_t, 36> toC99Accels(const ProjectedTriangle& triangle,
+                                    const FixedTriangleFormat& format);
 
 }  // namespace rtu

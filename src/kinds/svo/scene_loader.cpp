@@ -10,6 +10,7 @@
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_size_estimate.h"
 #include "kinds/svo/svo_validator.h"
+#include "kinds/svo/voxel_faces.h"
 #include "rtu/host_memory.h"
 
 namespace rtu {
@@ -84,6 +85,33 @@ Scene loadScene(const SceneSpec& spec) {
   const std::unique_ptr<VoxelSource> source = voxelSourceFor(spec, name);
   checkBuildFits(*source, spec, name);
   return sceneFromBuild(buildSvo(*source, spec.root), name);
+}
+
+TriangleScene loadTriangleScene(const SceneSpec& spec, MeshDefectPolicy policy) {
+  const int files = !spec.svoFile.empty() + !spec.meshFile.empty() + !spec.binvoxFile.empty();
+  if (files > 1)
+    throw std::invalid_argument("give one scene: --svo, --mesh or --binvox, not several");
+  if (!spec.svoFile.empty())
+    throw std::invalid_argument(
+        "an .svo image holds no triangles: give --mesh, --binvox or --scene");
+  TriangleScene scene;
+  if (!spec.meshFile.empty()) {
+    scene.name = fileName(spec.meshFile);
+    scene.mesh = loadTriangleMesh(spec.meshFile);
+    scene.dropped = checkTriangleMesh(scene.mesh, "mesh '" + spec.meshFile + "'", policy);
+    return scene;
+  }
+  if (!spec.binvoxFile.empty()) {
+    const BinvoxGrid grid(spec.binvoxFile);
+    scene.name = fileName(spec.binvoxFile) + " (" + std::to_string(grid.dim()) + "^3, voxel faces)";
+    scene.mesh = voxelFaces(grid);
+  } else {
+    scene.name = spec.procedural + " (depth " + std::to_string(spec.depth) + ", voxel faces)";
+    scene.mesh = voxelFaces(*makeProceduralScene(spec.procedural, spec.depth, spec.seed));
+  }
+  if (scene.mesh.triangles.empty())
+    throw std::invalid_argument(scene.name + " has no solid voxel: no triangles to build over");
+  return scene;
 }
 
 }  // namespace rtu

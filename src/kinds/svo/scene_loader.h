@@ -1,10 +1,13 @@
 #pragma once
 // One place that turns "which scene" into an SVO image: a procedural scene, a triangle mesh
-// (OBJ/PLY), a .binvox voxel file or a ready .svo image (validated before use).
+// (OBJ/PLY), a .binvox voxel file or a ready .svo image (validated before use); or into the
+// triangles a triangle structure is built over.
 
 #include <cstdint>
 #include <string>
 
+#include "geometry/mesh_checks.h"
+#include "geometry/triangle_mesh.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
@@ -30,5 +33,16 @@ struct Scene {
 // Throws std::invalid_argument when more than one source is given, std::runtime_error for
 // unreadable or malformed files.
 Scene loadScene(const SceneSpec& spec);
+
+struct TriangleScene {
+  TriangleMesh mesh;
+  std::string name;    // e.g. "menger (depth 5, voxel faces)" or the file name
+  size_t dropped = 0;  // degenerate and duplicate triangles dropped (MeshDefectPolicy::Drop)
+};
+
+// The scene's triangles: a mesh file's, checked (geometry/mesh_checks.h) under `policy`, or a
+// voxel scene's exposed faces (a procedural scene or a .binvox file, kinds/svo/voxel_faces.h).
+// Throws as loadScene does, and std::invalid_argument for an .svo image, which holds no triangles.
+TriangleScene loadTriangleScene(const SceneSpec& spec, MeshDefectPolicy policy);
 
 }  // namespace rtu

@@ -1,0 +1,26 @@
+#pragma once
+// `rtusim build` for the triangle structures (issue 27): the scene's triangles built into a BVH
+// (seed 003, any of its builders) or a BIH (seed 004, on its n-bit grid), laid out as the memory
+// image a core reads, with the structure's quality figures.
+
+#include <string>
+#include <vector>
+
+#include "config/run_config.h"
+#include "geometry/accel_quality.h"
+#include "geometry/triangle_mesh.h"
+
+namespace rtu {
+
+struct AccelBuild {
+  std::vector<uint32_t> words;        // the memory image, its header first
+  AccelQuality quality;               // bytes and build_seconds included
+  std::string description;            // "binned BVH", "BIH (c99 formats, seed indices)"
+  std::vector<std::string> warnings;  // a seed's capacities exceeded
+};
+
+// Throws std::invalid_argument for an accel other than bvh or bih, and what the builders and
+// layouts throw (a capacity a format cannot hold names it).
+AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec);
+
+}  // namespace rtu
