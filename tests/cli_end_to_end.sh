@@ -20,6 +20,13 @@ source "$here/shell_test_helpers.sh"
 [[ $(grep -E "^(hits|cost)" golden.txt) == $(grep -E "^(hits|cost)" render.txt) ]] \
   || fail "render and golden disagree"
 cmp -s results.bin again.bin || fail "golden replay is not deterministic"
+# The same results as CSV: a row per ray, the SVO's hits without primitive or barycentrics.
+"$rtusim" golden --svo sphere.svo --jobs jobs.bin --results-csv results.csv >csv.txt
+[[ $(head -1 results.csv) == "id,hit,t,primitive,u,v" && $(wc -l <results.csv) -eq 769 ]] ||
+  fail "results CSV shape"
+hits=$(sed -n 's/^hits *\([0-9]*\) .*/\1/p' csv.txt)
+[[ $(grep -c '^[0-9]*,1,[0-9.e+-]*,,,$' results.csv) -eq $hits && $hits -gt 0 ]] ||
+  fail "results CSV hits"
 [[ -s img.png && -s d.exr && -s c.png ]] || fail "images missing"
 
 # An animated model: the sphere moved by T = (10,-5,3), turned 90 degrees about y and scaled by 2,

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# `rtusim build --accel bvh|bih` and `validate` on the images: builds over a real mesh and a voxel
-# scene's faces, the quality figures as JSON, and clear errors with a non-zero exit for a mesh
-# with bad triangles, impossible settings and a corrupt image.
+# `rtusim build --accel bvh`, `validate` and `golden --accel-file` on the images: builds over a
+# real mesh and a voxel scene's faces, the quality figures as JSON, results as CSV checked against
+# the image's triangles, and clear errors with a non-zero exit for a mesh with bad triangles,
+# impossible settings and a corrupt image.
 # Usage: cli_triangle_builds.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -34,6 +35,41 @@ PY
 "$rtusim" validate s.bvh | grep -q "^s.bvh: valid BVH image, .* nodes, 1312 triangles" ||
   fail "validate the BVH"
 
+# The golden model on the BVH: ray records of a camera looking at the spider, results as CSV. Each
+# hit is recomputed from the image's own triangle record in double: t along the record's
+# direction and hit = (1-u-v) v0 + u v1 + v v2.
+"$rtusim" jobs --width 24 --height 16 --camera 0,40,260 --look-at 0,0,0 --fov 30 --rays rays.bin \
+  --model-address 0 >/dev/null
+"$rtusim" golden --accel-file s.bvh --rays rays.bin --results-csv r.csv >golden.txt
+grep -q "^rays        384$" golden.txt || fail "golden report: $(cat golden.txt)"
+python3 - s.bvh rays.bin r.csv <<'PY' || fail "results CSV"
+import csv, struct, sys
+image = open(sys.argv[1], "rb").read()
+words = struct.unpack("<%dI" % (len(image) // 4), image)
+floats = struct.unpack("<%df" % (len(image) // 4), image)
+triangles = words[8]  # header word 8: the triangles' base
+raw = open(sys.argv[2], "rb").read()
+rays = [struct.unpack("<I6fI", raw[32 * i:32 * i + 32]) for i in range(len(raw) // 32)]
+rows = list(csv.DictReader(open(sys.argv[3])))
+assert len(rows) == len(rays) and list(rows[0]) == ["id", "hit", "t", "primitive", "u", "v"]
+hits = 0
+for row, ray in zip(rows, rays):
+    assert int(row["id"]) == ray[0]
+    if row["hit"] == "0":
+        assert row["t"] == row["primitive"] == row["u"] == row["v"] == ""
+        continue
+    hits += 1
+    base = triangles + 12 * int(row["primitive"])
+    v = [floats[base + 3 * k: base + 3 * k + 3] for k in range(3)]
+    t, u, w = float(row["t"]), float(row["u"]), float(row["v"])
+    assert u >= 0 and w >= 0 and u + w <= 1 + 1e-6, row
+    for axis in range(3):
+        on_ray = ray[1 + axis] + t * ray[4 + axis]
+        on_triangle = (1 - u - w) * v[0][axis] + u * v[1][axis] + w * v[2][axis]
+        assert abs(on_ray - on_triangle) <= 1e-3, (row, axis, on_ray, on_triangle)
+assert hits > 30, hits
+PY
+
 # A voxel scene's faces: each of the sphere's exposed faces is two triangles.
 "$rtusim" build --accel bvh --scene sphere --depth 4 --out sphere.bvh >sphere.txt
 grep -q "^sphere (depth 4, voxel faces): [0-9]* triangles$" sphere.txt || fail "voxel faces"
@@ -54,4 +90,10 @@ expect_error "is not one of langr|binned|sweep|lbvh" \
 expect_error "quality figures are written for --accel bvh or bih" \
   "$rtusim" build --scene sphere --depth 3 --out x.svo --stats x.json
 expect_error "beyond the deepest grid" "$rtusim" build --accel bvh --scene sphere --depth 10 --out x.bvh
+expect_error "a triangle image traces ray records: give --rays" \
+  "$rtusim" golden --accel-file s.bvh --jobs rays.bin --results-csv x.csv
+expect_error "give one image: --svo or --accel-file" \
+  "$rtusim" golden --accel-file s.bvh --svo sphere.bvh --rays rays.bin --results-csv x.csv
+expect_error "is not a sound BVH image" "$rtusim" golden --accel-file bad.bvh --rays rays.bin \
+  --results-csv x.csv
 echo "triangle builds: all checks passed"

@@ -43,11 +43,9 @@ void checkWritable(const NamedPath& output) {
 }  // namespace
 
 std::vector<NamedPath> inputPaths(const RunConfig& settings) {
-  return {{"--svo", settings.scene.svoFile},
-          {"--mesh", settings.scene.meshFile},
-          {"--binvox", settings.scene.binvoxFile},
-          {"--jobs", settings.jobs},
-          {"--rays", settings.rays}};
+  return {{"--svo", settings.scene.svoFile},   {"--accel-file", settings.accel.file},
+          {"--mesh", settings.scene.meshFile}, {"--binvox", settings.scene.binvoxFile},
+          {"--jobs", settings.jobs},           {"--rays", settings.rays}};
 }
 
 void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {

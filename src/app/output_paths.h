@@ -15,7 +15,7 @@ struct NamedPath {
   std::string path;    // empty: not given
 };
 
-// The files a run reads: --svo, --mesh, --binvox, --jobs, --rays.
+// The files a run reads: --svo, --accel-file, --mesh, --binvox, --jobs, --rays.
 std::vector<NamedPath> inputPaths(const RunConfig& settings);
 
 // Throws std::invalid_argument naming the option and the path of the first output that cannot be

@@ -252,6 +252,17 @@ void addAccelSettings(std::vector<Setting>& schema) {
       "bits)",
       [](C& c) -> std::string& { return c.accel.bihIndex; }, sameText, sameText));
   schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+  schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
+                        "a triangle structure's memory image (.bvh) to trace ray records through",
+                        [](C& c) -> std::string& { return c.accel.file; }));
+  schema.push_back(choice(
+      "accel.triangle_test", "--triangle-test", {"watertight", "moller-trumbore"}, kUseArithmetic,
+      "BVH traversal's ray/triangle test in float32",
+      [](C& c) -> std::string& { return c.accel.triangleTest; }, sameText, sameText));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.file.empty() ? std::string("no triangle image (accel_file) is given")
+                                : std::string();
+  };
 }
 
 std::string ignoredUnlessLooselyTimed(const RunConfig& c) {

@@ -21,6 +21,8 @@ struct AccelSpec {
   bool dropBadTriangles = false;   // degenerate and duplicate triangles dropped, not refused
   std::string bihFormat = "c99";   // bih: the seed's c99 or vhdl number formats
   std::string bihIndex = "seed";   // bih: the seed's 10-bit node indices, or wide (29 bits)
+  std::string file;                // a built triangle structure's image to trace (.bvh)
+  std::string triangleTest = "watertight";  // bvh: watertight | moller-trumbore
 };
 
 struct RunConfig {

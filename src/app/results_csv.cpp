@@ -1,0 +1,39 @@
+#include "app/results_csv.h"
+
+#include <charconv>
+#include <fstream>
+#include <stdexcept>
+
+namespace rtu {
+namespace {
+
+// The shortest text that reads back as `value`.
+std::string shortest(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+std::string row(const ResultRow& r) {
+  std::string line = std::to_string(r.id) + (r.hit ? ",1," : ",0,");
+  if (r.hit) line += shortest(r.t);
+  line += ',';
+  if (r.hit && r.primitive) line += std::to_string(*r.primitive);
+  line += ',';
+  if (r.hit && r.u) line += shortest(*r.u);
+  line += ',';
+  if (r.hit && r.v) line += shortest(*r.v);
+  return line;
+}
+
+}  // namespace
+
+void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows) {
+  std::ofstream out(path);
+  out << "id,hit,t,primitive,u,v\n";
+  for (const ResultRow& r : rows) out << row(r) << '\n';
+  out.close();
+  if (!out) throw std::runtime_error("cannot write the results CSV '" + path + "'");
+}
+
+}  // namespace rtu
