@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kinds/kd/introsort_2012.h"
+
 namespace rtu {
 namespace {
 
@@ -105,7 +107,7 @@ class Builder {
       edges_.push_back({boxes_[t].lower[axis], t, true});
       edges_.push_back({boxes_[t].upper[axis], t, false});
     }
-    std::sort(edges_.begin(), edges_.end(), edgeBefore);
+    sort2012(edges_.begin(), edges_.end(), edgeBefore);
   }
 
   // Costs every edge strictly inside the node on `axis`, in R1's float32 operation order.

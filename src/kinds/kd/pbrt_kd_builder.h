@@ -7,7 +7,7 @@
 // - the split axis is the node's longest, a tie going to the later axis; only if that axis has no
 //   candidate edge strictly inside the node is the next tried (at most twice);
 // - edges sorted by position, an END before a START at equal positions (R1's comparator, changed
-//   from PBRT's), by std::sort (unstable: equal edges' order is the library's; reading K6);
+//   from PBRT's), by the unstable sort of R1's 2012 library (introsort_2012.h; reading K6);
 // - cost = C_trav + C_isect (1 - bonus) (p_below n_below + p_above n_above), the bonus when a side
 //   is empty; the strictly cheapest candidate wins;
 // - a leaf when n <= maxTriangles or the depth budget is spent, or when no candidate exists, the
