@@ -1,0 +1,63 @@
+#pragma once
+// Seed 001's k-d tree builder: PBRT v1's KdTreeAccel SAH build (S1 §3.2 p.19 L379-389 says only
+// "from PBRT"), as the team's software runs it (R1 SOFTWARE/src/scene/kdtree.cpp create_tree,
+// at 81a34cd), so that its scene files can be reproduced byte for byte:
+// - every bound and cost in float32, in R1's operation order (a triangle's box from its vertices
+//   cast to float; R1 Triangle::WorldBound);
+// - the split axis is the node's longest, a tie going to the later axis; only if that axis has no
+//   candidate edge strictly inside the node is the next tried (at most twice);
+// - edges sorted by position, an END before a START at equal positions (R1's comparator, changed
+//   from PBRT's), by the unstable sort of R1's 2012 library (introsort_2012.h; reading K6);
+// - cost = C_trav + C_isect (1 - bonus) (p_below n_below + p_above n_above), the bonus when a side
+//   is empty; the strictly cheapest candidate wins;
+// - a leaf when n <= maxTriangles or the depth budget is spent, or when no candidate exists, the
+//   best cost exceeds 4 n C_isect with n <= 16, or the third split costlier than n C_isect on the
+//   path (badRefines, counted along the path);
+// - children's lists in sorted-edge order; nodes numbered depth first (below child = parent + 1);
+//   leaves' lists concatenated in node order.
+// The parameters are the team's (R1 SOFTWARE/src/raytracer/main.cpp L52-56, 173).
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/aabb.h"
+
+namespace rtu {
+
+struct PbrtKdParameters {
+  int intersectionCost = 80;
+  int traversalCost = 1;
+  float emptyBonus = 0.1f;  // R1: ebonus_percent / 100.0 = 10 / 100.0, passed as float
+  int maxTriangles = 2;
+  int maxDepth = -1;  // -1: round(8 + 1.3 log2 N), PBRT's default
+};
+
+// round(8 + 1.3f log2(float(N))) in float32: 18 for 200 triangles, 21 for 1023.
+int pbrtMaxDepth(size_t triangles);
+
+// A node in PBRT's terms: world axes (0 = x), the split as built (float32, untruncated).
+struct KdBuildNode {
+  bool leaf = false;
+  int axis = 0;
+  float split = 0;
+  uint32_t above = 0;  // the above (high) child; the below child is this node + 1
+  bool belowEmpty = false, aboveEmpty = false;
+  uint32_t listIndex = 0, count = 0;  // a leaf's triangles: lists[listIndex, listIndex + count)
+};
+
+struct KdBuild {
+  std::vector<KdBuildNode> nodes;  // depth first; nodes[0] is the root
+  std::vector<uint32_t> lists;     // triangle ids, by leaf in node order
+  Aabb<float> bounds;              // the union of the triangles' boxes
+  int maxDepth = 0;
+};
+
+// Builds over triangle boxes (triangle i's box is boxes[i]). Throws std::invalid_argument on no
+// boxes.
+KdBuild buildPbrtKd(const std::vector<Aabb<float>>& boxes, const PbrtKdParameters& parameters);
+
+// Triangle boxes as R1 forms them: each vertex coordinate cast to float, then the box of the
+// three. `vertices` holds three per triangle, in double.
+std::vector<Aabb<float>> pbrtTriangleBoxes(const std::vector<glm::dvec3>& corners);
+
+}  // namespace rtu
