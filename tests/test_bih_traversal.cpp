@@ -13,6 +13,7 @@
 
 #include <vector>
 
+#include "access_width_check.h"
 #include "bih_hand_scene.h"
 #include "geometry/ray_sets.h"
 #include "kinds/bih/bih_kind.h"
@@ -182,18 +183,7 @@ TEST_CASE("BIH traversal: every state reads within one aligned access", "[bih]")
   const HandScene scene;
   Kind::Behaviour traversal = Kind::behaviour(BihConfig{});
   traversal.start(scene.job(down(3, 1)));
-  const WordMemory memory(scene.image.words);
-  int reads = 0;
-  while (traversal.busy()) {
-    const uint32_t access = traversal.memoryAddress() & ~3u;
-    const bool reading = traversal.readsMemory();
-    traversal.step([&](uint32_t address) {
-      CHECK(reading);
-      CHECK(address - access < 4);
-      ++reads;
-      return memory.read(address);
-    });
-  }
+  const int reads = wordsReadWithinAccesses(traversal, WordMemory(scene.image.words));
   CHECK(reads == 4 * 3 + 2 * (1 + 12));  // 4 node triples, 2 list entries, 2 records
 }
 

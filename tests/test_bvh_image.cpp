@@ -69,7 +69,7 @@ TEST_CASE("BVH image: boxes rounded outward, vertices to nearest", "[bvh]") {
 TEST_CASE("BVH image: sections and what does not fit", "[bvh]") {
   const BvhHeader header = bvhSections(3, 13, 2);  // references 40..52, padded to 56
   CHECK(header.nodeBase == 16);
-  CHECK(header.refBase == 40);
+  CHECK(header.listBase == 40);
   CHECK(header.triangleBase == 56);
   CHECK(header.totalWords == 56 + 24);
   const uint64_t two31 = uint64_t{1} << 31;

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "access_width_check.h"
 #include "base/float_bits.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "rtu/golden_shell.h"
@@ -144,18 +145,7 @@ TEST_CASE("BVH traversal: every state reads within one aligned access", "[bvh_tr
   const HandImage image;
   Kind::Behaviour traversal = Kind::behaviour(BvhConfig{});
   traversal.start(down(image, 1.25f, 0.25f));
-  const WordMemory memory(image.words);
-  int reads = 0;
-  while (traversal.busy()) {
-    const uint32_t access = traversal.memoryAddress() & ~3u;
-    const bool reading = traversal.readsMemory();
-    traversal.step([&](uint32_t address) {
-      CHECK(reading);
-      CHECK(address - access < 4);
-      ++reads;
-      return memory.read(address);
-    });
-  }
+  const int reads = wordsReadWithinAccesses(traversal, WordMemory(image.words));
   // 6 node accesses of 4 words, 3 references, 3 triangles of 3 accesses of 4 words.
   CHECK(reads == 6 * 4 + 3 + 3 * 3 * 4);
 }

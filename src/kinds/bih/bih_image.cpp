@@ -5,24 +5,15 @@
 namespace rtu {
 namespace {
 
-// The header's words 0-14, in order.
-constexpr std::array<uint32_t BihHeader::*, 15> kHeaderFields = {
-    &BihHeader::magic,         &BihHeader::kind,       &BihHeader::version,
-    &BihHeader::flags,         &BihHeader::nodeBase,   &BihHeader::nodeCount,
-    &BihHeader::listBase,      &BihHeader::listCount,  &BihHeader::triangleBase,
-    &BihHeader::triangleCount, &BihHeader::totalWords, &BihHeader::upperX,
-    &BihHeader::upperY,        &BihHeader::upperZ,     &BihHeader::format};
-
-constexpr uint64_t kMaxWords = (uint64_t{1} << 32) - 1;  // the size in header word 10
+// The header's own words 11-14, in order.
+constexpr std::array<uint32_t BihHeader::*, 4> kOwnFields = {
+    &BihHeader::upperX, &BihHeader::upperY, &BihHeader::upperZ, &BihHeader::format};
 constexpr int kFieldBits = 6;
 constexpr uint32_t kVhdlBit = uint32_t{1} << 30;
 
-uint64_t alignedToAccess(uint64_t words) { return (words + 3) / 4 * 4; }
-
 void checkCount(uint64_t count, uint64_t limit, const std::string& what, const std::string& why) {
-  if (count > limit)
-    throw BihCapacityError(std::to_string(count) + " " + what + ", more than " +
-                           std::to_string(limit) + " (" + why + ")");
+  const std::string exceeded = capacityExceeded(count, limit, what, why);
+  if (!exceeded.empty()) throw BihCapacityError(exceeded);
 }
 
 void warnAbove(std::vector<std::string>& warnings, uint64_t count, uint64_t limit,
@@ -52,19 +43,11 @@ BihHeader bihSections(uint64_t nodes, uint64_t entries, uint64_t triangles, BihI
   checkCount(entries, indices, "list entries", bits);
   checkCount(triangles, uint64_t{1} << kBihTriangleNumberBits, "triangles",
              "triangle numbers have 29 bits");
-  const uint64_t listBase = kBihHeaderWords + kBihNodeWords * nodes;
-  const uint64_t triangleBase = alignedToAccess(listBase + entries);
-  const uint64_t totalWords = triangleBase + kBihTriangleWords * triangles;
-  checkCount(totalWords, kMaxWords, "words", "word addresses have 32 bits");
   BihHeader header;
+  std::string error;
+  if (!placeSections(nodes, kBihNodeWords, entries, triangles, kBihTriangleWords, header, error))
+    throw BihCapacityError(error);
   header.flags = width == BihIndexWidth::Wide ? kBihWideFlag : 0;
-  header.nodeBase = kBihHeaderWords;
-  header.nodeCount = static_cast<uint32_t>(nodes);
-  header.listBase = static_cast<uint32_t>(listBase);
-  header.listCount = static_cast<uint32_t>(entries);
-  header.triangleBase = static_cast<uint32_t>(triangleBase);
-  header.triangleCount = static_cast<uint32_t>(triangles);
-  header.totalWords = static_cast<uint32_t>(totalWords);
   return header;
 }
 
@@ -118,13 +101,17 @@ FixedTriangleFormat decodeFormat(uint32_t word) {
 
 std::array<uint32_t, kBihHeaderWords> encodeHeader(const BihHeader& header) {
   std::array<uint32_t, kBihHeaderWords> words{};
-  for (size_t i = 0; i < kHeaderFields.size(); ++i) words[i] = header.*kHeaderFields[i];
+  writeSections(header, words.data());
+  for (size_t i = 0; i < kOwnFields.size(); ++i)
+    words[kImageSectionWords + i] = header.*kOwnFields[i];
   return words;
 }
 
 BihHeader decodeBihHeader(const uint32_t* words) {
   BihHeader header;
-  for (size_t i = 0; i < kHeaderFields.size(); ++i) header.*kHeaderFields[i] = words[i];
+  static_cast<ImageSections&>(header) = readSections(words);
+  for (size_t i = 0; i < kOwnFields.size(); ++i)
+    header.*kOwnFields[i] = words[kImageSectionWords + i];
   return header;
 }
 

@@ -23,6 +23,7 @@
 #include "kinds/bih/fixed_format.h"
 #include "kinds/bih/grid.h"
 #include "kinds/bih/projected_triangle.h"
+#include "rtu/image_sections.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
@@ -30,7 +31,7 @@ namespace rtu {
 constexpr uint32_t kBihMagic = 0x48494252;  // the bytes "RBIH" in little-endian order
 constexpr uint32_t kBihKind = 1;            // Listing A.3's node triple, padded to 4 words
 constexpr uint32_t kBihVersion = 1;
-constexpr uint32_t kBihHeaderWords = 16;
+constexpr uint32_t kBihHeaderWords = kImageHeaderWords;
 constexpr uint32_t kBihNodeWords = 4;
 constexpr uint32_t kBihTriangleWords = kProjectedTriangleWords;
 constexpr uint32_t kBihLeafAxis = 3;             // node_data(1:0) = 11 (A.3 node_s)
@@ -44,19 +45,15 @@ enum class BihIndexWidth { Seed, Wide };  // 10 bits (12:3) as the listing, or 2
 
 inline int indexBits(BihIndexWidth width) { return width == BihIndexWidth::Seed ? 10 : 29; }
 
-// Header words 0-14 in this order; word 15 is 0. Bases are word addresses in the image.
-struct BihHeader {
-  uint32_t magic = kBihMagic;
-  uint32_t kind = kBihKind;
-  uint32_t version = kBihVersion;
-  uint32_t flags = 0;  // kBihWideFlag or 0
-  uint32_t nodeBase = 0;
-  uint32_t nodeCount = 0;
-  uint32_t listBase = 0;
-  uint32_t listCount = 0;
-  uint32_t triangleBase = 0;
-  uint32_t triangleCount = 0;
-  uint32_t totalWords = 0;
+// The header: the shared sections (rtu/image_sections.h, words 0-10; the triangle numbers are the
+// list; flags kBihWideFlag or 0) with this format's magic, kind and version, then words 11-14
+// below; word 15 is 0.
+struct BihHeader : ImageSections {
+  BihHeader() {
+    magic = kBihMagic;
+    kind = kBihKind;
+    version = kBihVersion;
+  }
   uint32_t upperX = 0, upperY = 0, upperZ = 0;  // the scene box on the grid, [0, upper] (C15)
   uint32_t format = 0;                          // the records' FixedTriangleFormat (encodeFormat)
 

@@ -8,13 +8,6 @@
 namespace rtu {
 namespace {
 
-void checkHeaderWord(ImageProblems& problems, uint32_t word, const std::string& name,
-                     uint32_t value, uint32_t expected) {
-  if (value != expected)
-    problems.add(word, "the header's " + name + " is " + std::to_string(value) + ", not " +
-                           std::to_string(expected));
-}
-
 bool checkFormat(const BihHeader& header, ImageProblems& problems) {
   const FixedTriangleFormat format = decodeFormat(header.format);
   try {
@@ -54,13 +47,7 @@ bool checkHeader(const std::vector<uint32_t>& words, ImageProblems& problems) {
     problems.add(5, error.what());
     return false;
   }
-  checkHeaderWord(problems, 4, "node base", header.nodeBase, placed.nodeBase);
-  checkHeaderWord(problems, 6, "list base", header.listBase, placed.listBase);
-  checkHeaderWord(problems, 8, "triangle base", header.triangleBase, placed.triangleBase);
-  checkHeaderWord(problems, 10, "size in words", header.totalWords, placed.totalWords);
-  if (words.size() != header.totalWords)
-    problems.add(10, "the header says " + std::to_string(header.totalWords) +
-                         " words, the image has " + std::to_string(words.size()));
+  checkPlacement(header, placed, words.size(), "list", problems);
   return problems.empty();
 }
 

@@ -2,42 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
+
+#include "base/float_bits.h"
 
 namespace rtu {
 namespace {
 
-// The header's words 0-10, in order.
-constexpr std::array<uint32_t BvhHeader::*, 11> kHeaderFields = {
-    &BvhHeader::magic,         &BvhHeader::kind,      &BvhHeader::version,
-    &BvhHeader::flags,         &BvhHeader::nodeBase,  &BvhHeader::nodeCount,
-    &BvhHeader::refBase,       &BvhHeader::refCount,  &BvhHeader::triangleBase,
-    &BvhHeader::triangleCount, &BvhHeader::totalWords};
-
-constexpr uint64_t kMaxNodes = uint64_t{1} << 31;        // indices 0 .. 2^31 - 1 in bits 30:0
-constexpr uint64_t kMaxRefs = (uint64_t{1} << 31) - 1;   // a root leaf's numPrim in bits 30:0
-constexpr uint64_t kMaxTriangles = uint64_t{1} << 32;    // indices in one word
-constexpr uint64_t kMaxWords = (uint64_t{1} << 32) - 1;  // the size in header word 10
-
-uint64_t alignedToAccess(uint64_t words) { return (words + 3) / 4 * 4; }
+constexpr uint64_t kMaxNodes = uint64_t{1} << 31;       // indices 0 .. 2^31 - 1 in bits 30:0
+constexpr uint64_t kMaxRefs = (uint64_t{1} << 31) - 1;  // a root leaf's numPrim in bits 30:0
+constexpr uint64_t kMaxTriangles = uint64_t{1} << 32;   // indices in one word
 
 void checkCount(uint64_t count, uint64_t limit, const std::string& what, const std::string& why) {
-  if (count > limit)
-    throw BvhCapacityError(std::to_string(count) + " " + what + ", more than " +
-                           std::to_string(limit) + " (" + why + ")");
-}
-
-uint32_t bits(float value) {
-  uint32_t word;
-  std::memcpy(&word, &value, sizeof word);
-  return word;
-}
-
-float toFloat(uint32_t word) {
-  float value;
-  std::memcpy(&value, &word, sizeof value);
-  return value;
+  const std::string exceeded = capacityExceeded(count, limit, what, why);
+  if (!exceeded.empty()) throw BvhCapacityError(exceeded);
 }
 
 // Rounded to nearest; refused beyond float32's range, where the conversion is undefined.
@@ -57,7 +35,7 @@ void writeTriangle(const TriangleMesh& mesh, uint32_t index, uint32_t* words) {
   for (int corner = 0; corner < 3; ++corner)
     for (int k = 0; k < 3; ++k)
       words[3 * corner + k] =
-          bits(vertexCoordinate(mesh.vertices[mesh.triangles[index][corner]][k]));
+          floatBits(vertexCoordinate(mesh.vertices[mesh.triangles[index][corner]][k]));
   words[9] = index;
 }
 
@@ -68,18 +46,10 @@ BvhHeader bvhSections(uint64_t nodes, uint64_t refs, uint64_t triangles) {
   checkCount(nodes, kMaxNodes, "nodes", "child indices have 31 bits");
   checkCount(refs, kMaxRefs, "references", "a leaf's count has 31 bits");
   checkCount(triangles, kMaxTriangles, "triangles", "references are 32-bit indices");
-  const uint64_t refBase = kBvhHeaderWords + kBvhNodeWords * nodes;
-  const uint64_t triangleBase = alignedToAccess(refBase + refs);
-  const uint64_t totalWords = triangleBase + kBvhTriangleWords * triangles;
-  checkCount(totalWords, kMaxWords, "words", "word addresses have 32 bits");
   BvhHeader header;
-  header.nodeBase = kBvhHeaderWords;
-  header.nodeCount = static_cast<uint32_t>(nodes);
-  header.refBase = static_cast<uint32_t>(refBase);
-  header.refCount = static_cast<uint32_t>(refs);
-  header.triangleBase = static_cast<uint32_t>(triangleBase);
-  header.triangleCount = static_cast<uint32_t>(triangles);
-  header.totalWords = static_cast<uint32_t>(totalWords);
+  std::string error;
+  if (!placeSections(nodes, kBvhNodeWords, refs, triangles, kBvhTriangleWords, header, error))
+    throw BvhCapacityError(error);
   return header;
 }
 
@@ -94,7 +64,7 @@ BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh) {
     const auto nodeWords = encodeNode(nodeOf(tree.nodes[i]));
     std::copy(nodeWords.begin(), nodeWords.end(), words + header.nodeBase + kBvhNodeWords * i);
   }
-  std::copy(tree.refs.begin(), tree.refs.end(), words + header.refBase);
+  std::copy(tree.refs.begin(), tree.refs.end(), words + header.listBase);
   for (uint32_t t = 0; t < header.triangleCount; ++t)
     writeTriangle(mesh, t, words + header.triangleBase + kBvhTriangleWords * t);
   return image;
@@ -102,21 +72,21 @@ BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh) {
 
 std::array<uint32_t, kBvhHeaderWords> encodeHeader(const BvhHeader& header) {
   std::array<uint32_t, kBvhHeaderWords> words{};
-  for (size_t i = 0; i < kHeaderFields.size(); ++i) words[i] = header.*kHeaderFields[i];
+  writeSections(header, words.data());
   return words;
 }
 
 BvhHeader decodeHeader(const uint32_t* words) {
   BvhHeader header;
-  for (size_t i = 0; i < kHeaderFields.size(); ++i) header.*kHeaderFields[i] = words[i];
+  static_cast<ImageSections&>(header) = readSections(words);
   return header;
 }
 
 std::array<uint32_t, kBvhNodeWords> encodeNode(const BvhNode& node) {
   std::array<uint32_t, kBvhNodeWords> words{};
   for (int k = 0; k < 3; ++k) {
-    words[k] = bits(node.box.lower[k]);
-    words[3 + k] = bits(node.box.upper[k]);
+    words[k] = floatBits(node.box.lower[k]);
+    words[3 + k] = floatBits(node.box.upper[k]);
   }
   words[6] = node.leftOrFirst;
   words[7] = (node.leaf ? kBvhLeafBit : 0) | node.rightOrCount;
@@ -126,8 +96,8 @@ std::array<uint32_t, kBvhNodeWords> encodeNode(const BvhNode& node) {
 BvhNode decodeNode(const uint32_t* words) {
   BvhNode node;
   for (int k = 0; k < 3; ++k) {
-    node.box.lower[k] = toFloat(words[k]);
-    node.box.upper[k] = toFloat(words[3 + k]);
+    node.box.lower[k] = bitsToFloat(words[k]);
+    node.box.upper[k] = bitsToFloat(words[3 + k]);
   }
   node.leaf = (words[7] & kBvhLeafBit) != 0;
   node.leftOrFirst = words[6];
@@ -159,7 +129,7 @@ BvhNode BvhImageView::node(uint32_t index) const {
 }
 
 uint32_t BvhImageView::ref(uint32_t index) const {
-  return *record("reference", index, header_.refCount, refAddress(index), 1);
+  return *record("reference", index, header_.listCount, refAddress(index), 1);
 }
 
 BvhTriangle BvhImageView::triangle(uint32_t index) const {
@@ -167,7 +137,7 @@ BvhTriangle BvhImageView::triangle(uint32_t index) const {
       record("triangle", index, header_.triangleCount, triangleAddress(index), kBvhTriangleWords);
   BvhTriangle triangle;
   for (int corner = 0; corner < 3; ++corner)
-    for (int k = 0; k < 3; ++k) triangle.vertices[corner][k] = toFloat(words[3 * corner + k]);
+    for (int k = 0; k < 3; ++k) triangle.vertices[corner][k] = bitsToFloat(words[3 * corner + k]);
   triangle.source = words[9];
   return triangle;
 }

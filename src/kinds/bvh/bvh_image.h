@@ -2,7 +2,7 @@
 // The memory image of a BVH in seed 003's node format (Langr 2016, section 3.4, lines 700-718),
 // as 32-bit words: what a traversal core reads. Layout (docs/triangles.md, "BVH (seed 003,
 // langr)"); every section starts on a multiple of 4 words, one 16-byte access:
-//   header     16 words (BvhHeader, word order as its fields)
+//   header     16 words (BvhHeader: rtu/image_sections.h, then zeros)
 //   nodes      8 words each, node 0 the root (encodeNode)
 //   references 1 word each: the triangle reference array, indices into the triangles (L718);
 //              zero words up to the next multiple of 4
@@ -22,6 +22,7 @@
 #include "geometry/aabb.h"
 #include "geometry/triangle_mesh.h"
 #include "kinds/bvh/build_tree.h"
+#include "rtu/image_sections.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
@@ -29,24 +30,19 @@ namespace rtu {
 constexpr uint32_t kBvhMagic = 0x48564252;  // the bytes "RBVH" in little-endian order
 constexpr uint32_t kBvhKind = 1;            // a BVH of 8-word nodes with the leaf flag in bit 31
 constexpr uint32_t kBvhVersion = 1;
-constexpr uint32_t kBvhHeaderWords = 16;
+constexpr uint32_t kBvhHeaderWords = kImageHeaderWords;
 constexpr uint32_t kBvhNodeWords = 8;
 constexpr uint32_t kBvhTriangleWords = 12;
 constexpr uint32_t kBvhLeafBit = 0x80000000u;  // in node word 7 (L709)
 
-// Header words 0-10 in this order; words 11-15 are 0. Bases are word addresses in the image.
-struct BvhHeader {
-  uint32_t magic = kBvhMagic;
-  uint32_t kind = kBvhKind;
-  uint32_t version = kBvhVersion;
-  uint32_t flags = 0;  // none defined: 0
-  uint32_t nodeBase = 0;
-  uint32_t nodeCount = 0;
-  uint32_t refBase = 0;
-  uint32_t refCount = 0;
-  uint32_t triangleBase = 0;
-  uint32_t triangleCount = 0;
-  uint32_t totalWords = 0;  // the image's size
+// The header: the shared sections (rtu/image_sections.h, words 0-10; the references are the
+// list) with this format's magic, kind and version; words 11-15 are 0.
+struct BvhHeader : ImageSections {
+  BvhHeader() {
+    magic = kBvhMagic;
+    kind = kBvhKind;
+    version = kBvhVersion;
+  }
 };
 
 // A node as its 8 words hold it. Words 0-5: box min x, y, z, max x, y, z as float32 (the seed
@@ -113,7 +109,7 @@ class BvhImageView {
   uint64_t nodeAddress(uint32_t index) const {
     return header_.nodeBase + uint64_t{kBvhNodeWords} * index;
   }
-  uint64_t refAddress(uint32_t index) const { return header_.refBase + uint64_t{index}; }
+  uint64_t refAddress(uint32_t index) const { return header_.listBase + uint64_t{index}; }
   uint64_t triangleAddress(uint32_t index) const {
     return header_.triangleBase + uint64_t{kBvhTriangleWords} * index;
   }

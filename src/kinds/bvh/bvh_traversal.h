@@ -72,7 +72,7 @@ struct BvhSections {
 };
 
 inline BvhSections sectionsOf(const BvhHeader& header) {
-  return BvhSections{header.nodeBase, header.refBase, header.triangleBase};
+  return BvhSections{header.nodeBase, header.listBase, header.triangleBase};
 }
 
 struct BvhJob {

@@ -18,13 +18,6 @@ bool inverted(const Aabb<float>& box) {
   return false;
 }
 
-void checkHeaderWord(Problems& problems, uint32_t word, const char* name, uint32_t value,
-                     uint32_t expected) {
-  if (value != expected)
-    problems.add(word, std::string("the header's ") + name + " is " + std::to_string(value) +
-                           ", not " + std::to_string(expected));
-}
-
 // The header against the format and against the placement its counts imply; false when the
 // sections cannot be read.
 bool checkHeader(const std::vector<uint32_t>& words, Problems& problems) {
@@ -39,22 +32,15 @@ bool checkHeader(const std::vector<uint32_t>& words, Problems& problems) {
   checkHeaderWord(problems, 2, "version", header.version, kBvhVersion);
   checkHeaderWord(problems, 3, "flags", header.flags, 0);
   for (uint32_t word = 11; word < kBvhHeaderWords; ++word)
-    checkHeaderWord(problems, word, ("reserved word " + std::to_string(word)).c_str(), words[word],
-                    0);
+    checkHeaderWord(problems, word, "reserved word " + std::to_string(word), words[word], 0);
   BvhHeader placed;
   try {
-    placed = bvhSections(header.nodeCount, header.refCount, header.triangleCount);
+    placed = bvhSections(header.nodeCount, header.listCount, header.triangleCount);
   } catch (const BvhCapacityError& error) {
     problems.add(5, error.what());
     return false;
   }
-  checkHeaderWord(problems, 4, "node base", header.nodeBase, placed.nodeBase);
-  checkHeaderWord(problems, 6, "reference base", header.refBase, placed.refBase);
-  checkHeaderWord(problems, 8, "triangle base", header.triangleBase, placed.triangleBase);
-  checkHeaderWord(problems, 10, "size in words", header.totalWords, placed.totalWords);
-  if (words.size() != header.totalWords)
-    problems.add(10, "the header says " + std::to_string(header.totalWords) +
-                         " words, the image has " + std::to_string(words.size()));
+  checkPlacement(header, placed, words.size(), "reference", problems);
   return problems.empty();
 }
 
@@ -67,7 +53,7 @@ class Validator {
         header_(view_.header()),
         problems_(problems),
         reached_(header_.nodeCount, false),
-        leavesOfRef_(header_.refCount, 0),
+        leavesOfRef_(header_.listCount, 0),
         refsOfTriangle_(header_.triangleCount, 0) {}
 
   void run() {
@@ -118,11 +104,11 @@ class Validator {
 
   void checkLeaf(uint32_t index, const BvhNode& node) {
     const uint64_t end = uint64_t{node.leftOrFirst} + node.rightOrCount;
-    if (end > header_.refCount) {
-      problem(view_.nodeAddress(index) + 7, nodeName(index) + ": its references " +
-                                                std::to_string(node.leftOrFirst) + " to " +
-                                                std::to_string(end - 1) + " go beyond the " +
-                                                std::to_string(header_.refCount) + " of the array");
+    if (end > header_.listCount) {
+      problem(view_.nodeAddress(index) + 7,
+              nodeName(index) + ": its references " + std::to_string(node.leftOrFirst) + " to " +
+                  std::to_string(end - 1) + " go beyond the " + std::to_string(header_.listCount) +
+                  " of the array");
       return;
     }
     for (uint32_t i = node.leftOrFirst; i < end; ++i) {
@@ -148,7 +134,7 @@ class Validator {
   }
 
   void checkReferences() {
-    for (uint32_t i = 0; i < header_.refCount; ++i) {
+    for (uint32_t i = 0; i < header_.listCount; ++i) {
       const std::string name = "reference " + std::to_string(i);
       if (leavesOfRef_[i] != 1)
         problem(view_.refAddress(i),
