@@ -27,12 +27,13 @@ using S = BihState;
 
 struct HandScene {
   TriangleMesh mesh = bihHandMesh();
-  SceneGrid grid{meshBounds(mesh), kFourBitC99};
+  SceneGrid grid;
   ProjectedMesh projected = projectMesh(mesh, grid);
   BihImage image;
 
-  explicit HandScene(uint32_t leafSize = 1)
-      : image(layOut(buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid),
+  explicit HandScene(uint32_t leafSize = 1, const FixedFormat& format = kFourBitC99)
+      : grid(meshBounds(mesh), format),
+        image(layOut(buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid),
                               BihBuildSettings{leafSize}),
                      projected, grid)) {}
 
@@ -48,8 +49,9 @@ struct Trace {
   std::vector<BihState> states;  // each state as it is stepped
 };
 
+template <class TracedKind = Kind>
 Trace trace(const HandScene& scene, const Ray& world, BihConfig config = {}) {
-  Kind::Behaviour traversal = Kind::behaviour(config);
+  typename TracedKind::Behaviour traversal = TracedKind::behaviour(config);
   const BihJob job = scene.job(world);
   traversal.start(job);
   const WordMemory memory(scene.image.words);
@@ -59,7 +61,7 @@ Trace trace(const HandScene& scene, const Ray& world, BihConfig config = {}) {
     traversal.step([&](uint32_t address) { return memory.read(address); });
   }
   traversal.finish();
-  Kind::writeResult(5, traversal, out.result);
+  TracedKind::writeResult(5, traversal, out.result);
   return out;
 }
 
@@ -185,6 +187,88 @@ TEST_CASE("BIH traversal: every state reads within one aligned access", "[bih]")
   traversal.start(scene.job(down(3, 1)));
   const int reads = wordsReadWithinAccesses(traversal, WordMemory(scene.image.words));
   CHECK(reads == 4 * 3 + 2 * (1 + 12));  // 4 node triples, 2 list entries, 2 records
+}
+
+}  // namespace rtu
+
+namespace rtu {
+
+// The VHDL kernel (Listing A.2) as the traversal's intersector, on the hand scene at kFourBitVhdl.
+// Its rules, from fixed_kernels.h and t_div.h: for a plane z = z0 (r = z, np = nq = 0) nom =
+// z0 - O_z and den = ω_z; t_div sets the error bit when their signs differ or |nom| >= |den|, i.e.
+// unless t = nom / den lies in [0, 2^(n+1)) = [0, 32) (t = 0 passes only with den > 0, C9);
+// t = floor(|nom| 2^5 / |den|); k = (O_p - pp, O_q - pq) + (floor(t / 2) ω >> 4) (t without its
+// LSB, C8); u = e1p k_q, v = e2q k_p with e = 1/a at scale 2^6 (a = 6: 11, 7: 9, 4: 16, 3: 21); a
+// hit needs u + v < 2^6 strictly (C10).
+using VhdlKind = BihKind<VhdlIntersector>;
+
+TEST_CASE("BIH traversal, VHDL kernel: the hand scene's push and pop, t and u, v", "[bih]") {
+  const HandScene scene(1, kFourBitVhdl);
+  // Down at (3, 1), clipped at z = 3. The BIH distances are exact grid t here (idir_z = -16,
+  // idir_x = 511): the same path as the C99 case above. T0 (z = 0): t = 3, k = (3, 1), u = 11,
+  // v = 33, u + v = 44 < 64: a hit. T1 (z = 2): t = 1 <= 3, k = (1, 1), u = v = 9: the hit.
+  const Trace run = trace<VhdlKind>(scene, down(3, 1));
+  CHECK(run.states ==
+        std::vector<BihState>{S::Aabb, S::Node, S::Inner, S::Node, S::Inner, S::Push, S::Node} +
+            kOneTriangle + std::vector<BihState>{S::Pop, S::Node} + kOneTriangle);
+  CHECK(run.result.hit);
+  CHECK(run.result.primitive == 1);
+  CHECK(run.result.t == 1);
+  CHECK(run.result.u == 9);
+  CHECK(run.result.v == 9);
+  CHECK(run.result.cost == 19);
+  CHECK(run.result.counts.triangleTests == 2);
+  CHECK(run.result.counts.errBits == 0);
+}
+
+TEST_CASE("BIH traversal, VHDL kernel: t = 0 ahead of a rising ray is a hit (C9)", "[bih]") {
+  // Up at (3, 1) from z = -10, clipped at z = 0: ω_z = +1 saturates to 31. T0 lies in the origin's
+  // plane: nom = 0, den = 31, no error, t = 0, k = (3, 1): a hit at t = 0. T1 (z = 2): t =
+  // floor(2 32 / 31) = 2 > 0: not ahead of the best. C99 rejects t = 0 and takes T1.
+  const Ray up{{3, 1, -10}, {0, 0, 1}};
+  const Trace vhdl = trace<VhdlKind>(HandScene(1, kFourBitVhdl), up);
+  CHECK(vhdl.result.hit);
+  CHECK(vhdl.result.primitive == 0);
+  CHECK(vhdl.result.t == 0);
+  CHECK(vhdl.result.counts.triangleTests == 2);
+  CHECK(vhdl.result.counts.errBits == 0);
+  const Trace c99 = trace(HandScene(), up);
+  CHECK(c99.result.primitive == 1);
+}
+
+TEST_CASE("BIH traversal, VHDL kernel: u + v = 1 misses, a plane behind errs", "[bih]") {
+  // Down at (12, 3) from z = 3. Root: dist0 = (9 - 12) 511 >> 4 = -96 < 0, dist1 = (11 - 12) 511
+  // >> 4 = -32 <= 3: far only, node 2. Node 2 (y): dist0 = (4 - 3) 511 >> 4 = 31, dist1 = 0: both;
+  // push node 6. T2 (z = 1, corner (11, 0), a = 4): t = 2, k = (1, 3), u = 16 3 = 48, v = 16, u +
+  // v = 64 = 1 exactly: outside (C99 accepts it). T3 (z = 3) passes through the origin: nom = 0
+  // against den = -32, signs differ: the divider's error bit. No hit.
+  const Trace run = trace<VhdlKind>(HandScene(1, kFourBitVhdl), down(12, 3));
+  CHECK(run.states ==
+        std::vector<BihState>{S::Aabb, S::Node, S::Inner, S::Node, S::Inner, S::Push, S::Node} +
+            kOneTriangle + std::vector<BihState>{S::Pop, S::Node} + kOneTriangle);
+  CHECK_FALSE(run.result.hit);
+  CHECK(run.result.counts.triangleTests == 2);
+  CHECK(run.result.counts.errBits == 1);
+  const Trace c99 = trace(HandScene(), down(12, 3));
+  CHECK(c99.result.primitive == 2);  // its u + v <= 1 + 2^-(m-1)
+}
+
+TEST_CASE("BIH traversal, VHDL kernel: t at or beyond 2^(n+1) = 32 errs", "[bih]") {
+  // From (0, 1, 3) along (1, 0, -1/16): ω = (31.9, 0, -2.0) -> (31 saturated, 0, -2), idir =
+  // (16, 511, -256). AABB tmax = min(15 16 >> 4, 6 511 >> 4, 3 256 >> 4) = 15. Root: dist0 = 9,
+  // dist1 = 11: both, push {node 2, 11, 15}. Node 1: dist0 = 6, dist1 = 2: both, push {node 4, 2,
+  // 9}. T0 (z = 0): |nom| = 3 >= |den| = 2, t would be 48: error. T1 (z = 2): t = 1 32 / 2 = 16, k
+  // = (0 - 2 + (8 31 >> 4 = 15), 1) = (13, 1), u + v = 9 + 117 >= 64: outside. Node 2 (y): dist0 =
+  // (4 - 1) 511 >> 4 = 95 >= 11, dist1 = 63 > 15: near only, T2 (z = 1): |nom| = 2 = |den|, t
+  // would be 32 = 2^(n+1): error.
+  const Trace run = trace<VhdlKind>(HandScene(1, kFourBitVhdl), Ray{{0, 1, 3}, {1, 0, -0.0625}});
+  CHECK_FALSE(run.result.hit);
+  CHECK(run.result.counts.nodes == 6);  // the root, 1, 3, 4, 2, 5
+  CHECK(run.result.counts.pushes == 2);
+  CHECK(run.result.counts.pops == 2);
+  CHECK(run.result.counts.leaves == 3);
+  CHECK(run.result.counts.triangleTests == 3);
+  CHECK(run.result.counts.errBits == 2);
 }
 
 }  // namespace rtu

@@ -19,6 +19,7 @@
 #include "kinds/bvh/lbvh_builder.h"
 #include "kinds/bvh/sah_builder.h"
 #include "rtu/golden_shell.h"
+#include "triangle_margins.h"
 
 namespace rtu {
 namespace {
@@ -27,29 +28,6 @@ namespace {
 TriangleMesh roundedToFloat(TriangleMesh mesh) {
   for (auto& v : mesh.vertices) v = glm::dvec3(glm::vec3(v));
   return mesh;
-}
-
-// The distance between the ray's line and the nearest of the triangle's edges (segments), in
-// world units: what float32 arithmetic must resolve to decide whether the ray passes inside. A
-// ray grazing the triangle's plane passes close to the edges it crosses, so this covers grazing
-// rays too.
-double edgeMargin(const TriangleMesh& mesh, uint32_t triangle, const Ray& ray) {
-  const glm::dvec3 d = glm::normalize(ray.direction);
-  double nearest = INFINITY;
-  for (int i = 0; i < 3; ++i) {
-    const glm::dvec3 a = mesh.vertices[mesh.triangles[triangle][i]];
-    const glm::dvec3 b = mesh.vertices[mesh.triangles[triangle][(i + 1) % 3]];
-    // |(a + s (b - a) - origin) x d| over s in [0, 1]: a quadratic in s.
-    const glm::dvec3 c0 = glm::cross(a - ray.origin, d), c1 = glm::cross(b - a, d);
-    const double square = glm::dot(c1, c1);
-    const double s = square > 0 ? std::clamp(-glm::dot(c0, c1) / square, 0.0, 1.0) : 0.0;
-    nearest = std::min(nearest, glm::length(c0 + s * c1));
-  }
-  return nearest;
-}
-
-double largestCoordinate(const glm::dvec3& p) {
-  return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 }
 
 struct Agreement {

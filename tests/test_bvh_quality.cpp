@@ -19,6 +19,7 @@ TEST_CASE("BVH quality: counts and SAH of the langr trees by hand", "[bvh]") {
     CHECK(quality.leaves == 2);
     CHECK(quality.emptyLeaves == 0);
     CHECK(quality.depth == 1);
+    CHECK(quality.listEntries == 12);
     CHECK(quality.trianglesPerLeafMean == 6.0);
     CHECK(quality.trianglesPerLeafMax == 6);
     CHECK(quality.sah == 7.0);       // (24 + 12·6 + 12·6) / 24

@@ -10,6 +10,7 @@ void to_json(nlohmann::json& json, const AccelQuality& quality) {
                         {"leaves", quality.leaves},
                         {"empty_leaves", quality.emptyLeaves},
                         {"depth", quality.depth},
+                        {"list_entries", quality.listEntries},
                         {"triangles_per_leaf_mean", quality.trianglesPerLeafMean},
                         {"triangles_per_leaf_max", quality.trianglesPerLeafMax},
                         {"sah", quality.sah},

@@ -1,5 +1,5 @@
 #pragma once
-// The quality figures of any triangle acceleration structure (BVH now; k-d tree and BIH later),
+// The quality figures of any triangle acceleration structure (BVH and BIH now; k-d tree later),
 // with the JSON keys, and the surface area heuristic summed over a tree's nodes.
 
 #include <cstdint>
@@ -39,15 +39,20 @@ struct AccelQuality {
   uint64_t leaves = 0;
   uint64_t emptyLeaves = 0;
   uint64_t depth = 0;  // edges from the root to the deepest leaf
+  // Entries of the leaves' triangle lists: the references (each triangle once) of a BVH, the list
+  // words of a BIH or k-d tree, where a triangle may be listed in several leaves.
+  uint64_t listEntries = 0;
   double trianglesPerLeafMean = 0;
   uint64_t trianglesPerLeafMax = 0;
-  double sah = 0;      // SahSum with unit costs
-  double sahSeed = 0;  // SahSum with the seed's costs (seed 003: box 1, triangle 2; B8)
+  double sah = 0;  // SahSum with unit costs
+  // SahSum with the seed's costs (seed 003: box 1, triangle 2; B8); NaN (null) for a seed that
+  // has no such figure (seed 004).
+  double sahSeed = 0;
   uint64_t bytes = 0;  // the memory image
   double buildSeconds = 0;
 };
 
-// Keys: triangles, nodes, leaves, empty_leaves, depth, triangles_per_leaf_mean,
+// Keys: triangles, nodes, leaves, empty_leaves, depth, list_entries, triangles_per_leaf_mean,
 // triangles_per_leaf_max, sah, sah_seed, bytes, build_seconds (a NaN is null).
 void to_json(nlohmann::json& json, const AccelQuality& quality);
 

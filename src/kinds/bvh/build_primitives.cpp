@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace rtu {
 namespace {
@@ -50,6 +51,36 @@ BuildPrimitives buildPrimitives(const TriangleMesh& mesh, const std::string& bui
     primitives.centres.push_back(box.centre());
   }
   return primitives;
+}
+
+BuildPrimitives boxPrimitives(std::vector<Aabb<double>> boxes) {
+  BuildPrimitives primitives;
+  primitives.centres.reserve(boxes.size());
+  for (const Aabb<double>& box : boxes) primitives.centres.push_back(box.centre());
+  primitives.boxes = std::move(boxes);
+  return primitives;
+}
+
+void checkPrimitives(const BuildPrimitives& primitives, const std::string& builder) {
+  const size_t count = primitives.boxes.size();
+  if (count == 0) throw std::invalid_argument(builder + " builder: no primitives to build over");
+  if (count > std::numeric_limits<uint32_t>::max())
+    throw std::invalid_argument(builder + " builder: " + std::to_string(count) +
+                                " primitives, more than 32-bit references can name");
+  if (primitives.centres.size() != count)
+    throw std::invalid_argument(builder + " builder: " + std::to_string(count) + " boxes but " +
+                                std::to_string(primitives.centres.size()) + " centres");
+  const auto bounded = [](const glm::dvec3& p) {
+    return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate &&
+           std::abs(p.z) <= kMaxCoordinate;
+  };
+  for (size_t i = 0; i < count; ++i) {
+    const Aabb<double>& box = primitives.boxes[i];
+    if (box.empty() || !bounded(box.lower) || !bounded(box.upper) ||
+        !bounded(primitives.centres[i]))
+      throw std::invalid_argument(builder + " builder: primitive " + std::to_string(i) +
+                                  " has an empty box or a bound not finite or beyond 2^1000");
+  }
 }
 
 int widestAxis(const Aabb<double>& box) {

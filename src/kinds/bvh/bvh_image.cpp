@@ -53,8 +53,8 @@ BvhHeader bvhSections(uint64_t nodes, uint64_t refs, uint64_t triangles) {
   return header;
 }
 
-BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh) {
-  const BvhHeader header = bvhSections(tree.nodes.size(), tree.refs.size(), mesh.triangles.size());
+BvhImage layOutNodes(const BuildTree& tree, uint64_t triangles) {
+  const BvhHeader header = bvhSections(tree.nodes.size(), tree.refs.size(), triangles);
   BvhImage image;
   image.words.assign(header.totalWords, 0);
   uint32_t* words = image.words.data();
@@ -65,8 +65,14 @@ BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh) {
     std::copy(nodeWords.begin(), nodeWords.end(), words + header.nodeBase + kBvhNodeWords * i);
   }
   std::copy(tree.refs.begin(), tree.refs.end(), words + header.listBase);
+  return image;
+}
+
+BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh) {
+  BvhImage image = layOutNodes(tree, mesh.triangles.size());
+  const BvhHeader header = decodeHeader(image.words.data());
   for (uint32_t t = 0; t < header.triangleCount; ++t)
-    writeTriangle(mesh, t, words + header.triangleBase + kBvhTriangleWords * t);
+    writeTriangle(mesh, t, image.words.data() + header.triangleBase + kBvhTriangleWords * t);
   return image;
 }
 

@@ -87,6 +87,11 @@ BvhHeader bvhSections(uint64_t nodes, uint64_t refs, uint64_t triangles);
 // BvhCapacityError as bvhSections, or when a vertex coordinate exceeds float32's range.
 BvhImage layOut(const BuildTree& tree, const TriangleMesh& mesh);
 
+// The image's header, nodes and references, with `triangles` records left zero: layOut fills them
+// from a mesh; a two-level BVH's top level (two_level.h) has none, its references naming
+// instances. Throws as bvhSections.
+BvhImage layOutNodes(const BuildTree& tree, uint64_t triangles);
+
 std::array<uint32_t, kBvhHeaderWords> encodeHeader(const BvhHeader& header);
 BvhHeader decodeHeader(const uint32_t* words);  // from 16 words
 std::array<uint32_t, kBvhNodeWords> encodeNode(const BvhNode& node);

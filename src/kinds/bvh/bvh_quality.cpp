@@ -10,6 +10,7 @@ AccelQuality measureQuality(const BuildTree& tree, const SahCosts& seedCosts) {
   AccelQuality quality;
   quality.triangles = tree.refs.size();
   quality.nodes = tree.nodes.size();
+  quality.listEntries = tree.refs.size();
   SahSum sum;
   uint64_t leafTriangles = 0;
   std::vector<std::pair<uint32_t, uint64_t>> pending{{0, 0}};  // node, depth

@@ -1,10 +1,12 @@
 #pragma once
-// A ray as the BVH core traverses it: float32 origin and direction in the mesh's space, the
-// reciprocal direction its slab tests multiply by, and its t range. Built once per job (the job
-// manager's set-up), so the traversal never divides.
+// A ray as the BVH core traverses it: float32 origin and direction in the mesh's space (or the
+// world's, for a two-level BVH's top level), the reciprocal direction its slab tests multiply by,
+// and its t range. Built once per job (the job manager's set-up), so the traversal never divides.
 
+#include <algorithm>
 #include <cmath>
 
+#include "geometry/aabb.h"
 #include "geometry/triangle_tests.h"
 
 namespace rtu {
@@ -28,6 +30,26 @@ inline BvhRay makeBvhRay(const Vec3<float>& origin, const Vec3<float>& direction
     ray.inverse[k] = 1.0f / d;
   }
   return ray;
+}
+
+struct BoxHit {
+  bool hit = false;
+  float tEntry = 0;  // where the ray enters the box (within [tMin, tMax] when hit)
+};
+
+// The float32 slab test against [tMin, tMax]: each distance one rounded product, no fused
+// multiply-add; entry max(tMin, the per-axis nears), exit min(tMax, the fars), a hit when the entry
+// is not beyond the exit.
+inline BoxHit slabTest(const BvhRay& ray, const Aabb<float>& box, float tMin, float tMax) {
+  float tNear = tMin, tFar = tMax;
+  for (int k = 0; k < 3; ++k) {
+    const float lower = box.lower[k] - ray.origin[k];
+    const float upper = box.upper[k] - ray.origin[k];
+    const float t0 = lower * ray.inverse[k], t1 = upper * ray.inverse[k];
+    tNear = std::max(tNear, std::min(t0, t1));
+    tFar = std::min(tFar, std::max(t0, t1));
+  }
+  return BoxHit{tNear <= tFar, tNear};
 }
 
 }  // namespace rtu

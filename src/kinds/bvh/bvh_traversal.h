@@ -216,10 +216,6 @@ class BvhTraversal {
     uint32_t word6 = 0, word7 = 0;
     float tEntry = 0;
   };
-  struct BoxHit {
-    bool hit = false;
-    float tEntry = 0;
-  };
 
   uint32_t nodeAddress(uint32_t node) const { return image_.nodes + node * Layout::kWords; }
   uint32_t triangleAddress() const { return image_.triangles + triangle_ * kBvhTriangleWords; }
@@ -236,19 +232,10 @@ class BvhTraversal {
     for (uint32_t i = 0; i < kWordsPerRead; ++i) triangleWords_[offset + i] = readWord(address + i);
   }
 
-  // The float32 slab test against [tMin, tBest]: each distance one rounded product, no fused
-  // multiply-add; a hit when the entry is not beyond the exit.
+  // The slab test against [tMin, tBest] (bvh_ray.h).
   BoxHit slab(const Aabb<float>& box) {
     ++counts_.boxTests;
-    float tNear = ray_.tMin, tFar = tBest_;
-    for (int k = 0; k < 3; ++k) {
-      const float lower = box.lower[k] - ray_.origin[k];
-      const float upper = box.upper[k] - ray_.origin[k];
-      const float t0 = lower * ray_.inverse[k], t1 = upper * ray_.inverse[k];
-      tNear = std::max(tNear, std::min(t0, t1));
-      tFar = std::min(tFar, std::max(t0, t1));
-    }
-    return BoxHit{tNear <= tFar, tNear};
+    return slabTest(ray_, box, ray_.tMin, tBest_);
   }
 
   void testRoot() {

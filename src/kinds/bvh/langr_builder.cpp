@@ -39,9 +39,9 @@ struct Split {
 
 class LangrBuilder {
  public:
-  // The triangles' AABB centres, in double (L728, B3).
-  LangrBuilder(const TriangleMesh& mesh, const LangrConfig& config)
-      : config_(config), primitives_(buildPrimitives(mesh, "langr")) {}
+  // The primitives' AABB centres, in double (L728, B3).
+  LangrBuilder(const BuildPrimitives& primitives, const LangrConfig& config)
+      : config_(config), primitives_(primitives) {}
 
   // Algorithm 3 (L745-786).
   LangrBuild build() {
@@ -53,8 +53,9 @@ class LangrBuilder {
     const BuildNode root{boxOf(0, n), 0, n};
     tree.nodes.reserve(2 * size_t{n});  // the seed's node pool (L759)
     tree.nodes.push_back(root);         // numBvhNodes = 1 after the root (B5)
-    if (n < config_.leafThreshold)
-      return std::move(result_);  // a root leaf: `<` as printed (L751, B4)
+    // A root leaf: `<` as printed (L751, B4), or a single primitive, which no split divides (a
+    // top level of one instance at threshold 1, two_level.h).
+    if (n < config_.leafThreshold || n == 1) return std::move(result_);
     uint32_t current = 0;
     std::vector<uint32_t> pending;  // toSubdivideStack, grown as needed (B5)
     while (true) {
@@ -190,15 +191,20 @@ class LangrBuilder {
   }
 
   const LangrConfig& config_;
-  BuildPrimitives primitives_;
+  const BuildPrimitives& primitives_;
   LangrBuild result_;
 };
 
 }  // namespace
 
-LangrBuild buildLangr(const TriangleMesh& mesh, const LangrConfig& config) {
+LangrBuild buildLangr(const BuildPrimitives& primitives, const LangrConfig& config) {
   checkConfig(config);
-  return LangrBuilder(mesh, config).build();
+  checkPrimitives(primitives, "langr");
+  return LangrBuilder(primitives, config).build();
+}
+
+LangrBuild buildLangr(const TriangleMesh& mesh, const LangrConfig& config) {
+  return buildLangr(buildPrimitives(mesh, "langr"), config);
 }
 
 }  // namespace rtu

@@ -8,6 +8,7 @@
 
 #include "geometry/accel_quality.h"
 #include "geometry/triangle_mesh.h"
+#include "kinds/bvh/build_primitives.h"
 #include "kinds/bvh/build_tree.h"
 
 namespace rtu {
@@ -37,5 +38,8 @@ struct LangrBuild {
 // finite or beyond 2^1000 in magnitude (the binning arithmetic must not overflow), or a config with
 // fewer than 2 bins or a leaf threshold of 0 (either would never end).
 LangrBuild buildLangr(const TriangleMesh& mesh, const LangrConfig& config = {});
+// The same over any primitives (a tree's references index them): throws for primitives
+// checkPrimitives refuses or a config as above.
+LangrBuild buildLangr(const BuildPrimitives& primitives, const LangrConfig& config = {});
 
 }  // namespace rtu

@@ -47,10 +47,10 @@ uint32_t mortonCode(uint32_t x, uint32_t y, uint32_t z) {
   return spread(x) << 2 | spread(y) << 1 | spread(z);
 }
 
-LbvhBuild buildLbvh(const TriangleMesh& mesh, const LbvhConfig& config) {
+LbvhBuild buildLbvh(const BuildPrimitives& primitives, const LbvhConfig& config) {
   if (config.maxLeafSize < 1)
     throw std::invalid_argument("lbvh builder: the maximum leaf size must be at least 1");
-  const BuildPrimitives primitives = buildPrimitives(mesh, "lbvh");
+  checkPrimitives(primitives, "lbvh");
   const std::vector<uint32_t> codes = codesOf(primitives);
   std::vector<uint32_t> refs(codes.size());
   std::iota(refs.begin(), refs.end(), 0u);
@@ -76,6 +76,10 @@ LbvhBuild buildLbvh(const TriangleMesh& mesh, const LbvhConfig& config) {
                      return static_cast<uint32_t>(split - begin);
                    });
   return result;
+}
+
+LbvhBuild buildLbvh(const TriangleMesh& mesh, const LbvhConfig& config) {
+  return buildLbvh(buildPrimitives(mesh, "lbvh"), config);
 }
 
 }  // namespace rtu

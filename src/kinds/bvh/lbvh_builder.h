@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "geometry/triangle_mesh.h"
+#include "kinds/bvh/build_primitives.h"
 #include "kinds/bvh/build_tree.h"
 
 namespace rtu {
@@ -27,7 +28,9 @@ struct LbvhBuild {
 // at 28, 25, ..., z's at 27, 24, ...
 uint32_t mortonCode(uint32_t x, uint32_t y, uint32_t z);
 
-// Throws std::invalid_argument for a mesh buildPrimitives refuses or a maximum leaf size of 0.
+// Throws std::invalid_argument for primitives checkPrimitives refuses or a maximum leaf size of 0.
+LbvhBuild buildLbvh(const BuildPrimitives& primitives, const LbvhConfig& config = {});
+// Over the mesh's triangles; also throws for a mesh buildPrimitives refuses.
 LbvhBuild buildLbvh(const TriangleMesh& mesh, const LbvhConfig& config = {});
 
 }  // namespace rtu

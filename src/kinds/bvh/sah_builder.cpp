@@ -13,6 +13,10 @@
 namespace rtu {
 namespace {
 
+std::string builderName(const SahBuilderConfig& config) {
+  return config.search == SahSplitSearch::Binned ? "binned" : "sweep";
+}
+
 void checkConfig(const SahBuilderConfig& config) {
   if (config.search == SahSplitSearch::Binned && config.bins < 2)
     throw std::invalid_argument("binned builder: bins must be at least 2, not " +
@@ -31,8 +35,8 @@ struct Split {
 
 class SahBuilder {
  public:
-  SahBuilder(const TriangleMesh& mesh, const SahBuilderConfig& config)
-      : config_(config), primitives_(buildPrimitives(mesh, builderName(config))) {}
+  SahBuilder(const BuildPrimitives& primitives, const SahBuilderConfig& config)
+      : config_(config), primitives_(primitives) {}
 
   SahBuild build() {
     std::vector<uint32_t> refs(primitives_.boxes.size());
@@ -46,10 +50,6 @@ class SahBuilder {
   }
 
  private:
-  static std::string builderName(const SahBuilderConfig& config) {
-    return config.search == SahSplitSearch::Binned ? "binned" : "sweep";
-  }
-
   // The left child's count after reordering the node's references, or 0 to leave it a leaf.
   uint32_t divide(std::vector<uint32_t>& refs, const BuildNode& node, uint32_t& forcedMedians) {
     if (node.count == 1) return 0;
@@ -168,7 +168,7 @@ class SahBuilder {
   }
 
   const SahBuilderConfig& config_;
-  BuildPrimitives primitives_;
+  const BuildPrimitives& primitives_;
   // Scratch, kept between nodes so that no node allocates: the references' ranks on one axis,
   // an order or copy of them, and each slot's box and count and those of the slots from it on.
   std::vector<uint32_t> ranks_, order_;
@@ -178,9 +178,14 @@ class SahBuilder {
 
 }  // namespace
 
-SahBuild buildSah(const TriangleMesh& mesh, const SahBuilderConfig& config) {
+SahBuild buildSah(const BuildPrimitives& primitives, const SahBuilderConfig& config) {
   checkConfig(config);
-  return SahBuilder(mesh, config).build();
+  checkPrimitives(primitives, builderName(config));
+  return SahBuilder(primitives, config).build();
+}
+
+SahBuild buildSah(const TriangleMesh& mesh, const SahBuilderConfig& config) {
+  return buildSah(buildPrimitives(mesh, builderName(config)), config);
 }
 
 }  // namespace rtu

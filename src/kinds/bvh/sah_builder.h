@@ -17,6 +17,7 @@
 
 #include "geometry/accel_quality.h"
 #include "geometry/triangle_mesh.h"
+#include "kinds/bvh/build_primitives.h"
 #include "kinds/bvh/build_tree.h"
 
 namespace rtu {
@@ -35,8 +36,10 @@ struct SahBuild {
   uint32_t forcedMedians = 0;
 };
 
-// Throws std::invalid_argument for a mesh buildPrimitives refuses, fewer than 2 bins or a maximum
-// leaf size of 0.
+// Builds over any primitives (a tree's references index them). Throws std::invalid_argument for
+// primitives checkPrimitives refuses, fewer than 2 bins or a maximum leaf size of 0.
+SahBuild buildSah(const BuildPrimitives& primitives, const SahBuilderConfig& config = {});
+// Over the mesh's triangles; also throws for a mesh buildPrimitives refuses.
 SahBuild buildSah(const TriangleMesh& mesh, const SahBuilderConfig& config = {});
 
 }  // namespace rtu
