@@ -19,6 +19,6 @@ inline constexpr FixedTriangleFormat kFourBitC99{4, 16, 1, 0, 4, FixedListing::C
 // -32, +1 saturates to 31): E = 1 puts the hand triangles' edges 1/3 .. 1/7 at scale 2^6 (21 .. 9
 // codes) below the clamp at 1/2; C = 4 gives idir = trunc(2^9 / ω), -16 for a ray straight down,
 // 511 (saturated) on an axis it does not move along, so axis-aligned distances are exact.
-inline constexpr FixedFormat kFourBitVhdl{4, 6, 1, 0, 4, FixedListing::Vhdl};
+inline constexpr FixedTriangleFormat kFourBitVhdl{4, 6, 1, 0, 4, FixedListing::Vhdl};
 
 }  // namespace rtu

@@ -31,7 +31,7 @@ struct HandScene {
   ProjectedMesh projected = projectMesh(mesh, grid);
   BihImage image;
 
-  explicit HandScene(uint32_t leafSize = 1, const FixedFormat& format = kFourBitC99)
+  explicit HandScene(uint32_t leafSize = 1, const FixedTriangleFormat& format = kFourBitC99)
       : grid(meshBounds(mesh), format),
         image(layOut(buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid),
                               BihBuildSettings{leafSize}),
