@@ -70,6 +70,24 @@ for row, ray in zip(rows, rays):
 assert hits > 30, hits
 PY
 
+# Seed 004's BIH on its integer grid: spider's list overflows the seed's 10-bit index (refused,
+# naming the limit and the way on) and fits the wide one, with the seed's capacity as a warning.
+expect_error "1312 list entries, more than 1024 (10-bit node indices; the wide index has 29)" \
+  "$rtusim" build --accel bih --mesh "$spider" --drop-bad-triangles --out s.bih
+"$rtusim" build --accel bih --bih-index wide --mesh "$spider" --drop-bad-triangles --out s.bih \
+  --stats b.json >bih.txt 2>bih_warnings.txt
+grep -q "^BIH (c99 formats, wide indices): .* nodes" bih.txt || fail "BIH build report"
+grep -q "more than the seed's 992" bih_warnings.txt || fail "BIH capacity warning"
+python3 - b.json <<'PY' || fail "BIH statistics JSON"
+import json, sys
+stats = json.load(open(sys.argv[1]))
+assert stats["accel"] == "bih" and "builder" not in stats
+assert stats["list_entries"] == 1312 and stats["sah_seed"] is None
+assert stats["depth"] <= 31  # the seed's 32-entry stack
+PY
+"$rtusim" validate s.bih | grep -q "^s.bih: valid BIH image, .* nodes, 1312 list entries" ||
+  fail "validate the BIH"
+
 # A voxel scene's faces: each of the sphere's exposed faces is two triangles.
 "$rtusim" build --accel bvh --scene sphere --depth 4 --out sphere.bvh >sphere.txt
 grep -q "^sphere (depth 4, voxel faces): [0-9]* triangles$" sphere.txt || fail "voxel faces"

@@ -3,6 +3,10 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "geometry/ray_sets.h"
+#include "kinds/bih/bih_builder.h"
+#include "kinds/bih/bih_image.h"
+#include "kinds/bih/bih_quality.h"
 #include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_quality.h"
 #include "kinds/bvh/langr_builder.h"
@@ -35,14 +39,35 @@ AccelBuild bvhBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   return build;
 }
 
+AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
+  const auto start = std::chrono::steady_clock::now();
+  const SceneGrid grid(meshBounds(mesh), spec.bihFormat == "vhdl" ? kVhdlFormat : kC99Format);
+  const ProjectedMesh projected = projectMesh(mesh, grid);
+  const BihBuild tree = buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid));
+  const BihIndexWidth width = spec.bihIndex == "wide" ? BihIndexWidth::Wide : BihIndexWidth::Seed;
+  BihImage image = layOut(tree, projected, grid, width);
+  AccelBuild build;
+  build.words = std::move(image.words);
+  build.warnings = std::move(image.warnings);
+  if (projected.degenerate > 0)
+    build.warnings.push_back(std::to_string(projected.degenerate) +
+                             " triangles have no area once on the grid and are left out");
+  build.quality = measureQuality(tree, sceneUpper(grid));
+  build.quality.buildSeconds = secondsSince(start);
+  build.description = "BIH (" + spec.bihFormat + " formats, " + spec.bihIndex + " indices)";
+  return build;
+}
+
 }  // namespace
 
 AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec) {
   AccelBuild build;
   if (spec.structure == "bvh")
     build = bvhBuild(mesh, spec);
+  else if (spec.structure == "bih")
+    build = bihBuild(mesh, spec);
   else
-    throw std::invalid_argument("no triangle structure '" + spec.structure + "' to build yet: bvh");
+    throw std::invalid_argument("no triangle structure '" + spec.structure + "': bvh or bih");
   build.quality.bytes = build.words.size() * sizeof(uint32_t);
   return build;
 }

@@ -5,6 +5,8 @@
 #include "app/commands.h"
 #include "app/placement_flags.h"
 #include "base/binary_file.h"
+#include "kinds/bih/bih_file.h"
+#include "kinds/bih/bih_validator.h"
 #include "kinds/bvh/bvh_file.h"
 #include "kinds/bvh/bvh_validator.h"
 #include "kinds/svo/svo_image.h"
@@ -40,13 +42,23 @@ void validateBvhFile(const ValidateOptions& options, const std::vector<uint32_t>
             << " bytes\n";
 }
 
+void validateBihFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
+  const std::vector<ImageProblem> problems = validateBih(words);
+  if (!problems.empty())
+    throw std::runtime_error(describeBihProblems("'" + options.file + "'", problems));
+  const BihHeader header = decodeBihHeader(words.data());
+  std::cout << options.file << ": valid BIH image, " << header.nodeCount << " nodes, "
+            << header.listCount << " list entries, " << header.triangleCount << " triangles, "
+            << words.size() * sizeof(uint32_t) << " bytes\n";
+}
+
 }  // namespace
 
 void addValidateCommand(CLI::App& app) {
   auto options = std::make_shared<ValidateOptions>();
   CLI::App* command = app.add_subcommand(
-      "validate", "check a memory image: an SVO, or a BVH (recognised by its header)");
-  command->add_option("file", options->file, ".svo or .bvh file")
+      "validate", "check a memory image: an SVO, or a BVH or BIH (recognised by its header)");
+  command->add_option("file", options->file, ".svo, .bvh or .bih file")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--root", options->root, "SVO: word address of the root descriptor")
@@ -58,6 +70,8 @@ void addValidateCommand(CLI::App& app) {
     std::vector<uint32_t> words = readWordFile(options->file, sizeof(uint32_t), "memory image");
     if (looksLikeBvhImage(words))
       validateBvhFile(*options, words);
+    else if (looksLikeBihImage(words))
+      validateBihFile(*options, words);
     else
       validateSvoFile(*options, std::move(words));
   });
