@@ -1,26 +1,13 @@
 // Seed 001's scene files byte for byte against the team's own (R1, github.com/ryanmacdonald/18-545
 // at 81a34cd). R1 has no licence, so its files are never in rtusim: scripts/extract_trayracer.sh
 // extracts them, and these tests read RTUSIM_TRAYRACER_DIR at run time. Without it they warn and
-// check nothing (Catch2 2.13 has no skip).
+// check nothing (Catch2 2.13 has no skip). The files' helpers are trayracer_r1.h's.
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
-#include <fstream>
-#include <iterator>
-
-#include "geometry/obj_exact.h"
-#include "kinds/kd/trayracer_scene.h"
+#include "trayracer_r1.h"
 
 namespace rtu {
 namespace {
-
-const char* trayRacerDir() { return std::getenv("RTUSIM_TRAYRACER_DIR"); }
-
-std::vector<uint8_t> readBytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error("cannot open " + path);
-  return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 // The figures of plan §2, from the nodes alone; depth in edges from the root.
 struct TreeFigures {
@@ -47,23 +34,6 @@ TreeFigures figures(const TrayRacerScene& scene) {
     }
   }
   return f;
-}
-
-// R1's SOFTWARE/scenes/venus.scene: elephav.obj, its first 1023 triangles (the loader's cap),
-// placed at (1, 0.5, 1) with scale 0.01 (as R1's 4x4 model matrix computes a point in double:
-// s x + p, the zero terms exact), material "magenta" (ambient 1, 0, 1; specular 0.4).
-TrayRacerScene buildElephant(const std::string& dir) {
-  const ObjMesh obj = readObjExact(dir + "/SOFTWARE/models/elephav.obj");
-  const glm::dvec3 position(1.0, 0.5, 1.0), scale(0.01);
-  std::vector<glm::dvec3> corners, normals;
-  for (size_t t = 0; t < 1023; ++t) {
-    for (int k = 0; k < 3; ++k)
-      corners.push_back(scale * obj.mesh.vertices[obj.mesh.triangles[t][k]] + position);
-    const int32_t n = obj.cornerNormals[t][0];
-    normals.push_back(n < 0 ? glm::dvec3(0.0) : scale * obj.normals[n]);
-  }
-  const KdBuild build = buildPbrtKd(pbrtTriangleBoxes(corners), PbrtKdParameters{});
-  return makeTrayRacerScene(build, corners, normals, {{1.0, 0.0, 1.0}, 0.4});
 }
 
 TEST_CASE("R1 scene files: read then written back byte for byte", "[kd][kd_r1]") {
