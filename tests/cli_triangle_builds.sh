@@ -74,7 +74,7 @@ PY
 # naming the limit and the way on) and fits the wide one, with the seed's capacity as a warning.
 expect_error "1312 list entries, more than 1024 (10-bit node indices; the wide index has 29)" \
   "$rtusim" build --accel bih --mesh "$spider" --drop-bad-triangles --out s.bih
-"$rtusim" build --accel bih --bih-index wide --mesh "$spider" --drop-bad-triangles --out s.bih \
+"$rtusim" build --accel bih --index wide --mesh "$spider" --drop-bad-triangles --out s.bih \
   --stats b.json >bih.txt 2>bih_warnings.txt
 grep -q "^BIH (c99 formats, wide indices): .* nodes" bih.txt || fail "BIH build report"
 grep -q "more than the seed's 992" bih_warnings.txt || fail "BIH capacity warning"
@@ -87,6 +87,23 @@ assert stats["depth"] <= 31  # the seed's 32-entry stack
 PY
 "$rtusim" validate s.bih | grep -q "^s.bih: valid BIH image, .* nodes, 1312 list entries" ||
   fail "validate the BIH"
+
+# Seed 001's k-d tree: the core's image, the Tray Racer's own file, and its capacities as warnings.
+"$rtusim" build --accel kdtree --mesh "$spider" --drop-bad-triangles --out s.kd --stats k.json \
+  --trayracer-scene s.scene >kd.txt 2>kd_warnings.txt
+grep -q "^k-d tree (PBRT v1 SAH, seed scene file): .* nodes" kd.txt || fail "k-d build report"
+grep -q "exceeds the Tray Racer's 4096" kd_warnings.txt || fail "k-d capacity warning"
+[[ -s s.scene ]] || fail "the Tray Racer scene file"
+python3 - k.json <<'PY' || fail "k-d statistics JSON"
+import json, sys
+stats = json.load(open(sys.argv[1]))
+assert stats["accel"] == "kdtree" and stats["builder"] == "pbrt"
+assert stats["triangles"] == 1312 and stats["list_entries"] >= stats["triangles"]
+assert stats["sah_seed"] > stats["sah"]  # PBRT's intersection cost is 80
+PY
+"$rtusim" validate s.kd | grep -q "^s.kd: valid k-d image, .* nodes" || fail "validate the k-d image"
+expect_error "the Tray Racer's file holds a k-d tree" \
+  "$rtusim" build --accel bvh --scene sphere --depth 3 --out x.bvh --trayracer-scene x.scene
 
 # A voxel scene's faces: each of the sphere's exposed faces is two triangles.
 "$rtusim" build --accel bvh --scene sphere --depth 4 --out sphere.bvh >sphere.txt
@@ -105,7 +122,7 @@ expect_error "is not a sound BVH image" "$rtusim" validate bad.bvh
 expect_error "an .svo image holds no triangles" "$rtusim" build --accel bvh --svo s.bvh --out x.bvh
 expect_error "is not one of langr|binned|sweep|lbvh" \
   "$rtusim" build --accel bvh --builder nope --scene sphere --out x.bvh
-expect_error "quality figures are written for --accel bvh or bih" \
+expect_error "quality figures are written for --accel bvh, bih or kdtree" \
   "$rtusim" build --scene sphere --depth 3 --out x.svo --stats x.json
 expect_error "beyond the deepest grid" "$rtusim" build --accel bvh --scene sphere --depth 10 --out x.bvh
 expect_error "a triangle image traces ray records: give --rays" \

@@ -12,6 +12,9 @@
 #include "kinds/bvh/langr_builder.h"
 #include "kinds/bvh/lbvh_builder.h"
 #include "kinds/bvh/sah_builder.h"
+#include "kinds/kd/kd_image.h"
+#include "kinds/kd/kd_quality.h"
+#include "kinds/kd/trayracer_scene.h"
 
 namespace rtu {
 namespace {
@@ -44,7 +47,7 @@ AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   const SceneGrid grid(meshBounds(mesh), spec.bihFormat == "vhdl" ? kVhdlFormat : kC99Format);
   const ProjectedMesh projected = projectMesh(mesh, grid);
   const BihBuild tree = buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid));
-  const BihIndexWidth width = spec.bihIndex == "wide" ? BihIndexWidth::Wide : BihIndexWidth::Seed;
+  const BihIndexWidth width = spec.index == "wide" ? BihIndexWidth::Wide : BihIndexWidth::Seed;
   BihImage image = layOut(tree, projected, grid, width);
   AccelBuild build;
   build.words = std::move(image.words);
@@ -54,7 +57,40 @@ AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
                              " triangles have no area once on the grid and are left out");
   build.quality = measureQuality(tree, sceneUpper(grid));
   build.quality.buildSeconds = secondsSince(start);
-  build.description = "BIH (" + spec.bihFormat + " formats, " + spec.bihIndex + " indices)";
+  build.description = "BIH (" + spec.bihFormat + " formats, " + spec.index + " indices)";
+  return build;
+}
+
+// The colour section's one material: a mid grey, not specular.
+const TrayRacerMaterial kGreyMaterial{glm::dvec3(0.8), 0.0};
+
+// Three world-space corners per triangle and each triangle's unit normal, as the Tray Racer's
+// scene file takes them.
+void cornersAndNormals(const TriangleMesh& mesh, std::vector<glm::dvec3>& corners,
+                       std::vector<glm::dvec3>& normals) {
+  for (const auto& triangle : mesh.triangles) {
+    for (uint32_t v : triangle) corners.push_back(mesh.vertices[v]);
+    const glm::dvec3& a = mesh.vertices[triangle[0]];
+    normals.push_back(
+        glm::normalize(glm::cross(mesh.vertices[triangle[1]] - a, mesh.vertices[triangle[2]] - a)));
+  }
+}
+
+AccelBuild kdBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<glm::dvec3> corners, normals;
+  cornersAndNormals(mesh, corners, normals);
+  const PbrtKdParameters parameters;
+  const KdBuild tree = buildPbrtKd(pbrtTriangleBoxes(corners), parameters);
+  const TrayRacerScene scene = makeTrayRacerScene(tree, corners, normals, kGreyMaterial);
+  AccelBuild build;
+  build.words = layOutKd(scene).words;
+  build.sceneFile = writeTrayRacerScene(scene, spec.index == "wide" ? TrayRacerFormat::Wide
+                                                                    : TrayRacerFormat::Narrow);
+  build.warnings = trayRacerCapacityWarnings(scene);
+  build.quality = measureQuality(tree, parameters);
+  build.quality.buildSeconds = secondsSince(start);
+  build.description = "k-d tree (PBRT v1 SAH, " + spec.index + " scene file)";
   return build;
 }
 
@@ -66,8 +102,11 @@ AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec) {
     build = bvhBuild(mesh, spec);
   else if (spec.structure == "bih")
     build = bihBuild(mesh, spec);
+  else if (spec.structure == "kdtree")
+    build = kdBuild(mesh, spec);
   else
-    throw std::invalid_argument("no triangle structure '" + spec.structure + "': bvh or bih");
+    throw std::invalid_argument("no triangle structure '" + spec.structure +
+                                "': bvh, bih or kdtree");
   build.quality.bytes = build.words.size() * sizeof(uint32_t);
   return build;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // `rtusim build` for the triangle structures (issue 27): the scene's triangles built into a BVH
-// (seed 003, any of its builders) or a BIH (seed 004, on its n-bit grid), laid out as the memory
-// image a core reads, with the structure's quality figures.
+// (seed 003, any of its builders), a BIH (seed 004, on its n-bit grid) or a k-d tree (seed 001,
+// PBRT v1's SAH build), laid out as the memory image a core reads, with the structure's quality
+// figures; the k-d tree also as the Tray Racer's own scene file.
 
 #include <string>
 #include <vector>
@@ -14,13 +15,14 @@ namespace rtu {
 
 struct AccelBuild {
   std::vector<uint32_t> words;        // the memory image, its header first
+  std::vector<uint8_t> sceneFile;     // kdtree: the Tray Racer's scene file
   AccelQuality quality;               // bytes and build_seconds included
   std::string description;            // "binned BVH", "BIH (c99 formats, seed indices)"
   std::vector<std::string> warnings;  // a seed's capacities exceeded
 };
 
-// Throws std::invalid_argument for an accel other than bvh or bih, and what the builders and
-// layouts throw (a capacity a format cannot hold names it).
+// Throws std::invalid_argument for an accel other than bvh, bih or kdtree, and what the builders
+// and layouts throw (a capacity a format cannot hold names it).
 AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec);
 
 }  // namespace rtu

@@ -19,6 +19,7 @@ namespace {
 struct BuildOptions {
   std::string out;
   std::string stats;
+  std::string trayRacerScene;
   bool modelHeader = false;
   ModelPlacement placement;
   glm::dvec3 rotationDegrees{0.0};
@@ -56,12 +57,21 @@ void writeStats(const std::string& path, const RunConfig& config, const Triangle
   nlohmann::json stats = build.quality;
   stats["accel"] = config.accel.structure;
   if (config.accel.structure == "bvh") stats["builder"] = config.accel.builder;
+  if (config.accel.structure == "kdtree") stats["builder"] = "pbrt";
   stats["scene"] = scene.name;
   stats["dropped_triangles"] = scene.dropped;
   std::ofstream out(path);
   out << stats.dump(2) << "\n";
   out.close();
   if (!out) throw std::runtime_error("cannot write the statistics '" + path + "'");
+}
+
+void writeByteFile(const std::string& path, const std::vector<uint8_t>& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {
@@ -75,6 +85,7 @@ void buildTriangleStructure(const RunConfig& config, const BuildOptions& options
   }
   const AccelBuild build = buildAccel(scene.mesh, config.accel);
   writeWordFile(options.out, build.words);
+  if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);
   if (!options.stats.empty()) writeStats(options.stats, config, scene, build);
   std::cout << scene.name << ": " << scene.mesh.triangles.size() << " triangles";
   if (scene.dropped) std::cout << " (" << scene.dropped << " degenerate or duplicate dropped)";
@@ -90,11 +101,15 @@ void addBuildCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "build",
       "build a memory image: an SVO (--accel svo) from a procedural scene, a mesh or a .binvox "
-      "file, or a BVH or BIH (--accel bvh|bih) over a mesh's triangles or a voxel scene's faces");
+      "file, or a BVH, BIH or k-d tree (--accel bvh|bih|kdtree) over a mesh's triangles or a voxel "
+      "scene's faces");
   auto request = addConfigOptions(*command, kUseScene | kUseAccel);
-  command->add_option("--out", options->out, "output image (.svo, .bvh or .bih)")->required();
+  command->add_option("--out", options->out, "output image (.svo, .bvh, .bih or .kd)")->required();
   command->add_option("--stats", options->stats,
-                      "BVH or BIH: write the quality figures as JSON (nodes, leaves, SAH, ...)");
+                      "BVH, BIH or k-d tree: write the quality figures as JSON (nodes, leaves, "
+                      "SAH, ...)");
+  command->add_option("--trayracer-scene", options->trayRacerScene,
+                      "k-d tree: also write the Tray Racer's own scene file (seed 001's format)");
   CLI::Option* header = command->add_flag(
       "--model-header", options->modelHeader,
       "SVO: append an animated model's header (16 words) after the image and print its word "
@@ -103,10 +118,17 @@ void addBuildCommand(CLI::App& app) {
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& config = configuration.values();
-    checkOutputPaths({{"--out", options->out}, {"--stats", options->stats}}, inputPaths(config));
+    checkOutputPaths({{"--out", options->out},
+                      {"--stats", options->stats},
+                      {"--trayracer-scene", options->trayRacerScene}},
+                     inputPaths(config));
+    if (!options->trayRacerScene.empty() && config.accel.structure != "kdtree")
+      throw std::invalid_argument("--trayracer-scene: the Tray Racer's file holds a k-d tree "
+                                  "(--accel kdtree)");
     if (config.accel.structure == "svo") {
       if (!options->stats.empty())
-        throw std::invalid_argument("--stats: quality figures are written for --accel bvh or bih");
+        throw std::invalid_argument(
+            "--stats: quality figures are written for --accel bvh, bih or kdtree");
       buildSvo(config, *options);
     } else {
       if (options->modelHeader)

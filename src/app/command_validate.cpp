@@ -9,6 +9,7 @@
 #include "kinds/bih/bih_validator.h"
 #include "kinds/bvh/bvh_file.h"
 #include "kinds/bvh/bvh_validator.h"
+#include "kinds/kd/kd_image.h"
 #include "kinds/svo/svo_image.h"
 #include "kinds/svo/svo_validator.h"
 
@@ -52,13 +53,24 @@ void validateBihFile(const ValidateOptions& options, const std::vector<uint32_t>
             << words.size() * sizeof(uint32_t) << " bytes\n";
 }
 
+void validateKdFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
+  const std::vector<ImageProblem> problems = validateKd(words);
+  if (!problems.empty())
+    throw std::runtime_error(describeImageProblems("'" + options.file + "'", "k-d", problems, 10));
+  const KdHeader header = decodeKdHeader(words.data());
+  std::cout << options.file << ": valid k-d image, " << header.nodeCount << " nodes, "
+            << header.listCount << " list entries, " << header.uttmCount << " triangles, "
+            << words.size() * sizeof(uint32_t) << " bytes\n";
+}
+
 }  // namespace
 
 void addValidateCommand(CLI::App& app) {
   auto options = std::make_shared<ValidateOptions>();
   CLI::App* command = app.add_subcommand(
-      "validate", "check a memory image: an SVO, or a BVH or BIH (recognised by its header)");
-  command->add_option("file", options->file, ".svo, .bvh or .bih file")
+      "validate",
+      "check a memory image: an SVO, or a BVH, BIH or k-d tree (recognised by its header)");
+  command->add_option("file", options->file, ".svo, .bvh, .bih or .kd file")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--root", options->root, "SVO: word address of the root descriptor")
@@ -72,6 +84,8 @@ void addValidateCommand(CLI::App& app) {
       validateBvhFile(*options, words);
     else if (looksLikeBihImage(words))
       validateBihFile(*options, words);
+    else if (!words.empty() && words[0] == kKdMagic)
+      validateKdFile(*options, words);
     else
       validateSvoFile(*options, std::move(words));
   });

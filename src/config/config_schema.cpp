@@ -225,9 +225,9 @@ std::function<std::string(const RunConfig&)> ignoredUnlessAccel(const std::strin
 void addAccelSettings(std::vector<Setting>& schema) {
   using C = RunConfig;
   schema.push_back(choice(
-      "accel", "--accel", {"svo", "bvh", "bih"}, kUseAccel,
-      "the structure to build: svo (the thesis' octree), bvh (seed 003) or bih (seed 004) over "
-      "the scene's triangles (a voxel scene's faces)",
+      "accel", "--accel", {"svo", "bvh", "bih", "kdtree"}, kUseAccel,
+      "the structure to build: svo (the thesis' octree), bvh (seed 003), bih (seed 004) or kdtree "
+      "(seed 001) over the scene's triangles (a voxel scene's faces)",
       [](C& c) -> std::string& { return c.accel.structure; }, sameText, sameText));
   schema.push_back(choice(
       "accel.builder", "--builder", {"langr", "binned", "sweep", "lbvh"}, kUseAccel,
@@ -247,11 +247,15 @@ void addAccelSettings(std::vector<Setting>& schema) {
       [](C& c) -> std::string& { return c.accel.bihFormat; }, sameText, sameText));
   schema.back().ignoredBecause = ignoredUnlessAccel("bih");
   schema.push_back(choice(
-      "accel.bih_index", "--bih-index", {"seed", "wide"}, kUseAccel,
-      "BIH node indices: the seed's 10 bits (at most 1,024 nodes and list entries) or wide (29 "
-      "bits)",
-      [](C& c) -> std::string& { return c.accel.bihIndex; }, sameText, sameText));
-  schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+      "accel.index", "--index", {"seed", "wide"}, kUseAccel,
+      "index widths: the seed's (BIH: 10-bit node indices; k-d tree: the Tray Racer's 48-bit "
+      "nodes and 16-bit ids) or wide (BIH: 29 bits; k-d tree: the file's wide variant)",
+      [](C& c) -> std::string& { return c.accel.index; }, sameText, sameText));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "bih" || c.accel.structure == "kdtree"
+               ? std::string()
+               : "accel is " + c.accel.structure;
+  };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
                         [](C& c) -> std::string& { return c.accel.file; }));

@@ -14,13 +14,13 @@
 namespace rtu {
 
 // The acceleration structure `build` makes, and how (issue 27): the thesis' octree, seed 003's
-// BVH or seed 004's BIH over the scene's triangles.
+// BVH, seed 004's BIH or seed 001's k-d tree over the scene's triangles.
 struct AccelSpec {
-  std::string structure = "svo";   // svo | bvh | bih
+  std::string structure = "svo";   // svo | bvh | bih | kdtree
   std::string builder = "binned";  // bvh: langr | binned | sweep | lbvh
   bool dropBadTriangles = false;   // degenerate and duplicate triangles dropped, not refused
   std::string bihFormat = "c99";   // bih: the seed's c99 or vhdl number formats
-  std::string bihIndex = "seed";   // bih: the seed's 10-bit node indices, or wide (29 bits)
+  std::string index = "seed";      // bih, kdtree: the seed's index widths, or wide
   std::string file;                // a built triangle structure's image to trace (.bvh)
   std::string triangleTest = "watertight";  // bvh: watertight | moller-trumbore
 };
