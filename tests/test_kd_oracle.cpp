@@ -177,11 +177,11 @@ class KdOracleCheck {
  private:
   void classify(const KdResult& result, const std::optional<OracleHit>& oracle, const Ray& ray,
                 Agreement& agreement) const {
-    if (result.hit == oracle.has_value() && (!oracle || result.triangle == oracle->triangle)) {
+    if (result.hit == oracle.has_value() && (!oracle || result.primitive == oracle->triangle)) {
       ++agreement.same;
     } else if (result.hit && oracle && std::abs(result.t - oracle->t) <= 4 * ulp(oracle->t)) {
       ++agreement.ties;
-    } else if ((result.hit && nearEdge(result.triangle, ray)) ||
+    } else if ((result.hit && nearEdge(result.primitive, ray)) ||
                (oracle && nearEdge(oracle->triangle, ray))) {
       ++agreement.explained;
     } else if (oracle && losses_[oracle->triangle] == KdLoss::Unlisted) {
@@ -274,7 +274,7 @@ TEST_CASE("k-d short stack: 1 entry or 64, the same hits, more restarts", "[kd]"
     KdResult a, b;
     shallow.run(0, check.job(ray), a);
     full.run(0, check.job(ray), b);
-    differ += a.hit != b.hit || (a.hit && (a.triangle != b.triangle || a.t != b.t));
+    differ += a.hit != b.hit || (a.hit && (a.primitive != b.primitive || a.t != b.t));
     restartsShallow += a.counts.restarts;
     restartsFull += b.counts.restarts;
     droppedFull += b.counts.dropped;

@@ -117,7 +117,7 @@ TEST_CASE("k-d traversal: a ray's states, addresses and counters by hand", "[kd]
                                                             uttmReads(3, 2)});
   CHECK(t.addresses == addresses);
   CHECK(t.traversal.hit());
-  CHECK(t.traversal.triangle() == 2);
+  CHECK(t.traversal.primitive() == 2);
   CHECK(t.traversal.t() == 7);
   CHECK(t.traversal.u() == 0.375f);
   CHECK(t.traversal.v() == 0.375f);
@@ -145,7 +145,7 @@ TEST_CASE("k-d traversal: a shallow stack loses an entry and restarts", "[kd]") 
                                {S::Pop, S::Node, S::Trav, S::Node},
                                kTriangle}));
   CHECK(t.traversal.hit());
-  CHECK(t.traversal.triangle() == 2);
+  CHECK(t.traversal.primitive() == 2);
   CHECK(t.traversal.t() == 7);
   CHECK(t.traversal.cost() == 32);
   const KdRayCounts c = t.traversal.counts();
@@ -170,7 +170,7 @@ TEST_CASE("k-d traversal: a definite miss, a tie to the later triangle, a box mi
   CHECK(tie.states ==
         joined<S>({{S::Sint, S::Node, S::Trav, S::Node, S::Trav, S::Node}, kTriangle, kTriangle}));
   CHECK(tie.traversal.hit());
-  CHECK(tie.traversal.triangle() == 3);
+  CHECK(tie.traversal.primitive() == 3);
   CHECK(tie.traversal.t() == 0.5f);
   CHECK(tie.traversal.u() == 0.25f);
   CHECK(tie.traversal.v() == 0.25f);
@@ -189,7 +189,7 @@ TEST_CASE("k-d kind: the golden shell writes the traversal's result", "[kd]") {
             result);
   CHECK(result.idWord == 7);
   CHECK(result.hit);
-  CHECK(result.triangle == 2);
+  CHECK(result.primitive == 2);
   CHECK(result.t == 7);
   CHECK(result.cost == 30);
   CHECK(result.counts.leaves == 3);

@@ -8,6 +8,7 @@
 
 #include "kinds/bih/bih_intersectors.h"
 #include "kinds/bih/bih_traversal.h"
+#include "rtu/triangle_result.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
@@ -18,14 +19,7 @@ struct BihConfig {
 
 // One ray's outcome: the nearest hit (t in grid units, the source triangle's id, the seed's u and
 // v), its cost in states, and what it counted.
-struct BihResult {
-  uint32_t idWord = 0;
-  bool hit = false;
-  int64_t t = 0, u = 0, v = 0;
-  uint32_t primitive = 0;
-  uint32_t cost = 0;
-  BihRayCounts counts;
-};
+using BihResult = TriangleResult<int64_t, BihRayCounts>;
 
 template <class Intersector>
 struct BihKind {
@@ -40,12 +34,7 @@ struct BihKind {
   static Behaviour behaviour(const Config& config) { return Behaviour(config.earlyOut); }
   static void start(Behaviour& traversal, const Job& job) { traversal.start(job); }
   static void writeResult(uint32_t idWord, const Behaviour& traversal, Result& result) {
-    result = Result{idWord, traversal.hit(), 0, 0, 0, 0, traversal.cost(), traversal.counts()};
-    if (!result.hit) return;
-    result.t = traversal.t();
-    result.u = traversal.u();
-    result.v = traversal.v();
-    result.primitive = traversal.primitive();
+    writeTriangleResult(idWord, traversal, result);
   }
 };
 

@@ -9,26 +9,20 @@
 #include "kinds/bvh/bvh_intersectors.h"
 #include "kinds/bvh/bvh_traversal.h"
 #include "kinds/bvh/langr_node.h"
+#include "rtu/triangle_result.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
 
 struct BvhConfig {
-  int stackDepth =
-      64;  // entries; the seed's build stack has 64 (Alg. 3), its traversal's is unstated
+  // Entries: the seed's build stack has 64 (Alg. 3), its traversal's depth is unstated.
+  int stackDepth = 64;
   ChildOrder childOrder = ChildOrder::Entry;
 };
 
 // One ray's outcome: the nearest hit (t along the ray's direction, the source triangle's id and
 // barycentrics as geometry/triangle_tests.h), its cost in states, and what it counted.
-struct BvhResult {
-  uint32_t idWord = 0;
-  bool hit = false;
-  float t = 0, u = 0, v = 0;
-  uint32_t primitive = 0;
-  uint32_t cost = 0;
-  BvhRayCounts counts;
-};
+using BvhResult = TriangleResult<float, BvhRayCounts>;
 
 template <class Intersector>
 struct BvhKind {
@@ -45,12 +39,7 @@ struct BvhKind {
   }
   static void start(Behaviour& traversal, const Job& job) { traversal.start(job); }
   static void writeResult(uint32_t idWord, const Behaviour& traversal, Result& result) {
-    result = Result{idWord, traversal.hit(), 0, 0, 0, 0, traversal.cost(), traversal.counts()};
-    if (!result.hit) return;
-    result.t = traversal.t();
-    result.u = traversal.u();
-    result.v = traversal.v();
-    result.primitive = traversal.primitive();
+    writeTriangleResult(idWord, traversal, result);
   }
 };
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "kinds/kd/kd_traversal.h"
+#include "rtu/triangle_result.h"
 #include "rtu/word_memory.h"
 
 namespace rtu {
@@ -15,14 +16,7 @@ namespace rtu {
 // scene's order and the seed's barycentrics: u weighs the triangle's A, v its B, so rtusim's
 // (u, v) of geometry/triangle_tests.h are (v, 1 - u - v)), its cost in states, and what it
 // counted.
-struct KdResult {
-  uint32_t idWord = 0;
-  bool hit = false;
-  float t = 0, u = 0, v = 0;
-  uint32_t triangle = 0;
-  uint32_t cost = 0;
-  KdRayCounts counts;
-};
+using KdResult = TriangleResult<float, KdRayCounts>;
 
 struct KdKind {
   static constexpr const char* kName = "kd";
@@ -36,12 +30,7 @@ struct KdKind {
   static Behaviour behaviour(const Config& config) { return Behaviour(config); }
   static void start(Behaviour& traversal, const Job& job) { traversal.start(job); }
   static void writeResult(uint32_t idWord, const Behaviour& traversal, Result& result) {
-    result = Result{idWord, traversal.hit(), 0, 0, 0, 0, traversal.cost(), traversal.counts()};
-    if (!result.hit) return;
-    result.t = traversal.t();
-    result.u = traversal.u();
-    result.v = traversal.v();
-    result.triangle = traversal.triangle();
+    writeTriangleResult(idWord, traversal, result);
   }
 };
 

@@ -145,7 +145,7 @@ class KdTraversal {
   float t() const { return tCur_; }
   float u() const { return uCur_; }  // the seed's: u weighs the triangle's A, v its B
   float v() const { return vCur_; }
-  uint32_t triangle() const { return triCur_; }
+  uint32_t primitive() const { return triCur_; }  // the hit triangle's id
   uint32_t cost() const { return cost_; }
   KdRayCounts counts() const {
     KdRayCounts counts = counts_;
