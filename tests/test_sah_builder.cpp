@@ -108,3 +108,24 @@ TEST_CASE("SAH builders on real meshes: sound images, leaves of 1-8, SAH below l
 }
 
 }  // namespace rtu
+
+namespace rtu {
+
+TEST_CASE("SAH builders: centres a subnormal apart are still binned", "[bvh][sah_builder]") {
+  // Nine triangles in the planes x = t 2^-1070 (t = 0..8): the centres' extent 2^-1067 makes
+  // bins / extent overflow to infinity; centre 0 is bin 0, the others the last bin, so the root
+  // (9 > 8 triangles) splits 1 | 8 on x.
+  TriangleMesh mesh;
+  for (uint32_t t = 0; t < 9; ++t) {
+    const double x = 0x1p-1070 * t;
+    mesh.vertices.insert(mesh.vertices.end(), {{x, 0, 0}, {x, 1, 0}, {x, 0, 1}});
+    mesh.triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  const SahBuild build = buildSah(mesh);
+  REQUIRE(build.tree.nodes.size() >= 3);
+  CHECK(build.tree.nodes[1].count == 1);
+  CHECK(build.tree.nodes[2].count == 8);
+  CHECK(build.forcedMedians == 0);
+}
+
+}  // namespace rtu

@@ -90,10 +90,13 @@ class SahBuilder {
     if (config_.search == SahSplitSearch::Binned) {
       const uint32_t bins = binsFor(node.count);
       const double lower = centres.lower[axis], extent = centres.upper[axis] - lower;
-      const double scale = extent > 0 ? bins / extent : 0;  // bins per unit of the centres' extent
+      // Bins per unit of the centres' extent: infinite for an extent below about 1e-307, so an
+      // offset of 0 is bin 0 by itself and anything at or past `bins` the last bin.
+      const double scale = extent > 0 ? bins / extent : 0;
       for (uint32_t i = 0; i < node.count; ++i) {
-        const double scaled = (primitives_.centres[refs[node.first + i]][axis] - lower) * scale;
-        out[i] = std::min(static_cast<uint32_t>(scaled), bins - 1);
+        const double offset = primitives_.centres[refs[node.first + i]][axis] - lower;
+        const double scaled = offset > 0 ? offset * scale : 0.0;
+        out[i] = scaled < bins ? static_cast<uint32_t>(scaled) : bins - 1;
       }
       return;
     }
