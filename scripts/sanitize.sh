@@ -7,11 +7,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # The packages are those of scripts/setup.sh; .ci/run runs test.sh, which installs them, first.
 
-flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,float-cast-overflow"
+# Build type "Sanitize" carries these flags alone: an empty build type fell back to the
+# project's Release default, which appended -O3 -DNDEBUG (91 s instead of 36 s for one command
+# file). -g1 (line tables) is enough for the sanitizers' stack traces and compiles faster than -g.
+flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined,float-cast-overflow"
 flags+=" -fno-sanitize-recover=all"
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE= -DCMAKE_CXX_FLAGS="$flags" \
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
+  -DCMAKE_C_FLAGS_SANITIZE="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" -DRTUSIM_BENCH=OFF \
