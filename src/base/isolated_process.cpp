@@ -56,8 +56,18 @@ void setLimit(int resource, rlim_t soft, rlim_t hard) {
   ::setrlimit(resource, &limit);  // best effort: a lower hard limit already in place still holds
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer's own report of a failed allocation needs address space of its own: with only
+// the limit's bytes left it died half-way ("Failed to mmap", exit status 1) before the report
+// callback could name the cause. Its redzones and quarantine inflate the work's usage anyway.
+constexpr uint64_t kSanitizerHeadroomBytes = uint64_t{256} << 20;
+#else
+constexpr uint64_t kSanitizerHeadroomBytes = 0;
+#endif
+
 void limitChild(const ProcessLimits& limits) {
-  setLimit(RLIMIT_AS, currentAddressSpaceBytes() + limits.memoryBytes, RLIM_INFINITY);
+  setLimit(RLIMIT_AS, currentAddressSpaceBytes() + limits.memoryBytes + kSanitizerHeadroomBytes,
+           RLIM_INFINITY);
   const auto cpuSeconds = static_cast<rlim_t>(std::ceil(limits.seconds));
   setLimit(RLIMIT_CPU, cpuSeconds, cpuSeconds + 1);  // SIGXCPU, then SIGKILL a second later
   setLimit(RLIMIT_CORE, 0, 0);  // a crash on a malformed input is expected: no core files
