@@ -97,6 +97,7 @@ std::string sourceName(ConfigSource source) {
     case ConfigSource::Preset: return "preset";
     case ConfigSource::File: return "configuration file";
     case ConfigSource::CommandLine: return "command line";
+    case ConfigSource::Sweep: return "sweep";
   }
   return "?";
 }
@@ -160,6 +161,12 @@ ConfigSource Configuration::source(const std::string& key) const {
   return found == sources_.end() ? ConfigSource::Default : found->second;
 }
 
+std::string whyIneffective(const Setting& setting, const RunConfig& effective, unsigned uses,
+                           const std::string& command) {
+  if (!(setting.uses & uses)) return "rtusim " + command + " does not use it";
+  return setting.ignoredBecause ? setting.ignoredBecause(effective) : "";
+}
+
 void Configuration::checkApplicable(unsigned uses, const std::string& command,
                                     const std::function<void(RunConfig&)>& commandSets) const {
   const RunConfig defaults;
@@ -170,11 +177,7 @@ void Configuration::checkApplicable(unsigned uses, const std::string& command,
     if (from != ConfigSource::File && from != ConfigSource::CommandLine) continue;
     // A file that states a default (a dumped configuration states them all) changes nothing.
     if (from == ConfigSource::File && setting.get(values_) == setting.get(defaults)) continue;
-    std::string reason;
-    if (!(setting.uses & uses))
-      reason = "rtusim " + command + " does not use it";
-    else if (setting.ignoredBecause)
-      reason = setting.ignoredBecause(effective);
+    const std::string reason = whyIneffective(setting, effective, uses, command);
     if (reason.empty()) continue;
     const std::string message =
         setting.key + " (" + sourceName(from) + ") has no effect: " + reason;

@@ -15,7 +15,13 @@
 
 namespace rtu {
 
-enum class ConfigSource { Default, Preset, File, CommandLine };
+// Sweep: a value a sweep's grid or list gives one of its configurations.
+enum class ConfigSource { Default, Preset, File, CommandLine, Sweep };
+
+// Why `setting` has no effect for rtusim `command`, which uses the settings of `uses`
+// (SettingUse bits), in the configuration `effective`; empty when it has one.
+std::string whyIneffective(const Setting& setting, const RunConfig& effective, unsigned uses,
+                           const std::string& command);
 
 class Configuration {
  public:

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Issue 31, "nothing silent, one meaning per name": sweep keys without effect, sweeps whose rows
+# all fail, invalid configurations and resume, the worker-count option, unique CSV columns.
+# Usage: exploration_checks.sh path/to/rtusim
+set -euo pipefail
+rtusim=$1
+source "$(dirname "${BASH_SOURCE[0]}")/shell_test_helpers.sh"
+python=/usr/bin/python3
+[[ -x $python ]] || python=python3
+small=(--scene sphere --depth 4 --width 8 --height 8)
+
+# A swept key without effect in every configuration is refused before any row runs; without
+# effect in some of them it is a warning naming how many.
+expect_error "memory.dram.latency (sweep) has no effect in any configuration: memory.kind is ideal" \
+  "$rtusim" sweep "${small[@]}" --grid memory.dram.latency=10,20 --out ideal.csv
+[[ ! -e ideal.csv ]] || fail "the refused sweep wrote rows"
+expect_error "accel.builder (sweep) has no effect in any configuration: rtusim sweep does not use it" \
+  "$rtusim" sweep "${small[@]}" --grid accel.builder=binned,sweep --out accel.csv
+"$rtusim" sweep "${small[@]}" --grid memory.kind=ideal,cached --grid memory.dram.latency=10,20 \
+  -j 1 --out mixed.csv >mixed.txt 2>mixed.err
+grep -q "memory.dram.latency (sweep) has no effect in 2 of 4 configurations" mixed.err \
+  || fail "no warning for a key without effect in some configurations"
+
+# Every row failed: a non-zero exit with the first error. Such a row runs again on resume.
+echo junk >broken.svo
+expect_error "every row of the sweep failed, the first: scene: SVO image 'broken.svo'" \
+  "$rtusim" sweep --svo broken.svo --width 8 --height 8 --grid cores=1,2 -j 1 --out broken.csv
+grep -q '"status":"failed"' broken.jsonl || fail "failed rows not written"
+"$rtusim" build --scene sphere --depth 4 --out broken.svo >/dev/null
+"$rtusim" sweep --svo broken.svo --width 8 --height 8 --grid cores=1,2 -j 1 --out broken.csv \
+  >fixed.txt
+grep -q "0 already done, 2 to run" fixed.txt || fail "failed rows not run again"
+[[ $(grep -c '"status":"ok"' broken.jsonl) -eq 2 ]] || fail "rerun rows not ok"
+
+# An invalid configuration is found before any worker starts, its row marked invalid, the others
+# run (exit 0, the first error on standard error); on resume it is kept, not run again.
+"$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 --out some.csv \
+  >some.txt 2>some.err
+grep -q '"status":"invalid","error":"L1 cache: 16 bytes do not hold one 32-byte line"' some.jsonl \
+  || fail "invalid row without its error"
+grep -q "1 rows failed, the first: L1 cache: 16 bytes" some.err || fail "first error not printed"
+"$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 --out some.csv \
+  >again.txt
+grep -q "2 already done, 0 to run" again.txt || fail "an invalid row ran again"
+expect_error "every row of the sweep failed, the first: L1 cache: 16 bytes" \
+  "$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,17 --out none.csv
+
+# Workers are -j/--workers in fps, sweep and animate; --jobs still counts them, deprecated.
+"$rtusim" sweep "${small[@]}" --grid cores=1,2 --workers 2 --out w.csv >/dev/null 2>w.err
+! grep -q deprecated w.err || fail "--workers warned"
+"$rtusim" sweep "${small[@]}" --grid cores=1,2 --jobs 2 --out j.csv >j.txt 2>j.err
+grep -q "sweep --jobs is deprecated: use -j/--workers" j.err || fail "--jobs without its warning"
+grep -q "to run with 2 workers" j.txt || fail "--jobs does not set the workers"
+"$rtusim" fps --scene sphere --depth 4 --resolutions 8x8 --cores 1 --jobs 1 >/dev/null 2>fps.err
+grep -q "fps --jobs is deprecated" fps.err || fail "fps --jobs without its warning"
+expect_error "--workers: Value 0 not in range" "$rtusim" fps --scene sphere --depth 4 -j 0
+
+# Every CSV column name is unique (pandas reads them): the configuration's ray-buffer file and the
+# statistic counting rays were both `rays`.
+for csv in w.csv; do
+  "$python" - "$csv" <<'PY' || fail "$csv has duplicate column names"
+import csv, sys
+header = next(csv.reader(open(sys.argv[1])))
+duplicates = {name for name in header if header.count(name) > 1}
+assert not duplicates, duplicates
+assert "config.rays" in header and "rays" in header, header
+PY
+done
+echo "exploration checks: ok"
