@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Issue 31, "nothing silent, one meaning per name": sweep keys without effect, sweeps whose rows
-# all fail, invalid configurations and resume, the worker-count option, unique CSV columns.
+# all fail, invalid configurations and resume, sizes in kB and KiB, statistics files as
+# configurations, precision's image folder, the worker-count option, unique CSV columns.
 # Usage: exploration_checks.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -44,6 +45,34 @@ grep -q "1 rows failed, the first: L1 cache: 16 bytes" some.err || fail "first e
 grep -q "2 already done, 0 to run" again.txt || fail "an invalid row ran again"
 expect_error "every row of the sweep failed, the first: L1 cache: 16 bytes" \
   "$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,17 --out none.csv
+
+# 4KB is 4000 bytes, 4KiB 4096: a cache size that is not ways x line x a power of two of sets is
+# refused naming the nearest valid sizes, a line that is not a power of two likewise.
+expect_error "L1 cache: size 4000 is not a multiple of 4 ways x 32-byte line (128 bytes); nearest valid sizes: 2048 or 4096 bytes" \
+  "$rtusim" render "${small[@]}" --memory cached --l1-size 4KB
+expect_error "L1 cache: 64000-byte line is not a power of two; nearest valid sizes: 32768 or 65536 bytes" \
+  "$rtusim" render "${small[@]}" --memory cached --l1-line 64KB --l1-size 1MiB
+"$rtusim" render "${small[@]}" --memory cached --l1-size 4KiB >/dev/null || fail "4KiB refused"
+
+# A statistics file reruns its run with --config (its "config" object).
+"$rtusim" render "${small[@]}" --memory cached --cores 2 --stats first.json >/dev/null
+"$rtusim" render --config first.json --stats again.json >/dev/null 2>again.err
+[[ ! -s again.err ]] || fail "rerun from a statistics file warned: $(cat again.err)"
+"$python" - first.json again.json <<'PY' || fail "the rerun from a statistics file differs"
+import json, sys
+first, again = (json.load(open(path)) for path in sys.argv[1:])
+for run in (first, again):
+    run["statistics"].pop("simulation")
+assert first["config"] == again["config"] and first["statistics"] == again["statistics"]
+assert again["config"]["cores"] == 2 and again["config"]["memory.kind"] == "cached"
+PY
+
+# precision --images creates its folder, as plot and animate do; a file in its place is an error.
+"$rtusim" precision "${small[@]}" --formats Q16.16 --images new/images >/dev/null
+[[ -s new/images/precision_32_16.png ]] || fail "precision --images did not create its folder"
+touch taken
+expect_error "--images 'taken': cannot create the folder" \
+  "$rtusim" precision "${small[@]}" --formats Q16.16 --images taken
 
 # Workers are -j/--workers in fps, sweep and animate; --jobs still counts them, deprecated.
 "$rtusim" sweep "${small[@]}" --grid cores=1,2 --workers 2 --out w.csv >/dev/null 2>w.err

@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/frame_images.h"
+#include "app/output_paths.h"
 #include "app/schema_flags.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
@@ -126,14 +127,15 @@ void addPrecisionCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per format");
   command->add_option("--images", options->imageDirectory,
-                      "write a difference image per format into this directory "
-                      "(precision_TOTAL_FRACTION.png)");
+                      "write a difference image per format into this folder, created if "
+                      "missing (precision_TOTAL_FRACTION.png)");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& frame = configuration.values();
     std::vector<FixedFormat> formats;
     for (const std::string& text : options->formats) formats.push_back(parseFixedFormat(text));
     frame.camera.validate();
+    if (!options->imageDirectory.empty()) createOutputFolder({"--images", options->imageDirectory});
     const Scene scene = loadScene(frame.scene);
     PrecisionStudy study;
     study.rays = frameRays(frame.camera);

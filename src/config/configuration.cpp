@@ -139,7 +139,12 @@ void Configuration::loadText(const std::string& text, const std::string& format,
   std::vector<std::pair<std::string, std::string>> entries;
   try {
     if (format == "json") {
-      flattenJson(nlohmann::json::parse(text), "", entries);
+      const nlohmann::json json = nlohmann::json::parse(text);
+      // A statistics file (--stats of render or replay, a sweep row) holds its run's configuration
+      // as its "config" object, which no setting's key starts: it reruns that run.
+      const bool statistics =
+          json.is_object() && json.contains("config") && json["config"].is_object();
+      flattenJson(statistics ? json["config"] : json, "", entries);
     } else {
       flattenToml(toml::parse(text, origin), "", entries);
     }

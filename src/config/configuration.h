@@ -33,7 +33,8 @@ class Configuration {
   // "key=value".
   void setAssignment(const std::string& assignment, ConfigSource source);
   void applyPreset(const std::string& name);
-  // .toml or .json, nested tables or dotted keys; errors name the file.
+  // .toml or .json, nested tables or dotted keys; errors name the file. A .json statistics file
+  // (`--stats`) is read as its "config" object, the configuration of its run.
   void loadFile(const std::string& path);
   void loadText(const std::string& text, const std::string& format, const std::string& origin,
                 ConfigSource source);
