@@ -23,6 +23,12 @@ std::string sceneKey(const SceneSpec& spec) {
          std::to_string(spec.root) + "|" + std::to_string(spec.maxDepth);
 }
 
+// A row's work for the progress line's ETA: the rays of its frame.
+double rowRays(const Configuration& configuration) {
+  const Camera& camera = configuration.values().camera;
+  return static_cast<double>(camera.width) * static_cast<double>(camera.height);
+}
+
 }  // namespace
 
 void SceneCache::build(const std::vector<Configuration>& configurations) {
@@ -181,7 +187,11 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
       });
   SceneCache scenes;
   std::vector<Configuration> used;
-  for (size_t row : valid) used.push_back(configurations[row]);
+  double rays = 0, raysDone = 0;  // the ETA weighs rows by rays: 1920x1080 is 36 times 320x180
+  for (size_t row : valid) {
+    used.push_back(configurations[row]);
+    rays += rowRays(configurations[row]);
+  }
   scenes.build(used);
   Progress progress(label, rows.size());
   const auto work = [&](size_t row) {
@@ -198,7 +208,8 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
     }
     failures += result["status"] != "ok";
     done(row, result);
-    progress.update(++finished, failures);
+    raysDone += rowRays(configurations[row]);
+    progress.update(++finished, failures, raysDone / rays);
   });
   progress.finish();
   return failures;
