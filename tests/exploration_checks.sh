@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 31, "nothing silent, one meaning per name": sweep keys without effect, sweeps whose rows
 # all fail, invalid configurations and resume, sizes in kB and KiB, statistics files as
-# configurations, precision's image folder, the worker-count option, unique CSV columns.
+# configurations, precision's image folder and formats, the worker-count option, unique CSV
+# columns.
 # Usage: exploration_checks.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -69,10 +70,16 @@ PY
 
 # precision --images creates its folder, as plot and animate do; a file in its place is an error.
 "$rtusim" precision "${small[@]}" --formats Q16.16 --images new/images >/dev/null
-[[ -s new/images/precision_32_16.png ]] || fail "precision --images did not create its folder"
+[[ -s new/images/precision_Q16_16.png ]] || fail "precision --images did not create its folder"
 touch taken
 expect_error "--images 'taken': cannot create the folder" \
   "$rtusim" precision "${small[@]}" --formats Q16.16 --images taken
+
+# Formats in one notation, QI.F; a bare A.B only where one reading is a format.
+expect_error "format '20.12' is ambiguous: write Q8.12 (20 bits) or Q20.12 (32 bits)" \
+  "$rtusim" precision "${small[@]}" --formats 20.12
+"$rtusim" precision "${small[@]}" --formats 16.16 | grep -q "^Q16.16 (32 bits)" \
+  || fail "16.16 is not read as Q16.16"
 
 # Workers are -j/--workers in fps, sweep and animate; --jobs still counts them, deprecated.
 "$rtusim" sweep "${small[@]}" --grid cores=1,2 --workers 2 --out w.csv >/dev/null 2>w.err

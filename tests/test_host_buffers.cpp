@@ -97,8 +97,9 @@ TEST_CASE("Formats over 32 bits get 12-word result records; invalid ones are ref
   CHECK(resultRecordWords(FixedFormat{33, 16}) == 12);
   CHECK(resultRecordWords(FixedFormat{48, 32}) == 12);
   CHECK_THROWS_WITH(resultRecordWords(FixedFormat{48, 47}),
-                    Catch::Contains("format 48.47") && Catch::Contains("fraction bits"));
-  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{64, 16}), Catch::Contains("format 64.16"));
+                    Catch::Contains("format Q1.47 (48 bits)") && Catch::Contains("fraction bits"));
+  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{64, 16}),
+                    Catch::Contains("format Q48.16 (64 bits)"));
 }
 
 TEST_CASE("Wide result records hold 48-bit t-values and normals, low word first", "[buffers]") {
