@@ -90,7 +90,7 @@ TEST_CASE("Impossible records are skipped and named, and the rest of the buffer 
 }
 
 // --total-bits 48 failed only when a t value happened not to fit while the results were written.
-TEST_CASE("Formats over 32 bits get 12-word result records; invalid ones are refused before a run",
+TEST_CASE("Formats over 32 bits get 12-word result records, invalid ones are refused before a run",
           "[buffers]") {
   CHECK(resultRecordWords(FixedFormat{32, 16}) == 8);
   CHECK(resultRecordWords(FixedFormat{8, 4}) == 8);

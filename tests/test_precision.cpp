@@ -31,7 +31,7 @@ size_t count(const FormatPrecision& p, PrecisionVerdict verdict) {
 
 }  // namespace
 
-TEST_CASE("Formats are written QI.F; a bare A.B only where one reading is a format",
+TEST_CASE("Formats are written QI.F, a bare A.B only where one reading is a format",
           "[precision]") {
   CHECK(parseFixedFormat("Q16.16").totalBits == 32);
   CHECK(parseFixedFormat("Q16.16").fractionBits == 16);
@@ -71,7 +71,7 @@ TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precis
   }
 }
 
-TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth-8 leaves",
+TEST_CASE("Wide formats agree with float64, 8 fraction bits cannot resolve depth-8 leaves",
           "[precision]") {
   // A depth-8 leaf spans 2^-7 of the cube: with 8 fraction bits a child's t-interval is a few
   // steps wide, and truncated midpoints put hits into neighbouring leaves.
