@@ -115,10 +115,11 @@ class SweepTally {
   void finish(size_t pending, const std::string& files) const {
     std::cout << "sweep: " << ok_ << " rows done, " << written_ - ok_ << " failed, "
               << pending - written_ << " lost; wrote " << files << "\n";
+    const std::string first = firstError_.empty() ? "no row came back" : firstError_;
     if (pending > 0 && ok_ == 0)
-      throw std::runtime_error("every row of the sweep failed, the first: " + firstError_);
+      throw std::runtime_error("every row of the sweep failed, the first: " + first);
     if (ok_ < pending)
-      std::cerr << "rtusim: sweep: " << pending - ok_ << " rows failed, the first: " << firstError_
+      std::cerr << "rtusim: sweep: " << pending - ok_ << " rows failed, the first: " << first
                 << "\n";
   }
 
