@@ -41,6 +41,7 @@ grep -q "0 already done, 2 to run" fixed.txt || fail "failed rows not run again"
 grep -q '"status":"invalid","error":"L1 cache: 16 bytes do not hold one 32-byte line"' some.jsonl \
   || fail "invalid row without its error"
 grep -q "1 rows failed, the first: L1 cache: 16 bytes" some.err || fail "first error not printed"
+grep -q "1 rows done, 1 failed (1 invalid), 0 lost" some.txt || fail "summary without the invalid row"
 "$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 --out some.csv \
   >again.txt
 grep -q "2 already done, 0 to run" again.txt || fail "an invalid row ran again"
@@ -91,6 +92,9 @@ grep -q "to run with 2 workers" j.txt || fail "--jobs does not set the workers"
   >/dev/null 2>fps.err
 grep -q "fps --jobs is deprecated" fps.err || fail "fps --jobs without its warning"
 expect_error "--workers: Value 0 not in range" "$rtusim" fps --scene sphere --depth 4 -j 0
+echo "junk =" >bad_scene.toml
+expect_error "animate --jobs is deprecated: use -j/--workers" \
+  "$rtusim" animate --scene-file bad_scene.toml --jobs 1 --out-dir animation
 
 # Every CSV column name is unique (pandas reads them): the configuration's ray-buffer file and the
 # statistic counting rays were both `rays`.

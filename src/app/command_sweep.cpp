@@ -109,11 +109,13 @@ class SweepTally {
     writer_.write(row);
     ++written_;
     ok_ += status == "ok";
+    invalid_ += status == "invalid";
   }
   // The summary of `pending` rows; throws std::runtime_error with the first error when rows ran
   // and none of them ended ok.
   void finish(size_t pending, const std::string& files) const {
-    std::cout << "sweep: " << ok_ << " rows done, " << written_ - ok_ << " failed, "
+    std::cout << "sweep: " << ok_ << " rows done, " << written_ - ok_ << " failed"
+              << (invalid_ > 0 ? " (" + std::to_string(invalid_) + " invalid)" : "") << ", "
               << pending - written_ << " lost; wrote " << files << "\n";
     const std::string first = firstError_.empty() ? "no row came back" : firstError_;
     if (pending > 0 && ok_ == 0)
@@ -125,7 +127,7 @@ class SweepTally {
 
  private:
   RowWriter& writer_;
-  size_t written_ = 0, ok_ = 0;
+  size_t written_ = 0, ok_ = 0, invalid_ = 0;
   std::string firstError_;
 };
 
