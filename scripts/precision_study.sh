@@ -9,7 +9,7 @@ out=${1:-out/precision}
 rtusim=${2:-build/rtusim}
 source scripts/spider_mesh.sh
 mkdir -p "$out"
-formats=16.8,16.12,20.12,20.16,24.12,24.16,24.20,28.16,28.20,28.24,32.16,32.20,32.24,32.28,40.20,40.28,40.32,48.24,48.32,48.40
+formats=Q8.8,Q4.12,Q8.12,Q4.16,Q12.12,Q8.16,Q4.20,Q12.16,Q8.20,Q4.24,Q16.16,Q12.20,Q8.24,Q4.28,Q20.20,Q12.28,Q8.32,Q24.24,Q16.32,Q8.40
 size=(--width 256 --height 256)
 
 run() {  # name, then the scene options
@@ -20,13 +20,10 @@ run() {  # name, then the scene options
     --images "$out/images_$name"
 }
 for scene in sphere shell menger terrain noise; do
-  mkdir -p "$out/images_${scene}_8"
   run "${scene}_8" --scene "$scene" --depth 8
 done
 for depth in 6 10 12; do
-  mkdir -p "$out/images_sphere_$depth"
   run "sphere_$depth" --scene sphere --depth "$depth"
 done
-mkdir -p "$out/images_spider_8"
 run spider_8 --mesh "$mesh" --depth 8
 /usr/bin/python3 scripts/precision_plot.py "$out"

@@ -49,7 +49,7 @@ for frame in 0000 0001 0002 0003; do
   cmp -s out_j1/frame_$frame.png out_j2/frame_$frame.png || fail "frame $frame differs with 2 workers"
 done
 awk -F, 'NR > 2 && $5 == 0 { exit 1 }' rows_j2.csv || fail "a primed frame saved no ray"
-expect_error "--jobs: Value 0 not in range" \
+expect_error "--workers: Value 0 not in range" \
   "$rtusim" animate --scene-file "$scenes/procedural.toml" -j 0 --out-dir out5
 
 expect_error "--model lt does not apply: results pass a reorder buffer" \

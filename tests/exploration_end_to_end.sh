@@ -116,7 +116,7 @@ grep -q "does not go with --model lt" lt_sample.txt || fail "--sample with --mod
 # A configuration that cannot run gets its error in its row; the sweep goes on.
 "$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
   --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt
-grep -q '"status":"failed"' bad.jsonl && grep -q 'do not hold one 32-byte line' bad.jsonl \
+grep -q '"status":"invalid"' bad.jsonl && grep -q 'do not hold one 32-byte line' bad.jsonl \
   || fail "failed row without its error"
 grep -q '"status":"ok"' bad.jsonl || fail "the sweep stopped at a failed row"
 

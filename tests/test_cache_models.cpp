@@ -128,7 +128,8 @@ TEST_CASE("Memory configuration: impossible caches are rejected with the reason"
 
   SECTION("line not a power of two") {
     l1.lineBytes = 24;
-    CHECK_THROWS_WITH(validate(memory), Contains("L1 cache") && Contains("not a power of two"));
+    CHECK_THROWS_WITH(validate(memory), Contains("L1 cache") && Contains("not a power of two") &&
+                                            Contains("nearest valid sizes: 16 or 32 bytes"));
   }
   SECTION("line shorter than a word") {
     l1.lineBytes = 2;
@@ -145,7 +146,8 @@ TEST_CASE("Memory configuration: impossible caches are rejected with the reason"
   SECTION("size not a multiple of line x ways") {
     l1.sizeBytes = 96;  // 2 ways x 32 bytes = 64 per set
     l1.ways = 2;
-    CHECK_THROWS_WITH(validate(memory), Contains("not a multiple of 2 ways x 32-byte line"));
+    CHECK_THROWS_WITH(validate(memory), Contains("not a multiple of 2 ways x 32-byte line") &&
+                                            Contains("nearest valid sizes: 64 or 128 bytes"));
   }
   SECTION("line x ways overflowing 32 bits") {
     l1.ways = 1u << 31;
@@ -154,7 +156,14 @@ TEST_CASE("Memory configuration: impossible caches are rejected with the reason"
   SECTION("sets not a power of two") {
     l1.sizeBytes = 96;  // 3 sets of one 32-byte line
     l1.ways = 1;
-    CHECK_THROWS_WITH(validate(memory), Contains("3 sets is not a power of two"));
+    CHECK_THROWS_WITH(validate(memory), Contains("3 sets is not a power of two") &&
+                                            Contains("nearest valid sizes: 64 or 128 bytes"));
+  }
+  SECTION("a size in kB, not KiB") {
+    l1.sizeBytes = 4000;  // 4KB; 4 ways x 32-byte lines: sets of 128 bytes
+    l1.ways = 4;
+    l1.lineBytes = 32;
+    CHECK_THROWS_WITH(validate(memory), Contains("nearest valid sizes: 2048 or 4096 bytes"));
   }
   SECTION("no outstanding misses") {
     memory.l2.maxOutstandingMisses = 0;

@@ -46,13 +46,15 @@ TEST_CASE("Settings reach the run configuration by hierarchical name", "[config]
   CHECK(c.source("width") == ConfigSource::Default);
 }
 
-TEST_CASE("An unknown key names the nearest known key; a bad value names key and range",
+TEST_CASE("An unknown key names the nearest known key, a bad value names key and range",
           "[config]") {
   Configuration c;
   CHECK_THROWS_WITH(c.set("memory.l1.sise", "4KiB", ConfigSource::CommandLine),
                     Contains("did you mean 'memory.l1.size'"));
-  CHECK_THROWS_WITH(c.set("core", "4", ConfigSource::CommandLine),
+  CHECK_THROWS_WITH(c.set("cores2", "4", ConfigSource::CommandLine),
                     Contains("did you mean 'cores'"));
+  CHECK_THROWS_WITH(c.set("core", "4", ConfigSource::CommandLine),
+                    Contains("core: '4' is not one of"));
   CHECK_THROWS_WITH(c.set("cores", "0", ConfigSource::CommandLine),
                     Contains("cores: 0 is out of range 1 .. 1024"));
   CHECK_THROWS_WITH(c.set("cores", "2.5", ConfigSource::CommandLine),
@@ -96,7 +98,7 @@ TEST_CASE("config --dump loads again to the same configuration", "[config]") {
   CHECK(fromJson.toJson() == original.toJson());
 }
 
-TEST_CASE("Each flag names one setting; the two epsilons have their own (issue 26)", "[config]") {
+TEST_CASE("Each flag names one setting, the two epsilons have their own (issue 26)", "[config]") {
   std::set<std::string> flags;
   for (const Setting& s : configSchema())
     if (!s.flag.empty()) CHECK(flags.insert(s.flag).second);
@@ -178,4 +180,40 @@ TEST_CASE("A sweep is the product of its grids times its explicit list", "[confi
   SweepSpec bad;
   bad.addGrid("cores=1,0");
   CHECK_THROWS_WITH(bad.expand(base), Contains("cores: 0 is out of range"));
+}
+
+TEST_CASE("A swept key without effect is refused before any row runs", "[config][sweep]") {
+  constexpr unsigned sweepUses = kUseModel | kUseArithmetic | kUseScene | kUseCamera;
+  SweepSpec latency;
+  latency.addGrid("memory.dram.latency=10,20");
+  CHECK_THROWS_WITH(
+      checkSweepKeysHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"),
+      Contains("memory.dram.latency (sweep) has no effect in any configuration: memory.kind is "
+               "ideal"));
+  Configuration cached;
+  cached.set("memory.kind", "cached", ConfigSource::CommandLine);
+  CHECK_NOTHROW(checkSweepKeysHaveEffect(latency.expand(cached), sweepUses, "sweep"));
+  // Without effect in two of four configurations only: a warning.
+  latency.addGrid("memory.kind=ideal,cached");
+  CHECK_NOTHROW(checkSweepKeysHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"));
+  // A list entry is checked in the configurations it sets.
+  SweepSpec list;
+  list.list = {{{"cores", "4"}}, {{"memory.l2.size", "64KiB"}}};
+  CHECK_THROWS_WITH(checkSweepKeysHaveEffect(list.expand(Configuration{}), sweepUses, "sweep"),
+                    Contains("memory.l2.size (sweep) has no effect in any configuration"));
+  SweepSpec unused;
+  unused.addGrid("width=8,16");
+  CHECK_THROWS_WITH(checkSweepKeysHaveEffect(unused.expand(Configuration{}), kUseModel, "replay"),
+                    Contains("width (sweep) has no effect in any configuration: rtusim replay "
+                             "does not use it"));
+}
+
+TEST_CASE("A statistics file is a configuration: its config object", "[config]") {
+  Configuration rerun;
+  rerun.loadText(R"({"rtusim": {"version": "x"}, "config": {"cores": 4, "memory.kind": "cached"},)"
+                 R"( "statistics": {"rays": 64, "total_cycles": 1000}})",
+                 "json", "'stats.json'", ConfigSource::File);
+  CHECK(rerun.values().rtu.cores == 4);
+  CHECK_FALSE(rerun.values().rtu.memory.ideal);
+  CHECK(rerun.source("cores") == ConfigSource::File);
 }

@@ -90,15 +90,16 @@ TEST_CASE("Impossible records are skipped and named, and the rest of the buffer 
 }
 
 // --total-bits 48 failed only when a t value happened not to fit while the results were written.
-TEST_CASE("Formats over 32 bits get 12-word result records; invalid ones are refused before a run",
+TEST_CASE("Formats over 32 bits get 12-word result records, invalid ones are refused before a run",
           "[buffers]") {
   CHECK(resultRecordWords(FixedFormat{32, 16}) == 8);
   CHECK(resultRecordWords(FixedFormat{8, 4}) == 8);
   CHECK(resultRecordWords(FixedFormat{33, 16}) == 12);
   CHECK(resultRecordWords(FixedFormat{48, 32}) == 12);
   CHECK_THROWS_WITH(resultRecordWords(FixedFormat{48, 47}),
-                    Catch::Contains("format 48.47") && Catch::Contains("fraction bits"));
-  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{64, 16}), Catch::Contains("format 64.16"));
+                    Catch::Contains("format Q1.47 (48 bits)") && Catch::Contains("fraction bits"));
+  CHECK_THROWS_WITH(resultRecordWords(FixedFormat{64, 16}),
+                    Catch::Contains("format Q48.16 (64 bits)"));
 }
 
 TEST_CASE("Wide result records hold 48-bit t-values and normals, low word first", "[buffers]") {

@@ -31,17 +31,29 @@ size_t count(const FormatPrecision& p, PrecisionVerdict verdict) {
 
 }  // namespace
 
-TEST_CASE("Formats are written TOTAL.FRACTION or QI.F", "[precision]") {
-  CHECK(parseFixedFormat("32.16").totalBits == 32);
-  CHECK(parseFixedFormat("32.16").fractionBits == 16);
+TEST_CASE("Formats are written QI.F, a bare A.B only where one reading is a format",
+          "[precision]") {
+  CHECK(parseFixedFormat("Q16.16").totalBits == 32);
+  CHECK(parseFixedFormat("Q16.16").fractionBits == 16);
   CHECK(parseFixedFormat("Q12.20").totalBits == 32);
   CHECK(parseFixedFormat("Q12.20").fractionBits == 20);
+  // 16 bits cannot hold 16 fraction bits and a sign: only Q16.16 reads "16.16".
+  CHECK(parseFixedFormat("16.16").totalBits == 32);
+  CHECK(parseFixedFormat("16.16").fractionBits == 16);
+  // Q48.32 would be 80 bits: only 48 bits with 32 of them fraction (Q16.32) reads "48.32".
   CHECK(parseFixedFormat("48.32").totalBits == 48);
+  CHECK(parseFixedFormat("48.32").fractionBits == 32);
+  // Both Q8.12 (20 bits) and Q20.12 (32 bits) read "20.12".
+  CHECK_THROWS_WITH(parseFixedFormat("20.12"),
+                    Catch::Contains("format '20.12' is ambiguous: write Q8.12 (20 bits) or "
+                                    "Q20.12 (32 bits)"));
   CHECK_THROWS_WITH(parseFixedFormat("32"),
-                    Catch::Contains("format '32'") && Catch::Contains("32.16"));
+                    Catch::Contains("format '32'") && Catch::Contains("Q16.16"));
   CHECK_THROWS_WITH(parseFixedFormat("32.x"), Catch::Contains("format '32.x'"));
   CHECK_THROWS_WITH(parseFixedFormat("64.16"), Catch::Contains("format '64.16'"));
+  CHECK_THROWS_WITH(parseFixedFormat("Q40.16"), Catch::Contains("format 'Q40.16'"));
   CHECK_THROWS_WITH(parseFixedFormat("1.2.3"), Catch::Contains("format '1.2.3'"));
+  CHECK_THROWS_WITH(parseFixedFormat("2147483647.2147483647"), Catch::Contains("format '"));
 }
 
 TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precision]") {
@@ -59,7 +71,7 @@ TEST_CASE("Every ray gets one verdict, and the counts agree with them", "[precis
   }
 }
 
-TEST_CASE("Wide formats agree with float64; 8 fraction bits cannot resolve depth-8 leaves",
+TEST_CASE("Wide formats agree with float64, 8 fraction bits cannot resolve depth-8 leaves",
           "[precision]") {
   // A depth-8 leaf spans 2^-7 of the cube: with 8 fraction bits a child's t-interval is a few
   // steps wide, and truncated midpoints put hits into neighbouring leaves.

@@ -60,7 +60,7 @@ bool sameVoxels(const VoxelSource& a, const VoxelSource& b) {
   return same;
 }
 
-TEST_CASE("scenes: the five scenes by name; bad names and depths are refused", "[scenes]") {
+TEST_CASE("scenes: the five scenes by name, bad names and depths are refused", "[scenes]") {
   CHECK(proceduralSceneNames() ==
         std::vector<std::string>{"sphere", "shell", "menger", "terrain", "noise"});
   for (const std::string& name : proceduralSceneNames()) {

@@ -60,7 +60,7 @@ TEST_CASE("Sample plan: strata tile the middle, two distinct blocks in each", "[
   CHECK(plan.tailFirst == rays - block);
 }
 
-TEST_CASE("Sample plan: another seed, other blocks; too small a fraction is refused",
+TEST_CASE("Sample plan: another seed, other blocks, too small a fraction is refused",
           "[sampling]") {
   SampleSpec spec;
   spec.fraction = 0.1;

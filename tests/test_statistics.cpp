@@ -284,7 +284,7 @@ struct KindRun {
   }
 };
 
-TEST_CASE("A kind declares its own counters; they are written and combined generically",
+TEST_CASE("A kind declares its own counters, they are written and combined generically",
           "[statistics]") {
   KindRun run;
   run.cores = {{2, {30, 1}}, {3, {45, 2}}};

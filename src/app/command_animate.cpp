@@ -14,6 +14,7 @@
 #include "app/plot_script.h"
 #include "app/scene_shading.h"
 #include "app/schema_flags.h"
+#include "app/workers_option.h"
 #include "explore/animation_run.h"
 #include "explore/animation_workers.h"
 #include "explore/exploration_run.h"
@@ -33,14 +34,14 @@ struct AnimateOptions {
   std::string model = "golden";
   std::string cacheDir;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  int jobs = 0;  // 0: one worker per core on the cycle-accurate model, one on golden
+  int workers = 0;  // 0: one worker per core on the cycle-accurate model, one on golden
   bool noHitBuffer = false;
   bool traceAll = false;
 
   // The golden model traces a frame in `threads` threads already; the cycle-accurate and
   // loosely-timed ones simulate it in one.
   int workerCount() const {
-    if (jobs > 0) return jobs;
+    if (workers > 0) return workers;
     return model == "golden" ? 1 : defaultWorkerCount();
   }
   std::string csvPath() const { return csv.empty() ? outDir + "/frames.csv" : csv; }
@@ -198,11 +199,10 @@ void addAnimateCommand(CLI::App& app) {
   command->add_option("--threads", options->threads, "threads tracing each frame's rays")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
-  command
-      ->add_option("-j,--jobs", options->jobs,
+  addWorkersOption(*command, options->workers,
                    "worker processes rendering ranges of frames (default: all cores with "
-                   "--model ca, 1 with golden)")
-      ->check(CLI::Range(1, 256));
+                   "--model ca, 1 with golden)",
+                   256);
   command->add_flag("--no-hit-buffer", options->noHitBuffer, "trace every pixel of every frame");
   command->add_flag("--trace-all", options->traceAll,
                     "no culling and no early termination: every instance for every ray");

@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
+#include "app/workers_option.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 
@@ -133,7 +134,7 @@ void addFpsCommand(CLI::App& app) {
                                             "3840x2160"};
     std::vector<int> cores = {1, 2, 4, 8, 16};
     std::string csv;
-    int jobs = defaultWorkerCount();
+    int workers = defaultWorkerCount();
     bool simulate = false;
   };
   auto options = std::make_shared<Options>();
@@ -156,8 +157,7 @@ void addFpsCommand(CLI::App& app) {
   command->add_flag("--simulate", options->simulate,
                     "run the SystemC model even where the recurrence gives the same answer "
                     "(ideal memory, no reorder buffer, steady host links)");
-  command->add_option("-j,--jobs", options->jobs, "rows run in parallel (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addWorkersOption(*command, options->workers, "rows run in parallel (default: all cores)", 1024);
   command->callback([options, request] {
     const Configuration base = request->resolve();
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(base.values()));
@@ -177,7 +177,7 @@ void addFpsCommand(CLI::App& app) {
     for (size_t i = 0; i < all.size(); ++i) all[i] = i;
     std::vector<nlohmann::ordered_json> rows(configurations.size());
     const size_t failures = runRows(
-        configurations, all, options->jobs, "fps",
+        configurations, all, options->workers, "fps",
         [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; },
         options->simulate ? RowModel::Simulation : RowModel::RecurrenceWhereExact);
     const RunConfig& settings = base.values();

@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/frame_images.h"
+#include "app/output_paths.h"
 #include "app/schema_flags.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
@@ -105,8 +106,8 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
 
 void addPrecisionCommand(CLI::App& app) {
   struct Options {
-    std::vector<std::string> formats = {"16.8",  "20.10", "24.12", "28.14", "32.16",
-                                        "32.20", "40.20", "48.24", "48.32"};
+    std::vector<std::string> formats = {"Q8.8",   "Q10.10", "Q12.12", "Q14.14", "Q16.16",
+                                        "Q12.20", "Q20.20", "Q24.24", "Q16.32"};
     std::string csv, imageDirectory;
   };
   auto options = std::make_shared<Options>();
@@ -121,19 +122,21 @@ void addPrecisionCommand(CLI::App& app) {
                                    "--allow-stack-overflow"});
   command
       ->add_option("--formats", options->formats,
-                   "formats as TOTAL.FRACTION bits (32.16) or QI.F (Q16.16)")
+                   "formats as QI.F: I integer bits with the sign, F fraction bits (Q16.16 is "
+                   "32 bits); a bare I.F only where it reads as one format")
       ->delimiter(',')
       ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per format");
   command->add_option("--images", options->imageDirectory,
-                      "write a difference image per format into this directory "
-                      "(precision_TOTAL_FRACTION.png)");
+                      "write a difference image per format into this folder, created if "
+                      "missing (precision_QI_F.png)");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& frame = configuration.values();
     std::vector<FixedFormat> formats;
     for (const std::string& text : options->formats) formats.push_back(parseFixedFormat(text));
     frame.camera.validate();
+    if (!options->imageDirectory.empty()) createOutputFolder({"--images", options->imageDirectory});
     const Scene scene = loadScene(frame.scene);
     PrecisionStudy study;
     study.rays = frameRays(frame.camera);
@@ -152,8 +155,8 @@ void addPrecisionCommand(CLI::App& app) {
     }
     if (!options->imageDirectory.empty()) {
       for (const FormatPrecision& p : results) {
-        const std::string path = options->imageDirectory + "/precision_" +
-                                 std::to_string(p.format.totalBits) + "_" +
+        const std::string path = options->imageDirectory + "/precision_Q" +
+                                 std::to_string(p.format.totalBits - p.format.fractionBits) + "_" +
                                  std::to_string(p.format.fractionBits) + ".png";
         writePrecisionImage(frame.camera, p.verdicts, path);
         std::cout << "wrote " << path << "\n";

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "app/commands.h"
 #include "app/plot_script.h"
 #include "app/schema_flags.h"
+#include "app/workers_option.h"
 #include "config/sweep_spec.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_slurm.h"
@@ -22,9 +24,17 @@ std::string jsonLinesPath(const std::string& csvPath) {
   return std::filesystem::path(csvPath).replace_extension(".jsonl").string();
 }
 
+// A configuration key that also names a statistics column (`rays`: the ray-buffer file and the
+// count of rays) is the column config.KEY, so that every column name is unique.
+std::string configColumn(const std::string& key) {
+  const std::vector<std::string>& statistics = statisticsColumns();
+  return std::find(statistics.begin(), statistics.end(), key) == statistics.end() ? key
+                                                                                  : "config." + key;
+}
+
 std::vector<std::string> csvHeader() {
   std::vector<std::string> header;
-  for (const Setting& setting : configSchema()) header.push_back(setting.key);
+  for (const Setting& setting : configSchema()) header.push_back(configColumn(setting.key));
   header.push_back("status");
   header.push_back("error");
   for (const std::string& column : statisticsColumns()) header.push_back(column);
@@ -43,8 +53,9 @@ std::vector<std::string> csvFields(const Json& row) {
   return fields;
 }
 
-// The rows of an earlier run of the sweep, by configuration; a line cut short by an
-// interruption is dropped (its row runs again).
+// The rows of an earlier run of the sweep, by configuration: those done and those of invalid
+// configurations, which would fail alike. A failed row (a scene file since fixed, a stalled run)
+// and a line cut short by an interruption are dropped: their rows run again.
 std::map<std::string, Json> readFinishedRows(const std::string& path) {
   std::map<std::string, Json> rows;
   std::ifstream file(path);
@@ -52,7 +63,8 @@ std::map<std::string, Json> readFinishedRows(const std::string& path) {
   while (std::getline(file, line)) {
     try {
       Json row = Json::parse(line);
-      if (row.contains("config") && row.contains("status")) rows[row["config"].dump()] = row;
+      if (row.contains("config") && (row["status"] == "ok" || row["status"] == "invalid"))
+        rows[row["config"].dump()] = row;
     } catch (const nlohmann::json::exception&) {
     }
   }
@@ -81,6 +93,44 @@ class RowWriter {
   std::ofstream csv_, jsonLines_;
 };
 
+// This run's rows as they finish: written (a lost row only reported), counted, the first error
+// kept.
+class SweepTally {
+ public:
+  explicit SweepTally(RowWriter& writer) : writer_(writer) {}
+  void add(const Json& row) {
+    const std::string status = row["status"].get<std::string>();
+    if (status != "ok" && firstError_.empty()) firstError_ = row["error"].get<std::string>();
+    if (status == "lost") {
+      std::cerr << "rtusim: sweep: row lost, it runs again next time: "
+                << row["error"].get<std::string>() << "\n";
+      return;
+    }
+    writer_.write(row);
+    ++written_;
+    ok_ += status == "ok";
+    invalid_ += status == "invalid";
+  }
+  // The summary of `pending` rows; throws std::runtime_error with the first error when rows ran
+  // and none of them ended ok.
+  void finish(size_t pending, const std::string& files) const {
+    std::cout << "sweep: " << ok_ << " rows done, " << written_ - ok_ << " failed"
+              << (invalid_ > 0 ? " (" + std::to_string(invalid_) + " invalid)" : "") << ", "
+              << pending - written_ << " lost; wrote " << files << "\n";
+    const std::string first = firstError_.empty() ? "no row came back" : firstError_;
+    if (pending > 0 && ok_ == 0)
+      throw std::runtime_error("every row of the sweep failed, the first: " + first);
+    if (ok_ < pending)
+      std::cerr << "rtusim: sweep: " << pending - ok_ << " rows failed, the first: " << first
+                << "\n";
+  }
+
+ private:
+  RowWriter& writer_;
+  size_t written_ = 0, ok_ = 0, invalid_ = 0;
+  std::string firstError_;
+};
+
 }  // namespace
 
 void addSweepCommand(CLI::App& app) {
@@ -89,7 +139,7 @@ void addSweepCommand(CLI::App& app) {
     std::string sweepFile;
     std::string out = "sweep.csv";
     std::string plotDir;
-    int jobs = defaultWorkerCount();
+    int workers = defaultWorkerCount();
     bool slurm = false;
     SlurmOptions slurmOptions;
     int slurmTask = -1;
@@ -112,10 +162,8 @@ void addSweepCommand(CLI::App& app) {
                    "rows as CSV; JSON lines beside it (.jsonl). Rows already there are kept "
                    "and not run again")
       ->capture_default_str();
-  command
-      ->add_option("-j,--jobs", options->jobs,
-                   "configurations run in parallel (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+  addWorkersOption(*command, options->workers,
+                   "configurations run in parallel (default: all cores)", 1024);
   command->add_option("--plot", options->plotDir,
                       "write plots of the rows (PNG, SVG) into this folder");
   command->add_flag("--slurm", options->slurm,
@@ -140,6 +188,7 @@ void addSweepCommand(CLI::App& app) {
     if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
     for (const std::string& grid : options->grid) spec.addGrid(grid);
     const std::vector<Configuration> configurations = spec.expand(request->resolve());
+    checkSweepKeysHaveEffect(configurations, request->uses, request->command);
 
     const std::map<std::string, Json> finished = readFinishedRows(jsonLinesPath(options->out));
     std::vector<Json> kept;
@@ -155,20 +204,11 @@ void addSweepCommand(CLI::App& app) {
         pending.push_back(i);
     }
     std::cout << "sweep: " << seen.size() << " configurations, " << kept.size() << " already done, "
-              << pending.size() << " to run with " << options->jobs << " workers\n"
+              << pending.size() << " to run with " << options->workers << " workers\n"
               << std::flush;
     RowWriter writer(options->out, kept);
-    size_t written = 0, failed = 0;
-    const auto write = [&](const Json& row) {
-      if (row["status"] == "lost") {
-        std::cerr << "rtusim: sweep: row lost, it runs again next time: "
-                  << row["error"].get<std::string>() << "\n";
-        return;
-      }
-      writer.write(row);
-      ++written;
-      failed += row["status"] != "ok";
-    };
+    SweepTally tally(writer);
+    const auto write = [&tally](const Json& row) { tally.add(row); };
     if (options->slurm) {
       const std::string directory =
           options->sweepDir.empty()
@@ -181,12 +221,10 @@ void addSweepCommand(CLI::App& app) {
         return;
       }
     } else {
-      runRows(configurations, pending, options->jobs, "sweep",
+      runRows(configurations, pending, options->workers, "sweep",
               [&](size_t, const Json& row) { write(row); });
     }
-    std::cout << "sweep: " << written - failed << " rows done, " << failed << " failed, "
-              << pending.size() - written << " lost; wrote " << options->out << " and "
-              << jsonLinesPath(options->out) << "\n";
+    tally.finish(pending.size(), options->out + " and " + jsonLinesPath(options->out));
     if (!options->plotDir.empty())
       runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
   });

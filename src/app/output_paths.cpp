@@ -63,4 +63,12 @@ void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<N
   }
 }
 
+void createOutputFolder(const NamedPath& folder) {
+  std::error_code error;
+  fs::create_directories(folder.path, error);
+  if (error || !fs::is_directory(folder.path))
+    throw std::invalid_argument(named(folder) + ": cannot create the folder" +
+                                (error ? ": " + error.message() : std::string(": it is a file")));
+}
+
 }  // namespace rtu

@@ -97,6 +97,7 @@ std::string sourceName(ConfigSource source) {
     case ConfigSource::Preset: return "preset";
     case ConfigSource::File: return "configuration file";
     case ConfigSource::CommandLine: return "command line";
+    case ConfigSource::Sweep: return "sweep";
   }
   return "?";
 }
@@ -138,7 +139,12 @@ void Configuration::loadText(const std::string& text, const std::string& format,
   std::vector<std::pair<std::string, std::string>> entries;
   try {
     if (format == "json") {
-      flattenJson(nlohmann::json::parse(text), "", entries);
+      const nlohmann::json json = nlohmann::json::parse(text);
+      // A statistics file (--stats of render or replay, a sweep row) holds its run's configuration
+      // as its "config" object, which no setting's key starts: it reruns that run.
+      const bool statistics =
+          json.is_object() && json.contains("config") && json["config"].is_object();
+      flattenJson(statistics ? json["config"] : json, "", entries);
     } else {
       flattenToml(toml::parse(text, origin), "", entries);
     }
@@ -160,6 +166,12 @@ ConfigSource Configuration::source(const std::string& key) const {
   return found == sources_.end() ? ConfigSource::Default : found->second;
 }
 
+std::string whyIneffective(const Setting& setting, const RunConfig& effective, unsigned uses,
+                           const std::string& command) {
+  if (!(setting.uses & uses)) return "rtusim " + command + " does not use it";
+  return setting.ignoredBecause ? setting.ignoredBecause(effective) : "";
+}
+
 void Configuration::checkApplicable(unsigned uses, const std::string& command,
                                     const std::function<void(RunConfig&)>& commandSets) const {
   const RunConfig defaults;
@@ -170,11 +182,7 @@ void Configuration::checkApplicable(unsigned uses, const std::string& command,
     if (from != ConfigSource::File && from != ConfigSource::CommandLine) continue;
     // A file that states a default (a dumped configuration states them all) changes nothing.
     if (from == ConfigSource::File && setting.get(values_) == setting.get(defaults)) continue;
-    std::string reason;
-    if (!(setting.uses & uses))
-      reason = "rtusim " + command + " does not use it";
-    else if (setting.ignoredBecause)
-      reason = setting.ignoredBecause(effective);
+    const std::string reason = whyIneffective(setting, effective, uses, command);
     if (reason.empty()) continue;
     const std::string message =
         setting.key + " (" + sourceName(from) + ") has no effect: " + reason;

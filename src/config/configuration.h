@@ -15,7 +15,13 @@
 
 namespace rtu {
 
-enum class ConfigSource { Default, Preset, File, CommandLine };
+// Sweep: a value a sweep's grid or list gives one of its configurations.
+enum class ConfigSource { Default, Preset, File, CommandLine, Sweep };
+
+// Why `setting` has no effect for rtusim `command`, which uses the settings of `uses`
+// (SettingUse bits), in the configuration `effective`; empty when it has one.
+std::string whyIneffective(const Setting& setting, const RunConfig& effective, unsigned uses,
+                           const std::string& command);
 
 class Configuration {
  public:
@@ -27,7 +33,8 @@ class Configuration {
   // "key=value".
   void setAssignment(const std::string& assignment, ConfigSource source);
   void applyPreset(const std::string& name);
-  // .toml or .json, nested tables or dotted keys; errors name the file.
+  // .toml or .json, nested tables or dotted keys; errors name the file. A .json statistics file
+  // (`--stats`) is read as its "config" object, the configuration of its run.
   void loadFile(const std::string& path);
   void loadText(const std::string& text, const std::string& format, const std::string& origin,
                 ConfigSource source);

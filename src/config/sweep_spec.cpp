@@ -1,6 +1,7 @@
 #include "config/sweep_spec.h"
 
 #include <cstdio>
+#include <iostream>
 #include <stdexcept>
 
 #include <toml++/toml.h>
@@ -112,11 +113,33 @@ std::vector<Configuration> SweepSpec::expand(const Configuration& base) const {
   for (const Assignments& entry : entries)
     for (const Assignments& point : points) {
       Configuration configuration = base;
-      for (const auto& [key, value] : entry) configuration.set(key, value, ConfigSource::File);
-      for (const auto& [key, value] : point) configuration.set(key, value, ConfigSource::File);
+      for (const auto& [key, value] : entry) configuration.set(key, value, ConfigSource::Sweep);
+      for (const auto& [key, value] : point) configuration.set(key, value, ConfigSource::Sweep);
       configurations.push_back(configuration);
     }
   return configurations;
+}
+
+void checkSweepKeysHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
+                              const std::string& command) {
+  for (const Setting& setting : configSchema()) {
+    size_t swept = 0, ineffective = 0;
+    std::string reason;
+    for (const Configuration& configuration : configurations) {
+      if (configuration.source(setting.key) != ConfigSource::Sweep) continue;
+      ++swept;
+      const std::string why = whyIneffective(setting, configuration.values(), uses, command);
+      if (why.empty()) continue;
+      ++ineffective;
+      if (reason.empty()) reason = why;
+    }
+    if (ineffective == 0) continue;
+    if (ineffective == swept)
+      throw std::invalid_argument(setting.key +
+                                  " (sweep) has no effect in any configuration: " + reason);
+    std::cerr << "rtusim: warning: " << setting.key << " (sweep) has no effect in " << ineffective
+              << " of " << swept << " configurations: " << reason << "\n";
+  }
 }
 
 }  // namespace rtu

@@ -23,7 +23,15 @@ struct SweepSpec {
 
   // Every configuration of the sweep, in a stable order; throws std::invalid_argument naming
   // the key for a value the schema rejects.
+  // Each value the sweep gives is marked ConfigSource::Sweep.
   std::vector<Configuration> expand(const Configuration& base) const;
 };
+
+// Before any row runs, as Configuration::checkApplicable does for one run: a key the sweep sets
+// that has no effect in any configuration it is set in (memory.dram.latency on ideal memory, a key
+// rtusim `command` does not use) throws std::invalid_argument naming the key and why, since its
+// rows would repeat one run; one without effect in some of them is a warning on standard error.
+void checkSweepKeysHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
+                              const std::string& command);
 
 }  // namespace rtu

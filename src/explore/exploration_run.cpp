@@ -23,6 +23,12 @@ std::string sceneKey(const SceneSpec& spec) {
          std::to_string(spec.root) + "|" + std::to_string(spec.maxDepth);
 }
 
+// A row's work for the progress line's ETA: the rays of its frame.
+double rowRays(const Configuration& configuration) {
+  const Camera& camera = configuration.values().camera;
+  return static_cast<double>(camera.width) * static_cast<double>(camera.height);
+}
+
 }  // namespace
 
 void SceneCache::build(const std::vector<Configuration>& configurations) {
@@ -97,20 +103,40 @@ void SceneCache::load(const std::string& directory) {
   }
 }
 
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
-                                   RowModel model) {
+void validateRow(const Configuration& configuration) {
   const RunConfig& settings = configuration.values();
   settings.camera.validate();
   validate(settings.rtu);
+  if (settings.model != ModelKind::CycleAccurate && settings.sample.enabled())
+    throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
+                                            "not go with --model ") +
+                                toString(settings.model));
+}
+
+std::vector<size_t> validRows(
+    const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
+    const std::function<void(size_t, const nlohmann::ordered_json&)>& invalid) {
+  std::vector<size_t> valid;
+  for (size_t row : rows) {
+    try {
+      validateRow(configurations[row]);
+      valid.push_back(row);
+    } catch (const std::invalid_argument& error) {
+      invalid(row, failedRow(configurations[row], error.what(), "invalid"));
+    }
+  }
+  return valid;
+}
+
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+                                   RowModel model) {
+  const RunConfig& settings = configuration.values();
+  validateRow(configuration);
   const std::vector<TValueRecord> jobs =
       makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
   checkStackDepth(scene.image, jobs, settings.rtu.coreConfig<SvoKind>().stackFrames,
                   settings.allowStackOverflow);
   if (settings.model != ModelKind::CycleAccurate) {
-    if (settings.sample.enabled())
-      throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
-                                              "not go with --model ") +
-                                  toString(settings.model));
     const RtuRun run = runModel(settings.model, scene.image.memory(), jobs, settings.rtu);
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
     row.update(runJson(run.statistics, configuration));
@@ -152,16 +178,26 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
                int workers, const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
                RowModel model) {
+  size_t finished = 0, failures = 0;
+  const std::vector<size_t> valid =
+      validRows(configurations, rows, [&](size_t row, const nlohmann::ordered_json& result) {
+        ++finished;
+        ++failures;
+        done(row, result);
+      });
   SceneCache scenes;
   std::vector<Configuration> used;
-  for (size_t row : rows) used.push_back(configurations[row]);
+  double rays = 0, raysDone = 0;  // the ETA weighs rows by rays: 1920x1080 is 36 times 320x180
+  for (size_t row : valid) {
+    used.push_back(configurations[row]);
+    rays += rowRays(configurations[row]);
+  }
   scenes.build(used);
   Progress progress(label, rows.size());
-  size_t finished = 0, failures = 0;
   const auto work = [&](size_t row) {
     return runRowSafely(configurations[row], scenes, model).dump();
   };
-  runInWorkers(rows, workers, work, [&](size_t row, const WorkerOutcome& outcome) {
+  runInWorkers(valid, workers, work, [&](size_t row, const WorkerOutcome& outcome) {
     nlohmann::ordered_json result;
     try {
       result = outcome.answered ? nlohmann::ordered_json::parse(outcome.line)
@@ -172,7 +208,8 @@ size_t runRows(const std::vector<Configuration>& configurations, const std::vect
     }
     failures += result["status"] != "ok";
     done(row, result);
-    progress.update(++finished, failures);
+    raysDone += rowRays(configurations[row]);
+    progress.update(++finished, failures, raysDone / rays);
   });
   progress.finish();
   return failures;

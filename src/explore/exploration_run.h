@@ -45,15 +45,25 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
 nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
                                     RowModel model = RowModel::Simulation);
 
-// The row of a configuration that failed ("failed": it cannot run) or whose worker died ("lost":
-// it may run another time), with the error.
+// Throws std::invalid_argument when the configuration cannot run whatever the scene: its camera,
+// its RTU (rtu/validate) or a sample on a model other than the cycle-accurate one.
+void validateRow(const Configuration& configuration);
+// The rows of `rows` whose configuration is valid; each other one goes to `invalid` at once as an
+// "invalid" row with its error.
+std::vector<size_t> validRows(
+    const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
+    const std::function<void(size_t, const nlohmann::ordered_json&)>& invalid);
+
+// The row of a configuration that failed ("invalid": validateRow refused it, it is not run again
+// on resume; "failed": its run failed, it runs again on resume) or whose worker died ("lost": it
+// may run another time), with the error.
 nlohmann::ordered_json failedRow(const Configuration& configuration, const std::string& error,
                                  const std::string& status = "failed");
 
-// Runs configurations[i] for each i in `rows` in up to `workers` worker processes, after building
-// their scenes once, with progress on standard error; `done(i, row)` gets each row as it
-// finishes (a failed configuration gives a failed row, a dead worker a lost one). Returns the
-// rows that are not "ok".
+// Runs configurations[i] for each i in `rows` in up to `workers` worker processes, after
+// validating them (validRows: invalid ones are not run) and building their scenes once, with
+// progress on standard error; `done(i, row)` gets each row as it finishes (a failed configuration
+// gives a failed row, a dead worker a lost one). Returns the rows that are not "ok".
 size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
                int workers, const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,

@@ -106,9 +106,11 @@ void submitAndWait(const std::string& script, const std::string& directory, int 
 }  // namespace
 
 std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
-                           const std::vector<size_t>& rows, const std::string& directoryName,
+                           const std::vector<size_t>& allRows, const std::string& directoryName,
                            const SlurmOptions& options,
                            const std::function<void(const Json&)>& done) {
+  const std::vector<size_t> rows =
+      validRows(configurations, allRows, [&done](size_t, const Json& row) { done(row); });
   const std::string directory = fs::absolute(directoryName).string();
   fs::remove_all(directory);  // a fresh plan: rows already done are in the sweep's own files
   fs::create_directories(directory);

@@ -22,7 +22,8 @@ struct SlurmOptions {
   bool dryRun = false;    // write the directory and the batch script, do not submit
 };
 
-// Returns the path of the batch script.
+// Configurations that are not valid (validRows) go to `done` as invalid rows and are not
+// submitted. Returns the path of the batch script.
 std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
                            const std::vector<size_t>& rows, const std::string& directory,
                            const SlurmOptions& options,

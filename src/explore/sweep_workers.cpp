@@ -95,20 +95,28 @@ Progress::Progress(std::string label, size_t total, std::string unit)
       start_(std::chrono::steady_clock::now()),
       lastPrinted_(start_) {}
 
-std::string Progress::line(size_t done, size_t failed) const {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  std::string text =
-      label_ + " " + std::to_string(done) + "/" + std::to_string(total_) + " " + unit_;
+std::string progressText(const std::string& label, size_t done, size_t total,
+                         const std::string& unit, size_t failed, double elapsedSeconds,
+                         double workDone) {
+  std::string text = label + " " + std::to_string(done) + "/" + std::to_string(total) + " " + unit;
   if (failed > 0) text += ", " + std::to_string(failed) + " failed";
-  text += ", " + clockText(elapsed) + " elapsed";
-  if (done > 0 && done < total_)
-    text += ", ETA " +
-            clockText(elapsed / static_cast<double>(done) * static_cast<double>(total_ - done));
+  text += ", " + clockText(elapsedSeconds) + " elapsed";
+  if (done < total && workDone > 0 && workDone < 1)
+    text += ", ETA " + clockText(elapsedSeconds / workDone * (1 - workDone));
   return text;
 }
 
+std::string Progress::line(size_t done, size_t failed, double workDone) const {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return progressText(label_, done, total_, unit_, failed, elapsed, workDone);
+}
+
 void Progress::update(size_t done, size_t failed) {
+  update(done, failed, total_ == 0 ? 1.0 : static_cast<double>(done) / static_cast<double>(total_));
+}
+
+void Progress::update(size_t done, size_t failed, double workDone) {
   const auto now = std::chrono::steady_clock::now();
   const double sinceStart = std::chrono::duration<double>(now - start_).count();
   const double sincePrint = std::chrono::duration<double>(now - lastPrinted_).count();
@@ -116,13 +124,13 @@ void Progress::update(size_t done, size_t failed) {
   lastPrinted_ = now;
   printed_ = true;
   if (!terminal_) {
-    std::cerr << line(done, failed) << "\n";
+    std::cerr << line(done, failed, workDone) << "\n";
     return;
   }
   constexpr size_t kWidth = 30;
   const size_t filled = total_ == 0 ? kWidth : done * kWidth / total_;
   std::cerr << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, '.') << "] "
-            << line(done, failed) << "\033[K" << std::flush;
+            << line(done, failed, workDone) << "\033[K" << std::flush;
 }
 
 void Progress::finish() {

@@ -22,11 +22,14 @@ namespace rtu {
 class Progress {
  public:
   Progress(std::string label, size_t total, std::string unit = "rows");
+  // `workDone`: the share of the whole work done, 0 .. 1, where items differ in size (rows in
+  // rays); the ETA follows it. Without it every item counts alike.
+  void update(size_t done, size_t failed, double workDone);
   void update(size_t done, size_t failed);
   void finish();
 
  private:
-  std::string line(size_t done, size_t failed) const;
+  std::string line(size_t done, size_t failed, double workDone) const;
 
   std::string label_;
   size_t total_;
@@ -35,6 +38,12 @@ class Progress {
   std::chrono::steady_clock::time_point start_, lastPrinted_;
   bool printed_ = false;
 };
+
+// Progress's line: "sweep 12/40 rows, 1 failed, 0:00:30 elapsed, ETA 0:00:42", the ETA being the
+// time the work still to do (1 - workDone) takes at the rate of the work done so far.
+std::string progressText(const std::string& label, size_t done, size_t total,
+                         const std::string& unit, size_t failed, double elapsedSeconds,
+                         double workDone);
 
 // Progress of one simulation (rays received by the host), for simulateRtu's callback.
 class RunProgressLine {

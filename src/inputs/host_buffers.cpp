@@ -272,8 +272,7 @@ size_t resultRecordWords(const FixedFormat& format) {
   try {
     format.validate();
   } catch (const std::invalid_argument& invalid) {
-    throw std::invalid_argument("format " + std::to_string(format.totalBits) + "." +
-                                std::to_string(format.fractionBits) + ": " + invalid.what() +
+    throw std::invalid_argument("format " + format.describe() + ": " + invalid.what() +
                                 "; the host result records hold formats of 8 to 48 bits");
   }
   return resultRecordBytes(format.totalBits) / 4;

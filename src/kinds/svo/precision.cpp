@@ -92,9 +92,40 @@ std::vector<FormatPrecision> measurePrecision(const WordMemory& memory, const Pr
   return results;
 }
 
+namespace {
+
+// `format`, validated; the error names `text`.
+FixedFormat checked(const std::string& text, const FixedFormat& format) {
+  try {
+    format.validate();
+  } catch (const std::invalid_argument& invalid) {
+    throw std::invalid_argument("format '" + text + "': " + invalid.what());
+  }
+  return format;
+}
+
+bool isValid(const FixedFormat& format) {
+  try {
+    format.validate();
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
+// A bare "A.B": the one reading that gives a format, QA.B or A bits with B of them fraction.
+FixedFormat bareFormat(const std::string& text, int first, int second) {
+  const FixedFormat integerFraction{first + second, second}, totalFraction{first, second};
+  if (isValid(integerFraction) && isValid(totalFraction))
+    throw std::invalid_argument("format '" + text + "' is ambiguous: write " +
+                                totalFraction.describe() + " or " + integerFraction.describe());
+  return checked(text, isValid(integerFraction) ? integerFraction : totalFraction);
+}
+
+}  // namespace
+
 FixedFormat parseFixedFormat(const std::string& text) {
-  const std::string error =
-      "format '" + text + "': write TOTAL.FRACTION (e.g. 32.16) or QI.F (e.g. Q16.16)";
+  const std::string error = "format '" + text + "': write QI.F (e.g. Q16.16: 32 bits)";
   const bool q = !text.empty() && (text[0] == 'Q' || text[0] == 'q');
   const std::string body = q ? text.substr(1) : text;
   const size_t dot = body.find('.');
@@ -109,13 +140,8 @@ FixedFormat parseFixedFormat(const std::string& text) {
   } catch (const std::exception&) {
     throw std::invalid_argument(error);
   }
-  FixedFormat format{q ? first + second : first, second};
-  try {
-    format.validate();
-  } catch (const std::invalid_argument& invalid) {
-    throw std::invalid_argument("format '" + text + "': " + invalid.what());
-  }
-  return format;
+  if (first > 64 || second > 64) throw std::invalid_argument(error);  // no int overflow below
+  return q ? checked(text, {first + second, second}) : bareFormat(text, first, second);
 }
 
 }  // namespace rtu

@@ -59,7 +59,11 @@ struct PrecisionStudy {
 std::vector<FormatPrecision> measurePrecision(const WordMemory& memory, const PrecisionStudy& study,
                                               const std::vector<FixedFormat>& formats);
 
-// "32.16" or "Q16.16" -> 32 bits, 16 of them fraction; throws std::invalid_argument naming it.
+// One notation for formats, as FixedFormat::describe prints them: QI.F, I integer bits (sign
+// included) and F fraction bits ("Q16.16" -> 32 bits, 16 of them fraction). A bare "A.B" is taken
+// only where one reading gives a format: as QA.B ("16.16": 16 bits cannot hold 16 fraction bits)
+// or as A bits with B of them fraction ("48.32": Q16.32). Throws std::invalid_argument naming the
+// text, and for an ambiguous one ("32.16") both readings.
 FixedFormat parseFixedFormat(const std::string& text);
 
 }  // namespace rtu
