@@ -10,12 +10,14 @@ cd "$(dirname "$0")/.."
 # Build type "Sanitize" carries these flags alone: an empty build type fell back to the
 # project's Release default, which appended -O3 -DNDEBUG (91 s instead of 36 s for one command
 # file). -g1 (line tables) is enough for the sanitizers' stack traces and compiles faster than -g.
+# The only C code is Verilator's FST writer, whose misaligned stores are by design (UBSan reports
+# them): not ours to instrument.
 flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined,float-cast-overflow"
 flags+=" -fno-sanitize-recover=all"
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
-  -DCMAKE_C_FLAGS_SANITIZE="$flags" \
+  -DCMAKE_C_FLAGS_SANITIZE="-O2 -g1" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" -DRTUSIM_BENCH=OFF \
