@@ -114,6 +114,38 @@ void benchTraversal(const TriangleMesh& mesh, EmbreeReference& embree) {
               rays.size(), goldenHits, embreeHits, sameTriangle);
 }
 
+// The registered kind's triangle test chosen at run time (SelectedIntersector: one branch per
+// test) against the test fixed at compile time, on the same jobs.
+template <class Intersector>
+double traceSeconds(const BvhImage& image, const std::vector<BvhJob>& jobs,
+                    const BvhConfig& config) {
+  GoldenShell<BvhKind<Intersector>> shell(image.memory(), config);
+  std::vector<BvhResult> results(jobs.size());
+  return bestSeconds([&] {
+    for (size_t i = 0; i < jobs.size(); ++i) shell.run(0, jobs[i], results[i]);
+  });
+}
+
+void benchSelectedTest(const TriangleMesh& mesh) {
+  const std::vector<Ray> rays = viewRays(meshBounds(mesh), 4, 128, 128);
+  const BvhImage image = layOut(buildSah(mesh).tree, mesh);
+  const BvhSections sections = sectionsOf(BvhImageView(image.words).header());
+  std::vector<BvhJob> jobs;
+  for (const Ray& ray : rays)
+    jobs.push_back(
+        {makeBvhRay(glm::vec3(ray.origin), glm::vec3(ray.direction), 0, INFINITY), sections});
+  BvhConfig watertight, moller;
+  moller.triangleTest = TriangleTest::MollerTrumbore;
+  const double fixedW = traceSeconds<WatertightIntersector>(image, jobs, watertight);
+  const double selectedW = traceSeconds<SelectedIntersector>(image, jobs, watertight);
+  const double fixedM = traceSeconds<MollerTrumboreIntersector>(image, jobs, moller);
+  const double selectedM = traceSeconds<SelectedIntersector>(image, jobs, moller);
+  std::printf("  test chosen at run time / at compile time: watertight %.2f / %.2f M rays/s "
+              "(%.3f), moller-trumbore %.2f / %.2f M rays/s (%.3f)\n",
+              rays.size() / selectedW / 1e6, rays.size() / fixedW / 1e6, selectedW / fixedW,
+              rays.size() / selectedM / 1e6, rays.size() / fixedM / 1e6, selectedM / fixedM);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -131,6 +163,7 @@ int main(int argc, char** argv) {
                 mesh.triangles.size(), dropped);
     benchBuilds(mesh, embree);
     benchTraversal(mesh, embree);
+    benchSelectedTest(mesh);
   }
   return 0;
 }

@@ -54,4 +54,5 @@ void checkEqualsRtl(const Run& run, const RtlTopRun& rtl) {
 
 }  // namespace rtu
 
+#include "kinds/bvh_fixture.h"
 #include "kinds/svo_fixture.h"

@@ -9,10 +9,10 @@
 
 #include "inputs/camera.h"
 #include "kinds/svo/golden_model.h"
-#include "kinds/svo/model_header.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_image.h"
+#include "rtu/model_header.h"
 #include "three_balls_scene.h"
 
 namespace rtu {
