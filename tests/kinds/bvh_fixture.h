@@ -90,6 +90,12 @@ struct KindFixture<BvhKind<>> {
     return results;
   }
 
+  // A ray record passes the P_STAGES registers and the ray stages, and the first against a model
+  // waits for its model header and its image's header, 16 words each (bvh_job_setup.h).
+  static uint64_t firstDispatch(const JobManagerTiming& timing) {
+    return static_cast<uint64_t>(timing.stages + timing.rayStages + 2 * timing.headerFetchCycles);
+  }
+
   // Moller-Trumbore, the axis child order, a stack shallow enough to drop entries, and units of
   // several cycles.
   static void otherArithmetic(RtuConfig& config) {

@@ -66,6 +66,11 @@ struct KindFixture<SvoKind> {
     return std::vector<CoreKindResult>(golden.begin(), golden.end());
   }
 
+  // A t-value record passes the P_STAGES registers alone.
+  static uint64_t firstDispatch(const JobManagerTiming& timing) {
+    return static_cast<uint64_t>(timing.stages);
+  }
+
   // Q28.12 converted exactly, and a stack shallow enough to overflow.
   static void otherArithmetic(RtuConfig& config) {
     config.coreConfig<SvoKind>().format = FixedFormat{28, 12};
