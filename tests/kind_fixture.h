@@ -10,6 +10,8 @@
 //   rayRecords(frame, width, height)      the frame's rays as ray records against a model of it
 //   instancedRays()        memory() and records against several models (header fetches overlap)
 //   golden(memory, config, jobs)          its golden model's results, as a run's (CoreKindResult)
+//   firstDispatch(timing)  the cycle a frame's first job, accepted in cycle 0, leaves the job
+//                          manager's pipeline, derived by hand from the job manager's timing
 //   otherArithmetic(config)               settings of its own other than the thesis', for which
 //                                         every model must still agree
 //   checkOracle()          its independent oracle against its golden model (architecture.md,
@@ -54,4 +56,5 @@ void checkEqualsRtl(const Run& run, const RtlTopRun& rtl) {
 
 }  // namespace rtu
 
+#include "kinds/bvh_fixture.h"
 #include "kinds/svo_fixture.h"

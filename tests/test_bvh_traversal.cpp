@@ -123,6 +123,25 @@ TEST_CASE("BVH traversal: the near leaf misses and the popped far child hits", "
   CHECK(result.counts.pops == 1);
 }
 
+TEST_CASE("BVH traversal: box and triangle units of several cycles, counted by hand",
+          "[bvh_traversal]") {
+  // Box tests 3 cycles (ROOT_TEST, DECIDE); a leaf's tests 2 apart (the interval) but for its
+  // last, which waits the latency 7; every other state 1 (bvh_timing.h).
+  const HandImage image;
+  BvhConfig config;
+  config.cycles = BvhCycles{3, 7, 2};
+  // ROOT0, ROOT1 (2), ROOT_TEST (3).
+  CHECK(trace(image, down(image, 5, 5), config).cost == 5);
+  // To DECIDE: 2 + 3 + LEFT0..RIGHT1 (4) + DECIDE (3) = 12; REF, TRI0-2 (4), TEST (last: 7),
+  // POP (1).
+  CHECK(trace(image, down(image, 0.25f, 0.25f), config).cost == 12 + 4 + 7 + 1);
+  // Node 2's two triangles: 4 + TEST (2) + 4 + TEST (7), a leaf of k = 2 spending
+  // (k - 1) 2 + 7 in TEST; then POP (skip), POP (empty).
+  CHECK(trace(image, down(image, 1.25f, 1.25f), config).cost == 12 + 17 + 2);
+  // ..., POP (node 1), its one triangle (4 + 7), POP (empty).
+  CHECK(trace(image, down(image, 1.25f, 0.25f), config).cost == 12 + 17 + 1 + 11 + 1);
+}
+
 TEST_CASE("BVH traversal: the axis order agrees here, the children's centres apart along z",
           "[bvh_traversal]") {
   const HandImage image;

@@ -13,16 +13,20 @@ namespace rtu {
 
 TEMPLATE_LIST_TEST_CASE("Thesis configuration: results and every cycle equal the RTL", "[rtu]",
                         TestedKinds) {
+  // And with the kind's other settings (for the BVH: states of several cycles).
   using Fixture = KindFixture<TestType>;
   for (const std::string& scene : Fixture::scenes()) {
     const auto s = Fixture::frame(scene, 6, 24, 16);
-    for (int cores : {1, 2, 4, 16}) {
-      RtuConfig config = kindConfig<TestType>();
-      config.cores = cores;
-      const RtuRun run = simulateRtu(s.memory(), s.jobs, config);
-      const RtlTopRun rtl = runRtlTop(s.memory(), s.jobs, rtlTopConfig(config));
-      INFO(scene << ", " << cores << " cores");
-      checkEqualsRtl(run, rtl);
+    for (bool other : {false, true}) {
+      for (int cores : {1, 2, 4, 16}) {
+        RtuConfig config = kindConfig<TestType>();
+        if (other) Fixture::otherArithmetic(config);
+        config.cores = cores;
+        const RtuRun run = simulateRtu(s.memory(), s.jobs, config);
+        const RtlTopRun rtl = runRtlTop(s.memory(), s.jobs, rtlTopConfig(config));
+        INFO(scene << ", " << cores << " cores" << (other ? ", other settings" : ""));
+        checkEqualsRtl(run, rtl);
+      }
     }
   }
 }

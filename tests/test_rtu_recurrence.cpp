@@ -87,13 +87,16 @@ TEMPLATE_LIST_TEST_CASE("Recurrence equals the RTL transcription in the thesis c
   for (const std::string& scene : KindFixture<TestType>::scenes()) {
     const RecordFrame<TestType> records = smallFrame<TestType>(scene);
     const auto& frame = records.frame;
-    for (int cores : {1, 3, 16}) {
-      RtuConfig config = kindConfig<TestType>();
-      config.cores = cores;
-      const RtuRun analytic = runAnalytic(frame.memory(), frame.jobs, config);
-      const RtlTopRun rtl = runRtlTop(frame.memory(), frame.jobs, rtlTopConfig(config));
-      INFO(scene << ", " << cores << " cores");
-      checkEqualsRtl(analytic, rtl);
+    for (bool other : {false, true}) {  // the kind's other settings too
+      for (int cores : {1, 3, 16}) {
+        RtuConfig config = kindConfig<TestType>();
+        if (other) KindFixture<TestType>::otherArithmetic(config);
+        config.cores = cores;
+        const RtuRun analytic = runAnalytic(frame.memory(), frame.jobs, config);
+        const RtlTopRun rtl = runRtlTop(frame.memory(), frame.jobs, rtlTopConfig(config));
+        INFO(scene << ", " << cores << " cores" << (other ? ", other settings" : ""));
+        checkEqualsRtl(analytic, rtl);
+      }
     }
   }
 }

@@ -42,9 +42,9 @@ BvhGoldenRun trace(const std::vector<uint32_t>& image, const std::vector<BvhJob>
 }  // namespace
 
 BvhGoldenRun traceBvhGolden(const std::vector<uint32_t>& image, const std::vector<RayRecord>& rays,
-                            const std::string& raysPath, const std::string& triangleTest) {
+                            const std::string& raysPath, TriangleTest triangleTest) {
   const std::vector<BvhJob> jobs = jobsOf(image, rays, raysPath);
-  if (triangleTest == MollerTrumboreIntersector::kName)
+  if (triangleTest == TriangleTest::MollerTrumbore)
     return trace<MollerTrumboreIntersector>(image, jobs, rays);
   return trace<WatertightIntersector>(image, jobs, rays);
 }

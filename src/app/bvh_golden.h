@@ -18,6 +18,6 @@ struct BvhGoldenRun {
 
 // Throws std::runtime_error naming `raysPath` and the record for a model address other than 0.
 BvhGoldenRun traceBvhGolden(const std::vector<uint32_t>& image, const std::vector<RayRecord>& rays,
-                            const std::string& raysPath, const std::string& triangleTest);
+                            const std::string& raysPath, TriangleTest triangleTest);
 
 }  // namespace rtu

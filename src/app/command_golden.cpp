@@ -85,8 +85,8 @@ void goldenBvh(const RunConfig& settings, const GoldenOptions& options) {
   std::vector<SkippedRecord> skipped;
   const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
   warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
-  const BvhGoldenRun run =
-      traceBvhGolden(image.words, rays, settings.rays, settings.accel.triangleTest);
+  const BvhGoldenRun run = traceBvhGolden(image.words, rays, settings.rays,
+                                          settings.rtu.coreConfig<BvhKind<>>().triangleTest);
   std::vector<ResultRow> rows;
   rows.reserve(run.results.size());
   for (const BvhResult& r : run.results)

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/bvh_render.h"
 #include "app/commands.h"
 #include "app/frame_images.h"
 #include "app/output_paths.h"
@@ -91,6 +92,74 @@ std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
   return results;
 }
 
+// The BVH core's frame (app/bvh_render.h) on the chosen model: its results in pixel order.
+std::vector<BvhResult> traceBvhFrame(const BvhScene& scene, const std::vector<HostRecord>& records,
+                                     const Configuration& configuration,
+                                     const RenderOptions& options) {
+  const RunConfig& settings = configuration.values();
+  const WordMemory memory(scene.words);
+  if (settings.model == ModelKind::Golden) {
+    const auto start = std::chrono::steady_clock::now();
+    const RtuRun run = runModel(ModelKind::Golden, memory, records, settings.rtu);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<BvhResult> results = bvhResults(resultsInJobOrder(run));
+    char host[128];
+    std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
+                  results.size() / seconds / 1e6);
+    std::cout << describeBvhResults(results) << host;
+    return results;
+  }
+  const RtuConfig config = options.outputs.traced(settings.rtu);
+  const RtuConfig planned = plannedTrace(memory, records, config, options.outputs, std::cout);
+  RunProgressLine progress("render", "rays");
+  const RtuRun run = runModel(settings.model, memory, records, planned, progress.callback());
+  std::vector<BvhResult> results = bvhResults(resultsInJobOrder(run));
+  std::cout << describeBvhResults(results);
+  reportRun(run, configuration, options.outputs, std::cout);
+  if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
+  if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
+  return results;
+}
+
+// render --core bvh: the scene's triangles as a BVH, the same camera's frame as ray records.
+RenderedFrame renderBvh(const Configuration& configuration, const RenderOptions& options) {
+  const RunConfig& settings = configuration.values();
+  const BvhScene scene = loadBvhScene(settings);
+  const std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, scene.header);
+  const BvhConfig& core = settings.rtu.coreConfig<BvhKind<>>();
+  std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
+            << "model       " << toString(settings.model) << ", bvh core, "
+            << toString(core.triangleTest) << " test, " << core.stackDepth << " stack entries\n"
+            << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
+  const std::vector<BvhResult> results = traceBvhFrame(
+      scene, std::vector<HostRecord>(rays.begin(), rays.end()), configuration, options);
+  return bvhFrame(settings.camera, scene, results);
+}
+
+// render on the SVO core: the octree's frame of t-value records.
+RenderedFrame renderSvo(const Configuration& configuration, const RenderOptions& options) {
+  const RunConfig& settings = configuration.values();
+  if (settings.model != ModelKind::Golden)
+    checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                             settings.allowStackOverflow);
+  const GoldenConfig golden = settings.rtu.coreConfig<SvoKind>();
+  golden.format.validate();
+  const Scene scene = loadScene(settings.scene);
+  const std::vector<TValueRecord> jobs =
+      makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
+  std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
+            << "model       " << toString(settings.model) << ", " << golden.format.describe()
+            << ", " << toString(golden.conversion) << " conversion, " << golden.stackFrames
+            << " stack frames\n"
+            << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
+  const std::vector<TraversalResult> results =
+      settings.model == ModelKind::Golden
+          ? traceWithGolden(scene, jobs, configuration)
+          : traceWithTimedModel(scene, jobs, configuration, options);
+  return RenderedFrame::fromResults(settings.camera, golden.format, results);
+}
+
 }  // namespace
 
 void addRenderCommand(CLI::App& app) {
@@ -98,8 +167,11 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
                 "loosely-timed or golden model: --model) and report it");
-  auto request = addConfigOptions(*command, kUseModel | kUseModelChoice | kUseArithmetic |
-                                                kUseScene | kUseCamera);
+  // The accel settings for the BVH core's build (--builder, --drop-bad-triangles); render
+  // builds the structure of its core, so not --accel or the other structures' own.
+  auto request = addConfigOptions(
+      *command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
+      {"--accel", "--bih-format", "--index"});
   addRunOutputOptions(*command, options->outputs);
   command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
   command->add_option("--depth-image", options->depthImage,
@@ -110,30 +182,14 @@ void addRenderCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     checkOutputsOfModel(*options, *request, configuration);
     const RunConfig& settings = configuration.values();
-    const bool untimed = settings.model == ModelKind::Golden;
     settings.camera.validate();
-    if (!untimed) {
-      validate(options->outputs.traced(settings.rtu));
-      checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                               settings.allowStackOverflow);
-    }
+    if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    const GoldenConfig golden = settings.rtu.coreConfig<SvoKind>();
-    golden.format.validate();
-    const Scene scene = loadScene(settings.scene);
-    const std::vector<TValueRecord> jobs =
-        makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-    std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-              << "model       " << toString(settings.model) << ", " << golden.format.describe()
-              << ", " << toString(golden.conversion) << " conversion, " << golden.stackFrames
-              << " stack frames\n"
-              << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
-    const std::vector<TraversalResult> results =
-        untimed ? traceWithGolden(scene, jobs, configuration)
-                : traceWithTimedModel(scene, jobs, configuration, *options);
-    const RenderedFrame rendered =
-        RenderedFrame::fromResults(settings.camera, golden.format, results);
+    // The frame's images are each kind's own outputs.
+    const RenderedFrame rendered = settings.rtu.core == BvhKind<>::kName
+                                       ? renderBvh(configuration, *options)
+                                       : renderSvo(configuration, *options);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
     if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);

@@ -159,20 +159,15 @@ bool isFloatFormat(const std::string& path) {
   return extension == "exr" || extension == "tif" || extension == "tiff" || extension == "hdr";
 }
 
-int normalAxis(const TraversalResult& result) {
-  return result.normal[0] ? 0 : result.normal[1] ? 1 : 2;
-}
-
 Pixel shadeLambert(const RenderedFrame& frame, size_t index) {
-  const TraversalResult& result = frame.pixels[index];
+  const FramePixel& result = frame.pixels[index];
   const int width = frame.camera.width;
   const glm::dvec3 direction =
       frame.camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width))
           .direction;
   if (!result.hit) return Pixel(0.08f, 0.09f, 0.12f);
-  const int axis = normalAxis(result);
-  glm::dvec3 normal(0.0);
-  normal[axis] = direction[axis] > 0 ? -1.0 : 1.0;  // the face the ray entered looks back at it
+  glm::dvec3 normal = glm::normalize(result.normal);
+  if (glm::dot(normal, direction) > 0) normal = -normal;  // the face the ray met looks back at it
   const glm::dvec3 light = glm::normalize(glm::dvec3(0.45, 0.8, -0.4));
   const float lambert = static_cast<float>(std::max(0.0, glm::dot(normal, light)));
   return Pixel(0.86f, 0.80f, 0.68f) * (0.22f + 0.78f * lambert);
@@ -262,15 +257,23 @@ std::vector<Label> scaleLabels(const CostScale& scale, int x0, int rampWidth,
 
 }  // namespace
 
+RenderedFrame::RenderedFrame(const Camera& camera) : camera(camera), pixels(camera.pixelCount()) {}
+
+void RenderedFrame::place(uint32_t id, const FramePixel& pixel) {
+  if (id >= pixels.size())
+    throw std::runtime_error("result for job " + std::to_string(id) + " lies outside the " +
+                             std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+                             " frame");
+  pixels[id] = pixel;
+}
+
 RenderedFrame RenderedFrame::fromResults(const Camera& camera, const FixedFormat& format,
                                          const std::vector<TraversalResult>& results) {
-  RenderedFrame frame{camera, format, std::vector<TraversalResult>(camera.pixelCount())};
+  RenderedFrame frame(camera);
   for (const TraversalResult& result : results) {
-    if (result.id() >= frame.pixels.size())
-      throw std::runtime_error("result for job " + std::to_string(result.id()) +
-                               " lies outside the " + std::to_string(camera.width) + "x" +
-                               std::to_string(camera.height) + " frame");
-    frame.pixels[result.id()] = result;
+    FramePixel pixel{result.hit, format.toDouble(result.tHit), result.cost, glm::dvec3(0.0)};
+    pixel.normal[result.normal[0] ? 0 : result.normal[1] ? 1 : 2] = 1.0;  // the face's axis
+    frame.place(result.id(), pixel);
   }
   return frame;
 }
@@ -301,7 +304,7 @@ void writeCostImage(const RenderedFrame& frame, const std::string& path) {
   const int width = frame.camera.width;
   const int height = frame.camera.height;
   CostScale scale{std::numeric_limits<uint32_t>::max(), 0};
-  for (const TraversalResult& result : frame.pixels) {
+  for (const FramePixel& result : frame.pixels) {
     scale.low = std::min(scale.low, result.cost);
     scale.high = std::max(scale.high, result.cost);
   }
@@ -314,7 +317,7 @@ void writeCostImage(const RenderedFrame& frame, const std::string& path) {
   const Pixel background(0.12f), ink(0.92f);
   Canvas canvas(width, height + (withScale ? kStrip : 0), background);
   for (size_t i = 0; i < frame.pixels.size(); ++i) {
-    const TraversalResult& result = frame.pixels[i];
+    const FramePixel& result = frame.pixels[i];
     const float t = scale(result.cost);
     canvas.set(static_cast<int>(i % width), static_cast<int>(i / width),
                result.hit ? viridis(t) : missColour(t));
@@ -355,7 +358,7 @@ void writeDepthImage(const RenderedFrame& frame, const std::string& path) {
   float farthest = std::numeric_limits<float>::lowest();
   for (size_t i = 0; i < frame.pixels.size(); ++i) {
     if (!frame.pixels[i].hit) continue;
-    depth[i] = static_cast<float>(frame.format.toDouble(frame.pixels[i].tHit));
+    depth[i] = static_cast<float>(frame.pixels[i].t);
     nearest = std::min(nearest, depth[i]);
     farthest = std::max(farthest, depth[i]);
   }

@@ -3,8 +3,11 @@
 // PNG, EXR, TIFF, ...). OpenImageIO is called in librtusim_images.so (image_plugin.cpp), loaded
 // on first use (src/base/plugin_loader.h): a missing module is a std::runtime_error naming it.
 
+#include <cstdint>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "inputs/camera.h"
 #include "kinds/svo/fixed_point.h"
@@ -13,12 +16,23 @@
 
 namespace rtu {
 
-// Results indexed by job id (= pixel x + y * width); missing pixels are misses.
+// What the images show of a pixel's ray, whichever kind traced it.
+struct FramePixel {
+  bool hit = false;
+  double t = 0;  // the hit's distance along the ray (0 on a miss)
+  uint32_t cost = 0;
+  glm::dvec3 normal{0.0};  // the surface's at the hit, either way round, any length but 0
+};
+
+// Pixels indexed by job id (= pixel x + y * width); missing pixels are misses.
 struct RenderedFrame {
   Camera camera;
-  FixedFormat format;
-  std::vector<TraversalResult> pixels;
+  std::vector<FramePixel> pixels;
 
+  explicit RenderedFrame(const Camera& camera);  // every pixel a miss
+  // Throws std::runtime_error for an id outside the frame.
+  void place(uint32_t id, const FramePixel& pixel);
+  // The SVO kind's results: t from `format`, the normal of the voxel face entered.
   static RenderedFrame fromResults(const Camera& camera, const FixedFormat& format,
                                    const std::vector<TraversalResult>& results);
 };

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "kinds/svo/model_header.h"
+#include "rtu/model_header.h"
 
 namespace rtu {
 

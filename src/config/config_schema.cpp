@@ -8,6 +8,8 @@
 #include <type_traits>
 
 #include "base/timing_limits.h"
+#include "kinds/bvh/bvh_config.h"
+#include "kinds/registry.h"
 #include "kinds/svo/procedural_scenes.h"
 
 namespace rtu {
@@ -234,12 +236,19 @@ void addAccelSettings(std::vector<Setting>& schema) {
       "BVH builder: langr (seed 003's Algorithms 3-4), binned (SAH, 32 bins), sweep (full-sweep "
       "SAH) or lbvh (Morton codes)",
       [](C& c) -> std::string& { return c.accel.builder; }, sameText, sameText));
-  schema.back().ignoredBecause = ignoredUnlessAccel("bvh");
+  // A BVH is built for `build --accel bvh` and for the BVH core's runs (render --core bvh).
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "bvh" || c.rtu.core == "bvh"
+               ? std::string()
+               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
+  };
   schema.push_back(flag("accel.drop_bad_triangles", "--drop-bad-triangles", kUseAccel,
                         "drop degenerate and duplicate triangles instead of refusing the mesh",
                         [](C& c) -> bool& { return c.accel.dropBadTriangles; }));
   schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "svo" ? std::string("accel is svo") : std::string();
+    return c.accel.structure == "svo" && c.rtu.core != "bvh"
+               ? std::string("accel is svo and the core kind is " + c.rtu.core)
+               : std::string();
   };
   schema.push_back(choice(
       "accel.bih_format", "--bih-format", {"c99", "vhdl"}, kUseAccel,
@@ -259,14 +268,6 @@ void addAccelSettings(std::vector<Setting>& schema) {
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
                         [](C& c) -> std::string& { return c.accel.file; }));
-  schema.push_back(choice(
-      "accel.triangle_test", "--triangle-test", {"watertight", "moller-trumbore"}, kUseArithmetic,
-      "BVH traversal's ray/triangle test in float32",
-      [](C& c) -> std::string& { return c.accel.triangleTest; }, sameText, sameText));
-  schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.file.empty() ? std::string("no triangle image (accel_file) is given")
-                                : std::string();
-  };
 }
 
 std::string ignoredUnlessLooselyTimed(const RunConfig& c) {
@@ -338,6 +339,58 @@ void addSvoSettings(std::vector<Setting>& schema) {
     };
     schema.push_back(std::move(s));
   }
+}
+
+std::string triangleTestName(const TriangleTest& test) { return toString(test); }
+std::string childOrderName(const ChildOrder& order) { return toString(order); }
+
+// The BVH kind's settings (kinds/bvh, RtuConfig::coreConfig<BvhKind<>>()): its stack, child
+// order, triangle test and units' cycles (kinds/bvh/bvh_timing.h), all arithmetic: the cycles are
+// in the golden traversal's costs too. With another kind of core they have no effect; the
+// triangle test also chooses the golden run's over an accel_file.
+void addBvhSettings(std::vector<Setting>& schema) {
+  using C = RunConfig;
+  constexpr unsigned arith = kUseArithmetic;
+  std::vector<Setting> added;
+  added.push_back(integer("core.stack_depth", "--stack-depth", "entries", 1, kMaxBvhStackDepth,
+                          arith,
+                          "BVH traversal stack entries (a push onto a full stack drops "
+                          "the oldest, counted as bvh_stack_overflows)",
+                          [](C& c) -> int& { return c.rtu.coreConfig<BvhKind<>>().stackDepth; }));
+  added.push_back(choice(
+      "core.child_order", "--child-order", {"entry", "axis"}, arith,
+      "BVH: which of two hit children goes first: entry (the nearer entry) or axis (the ray's "
+      "sign on the axis separating them)",
+      [](C& c) -> ChildOrder& { return c.rtu.coreConfig<BvhKind<>>().childOrder; }, childOrderName,
+      parseChildOrder));
+  added.push_back(
+      integer("core.box.latency", "--box-latency", "cycles", 1, kMaxBvhUnitCycles, arith,
+              "BVH: cycles of a node's box tests (both children at once)",
+              [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.boxLatency; }));
+  added.push_back(integer(
+      "core.triangle.latency", "--triangle-latency", "cycles", 1, kMaxBvhUnitCycles, arith,
+      "BVH: cycles from a ray/triangle test's issue to its result (a leaf's last test waits them)",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.triangleLatency; }));
+  added.push_back(integer(
+      "core.triangle.interval", "--triangle-interval", "cycles", 1, kMaxBvhUnitCycles, arith,
+      "BVH: the triangle unit's initiation interval, cycles between two tests' issues",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.triangleInterval; }));
+  for (Setting& s : added) {
+    s.ignoredBecause = [](const RunConfig& c) {
+      return c.rtu.core == BvhKind<>::kName ? std::string() : "the core kind is " + c.rtu.core;
+    };
+    schema.push_back(std::move(s));
+  }
+  schema.push_back(choice(
+      "accel.triangle_test", "--triangle-test", {"watertight", "moller-trumbore"}, arith,
+      "the BVH core's ray/triangle test in float32 (and the golden run's over an accel_file)",
+      [](C& c) -> TriangleTest& { return c.rtu.coreConfig<BvhKind<>>().triangleTest; },
+      triangleTestName, parseTriangleTest));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.rtu.core == BvhKind<>::kName || !c.accel.file.empty()
+               ? std::string()
+               : "the core kind is " + c.rtu.core + " and no triangle image (accel_file) is given";
+  };
 }
 
 std::vector<Setting> makeSchema() {
@@ -422,6 +475,7 @@ std::vector<Setting> makeSchema() {
       "the kind of traversal core (" + CoreKinds::described() + ")",
       [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
   addSvoSettings(s);
+  addBvhSettings(s);
   // The workload.
   s.push_back(choice(
       "scene", "--scene", proceduralSceneNames(), scene,

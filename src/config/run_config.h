@@ -22,7 +22,6 @@ struct AccelSpec {
   std::string bihFormat = "c99";   // bih: the seed's c99 or vhdl number formats
   std::string index = "seed";      // bih, kdtree: the seed's index widths, or wide
   std::string file;                // a built triangle structure's image to trace (.bvh)
-  std::string triangleTest = "watertight";  // bvh: watertight | moller-trumbore
 };
 
 struct RunConfig {

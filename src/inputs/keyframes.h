@@ -10,7 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
-#include "kinds/svo/model_header.h"
+#include "rtu/model_header.h"
 
 namespace rtu {
 

@@ -165,5 +165,9 @@ inline const TraversalResult& svoResult(const CoreKindResult& result) {
 inline std::vector<TraversalResult> svoResults(const std::vector<CoreKindResult>& results) {
   return resultsOfKind<SvoKind>(results);
 }
+// The BVH kind's: its frame images (app/bvh_render.h).
+inline std::vector<BvhResult> bvhResults(const std::vector<CoreKindResult>& results) {
+  return resultsOfKind<BvhKind<>>(results);
+}
 
 }  // namespace rtu

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/statistics.h"
+#include "kinds/bvh/bvh_kind.h"
 #include "kinds/host_record.h"
 #include "kinds/svo/svo_kind.h"
 #include "rtu/job_manager_timing.h"
@@ -100,7 +101,7 @@ struct CoreKindList {
   }
 };
 
-using CoreKinds = CoreKindList<SvoKind>;  // a new kind: one more name here
+using CoreKinds = CoreKindList<SvoKind, BvhKind<>>;  // a new kind: one more name here
 
 using HostRecord = CoreKinds::HostRecord;
 using CoreKindConfigs = CoreKinds::Configs;

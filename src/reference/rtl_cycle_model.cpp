@@ -82,6 +82,7 @@ struct Core {
   typename Kind::Behaviour behaviour;
   uint32_t idWord = 0;  // out_result.job_id
   uint64_t tag = 0;
+  uint32_t stateCycle = 0;  // cycles of the current state done (Kind::stateCycles, SVO: 1)
 
   uint64_t state() const { return static_cast<uint64_t>(behaviour.state()); }
 };
@@ -262,8 +263,9 @@ void RtlTop::KindRegisters<Kind>::clockCores(const Wires& w) {
       }
     } else if (core.state() == Kind::kOutState) {
       if (w.coreOutReady[i]) core.behaviour.finish();
-    } else {
-      core.behaviour.step(read);
+    } else if (++core.stateCycle == Kind::stateCycles(core.behaviour)) {
+      core.behaviour.step(read);  // in the state's last cycle
+      core.stateCycle = 0;
     }
   }
 }

@@ -17,6 +17,12 @@ struct TriangleResult {
   uint32_t primitive = 0;      // the hit triangle's id; 0 on a miss
   uint32_t cost = 0;
   Counts counts;
+
+  bool operator==(const TriangleResult& o) const {
+    return idWord == o.idWord && hit == o.hit && t == o.t && u == o.u && v == o.v &&
+           primitive == o.primitive && cost == o.cost && counts == o.counts;
+  }
+  bool operator!=(const TriangleResult& o) const { return !(*this == o); }
 };
 
 // The result of the job `traversal` ran, under the id word `idWord`.

@@ -9,10 +9,10 @@
 
 #include "inputs/camera.h"
 #include "kinds/svo/golden_model.h"
-#include "kinds/svo/model_header.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_image.h"
+#include "rtu/model_header.h"
 #include "three_balls_scene.h"
 
 namespace rtu {
@@ -64,6 +64,11 @@ struct KindFixture<SvoKind> {
     const std::vector<TraversalResult> golden =
         GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
     return std::vector<CoreKindResult>(golden.begin(), golden.end());
+  }
+
+  // A t-value record passes the P_STAGES registers alone.
+  static uint64_t firstDispatch(const JobManagerTiming& timing) {
+    return static_cast<uint64_t>(timing.stages);
   }
 
   // Q28.12 converted exactly, and a stack shallow enough to overflow.

@@ -4,6 +4,7 @@
 // Each prepares what it needs once per ray and then tests triangles in float32, with the
 // conventions of geometry/triangle_tests.h.
 
+#include <cstdint>
 #include <optional>
 
 #include "geometry/triangle_tests.h"
@@ -35,6 +36,33 @@ struct MollerTrumboreIntersector {
                                               float tMin, float tMax) const {
     return mollerTrumbore(ray.origin, ray.direction, v0, v1, v2, tMin, tMax);
   }
+};
+
+// Either test, chosen per core from the settings (BvhConfig::triangleTest) rather than at compile
+// time, so that one registered kind offers both: one branch per triangle test, the same for every
+// test of a run (well predicted), no virtual call. bench/triangle_bench measures it against the
+// templated forms (docs/performance.md).
+enum class TriangleTest : uint8_t { Watertight, MollerTrumbore };
+
+class SelectedIntersector {
+ public:
+  SelectedIntersector() = default;
+  explicit SelectedIntersector(TriangleTest test) : test_(test) {}
+
+  void prepare(const BvhRay& ray) {
+    if (test_ == TriangleTest::Watertight) watertight_.prepare(ray);
+  }
+  std::optional<TriangleHit<float>> intersect(const BvhRay& ray, const Vec3<float>& v0,
+                                              const Vec3<float>& v1, const Vec3<float>& v2,
+                                              float tMin, float tMax) const {
+    if (test_ == TriangleTest::Watertight)
+      return watertight_.intersect(ray, v0, v1, v2, tMin, tMax);
+    return MollerTrumboreIntersector{}.intersect(ray, v0, v1, v2, tMin, tMax);
+  }
+
+ private:
+  TriangleTest test_ = TriangleTest::Watertight;
+  WatertightIntersector watertight_;
 };
 
 }  // namespace rtu

@@ -11,7 +11,7 @@
 // (ChildOrder), and that a hit replaces the best only when strictly nearer, so of equal t the
 // first in traversal order wins.
 //
-// States, one step each:
+// States, one step each (its cycles: bvh_timing.h; one each by default):
 //   ROOT0, ROOT1   the root node's words 0-3 and 4-7
 //   ROOT_TEST      the root's box against the ray (1 box test): miss -> OUT
 //   LEFT0, LEFT1,  the current inner node's children's words (2 accesses each)
@@ -36,6 +36,7 @@
 #include "geometry/triangle_tests.h"
 #include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_ray.h"
+#include "kinds/bvh/bvh_timing.h"
 #include "rtu/traversal_stack.h"
 
 namespace rtu {
@@ -86,7 +87,13 @@ struct BvhRayCounts {
   uint32_t boxTests = 0;
   uint32_t triangleTests = 0;
   uint32_t pushes = 0, pops = 0;
-  uint32_t dropped = 0;  // stack entries lost to a push onto a full stack
+  uint32_t dropped = 0;   // stack entries lost to a push onto a full stack
+  uint32_t accesses = 0;  // memory accesses, kWordsPerRead words each
+
+  bool operator==(const BvhRayCounts& o) const {
+    return nodes == o.nodes && boxTests == o.boxTests && triangleTests == o.triangleTests &&
+           pushes == o.pushes && pops == o.pops && dropped == o.dropped && accesses == o.accesses;
+  }
 };
 
 template <class Layout, class Intersector>
@@ -95,7 +102,9 @@ class BvhTraversal {
   using Words = typename Layout::Words;
   static constexpr uint32_t kWordsPerRead = 4;
 
-  BvhTraversal(int stackDepth, ChildOrder order) : stack_(stackDepth), order_(order) {}
+  BvhTraversal(int stackDepth, ChildOrder order, BvhCycles cycles = {},
+               Intersector intersector = {})
+      : stack_(stackDepth), order_(order), cycles_(cycles), intersector_(intersector) {}
 
   void start(const BvhJob& job) {
     ray_ = job.ray;
@@ -110,6 +119,17 @@ class BvhTraversal {
   }
 
   BvhState state() const { return state_; }
+  int stackSize() const { return stack_.size(); }
+  // The current state's cycles (bvh_timing.h), asked before it is stepped.
+  uint32_t stateCycles() const {
+    switch (state_) {
+      case BvhState::RootTest:
+      case BvhState::Decide: return cycles_.boxLatency;
+      case BvhState::Test:
+        return refsLeft_ > 1 ? cycles_.triangleInterval : cycles_.triangleLatency;
+      default: return 1;
+    }
+  }
   bool busy() const { return state_ != BvhState::Idle && state_ != BvhState::Out; }
   bool readsMemory() const {
     switch (state_) {
@@ -147,7 +167,8 @@ class BvhTraversal {
   // Forced inline: a state does little, so the call would cost a good part of it.
   template <class ReadWord>
   [[gnu::always_inline]] inline void step(ReadWord&& readWord) {
-    ++cost_;
+    const uint32_t cycles = stateCycles();
+    if (readsMemory()) ++counts_.accesses;
     switch (state_) {
       case BvhState::Root0:
         fetch(readWord, current_, 0);
@@ -193,8 +214,14 @@ class BvhTraversal {
         break;
       case BvhState::Test: test(); break;
       case BvhState::Pop: pop(); break;
-      default: --cost_; throw std::logic_error("BVH traversal stepped while idle or done");
+      default: throw std::logic_error("BVH traversal stepped while idle or done");
     }
+    cost_ += cycles;
+  }
+  // The timed cores' name for step (as the SVO core's).
+  template <class ReadWord>
+  [[gnu::always_inline]] inline void stepInline(ReadWord&& readWord) {
+    step(readWord);
   }
   void finish() { state_ = BvhState::Idle; }
 
@@ -316,6 +343,7 @@ class BvhTraversal {
 
   RingStack<Entry> stack_;
   ChildOrder order_;
+  BvhCycles cycles_;
   Intersector intersector_;
   BvhRay ray_;
   BvhSections image_;

@@ -10,11 +10,11 @@
 #include <cstdint>
 #include <map>
 
-#include "kinds/svo/model_header.h"
 #include "kinds/svo/ray_transform.h"
 #include "kinds/svo/svo_memory.h"
 #include "kinds/svo/thesis_records.h"
 #include "rtu/job_manager_timing.h"
+#include "rtu/model_header.h"
 
 namespace rtu {
 

@@ -25,10 +25,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "kinds/svo/model_header.h"
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/svo_memory.h"
 #include "kinds/svo/thesis_records.h"
+#include "rtu/model_header.h"
 #include "rtu/model_transform.h"
 #include "rtu/ray_record.h"
 

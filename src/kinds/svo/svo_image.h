@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "kinds/svo/model_header.h"
 #include "kinds/svo/svo_memory.h"
+#include "rtu/model_header.h"
 
 namespace rtu {
 

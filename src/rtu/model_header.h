@@ -1,18 +1,19 @@
 #pragma once
-// The placement of an animated model (thesis sections 4.3 and 6.2.1): 16 words in SVO memory at
-// the model address a ray record names, which the job manager fetches to move the ray into the
-// model's space (rtu/model_transform.h). Layout, little-endian 32-bit words:
+// The placement of an animated model (thesis sections 4.3 and 6.2.1): 16 words in memory at the
+// model address a ray record names, which the job manager fetches to move the ray into the
+// model's space (rtu/model_transform.h). Shared by every kind; word 15 is the kind's entry to its
+// model (SVO: the root descriptor; BVH: the image's header). Layout, little-endian 32-bit words:
 //   0..2    translation T (float32 x, y, z)
 //   3..11   inverse rotation R^T, row-major (float32)
 //   12..14  inverse scale 1/S (float32 x, y, z)
-//   15      word address of the model's root descriptor
-// The model's cube [-1,1]^3 sits in the world at p_world = R (S p_model) + T.
+//   15      word address of the model's root (SVO: root descriptor; BVH: image header)
+// The model (SVO: its cube [-1,1]^3) sits in the world at p_world = R (S p_model) + T.
 
 #include <array>
 #include <cstdint>
 
-#include "kinds/svo/svo_memory.h"
 #include "rtu/model_transform.h"
+#include "rtu/word_memory.h"
 
 namespace rtu {
 

@@ -1,9 +1,9 @@
-#include "kinds/svo/model_header.h"
+#include "rtu/model_header.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "kinds/svo/ray_setup.h"
+#include "base/float_bits.h"
 
 namespace rtu {
 

@@ -1,0 +1,98 @@
+#include "app/bvh_render.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "app/accel_build.h"
+#include "kinds/bvh/bvh_model.h"
+#include "kinds/svo/mesh_voxelizer.h"
+#include "kinds/svo/scene_loader.h"
+
+namespace rtu {
+namespace {
+
+TriangleScene loadTriangles(const RunConfig& settings) {
+  const MeshDefectPolicy policy = settings.accel.dropBadTriangles ? MeshDefectPolicy::Drop
+                                                                  : MeshDefectPolicy::Refuse;
+  try {
+    return loadTriangleScene(settings.scene, policy);
+  } catch (const DroppableMeshDefects& error) {
+    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
+  }
+}
+
+// Where the SVO render puts the scene: a mesh file as the voxelizer fits it into the cube.
+ModelPlacement placementOf(const RunConfig& settings, const TriangleMesh& mesh) {
+  ModelPlacement placement;
+  if (settings.scene.meshFile.empty()) return placement;  // voxel faces: in the cube already
+  const MeshVoxelizer fit(mesh, settings.scene.depth);
+  placement.translation = fit.offset();
+  placement.scale = glm::dvec3(fit.scale());
+  return placement;
+}
+
+}  // namespace
+
+BvhScene loadBvhScene(const RunConfig& settings) {
+  TriangleScene triangles = loadTriangles(settings);
+  AccelSpec spec = settings.accel;
+  spec.structure = "bvh";
+  AccelBuild build = buildAccel(triangles.mesh, spec);
+  BvhScene scene;
+  scene.placement = placementOf(settings, triangles.mesh);
+  scene.mesh = std::move(triangles.mesh);
+  scene.words = std::move(build.words);
+  scene.header = appendBvhModelHeader(scene.words, scene.placement);
+  scene.name = triangles.name;
+  scene.description = build.description + ", " + std::to_string(scene.mesh.triangles.size()) +
+                      " triangles, " + std::to_string(build.quality.nodes) + " nodes, " +
+                      std::to_string(build.quality.bytes) + " bytes";
+  return scene;
+}
+
+RenderedFrame bvhFrame(const Camera& camera, const BvhScene& scene,
+                       const std::vector<BvhResult>& results) {
+  RenderedFrame frame(camera);
+  for (const BvhResult& result : results) {
+    FramePixel pixel{result.hit, result.t, result.cost, glm::dvec3(0.0)};
+    if (result.hit) {
+      const auto& corners = scene.mesh.triangles.at(result.primitive);
+      const glm::dvec3 a = scene.mesh.vertices[corners[0]], b = scene.mesh.vertices[corners[1]],
+                       c = scene.mesh.vertices[corners[2]];
+      // A normal maps to the world by R S^-1 (the inverse transpose of R S).
+      pixel.normal = scene.placement.rotation * (glm::cross(b - a, c - a) / scene.placement.scale);
+    }
+    frame.place(result.idWord, pixel);
+  }
+  return frame;
+}
+
+std::string describeBvhResults(const std::vector<BvhResult>& results) {
+  BvhCounters counters;
+  uint64_t hits = 0, cost = 0;
+  uint32_t maxCost = 0;
+  for (const BvhResult& result : results) {
+    hits += result.hit;
+    cost += result.cost;
+    maxCost = std::max(maxCost, result.cost);
+    counters.add(result.counts);
+  }
+  const double rays = results.empty() ? 1.0 : static_cast<double>(results.size());
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "rays        %zu\n"
+                "hits        %llu (%.1f %%)\n"
+                "cost        mean %.2f, max %u cycles per ray (ROOT0 to last state before OUT)\n"
+                "bvh         %.2f nodes, %.2f box tests, %.2f triangle tests, %.1f bytes per "
+                "ray; %llu rays lost stack entries\n",
+                results.size(), static_cast<unsigned long long>(hits), 100.0 * hits / rays,
+                cost / rays, maxCost, counters.bvhNodesVisited / rays, counters.bvhBoxTests / rays,
+                counters.bvhTriangleTests / rays, counters.bvhBytesFetched / rays,
+                static_cast<unsigned long long>(counters.bvhStackOverflows));
+  return text;
+}
+
+}  // namespace rtu

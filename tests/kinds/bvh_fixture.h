@@ -1,0 +1,126 @@
+#pragma once
+// The BVH kind's test fixture (tests/kind_fixture.h): procedural scenes' voxel faces (in the SVO
+// cube [-1,1]^3, so the default camera frames them as it frames the octrees) built by three of
+// the builders, frames of primary rays of the default camera as world-space ray records against a
+// model header, the golden traversal behind the kind's job set-up, and the float64 brute force of
+// geometry/triangle_oracle.h as its oracle (test_bvh_kind.cpp).
+
+#include <string>
+#include <vector>
+
+#include "inputs/camera.h"
+#include "kinds/bvh/bvh_kind.h"
+#include "kinds/bvh/bvh_model.h"
+#include "kinds/bvh/langr_builder.h"
+#include "kinds/bvh/lbvh_builder.h"
+#include "kinds/bvh/sah_builder.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/voxel_faces.h"
+#include "rtu/golden_shell.h"
+
+namespace rtu {
+
+template <>
+struct KindFixture<BvhKind<>> {
+  using Kind = BvhKind<>;
+
+  struct Frame {
+    std::string scene;
+    TriangleMesh mesh;
+    std::vector<uint32_t> words;   // the image at word 0, then its model header
+    std::vector<HostRecord> jobs;  // ray records, job i's id is i
+    WordMemory memory() const { return WordMemory(words); }
+  };
+
+  // Each built by another builder: sphere binned SAH, menger langr, terrain Morton codes.
+  static std::vector<std::string> scenes() { return {"sphere", "menger", "terrain"}; }
+
+  // The scene's voxel faces at depth `detail` - 2 (detail 6: a 16^3 grid, some thousand
+  // triangles), with an identity placement.
+  static Frame frame(const std::string& scene, int detail, int width, int height) {
+    Frame frame{scene, voxelFaces(*makeProceduralScene(scene, detail - 2)), {}, {}};
+    frame.words = layOut(tree(scene, frame.mesh), frame.mesh).words;
+    const uint32_t header = appendBvhModelHeader(frame.words, ModelPlacement{});
+    const std::vector<RayRecord> rays = makeFrameRayRecords(camera(width, height), header);
+    frame.jobs.assign(rays.begin(), rays.end());
+    return frame;
+  }
+
+  // The frame's own records are ray records already.
+  static std::vector<HostRecord> rayRecords(Frame& frame, int, int) { return frame.jobs; }
+
+  // One image, three model headers placing it apart (the first at the origin, the others moved
+  // and scaled); 40 rays against each of the first two, the rest against the third.
+  struct InstancedRays {
+    Frame frame;
+    std::vector<HostRecord> records;
+    WordMemory memory() const { return frame.memory(); }
+  };
+  static InstancedRays instancedRays() {
+    InstancedRays rays{frame("sphere", 5, 16, 10), {}};
+    ModelPlacement moved;
+    moved.translation = {0.5, -0.25, 0.5};
+    moved.scale = glm::dvec3(0.75);
+    ModelPlacement turned;
+    turned.rotation = rotationFromEulerDegrees({0, 30, 0});
+    const uint32_t headers[3] = {std::get<RayRecord>(rays.frame.jobs[0]).modelAddress,
+                                 appendBvhModelHeader(rays.frame.words, moved),
+                                 appendBvhModelHeader(rays.frame.words, turned)};
+    for (size_t i = 0; i < rays.frame.jobs.size(); ++i) {
+      RayRecord record = std::get<RayRecord>(rays.frame.jobs[i]);
+      record.modelAddress = headers[std::min<size_t>(i / 40, 2)];
+      rays.records.push_back(record);
+    }
+    return rays;
+  }
+
+  // The kind's job set-up, then its traversal to the end under the untimed shell.
+  static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
+                                            const std::vector<HostRecord>& jobs) {
+    const BvhConfig& own = config.coreConfig<Kind>();
+    Kind::Setup setup(memory, config.jobManager, own);
+    GoldenShell<Kind> shell(memory, own);
+    std::vector<CoreKindResult> results;
+    for (const HostRecord& record : jobs) {
+      const JobSetUp<BvhJob> set = setUpHostRecord<Kind>(setup, record);
+      BvhResult result;
+      shell.run(set.idWord, set.job, result);
+      results.emplace_back(result);
+    }
+    return results;
+  }
+
+  // A ray record passes the P_STAGES registers and the ray stages, and the first against a model
+  // waits for its model header and its image's header, 16 words each (bvh_job_setup.h).
+  static uint64_t firstDispatch(const JobManagerTiming& timing) {
+    return static_cast<uint64_t>(timing.stages + timing.rayStages + 2 * timing.headerFetchCycles);
+  }
+
+  // Moller-Trumbore, the axis child order, a stack shallow enough to drop entries, and units of
+  // several cycles.
+  static void otherArithmetic(RtuConfig& config) {
+    BvhConfig& own = config.coreConfig<Kind>();
+    own.triangleTest = TriangleTest::MollerTrumbore;
+    own.childOrder = ChildOrder::Axis;
+    own.stackDepth = 2;
+    own.cycles = BvhCycles{3, 7, 2};
+  }
+
+  // The oracle against the golden traversal (test_bvh_kind.cpp).
+  static void checkOracle();
+
+ private:
+  static BuildTree tree(const std::string& scene, const TriangleMesh& mesh) {
+    if (scene == "menger") return buildLangr(mesh).tree;
+    if (scene == "terrain") return buildLbvh(mesh).tree;
+    return buildSah(mesh).tree;
+  }
+  static Camera camera(int width, int height) {
+    Camera camera;
+    camera.width = width;
+    camera.height = height;
+    return camera;
+  }
+};
+
+}  // namespace rtu
