@@ -19,6 +19,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "inputs/camera.h"
 #include "kinds/core_result.h"
 #include "kinds/registry.h"
 #include "reference/rtl_cycle_model.h"
@@ -37,6 +38,14 @@ RtuConfig kindConfig() {
   RtuConfig config;
   config.core = Kind::kName;
   return config;
+}
+
+// The default camera at a fixture frame's size (every kind's frames look at the same view).
+inline Camera fixtureCamera(int width, int height) {
+  Camera camera;
+  camera.width = width;
+  camera.height = height;
+  return camera;
 }
 
 // The per-cycle RTL reference of the RTU `config` describes.

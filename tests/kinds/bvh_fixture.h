@@ -41,7 +41,7 @@ struct KindFixture<BvhKind<>> {
     Frame frame{scene, voxelFaces(*makeProceduralScene(scene, detail - 2)), {}, {}};
     frame.words = layOut(tree(scene, frame.mesh), frame.mesh).words;
     const uint32_t header = appendBvhModelHeader(frame.words, ModelPlacement{});
-    const std::vector<RayRecord> rays = makeFrameRayRecords(camera(width, height), header);
+    const std::vector<RayRecord> rays = makeFrameRayRecords(fixtureCamera(width, height), header);
     frame.jobs.assign(rays.begin(), rays.end());
     return frame;
   }
@@ -114,12 +114,6 @@ struct KindFixture<BvhKind<>> {
     if (scene == "menger") return buildLangr(mesh).tree;
     if (scene == "terrain") return buildLbvh(mesh).tree;
     return buildSah(mesh).tree;
-  }
-  static Camera camera(int width, int height) {
-    Camera camera;
-    camera.width = width;
-    camera.height = height;
-    return camera;
   }
 };
 

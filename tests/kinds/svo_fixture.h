@@ -31,14 +31,14 @@ struct KindFixture<SvoKind> {
   // The scene built as an octree of `depth` levels.
   static Frame frame(const std::string& scene, int depth, int width, int height) {
     Frame frame{scene, buildSvo(*makeProceduralScene(scene, depth)), {}};
-    frame.jobs = makeFrameJobs(camera(width, height), frame.build.image.root);
+    frame.jobs = makeFrameJobs(fixtureCamera(width, height), frame.build.image.root);
     return frame;
   }
 
   // Appends a model header (the model placed as it was built) to the frame's image.
   static std::vector<HostRecord> rayRecords(Frame& frame, int width, int height) {
     const uint32_t header = appendModelHeader(frame.build.image, ModelPlacement{});
-    const std::vector<RayRecord> rays = makeFrameRayRecords(camera(width, height), header);
+    const std::vector<RayRecord> rays = makeFrameRayRecords(fixtureCamera(width, height), header);
     return std::vector<HostRecord>(rays.begin(), rays.end());
   }
 
@@ -80,14 +80,6 @@ struct KindFixture<SvoKind> {
 
   // The voxel walk against the golden model (test_svo_voxel_walk.cpp).
   static void checkOracle();
-
- private:
-  static Camera camera(int width, int height) {
-    Camera camera;
-    camera.width = width;
-    camera.height = height;
-    return camera;
-  }
 };
 
 }  // namespace rtu
