@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/accel_build.h"
+#include "explore/accel_build.h"
 #include "app/commands.h"
 #include "app/output_paths.h"
 #include "app/placement_flags.h"
