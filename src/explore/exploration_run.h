@@ -1,7 +1,8 @@
 #pragma once
 // One row of an exploration (fps, sweep): the configured camera's frame of primary rays on a
-// scene built for the row's core kind (frame_scene.h), simulated on the cycle-accurate model; the row is the run's JSON (version, effective
-// configuration, statistics), the same a single `render --stats` writes.
+// scene built for the row's core kind (frame_scene.h), simulated on the cycle-accurate model; the
+// row is the run's JSON (version, effective configuration, statistics), the same a single `render
+// --stats` writes.
 
 #include <functional>
 #include <map>
