@@ -16,7 +16,7 @@ small=(--scene sphere --depth 4 --width 8 --height 8)
 expect_error "memory.dram.latency (sweep) has no effect in any configuration: memory.kind is ideal" \
   "$rtusim" sweep "${small[@]}" --grid memory.dram.latency=10,20 --out ideal.csv
 [[ ! -e ideal.csv ]] || fail "the refused sweep wrote rows"
-expect_error "accel.builder (sweep) has no effect in any configuration: rtusim sweep does not use it" \
+expect_error "accel.builder (sweep) has no effect in any configuration: accel is svo and the core kind is svo" \
   "$rtusim" sweep "${small[@]}" --grid accel.builder=binned,sweep --out accel.csv
 "$rtusim" sweep "${small[@]}" --grid memory.kind=ideal,cached --grid memory.dram.latency=10,20 \
   -j 1 --out mixed.csv >mixed.txt 2>mixed.err

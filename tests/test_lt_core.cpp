@@ -217,7 +217,7 @@ TEST_CASE("Cache warmer: one touch per two-word access, in its core's L1", "[lt_
   // Job 0 (base 8) on core 0 reads words 8-9, 12-13 and 10-11: bytes 32, 48 and 40, so the L1
   // lines at 32 and 48 (40 lies in 32's); the L2 line at 0 holds both. Job 1 (base 64) on core 1
   // reads words 64-65, 68-69, 66-67: the L1 lines at 256 and 272, the L2 line at 256.
-  warmer.warmUpTo({8, 64}, 2);
+  warmer.warmUpTo(std::vector<ToyKind::Record>{8, 64}, 2);
   CHECK(warmer.next() == 2);
   const CacheContents& caches = warmer.contents();
   CHECK(caches.l1[0].contains(32));

@@ -16,7 +16,7 @@ namespace {
 
 struct CachedFrame {
   SvoImage image;
-  std::vector<TValueRecord> jobs;
+  std::vector<HostRecord> jobs;
   RtuConfig config;
 };
 
@@ -26,7 +26,8 @@ CachedFrame cachedFrame(int depth, int width, int height, int cores) {
   Camera camera;
   camera.width = width;
   camera.height = height;
-  frame.jobs = makeFrameJobs(camera, frame.image.root);
+  const std::vector<TValueRecord> jobs = makeFrameJobs(camera, frame.image.root);
+  frame.jobs.assign(jobs.begin(), jobs.end());
   frame.config.cores = cores;
   frame.config.memory.ideal = false;
   return frame;
@@ -119,7 +120,7 @@ TEST_CASE("Statistics after a prefix: counters subtracted, window's rays and cyc
 TEST_CASE("Snapshots do not change the run and fall on their cycles", "[sampling]") {
   const CachedFrame frame = cachedFrame(5, 40, 30, 4);
   const SvoImage& image = frame.image;
-  const std::vector<TValueRecord>& jobs = frame.jobs;
+  const std::vector<HostRecord>& jobs = frame.jobs;
   const RtuConfig& config = frame.config;
   const RtuRun plain = simulateRtu(image.memory(), jobs, config);
   BlockRun plan;
@@ -151,7 +152,7 @@ TEST_CASE("Sampled estimate: the 95 % interval covers the full run for 18 of 20 
           "[sampling][slow]") {
   const CachedFrame frame = cachedFrame(6, 640, 360, 8);
   const SvoImage& image = frame.image;
-  const std::vector<TValueRecord>& jobs = frame.jobs;
+  const std::vector<HostRecord>& jobs = frame.jobs;
   const RtuConfig& config = frame.config;
   const double full = static_cast<double>(simulateRtu(image.memory(), jobs, config).totalCycles);
   SampleSpec spec;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "rtu/core_kind.h"
 #include "rtu/word_memory.h"
 #include "sim/rtu_config.h"
 
@@ -86,7 +87,12 @@ struct ToyKind {
   static constexpr uint64_t kFirstReadAfterDispatch = 2;
 
   static Behaviour behaviour(const Config&) { return {}; }
-  static Job setUp(const Record& record, const Config&) { return record; }
+  // The job manager's set-up of a record: the base address as it is (the cache warmer's).
+  class Setup {
+   public:
+    Setup(WordMemory, const JobManagerTiming&, const Config&) {}
+    JobSetUp<Job> setUp(const Record& record) const { return {record, record, 0, 0}; }
+  };
   static void start(Behaviour& core, const Job& job) { core.start(job); }
   static void writeResult(uint32_t idWord, const Behaviour& core, Result& result) {
     result = ToyResult{idWord, core.sum(), core.cost()};

@@ -2,58 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
-#include "app/accel_build.h"
-#include "kinds/bvh/bvh_model.h"
-#include "kinds/svo/mesh_voxelizer.h"
-#include "kinds/svo/scene_loader.h"
-
 namespace rtu {
-namespace {
 
-TriangleScene loadTriangles(const RunConfig& settings) {
-  const MeshDefectPolicy policy = settings.accel.dropBadTriangles ? MeshDefectPolicy::Drop
-                                                                  : MeshDefectPolicy::Refuse;
-  try {
-    return loadTriangleScene(settings.scene, policy);
-  } catch (const DroppableMeshDefects& error) {
-    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
-  }
-}
-
-// Where the SVO render puts the scene: a mesh file as the voxelizer fits it into the cube.
-ModelPlacement placementOf(const RunConfig& settings, const TriangleMesh& mesh) {
-  ModelPlacement placement;
-  if (settings.scene.meshFile.empty()) return placement;  // voxel faces: in the cube already
-  const MeshVoxelizer fit(mesh, settings.scene.depth);
-  placement.translation = fit.offset();
-  placement.scale = glm::dvec3(fit.scale());
-  return placement;
-}
-
-}  // namespace
-
-BvhScene loadBvhScene(const RunConfig& settings) {
-  TriangleScene triangles = loadTriangles(settings);
-  AccelSpec spec = settings.accel;
-  spec.structure = "bvh";
-  AccelBuild build = buildAccel(triangles.mesh, spec);
-  BvhScene scene;
-  scene.placement = placementOf(settings, triangles.mesh);
-  scene.mesh = std::move(triangles.mesh);
-  scene.words = std::move(build.words);
-  scene.header = appendBvhModelHeader(scene.words, scene.placement);
-  scene.name = triangles.name;
-  scene.description = build.description + ", " + std::to_string(scene.mesh.triangles.size()) +
-                      " triangles, " + std::to_string(build.quality.nodes) + " nodes, " +
-                      std::to_string(build.quality.bytes) + " bytes";
-  return scene;
-}
-
-RenderedFrame bvhFrame(const Camera& camera, const BvhScene& scene,
+RenderedFrame bvhFrame(const Camera& camera, const FrameScene& scene,
                        const std::vector<BvhResult>& results) {
   RenderedFrame frame(camera);
   for (const BvhResult& result : results) {

@@ -120,7 +120,17 @@ void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
     std::cout << "wrote       " << animation.path << " (" << animation.tool << ")\n";
 }
 
+// An animated scene's models are octrees, merged per ray by the SVO scene manager: a triangle core
+// would need the two-level BVH rebuilt per frame (issue 28), which animate does not build yet.
+void refuseTriangleCores(const RtuConfig& rtu) {
+  if (rtu.core != SvoKind::kName)
+    throw std::invalid_argument("animate --core " + rtu.core +
+                                ": animated scenes run on the svo core only; the " + rtu.core +
+                                " core needs a two-level BVH rebuilt per frame, not modelled yet");
+}
+
 void animate(const AnimateOptions& options, const RtuConfig& rtu) {
+  refuseTriangleCores(rtu);
   if (options.model == "lt") refuseForLooselyTimedScenes(rtu);
   const SceneDescription scene = readSceneFile(options.sceneFile, options.overrides);
   std::filesystem::create_directories(options.outDir);

@@ -5,12 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/accel_build.h"
 #include "app/commands.h"
 #include "app/output_paths.h"
 #include "app/placement_flags.h"
 #include "app/schema_flags.h"
 #include "base/binary_file.h"
+#include "explore/accel_build.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {

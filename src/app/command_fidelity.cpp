@@ -11,8 +11,7 @@
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
 #include "explore/exploration_run.h"
-#include "kinds/svo/scene_loader.h"
-#include "kinds/svo/stack_check.h"
+#include "explore/frame_scene.h"
 #include "run/fidelity_study.h"
 #include "run/lt_simulation.h"
 
@@ -94,7 +93,8 @@ void addFidelityCommand(CLI::App& app) {
       "each measured "
       "against the cycle-accurate SystemC model: speed and error");
   auto request = addConfigOptions(
-      *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling, {"--sample"});
+      *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling | kUseAccel,
+      {"--sample", "--accel", "--bih-format", "--index"});
   // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
   request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
   command->add_option("--fractions", options->fractions, "sampled fractions to measure")
@@ -113,11 +113,8 @@ void addFidelityCommand(CLI::App& app) {
     settings.camera.validate();
     validate(settings.rtu);
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(settings));
-    const Scene scene = loadScene(settings.scene);
-    const std::vector<TValueRecord> jobs =
-        makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-    checkStackDepth(scene.image, jobs, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                    settings.allowStackOverflow);
+    const FrameScene scene = loadFrameScene(settings);
+    const std::vector<HostRecord> jobs = frameRecords(scene, settings);
     if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
       throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
     for (double fraction : options->fractions) {
@@ -129,9 +126,8 @@ void addFidelityCommand(CLI::App& app) {
               << settings.camera.height << ", " << settings.rtu.cores << " cores, "
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory; errors against "
               << "the SystemC model\n";
-    const std::vector<ModeFidelity> modes =
-        measureFidelity(scene.image.memory(), jobs, settings.rtu, options->quanta,
-                        options->fractions, settings.sample);
+    const std::vector<ModeFidelity> modes = measureFidelity(
+        scene.memory(), jobs, settings.rtu, options->quanta, options->fractions, settings.sample);
     printTable(modes, std::cout);
     if (!options->csv.empty()) {
       writeCsv(modes, options->csv);

@@ -3,17 +3,15 @@
 #include <iostream>
 #include <memory>
 
-#include "app/bvh_render.h"
 #include "app/commands.h"
 #include "app/frame_images.h"
+#include "app/frame_outputs.h"
 #include "app/output_paths.h"
 #include "app/run_outputs.h"
 #include "app/schema_flags.h"
+#include "explore/frame_scene.h"
 #include "explore/sweep_workers.h"
-#include "kinds/core_result.h"
-#include "kinds/svo/golden_model.h"
-#include "kinds/svo/result_summary.h"
-#include "kinds/svo/stack_check.h"
+#include "run/analytic_run.h"
 #include "run/model_run.h"
 #include "run/rtu_simulation.h"
 
@@ -55,109 +53,46 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
   checkOutputsOfModel(options.outputs, model);
 }
 
-std::vector<TraversalResult> traceWithGolden(const Scene& scene,
-                                             const std::vector<TValueRecord>& jobs,
-                                             const Configuration& configuration) {
-  GoldenModel model(scene.image.memory(), configuration.values().rtu.coreConfig<SvoKind>());
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<TraversalResult> results = model.traceAll(jobs);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  char host[128];
-  std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
-                results.size() / seconds / 1e6);
-  std::cout << ResultSummary::of(results).describe() << host;
-  return results;
-}
-
-std::vector<TraversalResult> traceWithTimedModel(const Scene& scene,
-                                                 const std::vector<TValueRecord>& jobs,
-                                                 const Configuration& configuration,
-                                                 const RenderOptions& options) {
-  const RtuConfig config = options.outputs.traced(configuration.values().rtu);
-  checkStackDepth(scene.image, jobs, config.coreConfig<SvoKind>().stackFrames,
-                  configuration.values().allowStackOverflow);
-  const std::vector<HostRecord> records(jobs.begin(), jobs.end());
-  const RtuConfig planned =
-      plannedTrace(scene.image.memory(), records, config, options.outputs, std::cout);
-  RunProgressLine progress("render", "rays");
-  const RtuRun run = runModel(configuration.values().model, scene.image.memory(), records, planned,
-                              progress.callback());
-  // The frame's images are the SVO kind's outputs.
-  std::vector<TraversalResult> results = svoResults(resultsInJobOrder(run));
-  std::cout << ResultSummary::of(results).describe();
-  reportRun(run, configuration, options.outputs, std::cout);
-  if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
-  if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
-  return results;
-}
-
-// The BVH core's frame (app/bvh_render.h) on the chosen model: its results in pixel order.
-std::vector<BvhResult> traceBvhFrame(const BvhScene& scene, const std::vector<HostRecord>& records,
-                                     const Configuration& configuration,
-                                     const RenderOptions& options) {
+// The results of the frame's records on the chosen model, in pixel order, with the model's
+// report (the golden model's host time; a timed model's statistics, trace and timeline).
+std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
+                                       const std::vector<HostRecord>& records,
+                                       const Configuration& configuration,
+                                       const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
-  const WordMemory memory(scene.words);
+  const WordMemory memory = scene.memory();
   if (settings.model == ModelKind::Golden) {
     const auto start = std::chrono::steady_clock::now();
-    const RtuRun run = runModel(ModelKind::Golden, memory, records, settings.rtu);
+    std::vector<CoreKindResult> results = traceGolden(memory, records, settings.rtu);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::vector<BvhResult> results = bvhResults(resultsInJobOrder(run));
     char host[128];
     std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
                   results.size() / seconds / 1e6);
-    std::cout << describeBvhResults(results) << host;
+    std::cout << describeResults(settings, results) << host;
     return results;
   }
   const RtuConfig config = options.outputs.traced(settings.rtu);
   const RtuConfig planned = plannedTrace(memory, records, config, options.outputs, std::cout);
   RunProgressLine progress("render", "rays");
   const RtuRun run = runModel(settings.model, memory, records, planned, progress.callback());
-  std::vector<BvhResult> results = bvhResults(resultsInJobOrder(run));
-  std::cout << describeBvhResults(results);
+  std::vector<CoreKindResult> results = resultsInJobOrder(run);
+  std::cout << describeResults(settings, results);
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
   if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
   return results;
 }
 
-// render --core bvh: the scene's triangles as a BVH, the same camera's frame as ray records.
-RenderedFrame renderBvh(const Configuration& configuration, const RenderOptions& options) {
+// The frame of the run's kind (explore/frame_scene.h) on the chosen model.
+RenderedFrame renderFrame(const Configuration& configuration, const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
-  const BvhScene scene = loadBvhScene(settings);
-  const std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, scene.header);
-  const BvhConfig& core = settings.rtu.coreConfig<BvhKind<>>();
+  const FrameScene scene = loadFrameScene(settings);
+  const std::vector<HostRecord> records = frameRecords(scene, settings);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
-            << "model       " << toString(settings.model) << ", bvh core, "
-            << toString(core.triangleTest) << " test, " << core.stackDepth << " stack entries\n"
+            << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
-  const std::vector<BvhResult> results = traceBvhFrame(
-      scene, std::vector<HostRecord>(rays.begin(), rays.end()), configuration, options);
-  return bvhFrame(settings.camera, scene, results);
-}
-
-// render on the SVO core: the octree's frame of t-value records.
-RenderedFrame renderSvo(const Configuration& configuration, const RenderOptions& options) {
-  const RunConfig& settings = configuration.values();
-  if (settings.model != ModelKind::Golden)
-    checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                             settings.allowStackOverflow);
-  const GoldenConfig golden = settings.rtu.coreConfig<SvoKind>();
-  golden.format.validate();
-  const Scene scene = loadScene(settings.scene);
-  const std::vector<TValueRecord> jobs =
-      makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-  std::cout << "scene       " << scene.name << ": " << scene.summary << "\n"
-            << "model       " << toString(settings.model) << ", " << golden.format.describe()
-            << ", " << toString(golden.conversion) << " conversion, " << golden.stackFrames
-            << " stack frames\n"
-            << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
-  const std::vector<TraversalResult> results =
-      settings.model == ModelKind::Golden
-          ? traceWithGolden(scene, jobs, configuration)
-          : traceWithTimedModel(scene, jobs, configuration, options);
-  return RenderedFrame::fromResults(settings.camera, golden.format, results);
+  return framePixels(settings, scene, traceFrame(scene, records, configuration, options));
 }
 
 }  // namespace
@@ -186,10 +121,7 @@ void addRenderCommand(CLI::App& app) {
     if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    // The frame's images are each kind's own outputs.
-    const RenderedFrame rendered = settings.rtu.core == BvhKind<>::kName
-                                       ? renderBvh(configuration, *options)
-                                       : renderSvo(configuration, *options);
+    const RenderedFrame rendered = renderFrame(configuration, *options);
     if (!options->image.empty()) writeShadedImage(rendered, options->image);
     if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
     if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);

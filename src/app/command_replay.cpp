@@ -33,6 +33,11 @@ void addReplayCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     checkOneInputBuffer(settings);
+    // The thesis' buffers: an .svo image, its job or ray records and its result records.
+    if (settings.rtu.core != SvoKind::kName)
+      throw std::invalid_argument("replay --core " + settings.rtu.core +
+                                  ": replay runs the thesis' SVO buffers only; trace triangle "
+                                  "ray records with golden --accel-file");
     checkOutputsOfModel(options->outputs, settings.model);
     const RtuConfig config = options->outputs.traced(settings.rtu);
     validate(config);

@@ -6,22 +6,15 @@
 #include <map>
 #include <stdexcept>
 
+#include "base/binary_file.h"
 #include "config/run_json.h"
 #include "explore/sweep_workers.h"
-#include "kinds/svo/stack_check.h"
 #include "run/analytic_run.h"
 #include "run/rtu_simulation.h"
 #include "run/sampled_run.h"
 
 namespace rtu {
 namespace {
-
-// The settings that decide which scene is built, as text.
-std::string sceneKey(const SceneSpec& spec) {
-  return spec.procedural + "|" + spec.svoFile + "|" + spec.meshFile + "|" + spec.binvoxFile + "|" +
-         std::to_string(spec.depth) + "|" + std::to_string(spec.seed) + "|" +
-         std::to_string(spec.root) + "|" + std::to_string(spec.maxDepth);
-}
 
 // A row's work for the progress line's ETA: the rays of its frame.
 double rowRays(const Configuration& configuration) {
@@ -32,35 +25,29 @@ double rowRays(const Configuration& configuration) {
 }  // namespace
 
 void SceneCache::build(const std::vector<Configuration>& configurations) {
-  // A scene too deep for every stack that will run it is refused before it is built (a deep
-  // procedural scene takes minutes and gigabytes); each row still checks its own stack.
-  struct Use {
-    const SceneSpec* spec;
-    int stackFrames;
-    bool allowOverflow;
-  };
-  std::map<std::string, Use> uses;
+  // An octree too deep for every stack that will run it is refused before it is built (a deep
+  // procedural scene takes minutes and gigabytes): it is built with the deepest stack of its rows;
+  // each row still checks its own (frameRecords).
+  std::map<std::string, RunConfig> uses;
   for (const Configuration& configuration : configurations) {
     const RunConfig& settings = configuration.values();
-    const int stackFrames = settings.rtu.coreConfig<SvoKind>().stackFrames;
-    auto [use, added] = uses.emplace(sceneKey(settings.scene), Use{&settings.scene, stackFrames,
-                                                                   settings.allowStackOverflow});
-    use->second.stackFrames = std::max(use->second.stackFrames, stackFrames);
-    use->second.allowOverflow = use->second.allowOverflow || settings.allowStackOverflow;
+    auto [use, added] = uses.emplace(frameSceneKey(settings), settings);
+    int& stackFrames = use->second.rtu.coreConfig<SvoKind>().stackFrames;
+    stackFrames = std::max(stackFrames, settings.rtu.coreConfig<SvoKind>().stackFrames);
+    use->second.allowStackOverflow |= settings.allowStackOverflow;
   }
   for (const auto& [key, use] : uses) {
     if (scenes_.count(key) || errors_.count(key)) continue;
     try {
-      checkBuiltSceneFitsStack(*use.spec, use.stackFrames, use.allowOverflow);
-      scenes_.emplace(key, loadScene(*use.spec));
+      scenes_.emplace(key, loadFrameScene(use));
     } catch (const std::exception& error) {
       errors_.emplace(key, error.what());
     }
   }
 }
 
-const Scene& SceneCache::scene(const SceneSpec& spec) const {
-  const std::string key = sceneKey(spec);
+const FrameScene& SceneCache::scene(const RunConfig& settings) const {
+  const std::string key = frameSceneKey(settings);
   const auto error = errors_.find(key);
   if (error != errors_.end()) throw std::runtime_error("scene: " + error->second);
   return scenes_.at(key);
@@ -70,13 +57,14 @@ void SceneCache::save(const std::string& directory) const {
   nlohmann::json index = nlohmann::json::object();
   size_t number = 0;
   for (const auto& [key, scene] : scenes_) {
-    const std::string file = "scene_" + std::to_string(number++) + ".svo";
-    writeSvoFile(directory + "/" + file, scene.image);
+    const std::string file = "scene_" + std::to_string(number++) + ".words";
+    writeWordFile(directory + "/" + file, scene.words);
     index[key] = {{"file", file},
-                  {"root", scene.image.root},
+                  {"core", scene.core},
+                  {"entry", scene.entry},
                   {"name", scene.name},
-                  {"summary", scene.summary},
-                  {"depth", scene.depth}};
+                  {"description", scene.description},
+                  {"stack_needed", scene.stackNeeded}};
   }
   for (const auto& [key, error] : errors_) index[key] = {{"error", error}};
   std::ofstream out(directory + "/scenes.json");
@@ -93,12 +81,14 @@ void SceneCache::load(const std::string& directory) {
       errors_[key] = entry["error"].get<std::string>();
       continue;
     }
-    Scene scene;
-    scene.image = readSvoFile(directory + "/" + entry["file"].get<std::string>(),
-                              entry["root"].get<uint32_t>());
+    FrameScene scene;
+    scene.words = readWordFile(directory + "/" + entry["file"].get<std::string>(), sizeof(uint32_t),
+                               "scene image");
+    scene.core = entry["core"].get<std::string>();
+    scene.entry = entry["entry"].get<uint32_t>();
     scene.name = entry["name"].get<std::string>();
-    scene.summary = entry["summary"].get<std::string>();
-    scene.depth = entry["depth"].get<int>();
+    scene.description = entry["description"].get<std::string>();
+    scene.stackNeeded = entry["stack_needed"].get<int>();
     scenes_[key] = std::move(scene);
   }
 }
@@ -128,16 +118,14 @@ std::vector<size_t> validRows(
   return valid;
 }
 
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
                                    RowModel model) {
   const RunConfig& settings = configuration.values();
   validateRow(configuration);
-  const std::vector<TValueRecord> jobs =
-      makeFrameJobs(settings.camera, scene.image.root, settings.epsilon);
-  checkStackDepth(scene.image, jobs, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                  settings.allowStackOverflow);
+  const std::vector<HostRecord> records = frameRecords(scene, settings);
+  const WordMemory memory = scene.memory();
   if (settings.model != ModelKind::CycleAccurate) {
-    const RtuRun run = runModel(settings.model, scene.image.memory(), jobs, settings.rtu);
+    const RtuRun run = runModel(settings.model, memory, records, settings.rtu);
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
     row.update(runJson(run.statistics, configuration));
     return row;
@@ -146,12 +134,12 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
   if (!recurrence && settings.sample.enabled()) {
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
     row.update(runJson(RtuStatistics{}, configuration));
-    row["statistics"] = sampledStatisticsJson(
-        runSampled(scene.image.memory(), jobs, settings.rtu, settings.sample));
+    row["statistics"] =
+        sampledStatisticsJson(runSampled(memory, records, settings.rtu, settings.sample));
     return row;
   }
-  const RtuRun run = recurrence ? runAnalytic(scene.image.memory(), jobs, settings.rtu)
-                                : simulateRtu(scene.image.memory(), jobs, settings.rtu);
+  const RtuRun run = recurrence ? runAnalytic(memory, records, settings.rtu)
+                                : simulateRtu(memory, records, settings.rtu);
   nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
   row.update(runJson(run.statistics, configuration));
   return row;
@@ -160,7 +148,7 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Sce
 nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
                                     RowModel model) {
   try {
-    return runFrameRow(configuration, scenes.scene(configuration.values().scene), model);
+    return runFrameRow(configuration, scenes.scene(configuration.values()), model);
   } catch (const std::exception& error) {
     return failedRow(configuration, error.what());
   }
@@ -240,32 +228,43 @@ std::string valueText(const Json& value) {
   return value.dump();
 }
 
+// The columns every row has, whatever its kind.
+std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
+  return {{"rays", "rays"},
+          {"total_cycles", "total_cycles"},
+          {"cycles_per_ray", "cycles_per_ray"},
+          {"frame_ms", "frame_ms"},
+          {"fps", "fps"},
+          {"limit", "limit"},
+          {"cost_mean", "cost/mean"},
+          {"blocked_mean", "blocked_cycles/mean"},
+          {"core_busy", "core_time/busy"},
+          {"core_blocked", "core_time/blocked"},
+          {"core_handover", "core_time/handover"},
+          {"core_idle", "core_time/idle"},
+          {"max_wait", "scheduler/max_wait"},
+          {"l1_hit_rate", "memory/l1/hit_rate"},
+          {"l2_hit_rate", "memory/l2/hit_rate"},
+          {"dram_bytes", "memory/dram/bytes"},
+          {"dram_bytes_per_cycle", "memory/dram/bytes_per_cycle"},
+          {"host_seconds", "simulation/host_seconds"},
+          {"answered_by", "simulation/model"},
+          {"total_cycles_ci_low", "sample/total_cycles_ci95/0"},
+          {"total_cycles_ci_high", "sample/total_cycles_ci95/1"},
+          {"simulated_fraction", "sample/fraction_simulated"}};
+}
+
 }  // namespace
 
 const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys() {
-  static const std::vector<std::pair<std::string, std::string>> columns = {
-      {"rays", "rays"},
-      {"total_cycles", "total_cycles"},
-      {"cycles_per_ray", "cycles_per_ray"},
-      {"frame_ms", "frame_ms"},
-      {"fps", "fps"},
-      {"limit", "limit"},
-      {"cost_mean", "cost/mean"},
-      {"blocked_mean", "blocked_cycles/mean"},
-      {"core_busy", "core_time/busy"},
-      {"core_blocked", "core_time/blocked"},
-      {"core_handover", "core_time/handover"},
-      {"core_idle", "core_time/idle"},
-      {"max_wait", "scheduler/max_wait"},
-      {"l1_hit_rate", "memory/l1/hit_rate"},
-      {"l2_hit_rate", "memory/l2/hit_rate"},
-      {"dram_bytes", "memory/dram/bytes"},
-      {"dram_bytes_per_cycle", "memory/dram/bytes_per_cycle"},
-      {"host_seconds", "simulation/host_seconds"},
-      {"answered_by", "simulation/model"},
-      {"total_cycles_ci_low", "sample/total_cycles_ci95/0"},
-      {"total_cycles_ci_high", "sample/total_cycles_ci95/1"},
-      {"simulated_fraction", "sample/fraction_simulated"}};
+  static const std::vector<std::pair<std::string, std::string>> columns = [] {
+    std::vector<std::pair<std::string, std::string>> all = generalColumnKeys();
+    // Every kind's counters (run totals; zero for a kind the row does not run), as named in the
+    // statistics JSON.
+    for (const Statistic& counter : CoreKinds::Counters::declaration().statistics())
+      all.emplace_back(counter.key, counter.key);
+    return all;
+  }();
   return columns;
 }
 

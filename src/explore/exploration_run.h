@@ -1,7 +1,8 @@
 #pragma once
 // One row of an exploration (fps, sweep): the configured camera's frame of primary rays on a
-// scene, simulated on the cycle-accurate model; the row is the run's JSON (version, effective
-// configuration, statistics), the same a single `render --stats` writes.
+// scene built for the row's core kind (frame_scene.h), simulated on the cycle-accurate model; the
+// row is the run's JSON (version, effective configuration, statistics), the same a single `render
+// --stats` writes.
 
 #include <functional>
 #include <map>
@@ -11,24 +12,25 @@
 #include <nlohmann/json.hpp>
 
 #include "config/configuration.h"
-#include "kinds/svo/scene_loader.h"
+#include "explore/frame_scene.h"
 
 namespace rtu {
 
-// Scenes built once and shared by the rows (workers fork after they are built).
+// Scenes built once, each for its kind (frame_scene.h), and shared by the rows (workers fork after
+// they are built).
 class SceneCache {
  public:
   // Builds every scene the configurations name; a scene that fails keeps its error for its rows.
   void build(const std::vector<Configuration>& configurations);
   // Throws std::runtime_error with the build error of a scene that failed.
-  const Scene& scene(const SceneSpec& spec) const;
-  // The built scenes as .svo files with an index in `directory` (for Slurm array tasks), and
+  const FrameScene& scene(const RunConfig& settings) const;
+  // The built scenes as word files with an index in `directory` (for Slurm array tasks), and
   // back; errors name the directory.
   void save(const std::string& directory) const;
   void load(const std::string& directory);
 
  private:
-  std::map<std::string, Scene> scenes_;
+  std::map<std::string, FrameScene> scenes_;
   std::map<std::string, std::string> errors_;
 };
 
@@ -39,7 +41,7 @@ class SceneCache {
 enum class RowModel { Simulation, RecurrenceWhereExact };
 
 // The run JSON with "status": "ok"; throws for an impossible configuration or a stalled run.
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Scene& scene,
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
                                    RowModel model = RowModel::Simulation);
 // runFrameRow, or the failed row of a configuration that cannot run.
 nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,

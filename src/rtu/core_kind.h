@@ -20,9 +20,9 @@
 //   Setup                the job manager's set-up of a host record (JobSetUp below), made from
 //                        (memory, JobManagerTiming, Config): setUp(const RayRecord&) and, for a
 //                        kind with its own Record, setUp(const Record&); a record it has no
-//                        overload for is refused (kinds/host_record.h);
-//   Record, setUp(record, config)  the kind's own record, if any (naming itself by kName), and
-//                        its set-up from the kind's Config alone (the cache warmer's);
+//                        overload for is refused (kinds/host_record.h); the job manager's and
+//                        the cache warmer's (run/cache_warmer.h);
+//   Record               the kind's own record, if any (naming itself by kName);
 //   resultRecordBytes(config)  a result's record on the host output link.
 // What the kind-agnostic machinery asks of a Result (the payloads, the host sink and the runs carry
 // it as a CoreKindResult, kinds/registry.h; kinds/core_result.h asks through these):

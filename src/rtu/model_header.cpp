@@ -57,4 +57,12 @@ ModelHeader readModelHeader(const WordMemory& memory, uint32_t address) {
   return header;
 }
 
+uint32_t appendModelHeader(std::vector<uint32_t>& words, const ModelPlacement& placement,
+                           uint32_t root) {
+  const ModelHeaderWords header = encodeModelHeader(makeModelHeader(placement, root));
+  const auto address = static_cast<uint32_t>(words.size());
+  words.insert(words.end(), header.begin(), header.end());
+  return address;
+}
+
 }  // namespace rtu

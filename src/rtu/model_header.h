@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "rtu/model_transform.h"
 #include "rtu/word_memory.h"
@@ -30,6 +31,11 @@ struct ModelHeader : ModelTransform {
 ModelHeader makeModelHeader(const ModelPlacement& placement, uint32_t root);
 
 ModelHeaderWords encodeModelHeader(const ModelHeader& header);
+// Appends to `words` (an image) the encoded header of a model placed at `placement` whose structure
+// starts at `root`, and returns the header's word address (the old size). Throws as
+// makeModelHeader.
+uint32_t appendModelHeader(std::vector<uint32_t>& words, const ModelPlacement& placement,
+                           uint32_t root);
 // Unpacks the words as the hardware does, without checks.
 ModelHeader decodeModelHeader(const ModelHeaderWords& words);
 // Decodes and validates (ModelTransform::validate) the header at `address`; throws

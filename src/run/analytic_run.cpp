@@ -55,6 +55,14 @@ Traced traceRecords(const WordMemory& memory, const std::vector<Record>& records
 
 }  // namespace
 
+std::vector<CoreKindResult> traceGolden(const WordMemory& memory,
+                                        const std::vector<HostRecord>& records,
+                                        const RtuConfig& config) {
+  return withCoreKind(config.core, [&](auto kind) {
+    return traceRecords<decltype(kind)>(memory, records, config).results;
+  });
+}
+
 std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
   if (!config.memory.ideal) return "the memory is cached";
   if (config.reorderCapacity > 0) return "results pass a reorder buffer";

@@ -22,4 +22,11 @@ RtuRun runAnalytic(const WordMemory& memory, const std::vector<HostRecord>& reco
 RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config);
 
+// The golden traversal of each record by the kind config.core, untimed, in record order: the
+// results the timed models must equal (no check of the RTU's settings; a record the kind does not
+// take throws std::invalid_argument).
+std::vector<CoreKindResult> traceGolden(const WordMemory& memory,
+                                        const std::vector<HostRecord>& records,
+                                        const RtuConfig& config);
+
 }  // namespace rtu

@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "kinds/core_result.h"
-#include "kinds/svo/golden_model.h"
 #include "run/analytic_run.h"
 #include "run/lt_simulation.h"
 
@@ -43,12 +42,10 @@ std::pair<double, double> relativeErrors(const std::vector<double>& mode,
 
 class Study {
  public:
-  Study(const WordMemory& memory, const std::vector<TValueRecord>& jobs, const RtuConfig& config)
+  Study(const WordMemory& memory, const std::vector<HostRecord>& jobs, const RtuConfig& config)
       : memory_(memory), jobs_(jobs), config_(config) {
     const auto start = std::chrono::steady_clock::now();
-    // The jobs are t-value records, the SVO kind's, as its golden model's.
-    const auto golden = GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
-    golden_.assign(golden.begin(), golden.end());
+    golden_ = traceGolden(memory, jobs, config);
     goldenSeconds_ = secondsSince(start);
   }
 
@@ -135,7 +132,7 @@ class Study {
   }
 
   const WordMemory& memory_;
-  const std::vector<TValueRecord>& jobs_;
+  const std::vector<HostRecord>& jobs_;
   const RtuConfig& config_;
   std::vector<CoreKindResult> golden_;
   double goldenSeconds_ = 0, referenceSeconds_ = 0;
@@ -146,7 +143,7 @@ class Study {
 }  // namespace
 
 std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
-                                          const std::vector<TValueRecord>& jobs,
+                                          const std::vector<HostRecord>& jobs,
                                           const RtuConfig& config,
                                           const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample) {

@@ -32,9 +32,10 @@ struct ModeFidelity {
 };
 
 // The modes in order: systemc, recurrence (where it applies), lt per quantum, sampled per
-// fraction (with `sample` for seed and block sizes), golden.
+// fraction (with `sample` for seed and block sizes), golden: of the kind config.core, whose
+// records `jobs` are.
 std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
-                                          const std::vector<TValueRecord>& jobs,
+                                          const std::vector<HostRecord>& jobs,
                                           const RtuConfig& config,
                                           const std::vector<uint64_t>& quanta,
                                           const std::vector<double>& fractions, SampleSpec sample);

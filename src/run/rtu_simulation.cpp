@@ -151,9 +151,9 @@ RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& reco
   return simulate(memory, records, config, progress, std::move(listeners), BlockRun{});
 }
 
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const BlockRun& block) {
-  return simulate(memory, std::vector<HostRecord>(jobs.begin(), jobs.end()), config, {}, {}, block);
+  return simulate(memory, records, config, {}, {}, block);
 }
 
 RtuRun simulateScene(const WordMemory& memory, const std::vector<RayRecord>& rays,

@@ -63,7 +63,7 @@ RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& reco
 RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
 // A sampled block's run.
-RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
+RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const BlockRun& block);
 
 // A scene: each of `rays` (world space) is traced against `scene`'s instances by the scene

@@ -4,14 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
 
 #include "kinds/core_result.h"
-#include "kinds/svo/golden_model.h"
-#include "kinds/svo/svo_kind.h"
+#include "run/analytic_run.h"
 #include "run/cache_warmer.h"
 #include "run/statistics_output.h"
 #include "run/statistics_window.h"
@@ -58,8 +58,7 @@ struct Block {
   RtuStatistics counted;
 };
 
-std::vector<TValueRecord> slice(const std::vector<TValueRecord>& jobs, uint64_t first,
-                                uint64_t end) {
+std::vector<HostRecord> slice(const std::vector<HostRecord>& jobs, uint64_t first, uint64_t end) {
   return {jobs.begin() + static_cast<ptrdiff_t>(first), jobs.begin() + static_cast<ptrdiff_t>(end)};
 }
 
@@ -76,7 +75,7 @@ Block between(const RunSnapshot& from, uint64_t toCycle, uint64_t toResults,
 
 // Rays [first, first + count) after up to `warmup` rays before them and followed by `cooldown`
 // rays that keep the cores busy to its end; a block ending the frame runs to the last result.
-Block simulateBlock(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
+Block simulateBlock(const WordMemory& memory, const std::vector<HostRecord>& jobs,
                     const RtuConfig& config, uint64_t first, uint64_t count, uint64_t warmup,
                     uint64_t cooldown, BlockRun plan) {
   const uint64_t warmFirst = first - std::min(warmup, first);
@@ -91,6 +90,21 @@ Block simulateBlock(const WordMemory& memory, const std::vector<TValueRecord>& j
   if (endsFrame) return between(start, run.totalCycles, end - warmFirst, run.statistics);
   const RunSnapshot& stop = run.snapshots.back();
   return between(start, stop.cycle, stop.results, stop.statistics);
+}
+
+// The caches brought up to date with the frame's rays before `end` (one call per block, in frame
+// order) by the cache warmer of the run's kind.
+using WarmUp = std::function<const CacheContents*(uint64_t end)>;
+
+WarmUp makeWarmUp(const WordMemory& memory, const std::vector<HostRecord>& jobs,
+                  const RtuConfig& config) {
+  return withCoreKind(config.core, [&](auto kind) -> WarmUp {
+    auto warmer = std::make_shared<CacheWarmer<decltype(kind)>>(memory, config);
+    return [warmer, &jobs](uint64_t end) {
+      warmer->warmUpTo(jobs, end);
+      return &warmer->contents();
+    };
+  });
 }
 
 uint64_t cacheHits(const CacheStats& s) { return s.hits + s.merged; }
@@ -228,7 +242,7 @@ SamplePlan planSample(uint64_t rays, int cores, const SampleSpec& spec) {
   return plan;
 }
 
-SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
+SampledRun runSampled(const WordMemory& memory, const std::vector<HostRecord>& jobs,
                       const RtuConfig& config, const SampleSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   SampledRun run;
@@ -269,23 +283,17 @@ SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>&
     for (uint64_t first : plan.strata[h].blocks) places.push_back({first, h});
   std::sort(places.begin(), places.end(),
             [](const Place& a, const Place& b) { return a.first < b.first; });
-  // The frame's jobs are t-value records, the SVO kind's, as the golden model's below.
-  std::unique_ptr<CacheWarmer<SvoKind>> warmer;
-  if (!config.memory.ideal) warmer = std::make_unique<CacheWarmer<SvoKind>>(memory, config);
+  const WarmUp warmUp = config.memory.ideal ? WarmUp() : makeWarmUp(memory, jobs, config);
   for (const Place& place : places) {
     const uint64_t warmup = place.first == 0 ? 0 : plan.warmupRays;
     BlockRun options;
-    if (warmer) {
-      warmer->warmUpTo(jobs, place.first - std::min(warmup, place.first));
-      options.startCaches = &warmer->contents();
-    }
+    if (warmUp) options.startCaches = warmUp(place.first - std::min(warmup, place.first));
     const Block measured =
         simulateBlock(memory, jobs, config, place.first, block, warmup, plan.cooldownRays, options);
     count(measured, place.stratum == kFixed, place.stratum == kFixed ? 0 : place.stratum);
   }
 
-  const auto svoGolden = GoldenModel(memory, config.coreConfig<SvoKind>()).traceAll(jobs);
-  const std::vector<CoreKindResult> golden(svoGolden.begin(), svoGolden.end());
+  const std::vector<CoreKindResult> golden = traceGolden(memory, jobs, config);
   for (const SamplePlan::Stratum& stratum : plan.strata) {
     sample.rays.push_back(static_cast<double>(stratum.rays));
     sample.stratumCost.push_back(meanCost(golden, stratum.first, stratum.rays));

@@ -14,9 +14,9 @@
 // snapshot after its warm-up's results to the snapshot after its own (rtu_simulation.h
 // BlockRun), a few `cooldown` rays keeping the cores busy to its end: cycles per result, and
 // counters per result (statistics_window.h).
-// Per-ray values y of the blocks are adjusted by a regression on the golden model's cost x,
-// known for every ray: y' = y + b (X_h - x), with X_h the stratum's mean cost and b the slope
-// pooled within strata (Cochran, Sampling Techniques, 7.9). With R_h rays in stratum h:
+// Per-ray values y of the blocks are adjusted by a regression on the golden model's cost x (of the
+// run's kind), known for every ray: y' = y + b (X_h - x), with X_h the stratum's mean cost and b
+// the slope pooled within strata (Cochran, Sampling Techniques, 7.9). With R_h rays in stratum h:
 //   total  = B (y_head + y_tail) + sum_h R_h mean_j(y'_hj)
 //   var    = sum_h R_h^2 s^2 / 2 + (sum_h R_h (X_h - mean_j x_hj))^2 s^2 / Sxx
 //            (s^2: the blocks' deviations from their stratum means, pooled, 2S - S - 1 degrees)
@@ -84,7 +84,9 @@ struct SampledRun {
 // 95 % intervals; "simulation.model" is "sampled".
 nlohmann::ordered_json sampledStatisticsJson(const SampledRun& run);
 
-SampledRun runSampled(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
+// The frame's records are any the run's kind (config.core) takes; its cache warmer and the golden
+// costs are that kind's.
+SampledRun runSampled(const WordMemory& memory, const std::vector<HostRecord>& jobs,
                       const RtuConfig& config, const SampleSpec& spec);
 
 // The 97.5 % quantile of Student's t with `degrees` degrees of freedom (Cornish-Fisher expansion:

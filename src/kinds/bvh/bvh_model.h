@@ -13,10 +13,7 @@ namespace rtu {
 // `placement` and returns the header's word address (the old size). Throws as makeModelHeader.
 inline uint32_t appendBvhModelHeader(std::vector<uint32_t>& words,
                                      const ModelPlacement& placement) {
-  const auto address = static_cast<uint32_t>(words.size());
-  const ModelHeaderWords header = encodeModelHeader(makeModelHeader(placement, 0));
-  words.insert(words.end(), header.begin(), header.end());
-  return address;
+  return appendModelHeader(words, placement, 0);
 }
 
 }  // namespace rtu

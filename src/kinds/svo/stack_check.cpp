@@ -21,8 +21,11 @@ void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int sta
                      bool allowOverflow) {
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-  const std::vector<int> needed = descriptorDepths(image, roots);
+  checkNeededFrames(roots, descriptorDepths(image, roots), stackFrames, allowOverflow);
+}
 
+void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int>& needed,
+                       int stackFrames, bool allowOverflow) {
   size_t deepest = 0;
   size_t tooDeep = 0;
   for (size_t i = 0; i < roots.size(); ++i) {

@@ -18,6 +18,10 @@ void checkStackDepth(const SvoImage& image, const std::vector<TValueRecord>& job
 // The same on the roots the jobs start from, repeats allowed.
 void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
                      bool allowOverflow);
+// The same on the stack frames each of `roots` needs (descriptorDepths, svo_validator.h), as
+// computed once for a scene that many runs share.
+void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int>& needed,
+                       int stackFrames, bool allowOverflow);
 // Adds a job's root to those for checkRootDepths unless it repeats the last: a frame's jobs
 // mostly share one root, so the roots' sort stays short.
 inline void addRoot(std::vector<uint32_t>& roots, uint32_t root) {

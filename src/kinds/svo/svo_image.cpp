@@ -5,10 +5,7 @@
 namespace rtu {
 
 uint32_t appendModelHeader(SvoImage& image, const ModelPlacement& placement) {
-  const ModelHeaderWords header = encodeModelHeader(makeModelHeader(placement, image.root));
-  const auto address = static_cast<uint32_t>(image.words.size());
-  image.words.insert(image.words.end(), header.begin(), header.end());
-  return address;
+  return appendModelHeader(image.words, placement, image.root);
 }
 
 SvoImage readSvoFile(const std::string& path, uint32_t root) {

@@ -1,4 +1,4 @@
-#include "app/accel_build.h"
+#include "explore/accel_build.h"
 
 #include <chrono>
 #include <stdexcept>

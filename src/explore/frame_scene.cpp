@@ -1,0 +1,119 @@
+#include "explore/frame_scene.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "explore/accel_build.h"
+#include "inputs/camera.h"
+#include "kinds/svo/mesh_voxelizer.h"
+#include "kinds/svo/scene_loader.h"
+#include "kinds/svo/stack_check.h"
+#include "kinds/svo/svo_validator.h"
+#include "rtu/model_header.h"
+
+namespace rtu {
+namespace {
+
+// Where the SVO frame puts the scene: a mesh file as the voxelizer fits it into the cube.
+ModelPlacement placementOf(const SceneSpec& spec, const TriangleMesh& mesh) {
+  ModelPlacement placement;
+  if (spec.meshFile.empty()) return placement;  // voxel faces: in the cube already
+  const MeshVoxelizer fit(mesh, spec.depth);
+  placement.translation = fit.offset();
+  placement.scale = glm::dvec3(fit.scale());
+  return placement;
+}
+
+TriangleScene loadTriangles(const RunConfig& settings) {
+  const MeshDefectPolicy policy = settings.accel.dropBadTriangles ? MeshDefectPolicy::Drop
+                                                                  : MeshDefectPolicy::Refuse;
+  try {
+    return loadTriangleScene(settings.scene, policy);
+  } catch (const DroppableMeshDefects& error) {
+    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
+  }
+}
+
+// A triangle kind's scene: buildAccel's structure of the kind's name, a model header after it, the
+// frame's world-space ray records against the header.
+template <class Kind>
+struct FrameSceneOf {
+  static FrameScene load(const RunConfig& settings) {
+    TriangleScene triangles = loadTriangles(settings);
+    AccelSpec spec = settings.accel;
+    spec.structure = Kind::kName;
+    AccelBuild build = buildAccel(triangles.mesh, spec);
+    FrameScene scene;
+    scene.placement = placementOf(settings.scene, triangles.mesh);
+    scene.words = std::move(build.words);
+    scene.entry = appendModelHeader(scene.words, scene.placement, 0);  // the structure at word 0
+    scene.name = triangles.name;
+    scene.description = build.description + ", " + std::to_string(triangles.mesh.triangles.size()) +
+                        " triangles, " + std::to_string(build.quality.nodes) + " nodes, " +
+                        std::to_string(build.quality.bytes) + " bytes";
+    scene.mesh = std::move(triangles.mesh);
+    return scene;
+  }
+  static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings) {
+    const std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, scene.entry);
+    return {rays.begin(), rays.end()};
+  }
+};
+
+// The SVO kind's: the octree and t-value records.
+template <>
+struct FrameSceneOf<SvoKind> {
+  static FrameScene load(const RunConfig& settings) {
+    if (settings.model != ModelKind::Golden)  // a deep build takes minutes: refused before it
+      checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                               settings.allowStackOverflow);
+    Scene built = loadScene(settings.scene);
+    FrameScene scene;
+    scene.stackNeeded = descriptorDepths(built.image, {built.image.root}).front();
+    scene.words = std::move(built.image.words);
+    scene.entry = built.image.root;
+    scene.name = std::move(built.name);
+    scene.description = std::move(built.summary);
+    return scene;
+  }
+  static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings) {
+    if (settings.model != ModelKind::Golden)
+      checkNeededFrames({scene.entry}, {scene.stackNeeded},
+                        settings.rtu.coreConfig<SvoKind>().stackFrames,
+                        settings.allowStackOverflow);
+    const std::vector<TValueRecord> jobs =
+        makeFrameJobs(settings.camera, scene.entry, settings.epsilon);
+    return {jobs.begin(), jobs.end()};
+  }
+};
+
+}  // namespace
+
+FrameScene loadFrameScene(const RunConfig& settings) {
+  FrameScene scene = withCoreKind(settings.rtu.core, [&settings](auto kind) {
+    return FrameSceneOf<decltype(kind)>::load(settings);
+  });
+  scene.core = settings.rtu.core;
+  return scene;
+}
+
+std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& settings) {
+  if (settings.rtu.core != scene.core)
+    throw std::invalid_argument("a scene built for the " + scene.core + " core cannot run on the " +
+                                settings.rtu.core + " core");
+  return withCoreKind(scene.core, [&](auto kind) {
+    return FrameSceneOf<decltype(kind)>::records(scene, settings);
+  });
+}
+
+std::string frameSceneKey(const RunConfig& settings) {
+  const SceneSpec& spec = settings.scene;
+  const AccelSpec& accel = settings.accel;
+  return settings.rtu.core + "|" + spec.procedural + "|" + spec.svoFile + "|" + spec.meshFile +
+         "|" + spec.binvoxFile + "|" + std::to_string(spec.depth) + "|" +
+         std::to_string(spec.seed) + "|" + std::to_string(spec.root) + "|" +
+         std::to_string(spec.maxDepth) + "|" + accel.builder + "|" +
+         std::to_string(accel.dropBadTriangles) + "|" + accel.bihFormat + "|" + accel.index;
+}
+
+}  // namespace rtu

@@ -1,0 +1,55 @@
+#pragma once
+// A run's scene as its core kind reads it (issue 28): the memory image and the host records of the
+// camera's frame, chosen once by the kind (`core`, withCoreKind). Every command that runs frames
+// (render, fps, sweep and its Slurm tasks, fidelity, --sample) takes its scene from here:
+//   svo        the octree (kinds/svo/scene_loader.h) and the frame's t-value records (thesis 8.1),
+//              its stack checked against the tree for the timed models;
+//   triangles  any other kind: the scene's triangles (loadTriangleScene: a mesh file's, or a voxel
+//              scene's faces) built by `accel.builder` into the structure the kind names
+//              (buildAccel: `bvh`, `bih`), then a model header placing them where the SVO frame
+//              places the same scene (a voxel scene's faces lie in the octree's cube [-1,1]^3; a
+//              mesh file is fitted into it as the voxelizer fits it at `scene.depth`), and the
+//              frame's world-space ray records against that header.
+// A kind whose image is not buildAccel's structure of its name plugs in by specialising
+// FrameSceneOf<Kind> (frame_scene.cpp): `load` and `records`.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "config/run_config.h"
+#include "geometry/triangle_mesh.h"
+#include "kinds/registry.h"
+#include "rtu/model_transform.h"
+
+namespace rtu {
+
+struct FrameScene {
+  std::string core;             // the kind it is built for
+  std::vector<uint32_t> words;  // the memory image
+  uint32_t entry = 0;           // where a frame's records point: the octree's root, a model header
+  std::string name;             // "menger (depth 8)", "bunny.ply"
+  std::string description;   // its structure: descriptors and bytes; "binned BVH, 1234 triangles"
+  int stackNeeded = 0;       // svo: the stack frames the tree at `entry` needs
+  TriangleMesh mesh;         // triangle kinds: the image's triangles in the model's space
+  ModelPlacement placement;  // triangle kinds: the model in the world
+
+  WordMemory memory() const { return WordMemory(words); }
+};
+
+// The scene `settings` name for the kind settings.rtu.core. Throws std::invalid_argument for a
+// scene the kind cannot take (an .svo file for a triangle kind) and what the loaders and builders
+// throw (a mesh with degenerate or duplicate triangles names --drop-bad-triangles).
+FrameScene loadFrameScene(const RunConfig& settings);
+
+// The host records of the camera's frame of primary rays on `scene` (in pixel order, id words the
+// pixel indices), for its kind. Throws std::invalid_argument when `settings` chooses another kind
+// than the scene's, and, for the SVO kind on a timed model, when the tree is deeper than the stack
+// (unless overflow is allowed).
+std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& settings);
+
+// What decides which scene is built for a run, as text (the scene, the kind, its build settings):
+// runs with the same key share one FrameScene.
+std::string frameSceneKey(const RunConfig& settings);
+
+}  // namespace rtu
