@@ -16,6 +16,10 @@ small=(--scene sphere --depth 4 --width 8 --height 8)
 expect_error "memory.dram.latency (sweep) has no effect in any configuration: memory.kind is ideal" \
   "$rtusim" sweep "${small[@]}" --grid memory.dram.latency=10,20 --out ideal.csv
 [[ ! -e ideal.csv ]] || fail "the refused sweep wrote rows"
+# From a sweep file, the error names the file (the fuzzer's mutant with the cached entry dropped).
+printf "[grid]\n'memory.l1.size' = ['1KiB', '4KiB']\n" >ideal.toml
+expect_error "sweep file 'ideal.toml': memory.l1.size (sweep) has no effect in any configuration" \
+  "$rtusim" sweep "${small[@]}" --sweep-file ideal.toml --out ideal.csv
 expect_error "accel.builder (sweep) has no effect in any configuration: accel is svo and the core kind is svo" \
   "$rtusim" sweep "${small[@]}" --grid accel.builder=binned,sweep --out accel.csv
 "$rtusim" sweep "${small[@]}" --grid memory.kind=ideal,cached --grid memory.dram.latency=10,20 \

@@ -191,7 +191,13 @@ void addSweepCommand(CLI::App& app) {
     if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
     for (const std::string& grid : options->grid) spec.addGrid(grid);
     const std::vector<Configuration> configurations = spec.expand(request->resolve());
-    checkSweepKeysHaveEffect(configurations, request->uses, request->command);
+    try {
+      checkSweepKeysHaveEffect(configurations, request->uses, request->command);
+    } catch (const std::invalid_argument& error) {
+      // The swept key may be the file's: the error names it (a fuzzed file's key did not).
+      if (options->sweepFile.empty()) throw;
+      throw std::invalid_argument("sweep file '" + options->sweepFile + "': " + error.what());
+    }
 
     const std::map<std::string, Json> finished = readFinishedRows(jsonLinesPath(options->out));
     std::vector<Json> kept;
