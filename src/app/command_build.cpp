@@ -75,14 +75,7 @@ void writeByteFile(const std::string& path, const std::vector<uint8_t>& bytes) {
 }
 
 void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {
-  const MeshDefectPolicy policy = config.accel.dropBadTriangles ? MeshDefectPolicy::Drop
-                                                                : MeshDefectPolicy::Refuse;
-  TriangleScene scene;
-  try {
-    scene = loadTriangleScene(config.scene, policy);
-  } catch (const DroppableMeshDefects& error) {
-    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
-  }
+  const TriangleScene scene = loadSceneTriangles(config);
   const AccelBuild build = buildAccel(scene.mesh, config.accel);
   writeWordFile(options.out, build.words);
   if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);

@@ -111,4 +111,14 @@ AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec) {
   return build;
 }
 
+TriangleScene loadSceneTriangles(const RunConfig& settings) {
+  const MeshDefectPolicy policy = settings.accel.dropBadTriangles ? MeshDefectPolicy::Drop
+                                                                  : MeshDefectPolicy::Refuse;
+  try {
+    return loadTriangleScene(settings.scene, policy);
+  } catch (const DroppableMeshDefects& error) {
+    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
+  }
+}
+
 }  // namespace rtu

@@ -24,22 +24,12 @@ ModelPlacement placementOf(const SceneSpec& spec, const TriangleMesh& mesh) {
   return placement;
 }
 
-TriangleScene loadTriangles(const RunConfig& settings) {
-  const MeshDefectPolicy policy = settings.accel.dropBadTriangles ? MeshDefectPolicy::Drop
-                                                                  : MeshDefectPolicy::Refuse;
-  try {
-    return loadTriangleScene(settings.scene, policy);
-  } catch (const DroppableMeshDefects& error) {
-    throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
-  }
-}
-
 // A triangle kind's scene: buildAccel's structure of the kind's name, a model header after it, the
 // frame's world-space ray records against the header.
 template <class Kind>
 struct FrameSceneOf {
   static FrameScene load(const RunConfig& settings) {
-    TriangleScene triangles = loadTriangles(settings);
+    TriangleScene triangles = loadSceneTriangles(settings);
     AccelSpec spec = settings.accel;
     spec.structure = Kind::kName;
     AccelBuild build = buildAccel(triangles.mesh, spec);
