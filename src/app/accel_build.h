@@ -10,6 +10,7 @@
 #include "config/run_config.h"
 #include "geometry/accel_quality.h"
 #include "geometry/triangle_mesh.h"
+#include "kinds/bih/fixed_format.h"
 
 namespace rtu {
 
@@ -23,6 +24,8 @@ struct AccelBuild {
 
 // Throws std::invalid_argument for an accel other than bvh, bih or kdtree, and what the builders
 // and layouts throw (a capacity a format cannot hold names it).
-AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec);
+// `bihFormat` is the BIH's number formats (accel.bih_format, the BIH kind's settings).
+AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec,
+                      const FixedTriangleFormat& bihFormat = kC99Format);
 
 }  // namespace rtu

@@ -11,6 +11,7 @@
 #include "app/placement_flags.h"
 #include "app/schema_flags.h"
 #include "base/binary_file.h"
+#include "kinds/registry.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
@@ -83,7 +84,8 @@ void buildTriangleStructure(const RunConfig& config, const BuildOptions& options
   } catch (const DroppableMeshDefects& error) {
     throw std::runtime_error(std::string(error.what()) + "; drop them with --drop-bad-triangles");
   }
-  const AccelBuild build = buildAccel(scene.mesh, config.accel);
+  const AccelBuild build =
+      buildAccel(scene.mesh, config.accel, config.rtu.coreConfig<BihKind<>>().format);
   writeWordFile(options.out, build.words);
   if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);
   if (!options.stats.empty()) writeStats(options.stats, config, scene, build);

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "base/timing_limits.h"
+#include "kinds/bih/bih_config.h"
 #include "kinds/bvh/bvh_config.h"
 #include "kinds/registry.h"
 #include "kinds/svo/procedural_scenes.h"
@@ -253,8 +254,14 @@ void addAccelSettings(std::vector<Setting>& schema) {
   schema.push_back(choice(
       "accel.bih_format", "--bih-format", {"c99", "vhdl"}, kUseAccel,
       "BIH number formats: seed 004's C99 listing (n = 29) or its VHDL (n = 30)",
-      [](C& c) -> std::string& { return c.accel.bihFormat; }, sameText, sameText));
-  schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+      [](C& c) -> FixedTriangleFormat& { return c.rtu.coreConfig<BihKind<>>().format; },
+      bihFormatName, parseBihFormat));
+  // A BIH is built for `build --accel bih` and for the BIH core's runs.
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "bih" || c.rtu.core == BihKind<>::kName
+               ? std::string()
+               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
+  };
   schema.push_back(choice(
       "accel.index", "--index", {"seed", "wide"}, kUseAccel,
       "index widths: the seed's (BIH: 10-bit node indices; k-d tree: the Tray Racer's 48-bit "
@@ -393,6 +400,37 @@ void addBvhSettings(std::vector<Setting>& schema) {
   };
 }
 
+// The BIH kind's settings (kinds/bih, RtuConfig::coreConfig<BihKind<>>()): its triangle unit's
+// cycles (kinds/bih/bih_timing.h) and the early-out option, arithmetic as the BVH's. Their own
+// `bih.` keys: a key writes one kind's settings, and the BIH's unit has other defaults (the
+// seed's 41 cycles) than the BVH's `core.triangle.*`. With another kind of core they have no
+// effect.
+void addBihSettings(std::vector<Setting>& schema) {
+  using C = RunConfig;
+  constexpr unsigned arith = kUseArithmetic;
+  std::vector<Setting> added;
+  added.push_back(integer(
+      "bih.triangle.latency", "--bih-triangle-latency", "cycles", 1, kMaxBihUnitCycles, arith,
+      "BIH: cycles from a ray/triangle test's issue to its result (seed 004: 41); a ray ends no "
+      "earlier than its last test's result",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BihKind<>>().cycles.triangleLatency; }));
+  added.push_back(integer(
+      "bih.triangle.interval", "--bih-triangle-interval", "cycles", 1, kMaxBihUnitCycles, arith,
+      "BIH: the triangle unit's initiation interval, cycles between two tests' issues (seed 004: "
+      "1)",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BihKind<>>().cycles.triangleInterval; }));
+  added.push_back(flag("bih.early_out", "--bih-early-out", arith,
+                       "BIH: drop a popped node that begins beyond the nearest hit so far (not in "
+                       "seed 004, S4 L577)",
+                       [](C& c) -> bool& { return c.rtu.coreConfig<BihKind<>>().earlyOut; }));
+  for (Setting& s : added) {
+    s.ignoredBecause = [](const RunConfig& c) {
+      return c.rtu.core == BihKind<>::kName ? std::string() : "the core kind is " + c.rtu.core;
+    };
+    schema.push_back(std::move(s));
+  }
+}
+
 std::vector<Setting> makeSchema() {
   using C = RunConfig;
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
@@ -476,6 +514,7 @@ std::vector<Setting> makeSchema() {
       [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
   addSvoSettings(s);
   addBvhSettings(s);
+  addBihSettings(s);
   // The workload.
   s.push_back(choice(
       "scene", "--scene", proceduralSceneNames(), scene,
