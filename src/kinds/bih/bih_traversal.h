@@ -136,8 +136,9 @@ class BihTraversal {
     const bool test = state_ == BihState::Test;
     if (!endsRay()) return test ? cycles_.triangleInterval : 1;
     const uint64_t issued = test ? cost_ : lastIssue_;
-    if (issued == kNoIssue) return 1;
-    return static_cast<uint32_t>(std::max<uint64_t>(1, issued + cycles_.triangleLatency - cost_));
+    // No test issued, or its result out already: the state's own cycle.
+    if (issued == kNoIssue || issued + cycles_.triangleLatency <= cost_ + 1) return 1;
+    return static_cast<uint32_t>(issued + cycles_.triangleLatency - cost_);
   }
   bool busy() const { return state_ != BihState::Idle && state_ != BihState::Out; }
   bool readsMemory() const {
