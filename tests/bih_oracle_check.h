@@ -78,6 +78,14 @@ class FixedOracleCheck {
     return agreement;
   }
 
+  // Counts one ray already on the grid (a kind's set-up made it) with what a closest-hit search
+  // found, as compare() does.
+  void classifyRay(const GridRay& ray, const std::optional<KernelHit>& fixed,
+                   Agreement& agreement) const {
+    ++agreement.rays;
+    classify(ray, fixed, agreement);
+  }
+
   // The C99 kernel over every record, by brute force, the nearest kept as the listing keeps it.
   std::optional<KernelHit> c99Closest(const GridRay& ray) const {
     std::optional<KernelHit> best;

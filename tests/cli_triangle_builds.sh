@@ -72,7 +72,7 @@ PY
 
 # Seed 004's BIH on its integer grid: spider's list overflows the seed's 10-bit index (refused,
 # naming the limit and the way on) and fits the wide one, with the seed's capacity as a warning.
-expect_error "1312 list entries, more than 1024 (10-bit node indices; the wide index has 29)" \
+expect_error "1312 list entries, more than 1024 (10-bit node indices; the wide index (accel.index = wide, --index wide) has 29)" \
   "$rtusim" build --accel bih --mesh "$spider" --drop-bad-triangles --out s.bih
 "$rtusim" build --accel bih --index wide --mesh "$spider" --drop-bad-triangles --out s.bih \
   --stats b.json >bih.txt 2>bih_warnings.txt

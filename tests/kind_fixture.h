@@ -65,5 +65,6 @@ void checkEqualsRtl(const Run& run, const RtlTopRun& rtl) {
 
 }  // namespace rtu
 
+#include "kinds/bih_fixture.h"
 #include "kinds/bvh_fixture.h"
 #include "kinds/svo_fixture.h"

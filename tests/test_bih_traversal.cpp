@@ -49,8 +49,15 @@ struct Trace {
   std::vector<BihState> states;  // each state as it is stepped
 };
 
+// One cycle a state: a ray's cost is its count of states (the kind's cycles: test_bih_kind.cpp).
+BihConfig statesOnly() {
+  BihConfig config;
+  config.cycles = BihCycles{1, 1};
+  return config;
+}
+
 template <class TracedKind = Kind>
-Trace trace(const HandScene& scene, const Ray& world, BihConfig config = {}) {
+Trace trace(const HandScene& scene, const Ray& world, BihConfig config = statesOnly()) {
   typename TracedKind::Behaviour traversal = TracedKind::behaviour(config);
   const BihJob job = scene.job(world);
   traversal.start(job);

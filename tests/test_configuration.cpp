@@ -187,25 +187,43 @@ TEST_CASE("A swept key without effect is refused before any row runs", "[config]
   SweepSpec latency;
   latency.addGrid("memory.dram.latency=10,20");
   CHECK_THROWS_WITH(
-      checkSweepKeysHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"),
+      checkSettingsHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"),
       Contains("memory.dram.latency (sweep) has no effect in any configuration: memory.kind is "
                "ideal"));
   Configuration cached;
   cached.set("memory.kind", "cached", ConfigSource::CommandLine);
-  CHECK_NOTHROW(checkSweepKeysHaveEffect(latency.expand(cached), sweepUses, "sweep"));
+  CHECK_NOTHROW(checkSettingsHaveEffect(latency.expand(cached), sweepUses, "sweep"));
   // Without effect in two of four configurations only: a warning.
   latency.addGrid("memory.kind=ideal,cached");
-  CHECK_NOTHROW(checkSweepKeysHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"));
+  CHECK_NOTHROW(checkSettingsHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"));
   // A list entry is checked in the configurations it sets.
   SweepSpec list;
   list.list = {{{"cores", "4"}}, {{"memory.l2.size", "64KiB"}}};
-  CHECK_THROWS_WITH(checkSweepKeysHaveEffect(list.expand(Configuration{}), sweepUses, "sweep"),
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(list.expand(Configuration{}), sweepUses, "sweep"),
                     Contains("memory.l2.size (sweep) has no effect in any configuration"));
   SweepSpec unused;
   unused.addGrid("width=8,16");
-  CHECK_THROWS_WITH(checkSweepKeysHaveEffect(unused.expand(Configuration{}), kUseModel, "replay"),
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(unused.expand(Configuration{}), kUseModel, "replay"),
                     Contains("width (sweep) has no effect in any configuration: rtusim replay "
                              "does not use it"));
+}
+
+TEST_CASE("A sweep judges the command line's keys over its rows", "[config][sweep]") {
+  constexpr unsigned sweepUses = kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseAccel;
+  // A BIH setting given with a sweep over `core`: the BIH rows use it (a warning for the others),
+  // though the base configuration's SVO core does not.
+  Configuration base;
+  base.set("bih.triangle.latency", "20", ConfigSource::CommandLine);
+  CHECK_FALSE(whyIneffective(findSetting("bih.triangle.latency"), base.values(), sweepUses, "sweep")
+                  .empty());
+  SweepSpec kinds;
+  kinds.addGrid("core=svo,bih");
+  CHECK_NOTHROW(checkSettingsHaveEffect(kinds.expand(base), sweepUses, "sweep"));
+  // A command-line key the command does not use is refused as a single run refuses it.
+  Configuration wide;
+  wide.set("width", "64", ConfigSource::CommandLine);
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(kinds.expand(wide), kUseModel, "replay"),
+                    Contains("width (command line) has no effect: rtusim replay does not use it"));
 }
 
 TEST_CASE("A statistics file is a configuration: its config object", "[config]") {

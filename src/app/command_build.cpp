@@ -11,6 +11,7 @@
 #include "app/schema_flags.h"
 #include "base/binary_file.h"
 #include "explore/accel_build.h"
+#include "kinds/registry.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
@@ -76,7 +77,8 @@ void writeByteFile(const std::string& path, const std::vector<uint8_t>& bytes) {
 
 void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {
   const TriangleScene scene = loadSceneTriangles(config);
-  const AccelBuild build = buildAccel(scene.mesh, config.accel);
+  const AccelBuild build =
+      buildAccel(scene.mesh, config.accel, config.rtu.coreConfig<BihKind<>>().format);
   writeWordFile(options.out, build.words);
   if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);
   if (!options.stats.empty()) writeStats(options.stats, config, scene, build);

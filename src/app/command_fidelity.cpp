@@ -94,7 +94,7 @@ void addFidelityCommand(CLI::App& app) {
       "against the cycle-accurate SystemC model: speed and error");
   auto request = addConfigOptions(
       *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling | kUseAccel,
-      {"--sample", "--accel", "--bih-format", "--index"});
+      {"--sample", "--accel"});
   // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
   request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
   command->add_option("--fractions", options->fractions, "sampled fractions to measure")

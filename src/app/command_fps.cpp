@@ -141,11 +141,10 @@ void addFpsCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "fps", "frame rate per resolution and core count on the cycle-accurate model: a table in "
              "the form of thesis Tables 8.4 and 8.5");
-  auto request =
-      addConfigOptions(*command,
-                       kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera |
-                           kUseSampling | kUseAccel,
-                       {"--cores", "--width", "--height", "--accel", "--bih-format", "--index"});
+  auto request = addConfigOptions(*command,
+                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
+                                      kUseCamera | kUseSampling | kUseAccel,
+                                  {"--cores", "--width", "--height", "--accel"});
   command->add_option("--resolutions", options->resolutions, "WIDTHxHEIGHT list")
       ->delimiter(',')
       ->capture_default_str();

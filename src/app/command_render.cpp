@@ -102,11 +102,11 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
                 "loosely-timed or golden model: --model) and report it");
-  // The accel settings for the BVH core's build (--builder, --drop-bad-triangles); render
-  // builds the structure of its core, so not --accel or the other structures' own.
+  // The accel settings of the triangle cores' builds (--builder, --bih-format, --index, ...);
+  // render builds the structure of its core, so not --accel.
   auto request = addConfigOptions(
       *command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
-      {"--accel", "--bih-format", "--index"});
+      {"--accel"});
   addRunOutputOptions(*command, options->outputs);
   command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
   command->add_option("--depth-image", options->depthImage,

@@ -153,7 +153,7 @@ void addSweepCommand(CLI::App& app) {
   auto request = addConfigOptions(*command,
                                   kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
                                       kUseCamera | kUseSampling | kUseAccel,
-                                  {"--accel", "--bih-format", "--index"});
+                                  {"--accel"});
   command->add_option("--grid", options->grid,
                       "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
   command
@@ -190,9 +190,9 @@ void addSweepCommand(CLI::App& app) {
     SweepSpec spec;
     if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
     for (const std::string& grid : options->grid) spec.addGrid(grid);
-    const std::vector<Configuration> configurations = spec.expand(request->resolve());
+    const std::vector<Configuration> configurations = spec.expand(request->resolveUnchecked());
     try {
-      checkSweepKeysHaveEffect(configurations, request->uses, request->command);
+      checkSettingsHaveEffect(configurations, request->uses, request->command);
     } catch (const std::invalid_argument& error) {
       // The swept key may be the file's: the error names it (a fuzzed file's key did not).
       if (options->sweepFile.empty()) throw;

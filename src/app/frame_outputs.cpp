@@ -1,6 +1,6 @@
 #include "app/frame_outputs.h"
 
-#include "app/bvh_render.h"
+#include "app/triangle_render.h"
 #include "kinds/core_result.h"
 #include "kinds/svo/result_summary.h"
 
@@ -40,7 +40,23 @@ struct FrameOutputsOf<BvhKind<>> {
   }
   static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
                               const std::vector<CoreKindResult>& results) {
-    return bvhFrame(settings.camera, scene, bvhResults(results));
+    return triangleFrame(settings.camera, scene, bvhResults(results));
+  }
+};
+
+template <>
+struct FrameOutputsOf<BihKind<>> {
+  static std::string core(const RunConfig& settings) {
+    const BihConfig& core = settings.rtu.coreConfig<BihKind<>>();
+    return "bih core, " + bihFormatName(core.format) + " fixed-point formats, triangle unit " +
+           std::to_string(core.cycles.triangleLatency) + " cycles";
+  }
+  static std::string results(const RunConfig&, const std::vector<CoreKindResult>& results) {
+    return describeBihResults(bihResults(results));
+  }
+  static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
+                              const std::vector<CoreKindResult>& results) {
+    return triangleFrame(settings.camera, scene, bihResults(results));
   }
 };
 

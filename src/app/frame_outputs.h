@@ -1,8 +1,8 @@
 #pragma once
 // Each core kind's own outputs of a rendered frame (`render`): the line naming its core, the report
 // of its results and the frame's pixels, chosen by the run's kind (`core`). The SVO kind's are the
-// thesis' (RenderedFrame::fromResults, ResultSummary); the BVH kind's app/bvh_render.h. A new kind
-// specialises FrameOutputsOf (frame_outputs.cpp).
+// thesis' (RenderedFrame::fromResults, ResultSummary); the triangle kinds' are in
+// app/triangle_render.h. A new kind specialises FrameOutputsOf (frame_outputs.cpp).
 
 #include <string>
 #include <vector>

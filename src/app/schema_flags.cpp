@@ -32,13 +32,18 @@ CLI::Option* addSettingOption(CLI::App& command, const std::shared_ptr<ConfigReq
 }  // namespace
 
 Configuration ConfigRequest::resolve() const {
+  Configuration configuration = resolveUnchecked();
+  configuration.checkApplicable(uses, command, commandSets);
+  return configuration;
+}
+
+Configuration ConfigRequest::resolveUnchecked() const {
   Configuration configuration;
   if (!preset.empty()) configuration.applyPreset(preset);
   for (const std::string& file : files) configuration.loadFile(file);
   for (const auto& [key, text] : flags) configuration.set(key, text, ConfigSource::CommandLine);
   for (const std::string& assignment : assignments)
     configuration.setAssignment(assignment, ConfigSource::CommandLine);
-  configuration.checkApplicable(uses, command, commandSets);
   return configuration;
 }
 

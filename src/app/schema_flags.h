@@ -28,6 +28,9 @@ struct ConfigRequest {
   // Defaults, then the preset, the files, the flags and --set; then checks that every setting the
   // user gave has an effect (see Configuration::checkApplicable).
   Configuration resolve() const;
+  // The same without the check, for a command that checks its configurations together (a sweep:
+  // checkSettingsHaveEffect).
+  Configuration resolveUnchecked() const;
 };
 
 // Registers the options; `skipFlags` are flags the command spells itself (fps takes a list for

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "base/timing_limits.h"
+#include "kinds/bih/bih_config.h"
 #include "kinds/bvh/bvh_config.h"
 #include "kinds/registry.h"
 #include "kinds/svo/procedural_scenes.h"
@@ -217,9 +218,12 @@ std::string ignoredWithoutBuiltTree(const RunConfig& c) {
 
 std::string modelKindName(const ModelKind& model) { return toString(model); }
 
-std::function<std::string(const RunConfig&)> ignoredUnlessAccel(const std::string& structure) {
+// A structure's settings act when `build --accel` builds it or a run's core kind of its name does.
+std::function<std::string(const RunConfig&)> ignoredUnlessBuilt(const std::string& structure) {
   return [structure](const RunConfig& c) {
-    return c.accel.structure == structure ? std::string() : "accel is " + c.accel.structure;
+    return c.accel.structure == structure || c.rtu.core == structure
+               ? std::string()
+               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
   };
 }
 
@@ -236,34 +240,29 @@ void addAccelSettings(std::vector<Setting>& schema) {
       "BVH builder: langr (seed 003's Algorithms 3-4), binned (SAH, 32 bins), sweep (full-sweep "
       "SAH) or lbvh (Morton codes)",
       [](C& c) -> std::string& { return c.accel.builder; }, sameText, sameText));
-  // A BVH is built for `build --accel bvh` and for the BVH core's runs (render --core bvh).
-  schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "bvh" || c.rtu.core == "bvh"
-               ? std::string()
-               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
-  };
+  schema.back().ignoredBecause = ignoredUnlessBuilt("bvh");
   schema.push_back(flag("accel.drop_bad_triangles", "--drop-bad-triangles", kUseAccel,
                         "drop degenerate and duplicate triangles instead of refusing the mesh",
                         [](C& c) -> bool& { return c.accel.dropBadTriangles; }));
   schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "svo" && c.rtu.core != "bvh"
-               ? std::string("accel is svo and the core kind is " + c.rtu.core)
+    return c.accel.structure == "svo" && c.rtu.core == "svo"
+               ? std::string("accel is svo and the core kind is svo")
                : std::string();
   };
   schema.push_back(choice(
       "accel.bih_format", "--bih-format", {"c99", "vhdl"}, kUseAccel,
       "BIH number formats: seed 004's C99 listing (n = 29) or its VHDL (n = 30)",
-      [](C& c) -> std::string& { return c.accel.bihFormat; }, sameText, sameText));
-  schema.back().ignoredBecause = ignoredUnlessAccel("bih");
+      [](C& c) -> FixedTriangleFormat& { return c.rtu.coreConfig<BihKind<>>().format; },
+      bihFormatName, parseBihFormat));
+  schema.back().ignoredBecause = ignoredUnlessBuilt("bih");
   schema.push_back(choice(
       "accel.index", "--index", {"seed", "wide"}, kUseAccel,
       "index widths: the seed's (BIH: 10-bit node indices; k-d tree: the Tray Racer's 48-bit "
       "nodes and 16-bit ids) or wide (BIH: 29 bits; k-d tree: the file's wide variant)",
       [](C& c) -> std::string& { return c.accel.index; }, sameText, sameText));
   schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "bih" || c.accel.structure == "kdtree"
-               ? std::string()
-               : "accel is " + c.accel.structure;
+    const std::string bih = ignoredUnlessBuilt("bih")(c);
+    return bih.empty() || c.accel.structure == "kdtree" ? std::string() : bih;
   };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
@@ -393,6 +392,37 @@ void addBvhSettings(std::vector<Setting>& schema) {
   };
 }
 
+// The BIH kind's settings (kinds/bih, RtuConfig::coreConfig<BihKind<>>()): its triangle unit's
+// cycles (kinds/bih/bih_timing.h) and the early-out option, arithmetic as the BVH's. Their own
+// `bih.` keys: a key writes one kind's settings, and the BIH's unit has other defaults (the
+// seed's 41 cycles) than the BVH's `core.triangle.*`. With another kind of core they have no
+// effect.
+void addBihSettings(std::vector<Setting>& schema) {
+  using C = RunConfig;
+  constexpr unsigned arith = kUseArithmetic;
+  std::vector<Setting> added;
+  added.push_back(integer(
+      "bih.triangle.latency", "--bih-triangle-latency", "cycles", 1, kMaxBihUnitCycles, arith,
+      "BIH: cycles from a ray/triangle test's issue to its result (seed 004: 41); a ray ends no "
+      "earlier than its last test's result",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BihKind<>>().cycles.triangleLatency; }));
+  added.push_back(integer(
+      "bih.triangle.interval", "--bih-triangle-interval", "cycles", 1, kMaxBihUnitCycles, arith,
+      "BIH: the triangle unit's initiation interval, cycles between two tests' issues (seed 004: "
+      "1)",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BihKind<>>().cycles.triangleInterval; }));
+  added.push_back(flag("bih.early_out", "--bih-early-out", arith,
+                       "BIH: drop a popped node that begins beyond the nearest hit so far (not in "
+                       "seed 004, S4 L577)",
+                       [](C& c) -> bool& { return c.rtu.coreConfig<BihKind<>>().earlyOut; }));
+  for (Setting& s : added) {
+    s.ignoredBecause = [](const RunConfig& c) {
+      return c.rtu.core == BihKind<>::kName ? std::string() : "the core kind is " + c.rtu.core;
+    };
+    schema.push_back(std::move(s));
+  }
+}
+
 std::vector<Setting> makeSchema() {
   using C = RunConfig;
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
@@ -476,6 +506,7 @@ std::vector<Setting> makeSchema() {
       [](C& c) -> std::string& { return c.rtu.core; }, sameText, sameText));
   addSvoSettings(s);
   addBvhSettings(s);
+  addBihSettings(s);
   // The workload.
   s.push_back(choice(
       "scene", "--scene", proceduralSceneNames(), scene,

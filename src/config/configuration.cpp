@@ -172,25 +172,32 @@ std::string whyIneffective(const Setting& setting, const RunConfig& effective, u
   return setting.ignoredBecause ? setting.ignoredBecause(effective) : "";
 }
 
+bool givenByUser(const Setting& setting, ConfigSource from, const RunConfig& values) {
+  if (from == ConfigSource::CommandLine || from == ConfigSource::Sweep) return true;
+  return from == ConfigSource::File && setting.get(values) != setting.get(RunConfig{});
+}
+
+void reportIneffective(const Setting& setting, ConfigSource from, const std::string& reason,
+                       unsigned uses, const std::string& share) {
+  const std::string message = setting.key + " (" + sourceName(from) + ") has no effect" +
+                              (share.empty() ? "" : " " + share) + ": " + reason;
+  const bool sceneConflict =
+      isSceneSource(setting.key) && reason.find(" is given") != std::string::npos;
+  if (share.empty() && from == ConfigSource::CommandLine &&
+      (sceneConflict || !(setting.uses & uses)))
+    throw std::invalid_argument(message);
+  std::cerr << "rtusim: warning: " << message << "\n";
+}
+
 void Configuration::checkApplicable(unsigned uses, const std::string& command,
                                     const std::function<void(RunConfig&)>& commandSets) const {
-  const RunConfig defaults;
   RunConfig effective = values_;
   if (commandSets) commandSets(effective);
   for (const Setting& setting : configSchema()) {
     const ConfigSource from = source(setting.key);
-    if (from != ConfigSource::File && from != ConfigSource::CommandLine) continue;
-    // A file that states a default (a dumped configuration states them all) changes nothing.
-    if (from == ConfigSource::File && setting.get(values_) == setting.get(defaults)) continue;
+    if (from == ConfigSource::Sweep || !givenByUser(setting, from, values_)) continue;
     const std::string reason = whyIneffective(setting, effective, uses, command);
-    if (reason.empty()) continue;
-    const std::string message =
-        setting.key + " (" + sourceName(from) + ") has no effect: " + reason;
-    const bool sceneConflict =
-        isSceneSource(setting.key) && reason.find(" is given") != std::string::npos;
-    if (from == ConfigSource::CommandLine && (sceneConflict || !(setting.uses & uses)))
-      throw std::invalid_argument(message);
-    std::cerr << "rtusim: warning: " << message << "\n";
+    if (!reason.empty()) reportIneffective(setting, from, reason, uses);
   }
 }
 

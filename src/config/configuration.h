@@ -23,6 +23,17 @@ enum class ConfigSource { Default, Preset, File, CommandLine, Sweep };
 std::string whyIneffective(const Setting& setting, const RunConfig& effective, unsigned uses,
                            const std::string& command);
 
+// Whether `setting`, from `from` in `values`, is the user's: from the command line, a sweep, or a
+// file that states other than the default (a dumped configuration states them all).
+bool givenByUser(const Setting& setting, ConfigSource from, const RunConfig& values);
+
+// A setting the user gave from `from` without effect for `reason` ("memory is ideal", in `share`
+// of the configurations: "in 2 of 4 configurations", or empty for all): a std::invalid_argument
+// for one on the command line that the command does not use or a scene source beside another,
+// else a warning on standard error.
+void reportIneffective(const Setting& setting, ConfigSource from, const std::string& reason,
+                       unsigned uses, const std::string& share = "");
+
 class Configuration {
  public:
   const RunConfig& values() const { return values_; }

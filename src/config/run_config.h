@@ -19,7 +19,6 @@ struct AccelSpec {
   std::string structure = "svo";   // svo | bvh | bih | kdtree
   std::string builder = "binned";  // bvh: langr | binned | sweep | lbvh
   bool dropBadTriangles = false;   // degenerate and duplicate triangles dropped, not refused
-  std::string bihFormat = "c99";   // bih: the seed's c99 or vhdl number formats
   std::string index = "seed";      // bih, kdtree: the seed's index widths, or wide
   std::string file;                // a built triangle structure's image to trace (.bvh)
 };

@@ -120,25 +120,32 @@ std::vector<Configuration> SweepSpec::expand(const Configuration& base) const {
   return configurations;
 }
 
-void checkSweepKeysHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
-                              const std::string& command) {
+void checkSettingsHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
+                             const std::string& command) {
   for (const Setting& setting : configSchema()) {
-    size_t swept = 0, ineffective = 0;
+    size_t given = 0, ineffective = 0;
+    ConfigSource from = ConfigSource::Default;
     std::string reason;
     for (const Configuration& configuration : configurations) {
-      if (configuration.source(setting.key) != ConfigSource::Sweep) continue;
-      ++swept;
+      const ConfigSource source = configuration.source(setting.key);
+      if (!givenByUser(setting, source, configuration.values())) continue;
+      ++given;
+      if (from != ConfigSource::Sweep) from = source;
       const std::string why = whyIneffective(setting, configuration.values(), uses, command);
       if (why.empty()) continue;
       ++ineffective;
       if (reason.empty()) reason = why;
     }
     if (ineffective == 0) continue;
-    if (ineffective == swept)
+    if (ineffective < given)
+      reportIneffective(setting, from, reason, uses,
+                        "in " + std::to_string(ineffective) + " of " + std::to_string(given) +
+                            " configurations");
+    else if (from == ConfigSource::Sweep)
       throw std::invalid_argument(setting.key +
                                   " (sweep) has no effect in any configuration: " + reason);
-    std::cerr << "rtusim: warning: " << setting.key << " (sweep) has no effect in " << ineffective
-              << " of " << swept << " configurations: " << reason << "\n";
+    else
+      reportIneffective(setting, from, reason, uses);
   }
 }
 

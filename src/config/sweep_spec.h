@@ -27,11 +27,14 @@ struct SweepSpec {
   std::vector<Configuration> expand(const Configuration& base) const;
 };
 
-// Before any row runs, as Configuration::checkApplicable does for one run: a key the sweep sets
-// that has no effect in any configuration it is set in (memory.dram.latency on ideal memory, a key
-// rtusim `command` does not use) throws std::invalid_argument naming the key and why, since its
-// rows would repeat one run; one without effect in some of them is a warning on standard error.
-void checkSweepKeysHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
-                              const std::string& command);
+// Before any row runs, Configuration::checkApplicable over a sweep's configurations: a key the
+// sweep sets that has no effect in any configuration it is set in (memory.dram.latency on ideal
+// memory, a key rtusim `command` does not use) throws std::invalid_argument naming the key and
+// why, since its rows would repeat one run; a key the user gave on the command line or in a file
+// is judged over every row as a single run judges it (an error or a warning: reportIneffective),
+// so a BIH setting in a sweep over `core` counts the BIH rows; a key without effect in some of the
+// configurations is a warning "in N of M configurations" on standard error.
+void checkSettingsHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
+                             const std::string& command);
 
 }  // namespace rtu

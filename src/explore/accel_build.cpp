@@ -5,6 +5,7 @@
 
 #include "geometry/ray_sets.h"
 #include "kinds/bih/bih_builder.h"
+#include "kinds/bih/bih_config.h"
 #include "kinds/bih/bih_image.h"
 #include "kinds/bih/bih_quality.h"
 #include "kinds/bvh/bvh_image.h"
@@ -42,9 +43,10 @@ AccelBuild bvhBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   return build;
 }
 
-AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
+AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec,
+                    const FixedTriangleFormat& format) {
   const auto start = std::chrono::steady_clock::now();
-  const SceneGrid grid(meshBounds(mesh), spec.bihFormat == "vhdl" ? kVhdlFormat : kC99Format);
+  const SceneGrid grid(meshBounds(mesh), format);
   const ProjectedMesh projected = projectMesh(mesh, grid);
   const BihBuild tree = buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid));
   const BihIndexWidth width = spec.index == "wide" ? BihIndexWidth::Wide : BihIndexWidth::Seed;
@@ -57,7 +59,7 @@ AccelBuild bihBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
                              " triangles have no area once on the grid and are left out");
   build.quality = measureQuality(tree, sceneUpper(grid));
   build.quality.buildSeconds = secondsSince(start);
-  build.description = "BIH (" + spec.bihFormat + " formats, " + spec.index + " indices)";
+  build.description = "BIH (" + bihFormatName(format) + " formats, " + spec.index + " indices)";
   return build;
 }
 
@@ -96,12 +98,13 @@ AccelBuild kdBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
 
 }  // namespace
 
-AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec) {
+AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec,
+                      const FixedTriangleFormat& bihFormat) {
   AccelBuild build;
   if (spec.structure == "bvh")
     build = bvhBuild(mesh, spec);
   else if (spec.structure == "bih")
-    build = bihBuild(mesh, spec);
+    build = bihBuild(mesh, spec, bihFormat);
   else if (spec.structure == "kdtree")
     build = kdBuild(mesh, spec);
   else

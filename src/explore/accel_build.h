@@ -10,6 +10,7 @@
 #include "config/run_config.h"
 #include "geometry/accel_quality.h"
 #include "geometry/triangle_mesh.h"
+#include "kinds/bih/fixed_format.h"
 #include "kinds/svo/scene_loader.h"
 
 namespace rtu {
@@ -24,7 +25,9 @@ struct AccelBuild {
 
 // Throws std::invalid_argument for an accel other than bvh, bih or kdtree, and what the builders
 // and layouts throw (a capacity a format cannot hold names it).
-AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec);
+// `bihFormat` is the BIH's number formats (accel.bih_format, the BIH kind's settings).
+AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec,
+                      const FixedTriangleFormat& bihFormat = kC99Format);
 
 // The scene's triangles under the settings' mesh-defect policy (accel.drop_bad_triangles); a
 // droppable defect refused is a std::runtime_error saying how to drop it.

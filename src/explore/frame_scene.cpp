@@ -4,7 +4,10 @@
 #include <utility>
 
 #include "explore/accel_build.h"
+#include "geometry/ray_sets.h"
 #include "inputs/camera.h"
+#include "kinds/bih/bih_config.h"
+#include "kinds/bih/bih_model.h"
 #include "kinds/svo/mesh_voxelizer.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/stack_check.h"
@@ -24,6 +27,22 @@ ModelPlacement placementOf(const SceneSpec& spec, const TriangleMesh& mesh) {
   return placement;
 }
 
+// The model header a triangle kind's frame reads, appended after its structure (at word 0): the
+// BVH's model space is the mesh's; the BIH's is the grid `format` puts the mesh on (bih_model.h).
+template <class Kind>
+uint32_t appendFrameModelHeader(std::vector<uint32_t>& words, const TriangleMesh&,
+                                const ModelPlacement& placement, const RunConfig&) {
+  return appendModelHeader(words, placement, 0);
+}
+
+template <>
+uint32_t appendFrameModelHeader<BihKind<>>(std::vector<uint32_t>& words, const TriangleMesh& mesh,
+                                           const ModelPlacement& placement,
+                                           const RunConfig& settings) {
+  const SceneGrid grid(meshBounds(mesh), settings.rtu.coreConfig<BihKind<>>().format);
+  return appendBihModelHeader(words, grid, placement);
+}
+
 // A triangle kind's scene: buildAccel's structure of the kind's name, a model header after it, the
 // frame's world-space ray records against the header.
 template <class Kind>
@@ -32,11 +51,13 @@ struct FrameSceneOf {
     TriangleScene triangles = loadSceneTriangles(settings);
     AccelSpec spec = settings.accel;
     spec.structure = Kind::kName;
-    AccelBuild build = buildAccel(triangles.mesh, spec);
+    AccelBuild build =
+        buildAccel(triangles.mesh, spec, settings.rtu.coreConfig<BihKind<>>().format);
     FrameScene scene;
     scene.placement = placementOf(settings.scene, triangles.mesh);
     scene.words = std::move(build.words);
-    scene.entry = appendModelHeader(scene.words, scene.placement, 0);  // the structure at word 0
+    scene.entry =
+        appendFrameModelHeader<Kind>(scene.words, triangles.mesh, scene.placement, settings);
     scene.name = triangles.name;
     scene.description = build.description + ", " + std::to_string(triangles.mesh.triangles.size()) +
                         " triangles, " + std::to_string(build.quality.nodes) + " nodes, " +
@@ -103,7 +124,8 @@ std::string frameSceneKey(const RunConfig& settings) {
          "|" + spec.binvoxFile + "|" + std::to_string(spec.depth) + "|" +
          std::to_string(spec.seed) + "|" + std::to_string(spec.root) + "|" +
          std::to_string(spec.maxDepth) + "|" + accel.builder + "|" +
-         std::to_string(accel.dropBadTriangles) + "|" + accel.bihFormat + "|" + accel.index;
+         std::to_string(accel.dropBadTriangles) + "|" +
+         bihFormatName(settings.rtu.coreConfig<BihKind<>>().format) + "|" + accel.index;
 }
 
 }  // namespace rtu

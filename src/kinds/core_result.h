@@ -165,9 +165,12 @@ inline const TraversalResult& svoResult(const CoreKindResult& result) {
 inline std::vector<TraversalResult> svoResults(const std::vector<CoreKindResult>& results) {
   return resultsOfKind<SvoKind>(results);
 }
-// The BVH kind's: its frame images (app/bvh_render.h).
+// The triangle kinds': their frame images (app/triangle_render.h).
 inline std::vector<BvhResult> bvhResults(const std::vector<CoreKindResult>& results) {
   return resultsOfKind<BvhKind<>>(results);
+}
+inline std::vector<BihResult> bihResults(const std::vector<CoreKindResult>& results) {
+  return resultsOfKind<BihKind<>>(results);
 }
 
 }  // namespace rtu

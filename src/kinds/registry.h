@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/statistics.h"
+#include "kinds/bih/bih_kind.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "kinds/host_record.h"
 #include "kinds/svo/svo_kind.h"
@@ -101,7 +102,7 @@ struct CoreKindList {
   }
 };
 
-using CoreKinds = CoreKindList<SvoKind, BvhKind<>>;  // a new kind: one more name here
+using CoreKinds = CoreKindList<SvoKind, BvhKind<>, BihKind<>>;  // a new kind: one more name here
 
 using HostRecord = CoreKinds::HostRecord;
 using CoreKindConfigs = CoreKinds::Configs;

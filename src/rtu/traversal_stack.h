@@ -37,6 +37,8 @@ class RingStack {
       ++size_;
   }
   // The newest entry, removed. Only when not empty().
+  // The newest entry; the stack must not be empty.
+  const Entry& top() const { return slots_[top_]; }
   Entry pop() {
     const Entry entry = slots_[top_];
     top_ = top_ == 0 ? capacity() - 1 : top_ - 1;

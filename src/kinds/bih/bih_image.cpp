@@ -37,8 +37,10 @@ uint32_t indexMask(BihIndexWidth width) { return (uint32_t{1} << indexBits(width
 BihHeader bihSections(uint64_t nodes, uint64_t entries, uint64_t triangles, BihIndexWidth width) {
   if (nodes == 0) throw BihCapacityError("a tree needs a root node");
   const uint64_t indices = uint64_t{1} << indexBits(width);
-  const std::string bits = std::to_string(indexBits(width)) + "-bit node indices" +
-                           (width == BihIndexWidth::Seed ? "; the wide index has 29" : "");
+  const std::string bits =
+      std::to_string(indexBits(width)) + "-bit node indices" +
+      (width == BihIndexWidth::Seed ? "; the wide index (accel.index = wide, --index wide) has 29"
+                                    : "");
   checkCount(nodes, indices, "nodes", bits);
   checkCount(entries, indices, "list entries", bits);
   checkCount(triangles, uint64_t{1} << kBihTriangleNumberBits, "triangles",

@@ -29,4 +29,16 @@ struct VhdlIntersector {
   }
 };
 
+// The kernel the image's formats are meant for (FixedTriangleFormat::listing): the registered
+// kind's, one branch per test, the same in a whole run over one image.
+struct ListingIntersector {
+  static constexpr const char* kName = "listing";
+  FixedTest test(const FixedTriangleFormat& format, const GridRay& ray,
+                 const ProjectedTriangle& triangle, int64_t tBest) const {
+    if (format.listing == FixedListing::Vhdl)
+      return VhdlIntersector{}.test(format, ray, triangle, tBest);
+    return C99Intersector{}.test(format, ray, triangle, tBest);
+  }
+};
+
 }  // namespace rtu

@@ -32,6 +32,10 @@
 //          next triangle -> LEAF; after its last POP, or OUT when the stack is empty
 // There is no early-out by default (S4 §3.4 L577: "not implemented"); the result does not depend
 // on when hits arrive, since TEST reduces them in the order LEAF emitted them.
+//
+// Cycles (bih_timing.h): one a state, but TEST, which issues the test to the pipelined triangle
+// unit and takes its initiation interval, and the ray's last state, which also waits until the
+// last issued test's result is out (the unit's latency after its issue).
 
 #include <algorithm>
 #include <array>
@@ -39,6 +43,7 @@
 #include <stdexcept>
 
 #include "kinds/bih/bih_image.h"
+#include "kinds/bih/bih_timing.h"
 #include "kinds/bih/fixed_arith.h"
 #include "kinds/bih/fixed_kernels.h"
 #include "kinds/bih/grid.h"
@@ -78,6 +83,7 @@ inline BihScene sceneOf(const BihHeader& header) {
 struct BihJob {
   GridRay ray;  // clipped and quantised on the image's grid (SceneGrid::quantise)
   BihScene scene;
+  bool missesBox = false;  // the ray misses the scene box: AABB ends it (no grid ray exists)
 };
 
 // What one ray's traversal counted.
@@ -88,6 +94,14 @@ struct BihRayCounts {
   uint32_t triangleTests = 0;
   uint32_t errBits = 0;     // tests ended by the VHDL divider's error bit
   uint32_t tOverflows = 0;  // C99 quotients beyond int (C7)
+  uint32_t dropped = 0;     // stack entries lost to a push onto the full 32-entry stack
+  uint32_t accesses = 0;    // memory accesses, kWordsPerRead words each
+
+  bool operator==(const BihRayCounts& o) const {
+    return nodes == o.nodes && pushes == o.pushes && pops == o.pops && leaves == o.leaves &&
+           triangleTests == o.triangleTests && errBits == o.errBits && tOverflows == o.tOverflows &&
+           dropped == o.dropped && accesses == o.accesses;
+  }
 };
 
 // The seed's stack: 32 entries at 992-1023 (A.3); the builder keeps depth <= 31 (bih_builder.h).
@@ -98,12 +112,14 @@ class BihTraversal {
  public:
   static constexpr uint32_t kWordsPerRead = 4;
 
-  explicit BihTraversal(bool earlyOut, Intersector intersector = {})
-      : stack_(kBihStackEntries), earlyOut_(earlyOut), intersector_(intersector) {}
+  explicit BihTraversal(bool earlyOut, BihCycles cycles = {}, Intersector intersector = {})
+      : stack_(kBihStackEntries), earlyOut_(earlyOut), cycles_(cycles), intersector_(intersector) {}
 
   void start(const BihJob& job) {
     ray_ = job.ray;
     scene_ = job.scene;
+    missesBox_ = job.missesBox;
+    lastIssue_ = kNoIssue;
     stack_.clear();
     counts_ = {};
     cost_ = 0;
@@ -113,6 +129,17 @@ class BihTraversal {
   }
 
   BihState state() const { return state_; }
+  int stackSize() const { return stack_.size(); }  // the trace's stack signal
+  // The current state's cycles (bih_timing.h), asked before it is stepped: TEST the unit's
+  // initiation interval, the ray's last state until the last issued test's result is out.
+  uint32_t stateCycles() const {
+    const bool test = state_ == BihState::Test;
+    if (!endsRay()) return test ? cycles_.triangleInterval : 1;
+    const uint64_t issued = test ? cost_ : lastIssue_;
+    // No test issued, or its result out already: the state's own cycle.
+    if (issued == kNoIssue || issued + cycles_.triangleLatency <= cost_ + 1) return 1;
+    return static_cast<uint32_t>(issued + cycles_.triangleLatency - cost_);
+  }
   bool busy() const { return state_ != BihState::Idle && state_ != BihState::Out; }
   bool readsMemory() const {
     switch (state_) {
@@ -139,7 +166,8 @@ class BihTraversal {
 
   template <class ReadWord>
   void step(ReadWord&& readWord) {
-    ++cost_;
+    const uint32_t cycles = stateCycles();
+    if (readsMemory()) ++counts_.accesses;
     switch (state_) {
       case BihState::Aabb: aabb(); break;
       case BihState::Node: readNode(readWord); break;
@@ -159,17 +187,24 @@ class BihTraversal {
       case BihState::Tri1: readRecord(readWord, 4, BihState::Tri2); break;
       case BihState::Tri2: readRecord(readWord, 8, BihState::Test); break;
       case BihState::Test: test(); break;
-      default: --cost_; throw std::logic_error("BIH traversal stepped while idle or done");
+      default: throw std::logic_error("BIH traversal stepped while idle or done");
     }
+    cost_ += cycles;
+  }
+  // The timed cores' name for step.
+  template <class ReadWord>
+  void stepInline(ReadWord&& readWord) {
+    step(readWord);
   }
   void finish() { state_ = BihState::Idle; }
 
   bool hit() const { return hit_; }
   int64_t t() const { return tBest_; }  // grid units (GridRay::worldT maps it back)
-  int64_t u() const { return u_; }      // the seed's u, v at scale 2^(m-1+E) (fixed_kernels.h)
+  double worldT() const { return ray_.worldT(tBest_); }  // t along the job's world-space ray
+  int64_t u() const { return u_; }  // the seed's u, v at scale 2^(m-1+E) (fixed_kernels.h)
   int64_t v() const { return v_; }
   uint32_t primitive() const { return primitive_; }  // the hit triangle's source id
-  uint32_t cost() const { return cost_; }
+  uint32_t cost() const { return cost_; }            // its states' cycles
   const BihRayCounts& counts() const { return counts_; }
 
  private:
@@ -178,6 +213,20 @@ class BihTraversal {
     uint32_t node = 0;
     int64_t tmin = 0, tmax = 0;
   };
+
+  static constexpr uint64_t kNoIssue = UINT64_MAX;
+
+  // Whether the current state, stepped, ends the ray (OUT next).
+  bool endsRay() const {
+    switch (state_) {
+      case BihState::Inner: return dist0_ < tmin_ && dist1_ > tmax_ && stack_.empty();
+      case BihState::Test: return entriesLeft_ == 0 && stack_.empty();
+      case BihState::Pop:
+        return earlyOut_ && hit_ && stack_.size() == 1 && bihDistance(tBest_) < stack_.top().tmin;
+      case BihState::Node: return false;  // a leaf of count 0 (refused by the validator) aside
+      default: return false;
+    }
+  }
 
   uint32_t triangleAddress() const { return scene_.triangles + kBihTriangleWords * triangle_; }
 
@@ -194,7 +243,7 @@ class BihTraversal {
     for (uint32_t k = 0; k < 3; ++k)
       tmax_ = std::min(tmax_, distance(negative(k) ? 0 : scene_.upper[k], k));
     node_ = 0;
-    state_ = tmax_ < 0 ? BihState::Out : BihState::Node;
+    state_ = missesBox_ || tmax_ < 0 ? BihState::Out : BihState::Node;
   }
 
   template <class ReadWord>
@@ -232,6 +281,7 @@ class BihTraversal {
       tmin_ = std::max(tmin_, dist1_);
       node_ = farChild_;
     } else {
+      counts_.dropped += stack_.size() == stack_.capacity();
       stack_.push(Entry{farChild_, std::max(tmin_, dist1_), tmax_});
       ++counts_.pushes;
       tmax_ = std::min(tmax_, dist0_);
@@ -264,6 +314,7 @@ class BihTraversal {
 
   void test() {
     ++counts_.triangleTests;
+    lastIssue_ = cost_;
     const ProjectedTriangle triangle = fromWords(record_);
     const FixedTest result = intersector_.test(scene_.format, ray_, triangle, tBest_);
     counts_.errBits += result.verdict == FixedVerdict::DividerError;
@@ -283,7 +334,10 @@ class BihTraversal {
 
   RingStack<Entry> stack_;
   bool earlyOut_;
+  BihCycles cycles_;
   Intersector intersector_;
+  bool missesBox_ = false;
+  uint64_t lastIssue_ = kNoIssue;  // the cost when the last test issued
   GridRay ray_;
   BihScene scene_;
   BihState state_ = BihState::Idle;

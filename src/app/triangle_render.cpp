@@ -1,0 +1,76 @@
+#include "app/triangle_render.h"
+
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "kinds/bih/bih_counters.h"
+#include "kinds/bvh/bvh_counters.h"
+
+namespace rtu {
+namespace {
+
+double perRay(uint64_t count, size_t rays) {
+  return static_cast<double>(count) / static_cast<double>(std::max<size_t>(rays, 1));
+}
+
+template <class Counters, class Result>
+Counters countersOf(const std::vector<Result>& results) {
+  Counters counters;
+  for (const Result& result : results) counters.add(result.counts);
+  return counters;
+}
+
+}  // namespace
+
+FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
+                         uint32_t primitive) {
+  FramePixel pixel{hit, distance, cost, glm::dvec3(0.0)};
+  if (!hit) return pixel;
+  const auto& corners = scene.mesh.triangles.at(primitive);
+  const glm::dvec3 a = scene.mesh.vertices[corners[0]], b = scene.mesh.vertices[corners[1]],
+                   c = scene.mesh.vertices[corners[2]];
+  // A normal maps to the world by R S^-1 (the inverse transpose of R S).
+  pixel.normal = scene.placement.rotation * (glm::cross(b - a, c - a) / scene.placement.scale);
+  return pixel;
+}
+
+std::string describeHits(size_t rays, uint64_t hits, uint64_t cost, uint32_t maxCost) {
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "rays        %zu\n"
+                "hits        %llu (%.1f %%)\n"
+                "cost        mean %.2f, max %u cycles per ray (first state to last before OUT)\n",
+                rays, static_cast<unsigned long long>(hits), 100.0 * perRay(hits, rays),
+                perRay(cost, rays), maxCost);
+  return text;
+}
+
+std::string describeBvhResults(const std::vector<BvhResult>& results) {
+  const auto counters = countersOf<BvhCounters>(results);
+  const size_t rays = results.size();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "bvh         %.2f nodes, %.2f box tests, %.2f triangle tests, %.1f bytes per "
+                "ray; %llu rays lost stack entries\n",
+                perRay(counters.bvhNodesVisited, rays), perRay(counters.bvhBoxTests, rays),
+                perRay(counters.bvhTriangleTests, rays), perRay(counters.bvhBytesFetched, rays),
+                static_cast<unsigned long long>(counters.bvhStackOverflows));
+  return describeTriangleHits(results) + text;
+}
+
+std::string describeBihResults(const std::vector<BihResult>& results) {
+  const auto counters = countersOf<BihCounters>(results);
+  const size_t rays = results.size();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "bih         %.2f nodes, %.2f triangle tests, %.1f bytes per ray; %llu rays lost "
+                "stack entries, %llu divider errors\n",
+                perRay(counters.bihNodesVisited, rays), perRay(counters.bihTriangleTests, rays),
+                perRay(counters.bihBytesFetched, rays),
+                static_cast<unsigned long long>(counters.bihStackOverflows),
+                static_cast<unsigned long long>(counters.bihDividerErrors));
+  return describeTriangleHits(results) + text;
+}
+
+}  // namespace rtu
