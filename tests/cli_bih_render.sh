@@ -62,6 +62,22 @@ grep -q "BIH (vhdl formats, wide indices)" vhdl.txt || fail "vhdl formats: $(cat
 python3 -c "import sys; sys.exit(not $(cost fast.txt) < $(cost golden.txt))" ||
   fail "a 1-cycle unit costs $(cost fast.txt), the 41-cycle unit $(cost golden.txt)"
 
+# Seed 004's hardware as a preset: one core at 233 MHz; the unit's fill rate is its tests (one
+# cycle each) over the rays' cycles, as the report's own per-ray figures give it.
+"$rtusim" render --preset fixedpoint "${frame[@]}" >preset.txt
+grep -q "^model       ca, bih core, vhdl fixed-point formats, triangle unit 41 cycles" preset.txt ||
+  fail "the fixedpoint preset's core: $(cat preset.txt)"
+grep -q "at 233.00 MHz" preset.txt || fail "the fixedpoint preset's clock: $(cat preset.txt)"
+grep -q "core time (1 cores)" preset.txt || fail "the fixedpoint preset's one core: $(cat preset.txt)"
+python3 - preset.txt <<'PY' || fail "unit fill: $(cat preset.txt)"
+import re, sys
+report = open(sys.argv[1]).read()
+tests = float(re.search(r"^bih +[0-9.]+ nodes, ([0-9.]+) triangle tests", report, re.M).group(1))
+cost = float(re.search(r"^cost +mean ([0-9.]+),", report, re.M).group(1))
+fill = float(re.search(r"^unit fill +([0-9.]+) %", report, re.M).group(1))
+assert 0 < fill < 100 and abs(fill - 100 * tests / cost) < 0.1, (fill, tests, cost)
+PY
+
 # The seed's 10-bit node indices hold 1024 nodes: the frame's tree is refused, naming the way out.
 expect_error "3999 nodes, more than 1024 (10-bit node indices; the wide index (accel.index = wide, --index wide) has 29)" \
   "$rtusim" render --core bih "${frame[@]}" --model golden

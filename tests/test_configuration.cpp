@@ -8,6 +8,8 @@
 
 #include "config/configuration.h"
 #include "config/sweep_spec.h"
+#include "kinds/bih/bih_config.h"
+#include "kinds/registry.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;
@@ -119,7 +121,7 @@ TEST_CASE("Each flag names one setting, the two epsilons have their own (issue 2
 
 TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]") {
   const std::vector<std::string> names = presetNames();
-  CHECK(names == std::vector<std::string>{"asic", "cached", "thesis"});
+  CHECK(names == std::vector<std::string>{"asic", "cached", "fixedpoint", "thesis"});
   for (const std::string& name : names) {
     INFO(name);
     Configuration c;
@@ -133,7 +135,20 @@ TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]")
   CHECK(thesis.values().rtu.memory.ideal);
   CHECK(thesis.values().rtu.clockMhz == 100.0);
   CHECK(thesis.values().rtu.hostInput.bytesPerCycle == 8.0);  // 64-bit AXI DMA, 4 cycles a ray
-  CHECK_THROWS_WITH(thesis.applyPreset("fast"), Contains("asic, cached, thesis"));
+  CHECK_THROWS_WITH(thesis.applyPreset("fast"), Contains("asic, cached, fixedpoint, thesis"));
+  // Seed 004's hardware: one BIH core at 233 MHz on ROM, the VHDL's formats, the 41-cycle unit.
+  Configuration fixedpoint;
+  fixedpoint.applyPreset("fixedpoint");
+  const RtuConfig& rtu = fixedpoint.values().rtu;
+  CHECK(rtu.core == "bih");
+  CHECK(rtu.cores == 1);
+  CHECK(rtu.memory.ideal);
+  CHECK(rtu.clockMhz == 233.0);
+  const BihConfig& bih = rtu.coreConfig<BihKind<>>();
+  CHECK(bihFormatName(bih.format) == "vhdl");
+  CHECK(bih.cycles.triangleLatency == 41);
+  CHECK(bih.cycles.triangleInterval == 1);
+  CHECK_FALSE(bih.earlyOut);
 }
 
 TEST_CASE("Settings a user gives that have no effect are reported", "[config]") {

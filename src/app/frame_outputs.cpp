@@ -51,8 +51,10 @@ struct FrameOutputsOf<BihKind<>> {
     return "bih core, " + bihFormatName(core.format) + " fixed-point formats, triangle unit " +
            std::to_string(core.cycles.triangleLatency) + " cycles";
   }
-  static std::string results(const RunConfig&, const std::vector<CoreKindResult>& results) {
-    return describeBihResults(bihResults(results));
+  static std::string results(const RunConfig& settings,
+                             const std::vector<CoreKindResult>& results) {
+    return describeBihResults(bihResults(results),
+                              settings.rtu.coreConfig<BihKind<>>().cycles.triangleInterval);
   }
   static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
                               const std::vector<CoreKindResult>& results) {

@@ -59,17 +59,22 @@ std::string describeBvhResults(const std::vector<BvhResult>& results) {
   return describeTriangleHits(results) + text;
 }
 
-std::string describeBihResults(const std::vector<BihResult>& results) {
+std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval) {
   const auto counters = countersOf<BihCounters>(results);
   const size_t rays = results.size();
-  char text[256];
+  uint64_t cycles = 0;
+  for (const BihResult& result : results) cycles += result.cost;
+  char text[512];
   std::snprintf(text, sizeof text,
                 "bih         %.2f nodes, %.2f triangle tests, %.1f bytes per ray; %llu rays lost "
-                "stack entries, %llu divider errors\n",
+                "stack entries, %llu divider errors\n"
+                "unit fill   %.1f %% (triangle tests x interval over the rays' cycles: seed 004 "
+                "measured about 40 %%)\n",
                 perRay(counters.bihNodesVisited, rays), perRay(counters.bihTriangleTests, rays),
                 perRay(counters.bihBytesFetched, rays),
                 static_cast<unsigned long long>(counters.bihStackOverflows),
-                static_cast<unsigned long long>(counters.bihDividerErrors));
+                static_cast<unsigned long long>(counters.bihDividerErrors),
+                100.0 * perRay(counters.bihTriangleTests * unitInterval, cycles));
   return describeTriangleHits(results) + text;
 }
 

@@ -50,8 +50,9 @@ std::string describeTriangleHits(const std::vector<Result>& results) {
   return describeHits(results.size(), hits, cost, maxCost);
 }
 
-// Hits, mean cost and the kind's counters per ray, as report lines.
+// Hits, mean cost and the kind's counters per ray, as report lines; for the BIH the triangle unit's
+// fill rate, its tests' issue cycles (`unitInterval` each) over the rays' cycles (their costs).
 std::string describeBvhResults(const std::vector<BvhResult>& results);
-std::string describeBihResults(const std::vector<BihResult>& results);
+std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval);
 
 }  // namespace rtu
