@@ -123,14 +123,27 @@ def new_figure(width=8.0, height=5.0):
     return fig, ax
 
 
+def legend_columns(entries):
+    """A legend taller than its figure collapses the axes (constrained layout): 16 a column."""
+    return math.ceil(entries / 16)
+
+
+def widen_for_legend(fig, labels):
+    """Widens a figure by the legend outside its axes, which would else squeeze them."""
+    longest = max(len(line) for label in labels for line in str(label).split("\n"))
+    columns = legend_columns(len(labels))
+    fig.set_figwidth(fig.get_figwidth() + columns * (0.7 + 0.07 * longest))
+
+
 def legend(ax, title=None, outside=False, **kwargs):
-    handles, _ = ax.get_legend_handles_labels()
+    handles, labels = ax.get_legend_handles_labels()
     if not handles:
         return
     if outside or len(handles) > 6:
         kwargs.pop("loc", None)
+        widen_for_legend(ax.figure, labels)
         ax.legend(title=title, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0,
-                  **kwargs)
+                  ncol=legend_columns(len(handles)), **kwargs)
     else:
         ax.legend(title=title, **kwargs)
 
@@ -440,7 +453,7 @@ def plot_stat_against(rows, varied, request, x):
     columns = min(3, len(panels))
     rows_of_panels = math.ceil(len(panels) / columns)
     fig, axes = plt.subplots(rows_of_panels, columns, squeeze=False, layout="constrained",
-                             figsize=(4.8 * columns + 2.6, 4.2 * rows_of_panels + 0.8))
+                             figsize=(4.8 * columns + 0.6, 4.2 * rows_of_panels + 0.8))
     for ax in axes.flat[len(panels):]:
         ax.set_visible(False)
     for ax, (panel, panel_rows) in zip(axes.flat, panels):
@@ -470,10 +483,12 @@ def plot_stat_against(rows, varied, request, x):
                 labels.append(label)
     if series_keys:
         order = sorted(range(len(labels)), key=lambda i: int(handles[i].get_gid().split()[1]))
-        # on the first row's last panel, outside it: constrained layout makes room for it
+        # on the first row's last panel, outside it
+        widen_for_legend(fig, labels)
         axes[0, -1].legend([handles[i] for i in order], [labels[i] for i in order],
                            title=legend_title(series_keys), loc="upper left",
-                           bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
+                           bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
+                           ncol=legend_columns(len(labels)))
     what = "%s against %s" % (stat_label(y)[0].upper() + stat_label(y)[1:], short_key(x))
     count = "%d rows, %d lines%s" % (len(usable), len(series),
                                      " in %d panels" % len(panels) if facet else "")
