@@ -39,8 +39,8 @@ def paired_rows(rows):
 def number_text(value):
     if isinstance(value, bool) or value is None:
         return str(value).lower() if isinstance(value, bool) else "-"
-    if isinstance(value, float):
-        return fmt_sig(value)
+    if isinstance(value, float):  # six digits: a difference of a per mille shows
+        return "{:,.0f}".format(value) if abs(value) >= 1e6 else "%.6g" % value
     return str(value)
 
 
@@ -88,7 +88,8 @@ def diff_lines(paths, labels, only, changed):
             lines.append("row %s: only in %s" % (which, "B" if a is None else "A"))
             continue
         if not single:
-            lines.append("row %s (A #%d, B #%d):" % (which or "-", a["index"], b["index"]))
+            lines.append("row %s (A #%d, B #%d):" % (which or "-", a["number_in_input"],
+                                                     b["number_in_input"]))
         if a["status"] != "ok" or b["status"] != "ok":
             lines.append("  status %s / %s" % (a["status"], b["status"]))
             continue

@@ -125,7 +125,9 @@ def comparison_section(rows, objective):
         vb = objective.value(b) if b and b["status"] == "ok" else None
         out.append("<tr>%s%s%s%s</tr>" % (
             "".join(cell(format_value(k, (a or b)["config"].get(k))) for k in varied),
-            cell(va), cell(vb), cell(vb / va if va and vb is not None else None)))
+            cell(objective_text(va) if va is not None else None, va),
+            cell(objective_text(vb) if vb is not None else None, vb),
+            cell(vb / va if va and vb is not None else None)))
     out.append("</tbody></table>")
     return out
 

@@ -171,8 +171,8 @@ def load(paths, labels=None):
                          % next(n for n in names if names.count(n) > 1))
     rows = []
     for path, name in zip(paths, names):
-        for row in read_file(path):
-            row["input"] = name
+        for number_in_input, row in enumerate(read_file(path), 1):
+            row["input"], row["number_in_input"] = name, number_in_input
             rows.append(row)
     if not rows:
         raise InputError("no rows in %s" % ", ".join(paths))
