@@ -16,7 +16,7 @@ from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator  # noqa: 
 import numpy as np  # noqa: E402
 
 from rtusim_rows import (TIME_PARTS, as_number, core_time_of, cycles_per_ray_of,  # noqa: E402
-                         describe, fixed_config, fmt_sig, format_value, get, groups_by,
+                         describe, fixed_config, format_value, get, groups_by,
                          hit_rate_of, key_value, per_core_times, short_key, sort_key, value_of,
                          varied_keys, wait_histogram_of)
 
@@ -101,15 +101,15 @@ def title_for(what, rows, exclude=(), extra=""):
 
 
 
-def log2_axis(ax, values, axis="x", formatter=None):
+def log2_axis(ax, values):
+    """A log2 x axis with a tick at each value."""
     values = sorted(set(values))
-    if axis == "x":
-        ax.set_xscale("log", base=2)
-        target = ax.xaxis
-        ax.set_xlim(values[0] / 2 ** 0.4, values[-1] * 2 ** 0.4)
+    ax.set_xscale("log", base=2)
+    target = ax.xaxis
+    ax.set_xlim(values[0] / 2 ** 0.4, values[-1] * 2 ** 0.4)
     target.set_major_locator(FixedLocator(values))
     target.set_minor_locator(NullLocator())
-    target.set_major_formatter(FuncFormatter(formatter or (lambda v, _: "%g" % v)))
+    target.set_major_formatter(FuncFormatter(lambda v, _: "%g" % v))
     if len(values) > 10:
         plt.setp(target.get_majorticklabels(), rotation=45, ha="right")
 
@@ -146,19 +146,6 @@ def legend(ax, title=None, outside=False, **kwargs):
                   ncol=legend_columns(len(handles)), **kwargs)
     else:
         ax.legend(title=title, **kwargs)
-
-
-def label_points(ax, points):
-    """Value labels above points, leaving out any that would overlap one already placed."""
-    ax.autoscale_view()
-    placed = []
-    for x, y, color in points:
-        px, py = ax.transData.transform((x, y))
-        if any(abs(px - qx) < 34 and abs(py - qy) < 14 for qx, qy in placed):
-            continue
-        placed.append((px, py))
-        ax.annotate(fmt_sig(y), (x, y), textcoords="offset points", xytext=(0, 7),
-                    ha="center", fontsize=8, color=color)
 
 
 def line_groups(rows, xkey, first=None):

@@ -32,7 +32,7 @@ try:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import numpy  # noqa: F401 (the figures need it)
+    import numpy  # noqa: F401 (imported here to be reported here when missing)
 except ImportError as error:  # pragma: no cover - depends on the host
     # A Python first on PATH (pyenv, venv) may lack Debian's python3-matplotlib: retry once with
     # the system interpreter.

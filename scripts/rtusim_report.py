@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt
 from rtusim_diff import paired_rows
 from rtusim_figures import make_plots, render
 from rtusim_objective import format_gain, objective_text, summaries
-from rtusim_rows import (InputError, cycles_per_ray_of, describe, fixed_config, fmt_sig,
+from rtusim_rows import (InputError, cycles_per_ray_of, fps_of, describe, fixed_config, fmt_sig,
                          format_value, hit_rate_of, input_keys, sort_key, varied_keys)
 
 
@@ -145,7 +145,8 @@ def rows_section(rows, varied, marked):
         stats = row["statistics"] or {}
         ok = bool(row["statistics"])
         values = [stats.get("rays"), stats.get("total_cycles"),
-                  cycles_per_ray_of(row) if ok else None, stats.get("fps"), stats.get("frame_ms"),
+                  cycles_per_ray_of(row) if ok else None, fps_of(row) if ok else None,
+                  stats.get("frame_ms"),
                   hit_rate_of(row, "l1") if ok else None, hit_rate_of(row, "l2") if ok else None,
                   stats.get("limit")]
         status = html.escape(row["status"]) + (
