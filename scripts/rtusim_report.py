@@ -13,7 +13,7 @@ import matplotlib.pyplot as plt
 from rtusim_diff import paired_rows
 from rtusim_figures import make_plots, render
 from rtusim_objective import format_gain, objective_text, summaries
-from rtusim_rows import (InputError, cycles_per_ray_of, fps_of, describe, fixed_config, fmt_sig,
+from rtusim_rows import (InputError, cycles_per_ray_of, fps_of, describe, fixed_config,
                          format_value, hit_rate_of, input_keys, sort_key, varied_keys)
 
 
@@ -25,8 +25,9 @@ def cell(value, sort=None):
     if isinstance(value, bool):
         return "<td>%s</td>" % str(value).lower()
     if isinstance(value, (int, float)):
+        # four digits: a frame rate's or hit rate's per cent shows
         text = "{:,}".format(value) if isinstance(value, int) else \
-            fmt_sig(value) if abs(value) < 1e6 else "{:,.0f}".format(value)
+            "%.4g" % value if abs(value) < 1e4 else "{:,.0f}".format(value)
         return '<td class="num" data-sort="%r">%s</td>' % (value, text)
     return "<td%s>%s</td>" % (key, html.escape(str(value)))
 
@@ -36,11 +37,12 @@ body { font-family: system-ui, -apple-system, "Segoe UI", sans-serif; margin: 2e
        max-width: 1250px; padding: 0 1em; color: #222; }
 h1 { font-size: 1.6em; } h2 { font-size: 1.25em; margin-top: 1.8em; border-bottom: 1px solid #ddd; }
 table { border-collapse: collapse; font-size: 0.9em; margin: 0.5em 0; }
-th, td { border: 1px solid #ddd; padding: 3px 8px; text-align: left; vertical-align: top; }
+th, td { border: 1px solid #ddd; padding: 3px 8px; text-align: left; vertical-align: top;
+         white-space: nowrap; }
 th { background: #f3f3f3; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
 table.sortable th { cursor: pointer; } table.sortable th:hover { background: #e6e6e6; }
 tr.failed td { background: #fff0f0; } tr.best td { background: #e7f5e7; font-weight: 600; }
-.error { color: #b00020; }
+.error { color: #b00020; white-space: normal; }
 figure { margin: 1em 0; } figure img { width: 100%; height: auto; border: 1px solid #eee; }
 figcaption { font-size: 0.85em; color: #555; }
 .scroll { overflow-x: auto; } code { background: #f5f5f5; padding: 0 3px; }

@@ -46,27 +46,23 @@ void addPlotCommands(CLI::App& app) {
       "plot", "plots (PNG and SVG) of sweep rows (.jsonl) or fps tables (.csv): frame rate against "
               "each varied key, or --y STAT against --x KEY; hit rates against cache size, core "
               "time, scheduler waits, cycles per ray against DRAM latency");
-  plot->add_option("inputs", plotRows->inputs, "sweep or fps .jsonl, or fps .csv files")
+  plot->add_option("inputs", plotRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
       ->check(CLI::ExistingFile);
-  plotRows->options["--out-dir"] = {"plots"};
-  plot->add_option("--out-dir", plotRows->options["--out-dir"], "folder for the plots")
-      ->capture_default_str()
-      ->allow_extra_args(false);
-  plot->add_option("--x", plotRows->options["--x"],
-                   "the key on the x axis (default: each varied key)")
-      ->allow_extra_args(false);
-  plot->add_option("--y", plotRows->options["--y"],
+  plotRows->values["--out-dir"] = "plots";
+  plot->add_option("--out-dir", plotRows->values["--out-dir"], "folder for the plots")
+      ->capture_default_str();
+  plot->add_option("--x", plotRows->values["--x"],
+                   "the key on the x axis (default: each varied key)");
+  plot->add_option("--y", plotRows->values["--y"],
                    "the statistic on the y axis, as `rtusim stats --list` names it or its JSON "
-                   "path (memory.l1.hit_rate); default fps")
-      ->allow_extra_args(false);
-  plot->add_option("--by", plotRows->options["--by"],
+                   "path (memory.l1.hit_rate); default fps");
+  plot->add_option("--by", plotRows->values["--by"],
                    "one line per value of this key (default: the next varied key; `none`: one "
-                   "line per configuration of the other keys)")
-      ->allow_extra_args(false);
-  plot->add_option("--facet", plotRows->options["--facet"],
-                   "one panel per value of this key (default: scene when it varies; `none`)")
-      ->allow_extra_args(false);
+                   "line per configuration of the other keys)");
+  plot->add_option("--facet", plotRows->values["--facet"],
+                   "one panel per value of this key (default: scene when it varies; `none`)");
   addRowOptions(*plot, *plotRows);
   plot->callback([plotRows] { runPlotScript("plot", plotRows->arguments()); });
 
@@ -74,13 +70,13 @@ void addPlotCommands(CLI::App& app) {
   CLI::App* report = app.add_subcommand(
       "report", "a self-contained HTML page of sweeps: the best configuration, plots, the rows "
                 "(sortable), the configuration; two inputs are compared");
-  report->add_option("inputs", reportRows->inputs, "sweep or fps .jsonl, or fps .csv files")
+  report
+      ->add_option("inputs", reportRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
       ->check(CLI::ExistingFile);
-  reportRows->options["--out"] = {"report.html"};
-  report->add_option("--out", reportRows->options["--out"], "HTML file")
-      ->capture_default_str()
-      ->allow_extra_args(false);
+  reportRows->values["--out"] = "report.html";
+  report->add_option("--out", reportRows->values["--out"], "HTML file")->capture_default_str();
   addRowOptions(*report, *reportRows);
   addObjectiveOptions(*report, *reportRows);
   report->callback([reportRows] { runPlotScript("report", reportRows->arguments()); });
@@ -89,7 +85,8 @@ void addPlotCommands(CLI::App& app) {
   CLI::App* best = app.add_subcommand(
       "best", "the best configuration of sweep rows per group by an objective, its gain over the "
               "base configuration, and the Pareto front of two objectives");
-  best->add_option("inputs", bestRows->inputs, "sweep or fps .jsonl, or fps .csv files")
+  best->add_option("inputs", bestRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
       ->check(CLI::ExistingFile);
   addRowOptions(*best, *bestRows);

@@ -34,6 +34,8 @@ std::string writeScripts() {
 
 std::vector<std::string> PlotArguments::arguments() const {
   std::vector<std::string> words;
+  for (const auto& [option, value] : values)
+    if (!value.empty()) words.insert(words.end(), {option, value});
   for (const auto& [option, values] : options)
     for (const std::string& value : values) words.insert(words.end(), {option, value});
   for (const auto& [flag, set] : flags)

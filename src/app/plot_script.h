@@ -11,7 +11,8 @@ namespace rtu {
 // A subcommand's inputs and options, passed on to the script as given: each option once per value.
 struct PlotArguments {
   std::vector<std::string> inputs;
-  std::map<std::string, std::vector<std::string>> options;  // "--x" -> values
+  std::map<std::string, std::string> values;                // "--x" -> its value, once
+  std::map<std::string, std::vector<std::string>> options;  // "--where" -> values, repeatable
   std::map<std::string, bool> flags;                        // "--changed" -> set
 
   std::vector<std::string> arguments() const;
