@@ -32,7 +32,8 @@ FACET_KEYS = ["scene", "svo", "mesh", "binvox"]
 # Axis labels of common statistics.
 STAT_LABELS = {"fps": "frame rate (frames/s)", "frame_ms": "frame time (ms)",
                "total_cycles": "total cycles", "cycles_per_ray": "cycles per ray",
-               "rays_per_second": "rays per second"}
+               "rays_per_second": "rays per second", "memory.l1.hit_rate": "L1 hit rate",
+               "memory.l2.hit_rate": "L2 hit rate"}
 
 plt.rcParams.update({
     "font.size": 11,
@@ -418,7 +419,8 @@ def numeric_axis(ax, values, key):
 
 
 def stat_label(name):
-    return STAT_LABELS.get(name, name)
+    path = name.replace("/", ".")
+    return STAT_LABELS.get(path, path)
 
 
 def plot_stat_against(rows, varied, request, x):

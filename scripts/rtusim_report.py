@@ -50,8 +50,9 @@ figcaption { font-size: 0.85em; color: #555; }
 
 # Sorts a table.sortable by the column clicked (again: the other way), by data-sort when given.
 SCRIPT = """
-document.querySelectorAll("table.sortable th").forEach(function (th, column) {
+document.querySelectorAll("table.sortable th").forEach(function (th) {
   th.addEventListener("click", function () {
+    var column = th.cellIndex;
     var body = th.closest("table").tBodies[0], rows = Array.from(body.rows);
     var up = th.dataset.order !== "up"; th.dataset.order = up ? "up" : "down";
     function key(row) { var c = row.cells[column]; return c.dataset.sort !== undefined ?

@@ -142,6 +142,24 @@ grep -q '<table id="best">' best.html || fail "report: no best configuration"
 grep -q "<th>L1 hit rate</th>" best.html || fail "report: no hit rates"
 grep -q "<td>cached</td>" best.html || fail "report: no preset per row"
 
+# Sorting in a browser (when chromium is installed): two clicks on the fps heading order the rows
+# by fps, highest first (menger and terrain rows in one table beside the best table).
+if command -v chromium >/dev/null; then
+  sed 's|</body>|<script>var h = Array.from(document.querySelectorAll("#rows th")).find(function (t) { return t.textContent == "fps"; }); h.click(); h.click();</script></body>|' \
+    best.html >clicked.html
+  timeout 60 chromium --headless --no-sandbox --disable-gpu --dump-dom clicked.html 2>/dev/null >dom.html
+  python3 - <<'PY' || fail "report: the rows table does not sort by fps"
+import re
+table = open("dom.html").read().split('<table id="rows"')[1].split("</table>")[0]
+column = re.findall(r"<th[^>]*>(.*?)</th>", table).index("fps")
+fps = [float(re.findall(r"<td[^>]*>(.*?)</td>", row)[column])
+       for row in re.findall(r"<tr[^>]*>(.*?)</tr>", table)[1:]]
+assert fps == [250, 200, 190, 180, 110, 105, 100, 95], fps
+PY
+else
+  echo "no chromium: the sorting in a browser is not checked"
+fi
+
 # diff of two runs: the configuration difference first, then every statistic with B - A and B / A.
 printf '{"preset":"","config":{"scheduler":"cfa","cores":4},"statistics":{"fps":100.0,"total_cycles":1000,"limit":"cores","memory":{"l1":{"hit_rate":0.5}}}}\n' >a.json
 printf '{"preset":"","config":{"scheduler":"fa","cores":4},"statistics":{"fps":125.0,"total_cycles":800,"limit":"memory","memory":{"l1":{"hit_rate":0.5}}}}\n' >b.json
