@@ -5,7 +5,8 @@ the keys that differ between the sweeps as a whole."""
 
 import json
 
-from rtusim_rows import InputError, as_number, describe, fmt_sig, format_value, input_keys, load
+from rtusim_rows import (InputError, as_number, describe, fmt_sig, format_value, input_keys, load,
+                         sort_key)
 
 
 def flat_statistics(value, prefix=""):
@@ -34,6 +35,20 @@ def paired_rows(rows):
     a = {pairing_key(r, differing): r for r in rows if r["input"] == names[0]}
     b = {pairing_key(r, differing): r for r in rows if r["input"] == names[1]}
     return differing, [(a.get(key), b.get(key)) for key in dict.fromkeys(list(a) + list(b))]
+
+
+def swept_differently(rows, names, differing):
+    """{key: (A's values, B's values)} of the keys with other sets of values in A and B, beyond
+    those that differ as a whole (rows of such values pair with none)."""
+    result = {}
+    for key in dict.fromkeys(k for r in rows for k in r["config"]):
+        if key in differing or key in ("input", "width", "height"):
+            continue
+        sets = [sorted({json.dumps(r["config"].get(key)): r["config"].get(key) for r in rows
+                        if r["input"] == name}.values(), key=sort_key) for name in names]
+        if sets[0] != sets[1]:
+            result[key] = tuple(", ".join(format_value(key, v) for v in values) for values in sets)
+    return result
 
 
 def number_text(value):
@@ -76,11 +91,14 @@ def diff_lines(paths, labels, only, changed):
     for key in differing:
         lines.append("  %-40s %16s %16s" % (key, format_value(key, first[names[0]]["config"].get(key)),
                                              format_value(key, first[names[1]]["config"].get(key))))
-    if not differing:
+    swept = swept_differently(rows, names, differing)
+    for key, (values_a, values_b) in swept.items():
+        lines.append("  %-40s A: %s; B: %s" % (key, values_a, values_b))
+    if not differing and not swept:
         lines.append("  none")
     header = "  %-40s %16s %16s %14s %9s" % ("statistic", "A", "B", "B - A", "B / A")
     varied = sorted({k for a, b in pairs for r in (a, b) if r for k in r["config"]
-                     if k not in differing and k != "input"
+                     if k not in differing and k not in ("input", "width", "height")
                      and len({json.dumps(x["config"].get(k)) for x in rows}) > 1})
     for a, b in pairs:
         which = describe((a or b)["config"], varied)

@@ -23,9 +23,11 @@ Exit status 2 with a message for missing or malformed input, or when no plot app
 import argparse
 import csv
 import os
+import signal
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts (the source tree, /tmp)
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `rtusim diff A B | head` ends quietly
 
 try:
     import matplotlib

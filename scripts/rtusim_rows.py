@@ -244,7 +244,8 @@ def value_of(row, name):
     """A statistic, or else a configuration key, of a row (an objective or an axis may be
     either: fps, or memory.l1.size as a cost)."""
     value = statistic(row, name)
-    return key_value(row, name) if value is None else value
+    # `cores` is the per-core statistics and the setting: the setting is the number
+    return key_value(row, name) if value is None or isinstance(value, (dict, list)) else value
 
 
 def fps_of(row):

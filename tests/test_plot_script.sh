@@ -127,6 +127,12 @@ python3 "$script" best --objective fps --objective min:memory.l1.size best.jsonl
 sed -n '/scene menger/,/scene terrain/p' pareto.txt | grep '^    #' | cut -d: -f1 >front.txt
 [[ $(cat front.txt) == $'    #2 scheduler fa, L1 size 4 KiB\n    #4 scheduler cfa, L1 size 2 KiB' ]] \
   || fail "menger's Pareto front: $(cat pareto.txt)"
+# `cores` as an objective is the setting, not the per-core statistics of the same name: 1 core at
+# 100.01 fps and 2 at 200.01 are both on the front of the most fps for the fewest cores.
+python3 "$script" best --objective fps --objective min:cores --where scheduler=cfa \
+  --where memory.l1.size=1KiB many.jsonl >cores.txt || fail "best --objective min:cores"
+grep -q "Pareto front of fps (higher is better) and cores (lower is better) (2 of 2 rows)" cores.txt \
+  || fail "best with min:cores: $(cat cores.txt)"
 # The base named: rr 16 KiB; frame time as the objective gives the same gain as the rate.
 python3 "$script" best --base scheduler=rr --base memory.l1.size=16KiB best.jsonl >based.txt
 grep -q "scene terrain: best #7 .*base #7 250: gain +0.00 %" based.txt || fail "--base: $(cat based.txt)"
