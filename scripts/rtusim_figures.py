@@ -15,7 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator  # noqa: E402
 import numpy as np  # noqa: E402
 
-from rtusim_rows import (TIME_PARTS, as_number, core_time_of, cycles_per_ray_of,  # noqa: E402
+from rtusim_rows import (TIME_PARTS, InputError, as_number, core_time_of, cycles_per_ray_of,  # noqa: E402
                          describe, fixed_config, format_value, get, groups_by,
                          hit_rate_of, key_value, per_core_times, short_key, sort_key, value_of,
                          varied_keys, wait_histogram_of)
@@ -495,8 +495,19 @@ def file_part(name):
     return re.sub(r"[^A-Za-z0-9]+", "_", name).strip("_")
 
 
+def check_request(rows, request):
+    """A key or statistic asked for that no row has is an error naming it."""
+    for option, key in (("--x", request.x), ("--by", request.by), ("--facet", request.facet)):
+        if key not in (None, "none") and all(key_value(r, key) is None for r in rows):
+            raise InputError("%s %s: no row has the key %s" % (option, key, key))
+    if request.y and all(as_number(value_of(r, request.y)) is None for r in rows):
+        raise InputError("--y %s: no ok row has a number of that name (rtusim stats --list)"
+                         % request.y)
+
+
 def plot_objective(rows, varied, request):
     """The objective against --x, or against each varied key but the facet."""
+    check_request(rows, request)
     facet = chosen(request.facet, default_facet(varied))
     xs = [request.x] if request.x else [k for k in varied if k not in (facet, "input")]
     return [plot for x in xs for plot in plot_stat_against(rows, varied, request, x)]

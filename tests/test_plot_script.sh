@@ -182,4 +182,7 @@ python3 "$script" diff --changed a.json b.json >changed.txt
 head -2 fps.csv >one.csv
 expect_error "no plot applies" python3 "$script" plot --out-dir bad one.csv
 expect_error "usage" python3 "$script" plot sweep.jsonl
+expect_error "by schedular: no row has the key schedular" \
+  python3 "$script" plot --x cores --by schedular --out-dir bad sweep.jsonl
+expect_error "y fsp: no ok row has a number" python3 "$script" plot --y fsp --out-dir bad sweep.jsonl
 echo "plot script: all checks passed"
