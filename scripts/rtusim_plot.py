@@ -29,30 +29,33 @@ import sys
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts (the source tree, /tmp)
 signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # `rtusim diff A B | head` ends quietly
 
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy  # noqa: F401 (imported here to be reported here when missing)
-except ImportError as error:  # pragma: no cover - depends on the host
-    # A Python first on PATH (pyenv, venv) may lack Debian's python3-matplotlib: retry once with
-    # the system interpreter.
-    system = "/usr/bin/python3"
-    if os.environ.get("RTUSIM_PLOT_REEXEC") != "1" and os.path.exists(system) \
-            and os.path.realpath(sys.executable) != os.path.realpath(system):
-        os.environ["RTUSIM_PLOT_REEXEC"] = "1"
-        os.execv(system, [system] + sys.argv)
-    sys.stderr.write("rtusim_plot: error: %s (install python3-matplotlib and python3-numpy)\n" % error)
-    sys.exit(2)
-
 from rtusim_diff import command_diff  # noqa: E402
-from rtusim_figures import PlotRequest, make_plots, render  # noqa: E402
 from rtusim_objective import Objective, summary_lines  # noqa: E402
-from rtusim_report import command_report  # noqa: E402
 from rtusim_rows import InputError, load, select  # noqa: E402
 
 PROG = "rtusim_plot"
+
+
+def plotting():
+    """matplotlib.pyplot, imported by the commands that draw only: best and diff need none."""
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import numpy  # noqa: F401 (imported here to be reported here when missing)
+    except ImportError as error:  # pragma: no cover - depends on the host
+        # A Python first on PATH (pyenv, venv) may lack Debian's python3-matplotlib: retry once
+        # with the system interpreter.
+        system = "/usr/bin/python3"
+        if os.environ.get("RTUSIM_PLOT_REEXEC") != "1" and os.path.exists(system) \
+                and os.path.realpath(sys.executable) != os.path.realpath(system):
+            os.environ["RTUSIM_PLOT_REEXEC"] = "1"
+            os.execv(system, [system] + sys.argv)
+        sys.stderr.write("rtusim_plot: error: %s (install python3-matplotlib and python3-numpy)\n"
+                         % error)
+        sys.exit(2)
+    return plt
 
 
 def rows_of(args):
@@ -67,6 +70,8 @@ def objectives_of(args):
 
 
 def command_plot(args):
+    plt = plotting()
+    from rtusim_figures import PlotRequest, make_plots, render
     rows = rows_of(args)
     request = PlotRequest(args.x, args.y, args.by, args.facet)
     figures = make_plots(rows, request)
@@ -93,6 +98,7 @@ def command_best(args):
 def command_frames(args):
     """Frame rate over an animation (`rtusim animate --csv`), with the share of rays the hit
     buffer saved and the jobs per traced ray beneath."""
+    plt = plotting()
     try:
         with open(args.csv, newline="", encoding="utf-8") as handle:
             rows = list(csv.DictReader(handle))
@@ -180,6 +186,8 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         if args.command == "report":
+            plotting()
+            from rtusim_report import command_report
             return command_report(args, objectives_of(args), rows_of(args))
         handlers = {"plot": command_plot, "best": command_best, "diff": command_diff,
                     "frames": command_frames}

@@ -176,6 +176,14 @@ python3 "$script" diff a.json b.json >diff.txt || fail "diff"
 grep -q "^  fps  *100  *125  *25.0  *1.2500$" diff.txt || fail "diff: fps $(cat diff.txt)"
 grep -q "^  total_cycles  *1000  *800  *-200  *0.8000$" diff.txt || fail "diff: total_cycles $(cat diff.txt)"
 grep -q "^  limit  *cores  *memory  *differs" diff.txt || fail "diff: limit $(cat diff.txt)"
+# diff and best draw nothing: they run where matplotlib cannot be imported.
+RTUSIM_PLOT_REEXEC=1 python3 -c 'import os, runpy, sys
+sys.modules["matplotlib"] = None  # import matplotlib raises ImportError
+sys.argv = sys.argv[1:]
+sys.path.insert(0, os.path.dirname(sys.argv[0]))  # as running the script itself does
+runpy.run_path(sys.argv[0], run_name="__main__")' "$script" diff a.json b.json >nompl.txt \
+  || fail "diff needs matplotlib"
+cmp -s diff.txt nompl.txt || fail "diff without matplotlib differs"
 python3 "$script" diff --changed a.json b.json >changed.txt
 ! grep -q hit_rate changed.txt || fail "diff --changed shows an equal statistic"
 
