@@ -99,6 +99,14 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
   if (!file) throw std::runtime_error("cannot write " + path);
 }
 
+// The rows in full beside the CSV, as sweep writes them: the CSV holds three keys of the
+// configuration, the report and diff read every key (and the preset) from here.
+void writeJsonLines(const std::vector<nlohmann::ordered_json>& rows, const std::string& path) {
+  std::ofstream file(path);
+  for (const nlohmann::ordered_json& row : rows) file << row.dump() << "\n";
+  if (!file) throw std::runtime_error("cannot write " + path);
+}
+
 // The models that answered the rows, for the heading.
 std::string answeredBy(const std::vector<nlohmann::ordered_json>& rows) {
   std::set<std::string> models;
@@ -153,14 +161,17 @@ void addFpsCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--csv", options->csv,
                       "write the rows: width,height,cores,rays,total_cycles,cycles_per_ray,"
-                      "frame_ms,fps,limit, then more statistics");
+                      "frame_ms,fps,limit, then more statistics; the rows in full as JSON lines "
+                      "beside it (.jsonl)");
   command->add_flag("--simulate", options->simulate,
                     "run the SystemC model even where the recurrence gives the same answer "
                     "(ideal memory, no reorder buffer, steady host links)");
   addWorkersOption(*command, options->workers, "rows run in parallel (default: all cores)", 1024);
   command->callback([options, request] {
     const Configuration base = request->resolve();
-    checkOutputPaths({{"--csv", options->csv}}, inputPaths(base.values()));
+    const std::string jsonLines = options->csv.empty() ? "" : jsonLinesPath(options->csv);
+    checkOutputPaths({{"--csv", options->csv}, {"--csv (.jsonl)", jsonLines}},
+                     inputPaths(base.values()));
     std::vector<Configuration> configurations;
     for (const std::string& text : options->resolutions) {
       const Resolution resolution = parseResolution(text);
@@ -195,7 +206,8 @@ void addFpsCommand(CLI::App& app) {
     printMatrix(rows, options->cores, std::cout);
     if (!options->csv.empty()) {
       writeCsv(rows, options->csv);
-      std::cout << "wrote " << options->csv << "\n";
+      writeJsonLines(rows, jsonLines);
+      std::cout << "wrote " << options->csv << " and " << jsonLines << "\n";
     }
     if (failures > 0)
       throw std::runtime_error(std::to_string(failures) +

@@ -4,37 +4,94 @@
 #include "app/plot_script.h"
 
 namespace rtu {
+namespace {
+
+// --where and --label, which plot, report and best take alike.
+void addRowOptions(CLI::App& command, PlotArguments& rows) {
+  command
+      .add_option("--where", rows.options["--where"],
+                  "keep only the rows with KEY=VALUE (repeatable; a schema key, `preset` or "
+                  "`input`)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--label", rows.options["--label"],
+                  "a name for each input, in their order, shown instead of the file name")
+      ->allow_extra_args(false);
+}
+
+// --objective, --group and --base of the best-configuration summary (report and best).
+void addObjectiveOptions(CLI::App& command, PlotArguments& rows) {
+  command
+      .add_option("--objective", rows.options["--objective"],
+                  "STAT, max:STAT or min:STAT, a statistic or schema key (default fps; two "
+                  "give the Pareto front)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--group", rows.options["--group"],
+                  "keys whose every value gets its own best row (default: the varied scene, "
+                  "resolution, camera, workload and input)")
+      ->allow_extra_args(false);
+  command
+      .add_option("--base", rows.options["--base"],
+                  "KEY=VALUE of the base configuration the gain is measured against "
+                  "(default: the first row's values)")
+      ->allow_extra_args(false);
+}
+
+}  // namespace
 
 void addPlotCommands(CLI::App& app) {
-  struct Options {
-    std::vector<std::string> inputs;
-    std::string outDir = "plots", report = "report.html";
-  };
-  auto options = std::make_shared<Options>();
+  auto plotRows = std::make_shared<PlotArguments>();
   CLI::App* plot = app.add_subcommand(
-      "plot", "plots (PNG and SVG) of sweep rows (.jsonl) or fps tables (.csv): frame rate "
-              "against cores, hit rates against cache size, core time, scheduler waits, cycles "
-              "per ray against DRAM latency");
-  plot->add_option("inputs", options->inputs, "sweep .jsonl or fps .csv files")
+      "plot", "plots (PNG and SVG) of sweep rows (.jsonl) or fps tables (.csv): frame rate against "
+              "each varied key, or --y STAT against --x KEY; hit rates against cache size, core "
+              "time, scheduler waits, cycles per ray against DRAM latency");
+  plot->add_option("inputs", plotRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
       ->check(CLI::ExistingFile);
-  plot->add_option("--out-dir", options->outDir, "folder for the plots")->capture_default_str();
-  plot->callback([options] {
-    std::vector<std::string> arguments = {"--out-dir", options->outDir};
-    arguments.insert(arguments.end(), options->inputs.begin(), options->inputs.end());
-    runPlotScript("plot", arguments);
-  });
+  plotRows->values["--out-dir"] = "plots";
+  plot->add_option("--out-dir", plotRows->values["--out-dir"], "folder for the plots")
+      ->capture_default_str();
+  plot->add_option("--x", plotRows->values["--x"],
+                   "the key on the x axis (default: each varied key)");
+  plot->add_option("--y", plotRows->values["--y"],
+                   "the statistic on the y axis, as `rtusim stats --list` names it or its JSON "
+                   "path (memory.l1.hit_rate); default fps");
+  plot->add_option("--by", plotRows->values["--by"],
+                   "one line per value of this key (default: the next varied key; `none`: one "
+                   "line per configuration of the other keys)");
+  plot->add_option("--facet", plotRows->values["--facet"],
+                   "one panel per value of this key (default: scene when it varies; `none`)");
+  addRowOptions(*plot, *plotRows);
+  plot->callback([plotRows] { runPlotScript("plot", plotRows->arguments()); });
+
+  auto reportRows = std::make_shared<PlotArguments>();
   CLI::App* report = app.add_subcommand(
-      "report", "a self-contained HTML page of a sweep: plots, the rows, the configuration");
-  report->add_option("inputs", options->inputs, "sweep .jsonl or fps .csv files")
+      "report", "a self-contained HTML page of sweeps: the best configuration, plots, the rows "
+                "(sortable), the configuration; two inputs are compared");
+  report
+      ->add_option("inputs", reportRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
       ->check(CLI::ExistingFile);
-  report->add_option("--out", options->report, "HTML file")->capture_default_str();
-  report->callback([options] {
-    std::vector<std::string> arguments = {"--out", options->report};
-    arguments.insert(arguments.end(), options->inputs.begin(), options->inputs.end());
-    runPlotScript("report", arguments);
-  });
+  reportRows->values["--out"] = "report.html";
+  report->add_option("--out", reportRows->values["--out"], "HTML file")->capture_default_str();
+  addRowOptions(*report, *reportRows);
+  addObjectiveOptions(*report, *reportRows);
+  report->callback([reportRows] { runPlotScript("report", reportRows->arguments()); });
+
+  auto bestRows = std::make_shared<PlotArguments>();
+  CLI::App* best = app.add_subcommand(
+      "best", "the best configuration of sweep rows per group by an objective, its gain over the "
+              "base configuration, and the Pareto front of two objectives");
+  best->add_option("inputs", bestRows->inputs,
+                   "sweep or fps .jsonl, fps .csv or --stats .json files")
+      ->required()
+      ->check(CLI::ExistingFile);
+  addRowOptions(*best, *bestRows);
+  addObjectiveOptions(*best, *bestRows);
+  best->callback([bestRows] { runPlotScript("best", bestRows->arguments()); });
 }
 
 }  // namespace rtu

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "app/commands.h"
+#include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
@@ -19,10 +20,6 @@ namespace rtu {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string jsonLinesPath(const std::string& csvPath) {
-  return std::filesystem::path(csvPath).replace_extension(".jsonl").string();
-}
 
 // A configuration key that also names a statistics column (`rays`: the ray-buffer file and the
 // count of rays) is the column config.KEY, so that every column name is unique.

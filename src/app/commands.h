@@ -18,7 +18,8 @@ void addStatsCommand(CLI::App& app);
 void addFidelityCommand(CLI::App& app);
 void addFpsCommand(CLI::App& app);
 void addSweepCommand(CLI::App& app);
-void addPlotCommands(CLI::App& app);  // plot and report
+void addPlotCommands(CLI::App& app);  // plot, report and best
+void addDiffCommand(CLI::App& app);
 void addWaveCommand(CLI::App& app);
 void addAnimateCommand(CLI::App& app);
 

@@ -63,6 +63,10 @@ void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<N
   }
 }
 
+std::string jsonLinesPath(const std::string& csvPath) {
+  return std::filesystem::path(csvPath).replace_extension(".jsonl").string();
+}
+
 void createOutputFolder(const NamedPath& folder) {
   std::error_code error;
   fs::create_directories(folder.path, error);

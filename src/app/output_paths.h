@@ -22,6 +22,9 @@ std::vector<NamedPath> inputPaths(const RunConfig& settings);
 // created or written, is a directory, is given twice or is also an input.
 void checkOutputPaths(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
+// The JSON lines file written beside a CSV of rows (sweep, fps): rows.csv -> rows.jsonl.
+std::string jsonLinesPath(const std::string& csvPath);
+
 // Creates the folder `folder.path` and its parents if missing (as plot and animate do); throws
 // std::invalid_argument naming the option when it cannot, or when it is a file.
 void createOutputFolder(const NamedPath& folder);

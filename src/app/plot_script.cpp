@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -14,18 +15,42 @@ extern char** environ;
 
 namespace rtu {
 
-void runPlotScript(const std::string& subcommand, const std::vector<std::string>& arguments) {
-  char scriptPath[] = "/tmp/rtusim_plot_XXXXXX";
-  const int fd = ::mkstemp(scriptPath);
-  if (fd < 0) throw std::runtime_error("cannot write the plotting script to /tmp");
-  ::close(fd);
-  {
-    std::ofstream script(scriptPath);
-    script << embeddedScripts().at("rtusim_plot");
+namespace {
+
+// Writes every embedded script (rtusim_plot.py and the modules it imports) into a new folder
+// under /tmp and returns the folder.
+std::string writeScripts() {
+  char folder[] = "/tmp/rtusim_plot_XXXXXX";
+  if (::mkdtemp(folder) == nullptr)
+    throw std::runtime_error("cannot write the plotting script to /tmp");
+  for (const auto& [name, text] : embeddedScripts()) {
+    std::ofstream script(std::string(folder) + "/" + name + ".py");
+    script << text;
   }
+  return folder;
+}
+
+}  // namespace
+
+std::vector<std::string> PlotArguments::arguments() const {
+  std::vector<std::string> words;
+  for (const auto& [option, value] : values)
+    if (!value.empty()) words.insert(words.end(), {option, value});
+  for (const auto& [option, values] : options)
+    for (const std::string& value : values) words.insert(words.end(), {option, value});
+  for (const auto& [flag, set] : flags)
+    if (set) words.push_back(flag);
+  // "--" ends the options: an input may start with '-'.
+  words.push_back("--");
+  words.insert(words.end(), inputs.begin(), inputs.end());
+  return words;
+}
+
+void runPlotScript(const std::string& subcommand, const std::vector<std::string>& arguments) {
+  const std::string folder = writeScripts();
   // Debian's python3 has python3-matplotlib; another python3 first on PATH may not.
   const char* python = ::access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
-  std::vector<std::string> words = {python, scriptPath, subcommand};
+  std::vector<std::string> words = {python, folder + "/rtusim_plot.py", subcommand};
   words.insert(words.end(), arguments.begin(), arguments.end());
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
@@ -34,7 +59,8 @@ void runPlotScript(const std::string& subcommand, const std::vector<std::string>
   const int spawned = ::posix_spawnp(&pid, python, nullptr, nullptr, argv.data(), environ);
   int status = 0;
   if (spawned == 0) ::waitpid(pid, &status, 0);
-  ::unlink(scriptPath);
+  std::error_code ignored;
+  std::filesystem::remove_all(folder, ignored);
   if (spawned != 0)
     throw std::runtime_error("cannot run python3 for plots (install python3-matplotlib)");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   rtu::addFidelityCommand(app);
   rtu::addSweepCommand(app);
   rtu::addPlotCommands(app);
+  rtu::addDiffCommand(app);
   rtu::addWaveCommand(app);
   try {
     app.parse(argc, argv);

@@ -123,6 +123,7 @@ void Configuration::setAssignment(const std::string& assignment, ConfigSource so
 
 void Configuration::applyPreset(const std::string& name) {
   loadText(presetText(name), "toml", "preset '" + name + "'", ConfigSource::Preset);
+  preset_ = name;
 }
 
 void Configuration::loadFile(const std::string& path) {

@@ -43,7 +43,9 @@ class Configuration {
   void set(const std::string& key, const std::string& text, ConfigSource source);
   // "key=value".
   void setAssignment(const std::string& assignment, ConfigSource source);
+  // Also remembers the preset's name, which a run's JSON records beside its configuration.
   void applyPreset(const std::string& name);
+  const std::string& preset() const { return preset_; }
   // .toml or .json, nested tables or dotted keys; errors name the file. A .json statistics file
   // (`--stats`) is read as its "config" object, the configuration of its run.
   void loadFile(const std::string& path);
@@ -66,6 +68,7 @@ class Configuration {
  private:
   RunConfig values_;
   std::map<std::string, ConfigSource> sources_;
+  std::string preset_;  // empty: none
 };
 
 // Shipped presets (presets/*.toml, embedded in the binary).

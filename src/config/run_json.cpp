@@ -5,6 +5,7 @@ namespace rtu {
 nlohmann::ordered_json runJson(const RtuStatistics& statistics,
                                const Configuration& configuration) {
   return {{"rtusim", {{"version", rtusimVersion()}}},
+          {"preset", configuration.preset()},
           {"config", configuration.toJson()},
           {"statistics", statistics.toJson()}};
 }

@@ -9,7 +9,7 @@
 
 namespace rtu {
 
-// {"rtusim": {"version"}, "config": {every key}, "statistics": {...}}.
+// {"rtusim": {"version"}, "preset": name or "", "config": {every key}, "statistics": {...}}.
 nlohmann::ordered_json runJson(const RtuStatistics& statistics, const Configuration& configuration);
 
 }  // namespace rtu

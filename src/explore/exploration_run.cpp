@@ -159,6 +159,7 @@ nlohmann::ordered_json failedRow(const Configuration& configuration, const std::
   return {{"status", status},
           {"error", error},
           {"rtusim", {{"version", rtusimVersion()}}},
+          {"preset", configuration.preset()},
           {"config", configuration.toJson()}};
 }
 
