@@ -112,4 +112,20 @@ assert "rays" in header, header
 assert sys.argv[1] == "fps.csv" or "config.rays" in header, header
 PY
 done
+# Every resource's utilisation is in the CSV; the limit is the highest when it reaches 0.8 and
+# "none" below, and limit_utilisation is the highest either way.
+"$python" - fps.csv <<'PY' || fail "utilisation columns of fps.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+names = ["cores", "memory_latency", "dram_bandwidth", "l2_port", "host_in", "host_out", "job_manager"]
+for row in rows:
+    use = {name: float(row["util_" + name]) for name in names}
+    assert all(0 <= value <= 1 for value in use.values()), row
+    top = max(names, key=lambda name: use[name])
+    assert abs(float(row["limit_utilisation"]) - use[top]) < 1e-9, row
+    assert row["limit"] == (top if use[top] >= 0.8 else "none"), row
+    # a core's time: busy and blocked are two of its four shares
+    assert use["cores"] + use["memory_latency"] <= 1 + 1e-9, row
+    assert abs(use["cores"] - float(row["core_busy"])) < 1e-9, row
+PY
 echo "exploration checks: ok"

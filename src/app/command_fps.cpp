@@ -53,7 +53,8 @@ void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& o
     out << std::setw(10) << s["rays"].get<uint64_t>() << std::setw(14)
         << s["total_cycles"].get<uint64_t>() << std::fixed << std::setprecision(2) << std::setw(11)
         << s["cycles_per_ray"].get<double>() << std::setw(11) << s["frame_ms"].get<double>()
-        << std::setw(10) << s["fps"].get<double>() << "  " << s["limit"].get<std::string>() << "\n";
+        << std::setw(10) << s["fps"].get<double>() << "  " << s["limit"].get<std::string>() << " "
+        << std::setprecision(1) << 100 * s["limit_utilisation"].get<double>() << " %\n";
   }
 }
 
