@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 
@@ -56,7 +57,8 @@ std::vector<Configuration> readConfigurations(const std::string& directory) {
 void writeBatchScript(const std::string& path, const std::string& directory, int tasks,
                       const SlurmOptions& options) {
   const std::string rtusim = fs::read_symlink("/proc/self/exe").string();
-  std::ofstream script(path);
+  OutputFile file(path);
+  std::ostream& script = file.stream();
   script << "#!/bin/bash\n"
          << "# Written by rtusim sweep --slurm: array element i runs configurations i, i+" << tasks
          << ", ... of configs.jsonl.\n"
@@ -68,7 +70,7 @@ void writeBatchScript(const std::string& path, const std::string& directory, int
   if (!options.partition.empty()) script << "#SBATCH --partition=" << options.partition << "\n";
   script << "exec '" << rtusim << "' sweep --slurm-task \"$SLURM_ARRAY_TASK_ID\" --sweep-dir '"
          << directory << "'\n";
-  if (!script) throw std::runtime_error("cannot write " + path);
+  file.commit();
 }
 
 size_t countRows(const std::string& directory, int tasks) {
@@ -117,14 +119,13 @@ std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
   const int tasks = static_cast<int>(
       std::max<size_t>(1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
   std::vector<Configuration> pending;
-  {
-    std::ofstream plan(directory + "/configs.jsonl");
-    for (size_t row : rows) {
-      plan << configurations[row].toJson().dump() << "\n";
-      pending.push_back(configurations[row]);
-    }
-    std::ofstream(directory + "/plan.json") << Json{{"tasks", tasks}}.dump() << "\n";
+  std::string plan;
+  for (size_t row : rows) {
+    plan += configurations[row].toJson().dump() + "\n";
+    pending.push_back(configurations[row]);
   }
+  writeTextFile(directory + "/configs.jsonl", plan);
+  writeTextFile(directory + "/plan.json", Json{{"tasks", tasks}}.dump() + "\n");
   SceneCache scenes;
   scenes.build(pending);
   scenes.save(directory);
