@@ -19,7 +19,7 @@ grep -q "3 already done, 0 to run" third.txt || fail "kept rows not taken as don
 [[ $(wc -l <rows.jsonl) -eq 3 ]] || fail "a kept row was written twice"
 
 # A slow sweep (rows of a few seconds each) in the background, its own process group.
-slow=(--scene sphere --depth 6 --width 320 --height 240 --grid cores=1,2,3,4 -j 2)
+slow=(--scene menger --depth 7 --width 1920 --height 1080 --memory cached --grid cores=1,2,3,4 -j 2)
 setsid "$rtusim" sweep "${slow[@]}" --out slow.csv >slow.txt 2>&1 &
 leader=$!
 for _ in $(seq 1 200); do
@@ -30,8 +30,11 @@ done
 expect_error "sweep output 'slow.csv' is in use by process $leader on host $(hostname)" \
   "$rtusim" sweep "${slow[@]}" --out slow.csv
 # Its workers die with it: kill the sweep alone (not its group).
-sleep 0.5
-workers=$(pgrep -P "$leader" || true)
+for _ in $(seq 1 200); do
+  workers=$(pgrep -P "$leader" || true)
+  [[ -n $workers ]] && break
+  sleep 0.05
+done
 [[ -n $workers ]] || fail "no workers running"
 kill -KILL "$leader"
 wait "$leader" 2>/dev/null || true
