@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 33, section 2: sweeps share their results safely. A second sweep into the same --out with
 # another grid keeps the earlier rows; two sweeps at once on one --out: the second is refused,
-# naming the first's pid and host; the workers of a killed sweep die with it.
+# naming the first's pid and host; the workers of a killed sweep die with it; a Slurm sweep
+# clears only a plan directory it made.
 # Usage: sweep_sharing.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -17,6 +18,15 @@ grep -q "0 already done, 1 to run with 1 workers; 2 rows of other configurations
 "$rtusim" sweep "${small[@]}" --grid cores=1,2,3 --out rows.csv >third.txt
 grep -q "3 already done, 0 to run" third.txt || fail "kept rows not taken as done"
 [[ $(wc -l <rows.jsonl) -eq 3 ]] || fail "a kept row was written twice"
+
+# A Slurm plan's directory is cleared only when a sweep made it.
+mkdir mine && echo keep >mine/notes.txt
+expect_error "sweep directory '$PWD/mine' exists and is not one a sweep made" \
+  "$rtusim" sweep "${small[@]}" --grid cores=1 --out plan.csv --slurm --dry-run --sweep-dir mine
+[[ -f mine/notes.txt ]] || fail "the sweep deleted a directory it did not make"
+"$rtusim" sweep "${small[@]}" --grid cores=1 --out plan.csv --slurm --dry-run >/dev/null
+"$rtusim" sweep "${small[@]}" --grid cores=1,2 --out plan.csv --slurm --dry-run >/dev/null
+[[ $(wc -l <plan.slurm/configs.jsonl) -eq 2 ]] || fail "a sweep's own plan was not replaced"
 
 # A slow sweep (rows of a few seconds each) in the background, its own process group.
 slow=(--scene menger --depth 7 --width 1920 --height 1080 --memory cached --grid cores=1,2,3,4 -j 2)

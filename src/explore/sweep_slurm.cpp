@@ -105,6 +105,19 @@ void submitAndWait(const std::string& script, const std::string& directory, int 
               << "; rows missing below run again next time\n";
 }
 
+// Removes an earlier plan's directory; refuses one the sweep did not make (a plan.json marks it),
+// whose files are not the sweep's to delete.
+void clearSweepDirectory(const std::string& directory) {
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (!fs::is_directory(directory, error) ||
+      (!fs::is_empty(directory, error) && !fs::exists(directory + "/plan.json", error)))
+    throw std::invalid_argument("sweep directory '" + directory +
+                                "' exists and is not one a sweep made (no plan.json): give "
+                                "another --sweep-dir, or remove it");
+  fs::remove_all(directory);
+}
+
 }  // namespace
 
 std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
@@ -114,7 +127,7 @@ std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
   const std::vector<size_t> rows =
       validRows(configurations, allRows, [&done](size_t, const Json& row) { done(row); });
   const std::string directory = fs::absolute(directoryName).string();
-  fs::remove_all(directory);  // a fresh plan: rows already done are in the sweep's own files
+  clearSweepDirectory(directory);  // a fresh plan: rows already done are in the sweep's own files
   fs::create_directories(directory);
   const int tasks = static_cast<int>(
       std::max<size_t>(1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
