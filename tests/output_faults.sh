@@ -26,6 +26,10 @@ expect_error "cannot write 'full.png': No space left" "$rtusim" render "${frame[
   --image full.png
 [[ -L full.png && -c /dev/full ]] || fail "render removed full.png or /dev/full"
 
+# An output named by a descriptor (/dev/stdout, here a pipe) is written in place.
+"$rtusim" golden --svo sphere.svo --jobs jobs.bin --results-csv /dev/stdout | cat >piped.txt
+grep -q '^id,hit,t' piped.txt || fail "results CSV to /dev/stdout"
+
 # Standard output.
 if "$rtusim" config --dump >/dev/full 2>err.txt; then fail "config --dump > /dev/full succeeded"; fi
 grep -q "cannot write standard output" err.txt || fail "$(cat err.txt)"

@@ -89,6 +89,16 @@ TEST_CASE("An output file replaces the file a link names and keeps its mode", "[
         (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
 }
 
+TEST_CASE("An output through a link to a missing file creates that file", "[output_file]") {
+  Folder folder;
+  const std::string target = folder.file("made.txt"), link = folder.file("link.txt");
+  fs::create_symlink("made.txt", link);  // relative to the link's folder
+  rtu::writeTextFile(link, "new");
+  CHECK(fs::is_symlink(link));
+  CHECK(contents(target) == "new");
+  CHECK(folder.entries() == 2);
+}
+
 TEST_CASE("A write error names the file and its cause and removes nothing", "[output_file]") {
   if (!fs::exists("/dev/full")) {
     WARN("no /dev/full: skipped");

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -19,14 +20,22 @@ namespace fs = std::filesystem;
 
 std::string cause(int error) { return std::strerror(error); }
 
-// The file `path` names: links followed, so that the link itself is kept.
-fs::path followLinks(const std::string& path) {
+// The file `path` names: links followed, so that the link itself is kept (a link to a missing
+// file names the file to create). None for a link through /proc (/dev/stdout, /dev/fd/3): a
+// descriptor of this process, written in place.
+std::optional<fs::path> followLinks(const std::string& path) {
+  constexpr int kMaxLinks = 40;  // as the kernel's ELOOP
+  fs::path current = path;
   std::error_code error;
-  if (!fs::is_symlink(fs::symlink_status(path, error))) return path;
-  fs::path target = fs::canonical(path, error);
-  if (error)
-    throw std::runtime_error("cannot create '" + path + "': a symbolic link to a missing file");
-  return target;
+  for (int links = 0; fs::is_symlink(fs::symlink_status(current, error)); ++links) {
+    fs::path next = fs::read_symlink(current, error);
+    if (error || links == kMaxLinks)
+      throw std::runtime_error("cannot create '" + path + "': too many symbolic links");
+    if (next.is_relative()) next = current.parent_path() / next;
+    if (next.string().rfind("/proc/", 0) == 0) return std::nullopt;
+    current = next;
+  }
+  return current;
 }
 
 // ".frame.part-XXXXXX.png" beside "frame.png": hidden, marked unfinished, its extension kept
@@ -100,12 +109,13 @@ class OutputFile::Buffer : public std::streambuf {
 };
 
 OutputFile::OutputFile(const std::string& path) : path_(path) {
-  const fs::path target = followLinks(path);
+  const std::optional<fs::path> followed = followLinks(path);
+  const fs::path target = followed.value_or(fs::path(path));
   target_ = target.string();
   std::error_code error;
   const fs::file_status status = fs::status(target, error);
   int fd = -1;
-  inPlace_ = fs::exists(status) && !fs::is_regular_file(status);
+  inPlace_ = !followed || (fs::exists(status) && !fs::is_regular_file(status));
   if (inPlace_) {
     writePath_ = target_;
     fd = ::open(target_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);

@@ -3,7 +3,8 @@
 // write checked, and renamed into place only by commit(), so a file at the output's path is
 // always complete. A failure names the file and its cause, and never removes a path the program
 // did not create: a symbolic link is followed (the file it names is replaced, the link kept), and
-// a path that is not a regular file (a device such as /dev/full, a pipe) is written in place.
+// a path that is not a regular file (a device such as /dev/full, a pipe, /dev/stdout) is written
+// in place.
 
 #include <iosfwd>
 #include <memory>
