@@ -5,9 +5,9 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 
-#include "base/output_file.h"
 #include "embedded_scripts.h"
 
 extern char** environ;
@@ -19,7 +19,10 @@ void runPlotScript(const std::string& subcommand, const std::vector<std::string>
   const int fd = ::mkstemp(scriptPath);
   if (fd < 0) throw std::runtime_error("cannot write the plotting script to /tmp");
   ::close(fd);
-  writeTextFile(scriptPath, embeddedScripts().at("rtusim_plot"));
+  {
+    std::ofstream script(scriptPath);
+    script << embeddedScripts().at("rtusim_plot");
+  }
   // Debian's python3 has python3-matplotlib; another python3 first on PATH may not.
   const char* python = ::access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
   std::vector<std::string> words = {python, scriptPath, subcommand};
