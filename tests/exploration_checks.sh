@@ -39,9 +39,12 @@ grep -q "0 already done, 2 to run" fixed.txt || fail "failed rows not run again"
 [[ $(grep -c '"status":"ok"' broken.jsonl) -eq 2 ]] || fail "rerun rows not ok"
 
 # An invalid configuration is found before any worker starts, its row marked invalid, the others
-# run (exit 0, the first error on standard error); on resume it is kept, not run again.
-"$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 --out some.csv \
-  >some.txt 2>some.err
+# run (a non-zero exit with the first error, as for any row not ok); on resume it is kept, not
+# run again, and the resumed sweep, whose own rows are all ok, exits 0.
+if "$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 \
+  --out some.csv >some.txt 2>some.err; then
+  fail "a sweep with an invalid row exited 0"
+fi
 grep -q '"status":"invalid","error":"L1 cache: 16 bytes do not hold one 32-byte line"' some.jsonl \
   || fail "invalid row without its error"
 grep -q "1 rows failed, the first: L1 cache: 16 bytes" some.err || fail "first error not printed"

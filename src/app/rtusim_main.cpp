@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "base/output_file.h"
 #include "config/configuration.h"
 
 int main(int argc, char** argv) {
@@ -29,13 +30,17 @@ int main(int argc, char** argv) {
   rtu::addPlotCommands(app);
   rtu::addDiffCommand(app);
   rtu::addWaveCommand(app);
+  int status = 0;
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+      status = app.exit(error);
+    }
+    rtu::checkStandardOutput();  // `rtusim config --dump > /dev/full` fails
   } catch (const std::exception& error) {
     std::cerr << "rtusim: error: " << error.what() << "\n";
     return 1;
   }
-  return 0;
+  return status;
 }

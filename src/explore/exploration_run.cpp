@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/binary_file.h"
+#include "base/output_file.h"
 #include "config/run_json.h"
 #include "explore/sweep_workers.h"
 #include "run/analytic_run.h"
@@ -67,9 +68,7 @@ void SceneCache::save(const std::string& directory) const {
                   {"stack_needed", scene.stackNeeded}};
   }
   for (const auto& [key, error] : errors_) index[key] = {{"error", error}};
-  std::ofstream out(directory + "/scenes.json");
-  out << index.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write scenes into " + directory);
+  writeTextFile(directory + "/scenes.json", index.dump(2) + "\n");
 }
 
 void SceneCache::load(const std::string& directory) {

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "base/output_file.h"
+
 namespace rtu {
 namespace {
 
@@ -229,8 +231,8 @@ void writeBinvox(const std::string& path, int dim,
   if (dim < 1 || dim > kMaxBinvoxDim)
     throw std::invalid_argument("binvox dim must be 1 to " + std::to_string(kMaxBinvoxDim) +
                                 ", got " + std::to_string(dim));
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot create binvox file '" + path + "'");
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "#binvox 1\ndim " << dim << ' ' << dim << ' ' << dim
       << "\ntranslate 0 0 0\nscale 1\ndata\n";
 
@@ -251,7 +253,7 @@ void writeBinvox(const std::string& path, int dim,
     }
   }
   endRun();
-  if (!out) throw std::runtime_error("cannot write binvox file '" + path + "'");
+  file.commit();
 }
 
 }  // namespace rtu
