@@ -23,6 +23,7 @@
 #include "kinds/core_result.h"
 #include "kinds/registry.h"
 #include "reference/rtl_cycle_model.h"
+#include "rtu/golden_shell.h"
 #include "sim/rtu_config.h"
 
 namespace rtu {
@@ -46,6 +47,31 @@ inline Camera fixtureCamera(int width, int height) {
   camera.width = width;
   camera.height = height;
   return camera;
+}
+
+// A ray-record kind's golden results (the triangle kinds' fixtures): its job set-up, then its
+// traversal to the end under the untimed shell.
+template <class Kind>
+std::vector<CoreKindResult> goldenBehindSetup(const WordMemory& memory, const RtuConfig& config,
+                                              const std::vector<HostRecord>& jobs) {
+  const typename Kind::Config& own = config.coreConfig<Kind>();
+  typename Kind::Setup setup(memory, config.jobManager, own);
+  GoldenShell<Kind> shell(memory, own);
+  std::vector<CoreKindResult> results;
+  for (const HostRecord& record : jobs) {
+    const auto set = setUpHostRecord<Kind>(setup, record);
+    typename Kind::Result result;
+    shell.run(set.idWord, set.job, result);
+    results.emplace_back(result);
+  }
+  return results;
+}
+
+// A ray record passes the P_STAGES registers and the ray stages (the move into the model's
+// space and the kind's conversion), and the first against a model waits for its model header
+// and its image's header, 16 words each (rtu/ray_models.h).
+inline uint64_t rayRecordFirstDispatch(const JobManagerTiming& timing) {
+  return static_cast<uint64_t>(timing.stages + timing.rayStages + 2 * timing.headerFetchCycles);
 }
 
 // The per-cycle RTL reference of the RTU `config` describes.

@@ -1,4 +1,7 @@
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/plot_script.h"
@@ -6,36 +9,32 @@
 namespace rtu {
 namespace {
 
+// Options that gather every value given (repeatable), by flag and help text.
+void addListOptions(CLI::App& command, PlotArguments& rows,
+                    const std::vector<std::pair<std::string, std::string>>& options) {
+  for (const auto& [flag, help] : options)
+    command.add_option(flag, rows.options[flag], help)->allow_extra_args(false);
+}
+
 // --where and --label, which plot, report and best take alike.
 void addRowOptions(CLI::App& command, PlotArguments& rows) {
-  command
-      .add_option("--where", rows.options["--where"],
-                  "keep only the rows with KEY=VALUE (repeatable; a schema key, `preset` or "
-                  "`input`)")
-      ->allow_extra_args(false);
-  command
-      .add_option("--label", rows.options["--label"],
-                  "a name for each input, in their order, shown instead of the file name")
-      ->allow_extra_args(false);
+  addListOptions(command, rows,
+                 {{"--where", "keep only the rows with KEY=VALUE (repeatable; a schema key, "
+                              "`preset` or `input`)"},
+                  {"--label", "a name for each input, in their order, shown instead of the file "
+                              "name"}});
 }
 
 // --objective, --group and --base of the best-configuration summary (report and best).
 void addObjectiveOptions(CLI::App& command, PlotArguments& rows) {
-  command
-      .add_option("--objective", rows.options["--objective"],
-                  "STAT, max:STAT or min:STAT, a statistic or schema key (default fps; two "
-                  "give the Pareto front)")
-      ->allow_extra_args(false);
-  command
-      .add_option("--group", rows.options["--group"],
-                  "keys whose every value gets its own best row (default: the varied scene, "
-                  "resolution, camera, workload and input)")
-      ->allow_extra_args(false);
-  command
-      .add_option("--base", rows.options["--base"],
-                  "KEY=VALUE of the base configuration the gain is measured against "
-                  "(default: the first row's values)")
-      ->allow_extra_args(false);
+  addListOptions(
+      command, rows,
+      {{"--objective", "STAT, max:STAT or min:STAT, a statistic or schema key (default fps; two "
+                       "give the Pareto front)"},
+       {"--group", "keys whose every value gets its own best row (default: the varied scene, "
+                   "resolution, camera, workload and input)"},
+       {"--base", "KEY=VALUE of the base configuration the gain is measured against (default: "
+                  "the first row's values)"}});
 }
 
 }  // namespace

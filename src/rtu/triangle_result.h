@@ -25,6 +25,24 @@ struct TriangleResult {
   bool operator!=(const TriangleResult& o) const { return !(*this == o); }
 };
 
+// What the RTU's kind-agnostic machinery asks of a result (rtu/core_kind.h), alike for every
+// triangle kind: a kind's struct derives from it and adds what depends on its distance (hitAhead,
+// nearer, hitDistance) and its record's size.
+template <class Result, class Counters>
+struct TriangleResultQueries {
+  static uint32_t resultIdWord(const Result& result) { return result.idWord; }
+  static bool resultHit(const Result& result) { return result.hit; }
+  static uint32_t resultCost(const Result& result) { return result.cost; }
+  static void setResultCost(Result& result, uint32_t cost) { result.cost = cost; }
+  static bool resultBelowResolution(const Result&) { return false; }
+  static void countResult(const Result& result, Counters& counters) { counters.add(result.counts); }
+  static Result miss(uint32_t idWord) {
+    Result result;
+    result.idWord = idWord;
+    return result;
+  }
+};
+
 // The result of the job `traversal` ran, under the id word `idWord`.
 template <class Number, class Counts, class Traversal>
 void writeTriangleResult(uint32_t idWord, const Traversal& traversal,

@@ -84,27 +84,12 @@ struct KindFixture<BihKind<>> {
     return rays;
   }
 
-  // The kind's job set-up, then its traversal to the end under the untimed shell.
   static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
                                             const std::vector<HostRecord>& jobs) {
-    const BihConfig& own = config.coreConfig<Kind>();
-    Kind::Setup setup(memory, config.jobManager, own);
-    GoldenShell<Kind> shell(memory, own);
-    std::vector<CoreKindResult> results;
-    for (const HostRecord& record : jobs) {
-      const JobSetUp<BihJob> set = setUpHostRecord<Kind>(setup, record);
-      BihResult result;
-      shell.run(set.idWord, set.job, result);
-      results.emplace_back(result);
-    }
-    return results;
+    return goldenBehindSetup<Kind>(memory, config, jobs);
   }
-
-  // A ray record passes the P_STAGES registers and the ray stages (the move into the model's
-  // space, the clip and the rounding onto the grid), and the first against a model waits for its
-  // model header and its image's header, 16 words each (bih_job_setup.h, rtu/ray_models.h).
   static uint64_t firstDispatch(const JobManagerTiming& timing) {
-    return static_cast<uint64_t>(timing.stages + timing.rayStages + 2 * timing.headerFetchCycles);
+    return rayRecordFirstDispatch(timing);
   }
 
   // A unit of 7 cycles taking a test every 2, and the early-out option (the vhdl formats come

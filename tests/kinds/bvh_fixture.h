@@ -74,26 +74,12 @@ struct KindFixture<BvhKind<>> {
     return rays;
   }
 
-  // The kind's job set-up, then its traversal to the end under the untimed shell.
   static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
                                             const std::vector<HostRecord>& jobs) {
-    const BvhConfig& own = config.coreConfig<Kind>();
-    Kind::Setup setup(memory, config.jobManager, own);
-    GoldenShell<Kind> shell(memory, own);
-    std::vector<CoreKindResult> results;
-    for (const HostRecord& record : jobs) {
-      const JobSetUp<BvhJob> set = setUpHostRecord<Kind>(setup, record);
-      BvhResult result;
-      shell.run(set.idWord, set.job, result);
-      results.emplace_back(result);
-    }
-    return results;
+    return goldenBehindSetup<Kind>(memory, config, jobs);
   }
-
-  // A ray record passes the P_STAGES registers and the ray stages, and the first against a model
-  // waits for its model header and its image's header, 16 words each (bvh_job_setup.h).
   static uint64_t firstDispatch(const JobManagerTiming& timing) {
-    return static_cast<uint64_t>(timing.stages + timing.rayStages + 2 * timing.headerFetchCycles);
+    return rayRecordFirstDispatch(timing);
   }
 
   // Moller-Trumbore, the axis child order, a stack shallow enough to drop entries, and units of

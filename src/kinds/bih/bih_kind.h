@@ -40,7 +40,7 @@ inline const std::vector<std::string> kBihStateNames{"IDLE", "AABB", "NODE",   "
                                                      "TEST", "OUT",  "BLOCKED"};
 
 template <class Intersector = ListingIntersector>
-struct BihKind {
+struct BihKind : TriangleResultQueries<BihResult, BihCounters> {
   static constexpr const char* kName = "bih";
   static constexpr const char* kDescription =
       "bounding interval hierarchy of seed 004 (Hanika 2007) over triangles on an n-bit grid, "
@@ -85,20 +85,9 @@ struct BihKind {
     counters.add(traversal.counts());
   }
 
-  // What the RTU's kind-agnostic machinery asks of a result (rtu/core_kind.h).
-  static uint32_t resultIdWord(const Result& result) { return result.idWord; }
-  static bool resultHit(const Result& result) { return result.hit; }
-  static uint32_t resultCost(const Result& result) { return result.cost; }
-  static void setResultCost(Result& result, uint32_t cost) { result.cost = cost; }
-  static bool resultBelowResolution(const Result&) { return false; }
-  static void countResult(const Result& result, Counters& counters) { counters.add(result.counts); }
-  // The scene manager's: a grid t is in its own model's grid units, so instances compare by the
+  // What the RTU's machinery asks of a result besides TriangleResultQueries' (rtu/core_kind.h),
+  // the scene manager's: a grid t is in its own model's grid units, so instances compare by the
   // distance along the world-space ray (the model transform keeps its parameter), from 0.
-  static Result miss(uint32_t idWord) {
-    Result result;
-    result.idWord = idWord;
-    return result;
-  }
   static bool hitAhead(const Result& result) { return result.hit && result.distance >= 0; }
   static bool nearer(const Result& a, const Result& b) { return a.distance < b.distance; }
   static double hitDistance(const Result& result, const Config&) { return result.distance; }

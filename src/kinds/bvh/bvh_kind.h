@@ -33,7 +33,7 @@ inline const std::vector<std::string> kBvhStateNames{
     "REF",  "TRI0",  "TRI1",  "TRI2",      "TEST",  "POP",   "OUT",    "BLOCKED"};
 
 template <class Intersector = SelectedIntersector>
-struct BvhKind {
+struct BvhKind : TriangleResultQueries<BvhResult, BvhCounters> {
   static constexpr const char* kName = "bvh";
   static constexpr const char* kDescription =
       "bounding volume hierarchy of seed 003 (Langr 2016) over triangles, float32";
@@ -76,20 +76,9 @@ struct BvhKind {
     counters.add(traversal.counts());
   }
 
-  // What the RTU's kind-agnostic machinery asks of a result (rtu/core_kind.h).
-  static uint32_t resultIdWord(const Result& result) { return result.idWord; }
-  static bool resultHit(const Result& result) { return result.hit; }
-  static uint32_t resultCost(const Result& result) { return result.cost; }
-  static void setResultCost(Result& result, uint32_t cost) { result.cost = cost; }
-  static bool resultBelowResolution(const Result&) { return false; }
-  static void countResult(const Result& result, Counters& counters) { counters.add(result.counts); }
-  // The scene manager's: t is the parameter along the world-space ray (the model transform keeps
+  // What the RTU's machinery asks of a result besides TriangleResultQueries' (rtu/core_kind.h),
+  // the scene manager's: t is the parameter along the world-space ray (the model transform keeps
   // it), in the units of its direction, from 0.
-  static Result miss(uint32_t idWord) {
-    Result result;
-    result.idWord = idWord;
-    return result;
-  }
   static bool hitAhead(const Result& result) { return result.hit && result.t >= 0; }
   static bool nearer(const Result& a, const Result& b) { return a.t < b.t; }
   static double hitDistance(const Result& result, const Config&) { return result.t; }
