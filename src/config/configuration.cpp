@@ -1,13 +1,14 @@
 #include "config/configuration.h"
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 
 #include <toml++/toml.h>
 
+#include "base/input_file.h"
+#include "base/nesting_depth.h"
 #include "embedded_presets.h"
 #include "rtusim_version.h"
 
@@ -127,12 +128,14 @@ void Configuration::applyPreset(const std::string& name) {
 }
 
 void Configuration::loadFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::invalid_argument("cannot read configuration file '" + path + "'");
-  std::stringstream text;
-  text << file.rdbuf();
+  std::string text;
+  try {
+    text = readInputFile(path, "configuration file", kMaxSettingsFileBytes);
+  } catch (const std::runtime_error& error) {
+    throw std::invalid_argument(error.what());
+  }
   const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
-  loadText(text.str(), json ? "json" : "toml", "'" + path + "'", ConfigSource::File);
+  loadText(text, json ? "json" : "toml", "'" + path + "'", ConfigSource::File);
 }
 
 void Configuration::loadText(const std::string& text, const std::string& format,
@@ -140,6 +143,7 @@ void Configuration::loadText(const std::string& text, const std::string& format,
   std::vector<std::pair<std::string, std::string>> entries;
   try {
     if (format == "json") {
+      checkJsonNesting(text);
       const nlohmann::json json = nlohmann::json::parse(text);
       // A statistics file (--stats of render or replay, a sweep row) holds its run's configuration
       // as its "config" object, which no setting's key starts: it reruns that run.
@@ -147,6 +151,7 @@ void Configuration::loadText(const std::string& text, const std::string& format,
           json.is_object() && json.contains("config") && json["config"].is_object();
       flattenJson(statistics ? json["config"] : json, "", entries);
     } else {
+      checkTomlNesting(text);
       flattenToml(toml::parse(text, origin), "", entries);
     }
     for (const auto& [key, value] : entries) set(key, value, source);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "base/input_file.h"
 #include "base/plugin_loader.h"
 #include "geometry/ply_header_check.h"
 
@@ -115,8 +116,7 @@ ProcessLimits meshLoadLimits(uint64_t fileBytes) {
 }
 
 TriangleMesh loadTriangleMesh(const std::string& path, const ProcessLimits& limits) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("mesh file '" + path + "' does not exist");
+  inputFileBytes(path, "mesh file");
   checkPlyHeader(path);
   std::string answer;
   try {
@@ -133,9 +133,7 @@ TriangleMesh loadTriangleMesh(const std::string& path, const ProcessLimits& limi
 }
 
 TriangleMesh loadTriangleMesh(const std::string& path) {
-  std::error_code error;
-  const uintmax_t bytes = std::filesystem::file_size(path, error);
-  return loadTriangleMesh(path, meshLoadLimits(error ? 0 : bytes));
+  return loadTriangleMesh(path, meshLoadLimits(inputFileBytes(path, "mesh file")));
 }
 
 }  // namespace rtu

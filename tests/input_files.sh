@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Inputs that are not files, or absurd (issue 33 section 3, docs/robustness.md "Input files"): each
+# is refused by name before any work, never a hang or a file read without end.
+# Usage: input_files.sh path/to/rtusim
+set -euo pipefail
+rtusim=$1
+source "$(dirname "${BASH_SOURCE[0]}")/shell_test_helpers.sh"
+
+"$rtusim" build --scene sphere --depth 4 --out sphere.svo >/dev/null
+"$rtusim" jobs --width 8 --height 8 --out jobs.bin >/dev/null
+mkfifo fifo
+mkdir folder
+
+# Special files: a FIFO would block the open forever (timeout turns a hang into a failure), a
+# device never ends, a directory used to be "9223372036854775807 bytes".
+in_time() { timeout 20 "$@"; }
+expect_error "SVO image 'folder' is not a regular file (a directory)" \
+  in_time "$rtusim" render --svo folder --width 8 --height 8
+expect_error "SVO image 'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" golden --svo fifo --jobs jobs.bin --out out.bin
+expect_error "job buffer 'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" golden --svo sphere.svo --jobs fifo --out out.bin
+expect_error "mesh file '/dev/zero' is not a regular file (a character device)" \
+  in_time "$rtusim" build --mesh /dev/zero --out m.svo
+expect_error "binvox file 'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" build --binvox fifo --out m.svo
+expect_error "'fifo' is not a regular file (a FIFO)" in_time "$rtusim" config --dump --config fifo
+expect_error "'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" sweep --sweep-file fifo --out sweep --dry-run
+expect_error "'fifo' is not a regular file (a FIFO)" in_time "$rtusim" validate fifo
+expect_error "--scene-file: 'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" animate --scene-file fifo
+for model in /dev/zero /dev/urandom; do
+  printf '[models.ball]\nmesh = "%s"\n[[instances]]\nmodel = "ball"\n' "$model" >scene.toml
+  expect_error "key 'models.ball.mesh': '$model' is not a regular file (a character device)" \
+    in_time "$rtusim" animate --scene-file scene.toml --frames 1 --width 8 --height 6
+done
+printf '[models.ball]\nbinvox = "fifo"\n[[instances]]\nmodel = "ball"\n' >scene.toml
+expect_error "key 'models.ball.binvox': 'fifo' is not a regular file (a FIFO)" \
+  in_time "$rtusim" animate --scene-file scene.toml --frames 1 --width 8 --height 6
+
+# Nesting: 20,000 levels of JSON and 100,000 parts of a TOML key overflowed the stack (SIGSEGV).
+python3 -c "print('{\"a\": ' + '[' * 20000 + ']' * 20000 + '}')" >deep.json
+expect_error "'deep.json': nested more than 64 levels deep at line 1" \
+  "$rtusim" config --dump --config deep.json
+python3 -c "print('x = 1\n' + '.'.join(['a'] * 100000) + ' = 1')" >deep.toml
+expect_error "'deep.toml': nested more than 64 levels deep at line 2" \
+  "$rtusim" config --dump --config deep.toml
+expect_error "sweep file 'deep.toml': nested more than 64 levels deep at line 2" \
+  "$rtusim" sweep --sweep-file deep.toml --out sweep --dry-run
+expect_error "scene file 'deep.toml': nested more than 64 levels deep at line 2" \
+  "$rtusim" animate --scene-file deep.toml --frames 1
+echo "input files: all checks passed"
