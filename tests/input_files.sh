@@ -50,4 +50,16 @@ expect_error "sweep file 'deep.toml': nested more than 64 levels deep at line 2"
   "$rtusim" sweep --sweep-file deep.toml --out sweep --dry-run
 expect_error "scene file 'deep.toml': nested more than 64 levels deep at line 2" \
   "$rtusim" animate --scene-file deep.toml --frames 1
+
+# Cameras that make no rays: an up vector of zero rendered an empty frame with exit 0.
+expect_error "camera.up must be a non-zero vector, got 0,0,0" \
+  "$rtusim" render --scene sphere --depth 3 --width 8 --height 8 --up 0,0,0
+expect_error "camera.up (1,1,1) is parallel to the view direction" \
+  "$rtusim" render --scene sphere --depth 3 --width 8 --height 8 --camera -2,-2,-2 --look-at 0,0,0 \
+  --up 1,1,1
+expect_error "camera.up must be a non-zero vector" \
+  "$rtusim" jobs --width 8 --height 8 --up 0,0,0 --out j.bin
+printf '[models.ball]\nprocedural = "sphere"\ndepth = 3\n[[instances]]\nmodel = "ball"\n[camera]\nup = [0, 0, 0]\nkeys = [{ time = 0.0, position = [0, 1, -3], look_at = [0, 0, 0] }]\n' >scene.toml
+expect_error "camera.up must be a non-zero vector" \
+  "$rtusim" animate --scene-file scene.toml --frames 1 --width 8 --height 6
 echo "input files: all checks passed"
