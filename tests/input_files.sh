@@ -62,4 +62,22 @@ expect_error "camera.up must be a non-zero vector" \
 printf '[models.ball]\nprocedural = "sphere"\ndepth = 3\n[[instances]]\nmodel = "ball"\n[camera]\nup = [0, 0, 0]\nkeys = [{ time = 0.0, position = [0, 1, -3], look_at = [0, 0, 0] }]\n' >scene.toml
 expect_error "camera.up must be a non-zero vector" \
   "$rtusim" animate --scene-file scene.toml --frames 1 --width 8 --height 6
+
+# One stack rule for every command (docs/robustness.md): a tree deeper than --stack-frames is
+# refused naming its file or scene, or traced with its overflowing rays flagged given
+# --allow-stack-overflow. accuracy ignored the depth (overflowing rays as "50 % agreement") and
+# golden and render --model golden only warned.
+"$rtusim" build --scene sphere --depth 6 --out deep.svo >/dev/null
+deeper="needs 5 stack frames; 3 are configured"
+expect_error "SVO image 'deep.svo': the tree at root 0 has descriptors at depth 5 and $deeper" \
+  "$rtusim" golden --svo deep.svo --jobs jobs.bin --out out.bin --stack-frames 3
+expect_error "SVO image 'deep.svo': the tree at root 0 has descriptors at depth 5 and $deeper" \
+  "$rtusim" accuracy --svo deep.svo --stack-frames 3 --width 8 --height 8
+expect_error "SVO image 'deep.svo': the tree at root 0 has descriptors at depth 5 and $deeper" \
+  "$rtusim" render --model golden --svo deep.svo --stack-frames 3 --width 8 --height 8
+expect_error "--depth 6 builds descriptors down to level 5, which $deeper" \
+  "$rtusim" accuracy --scene sphere --depth 6 --stack-frames 3 --width 8 --height 8
+"$rtusim" golden --svo deep.svo --jobs jobs.bin --out out.bin --stack-frames 3 \
+  --allow-stack-overflow >/dev/null 2>err.txt
+grep -q "deeper rays will be flagged" err.txt || fail "golden --allow-stack-overflow did not warn"
 echo "input files: all checks passed"

@@ -90,8 +90,10 @@ class TomlDepth {
     headerParts_ = 1;
     const size_t end = lineEnd(start);
     for (size_t i = start; i < end; ++i) {
-      if (text_[i] == '"' || text_[i] == '\'') i = stringEnd(text_, i);
-      else if (text_[i] == '.') ++headerParts_;
+      if (text_[i] == '"' || text_[i] == '\'')
+        i = stringEnd(text_, i);
+      else if (text_[i] == '.')
+        ++headerParts_;
       if (headerParts_ > kMaxNesting) tooDeep(text_, i);
     }
     keyParts_ = 0;
@@ -115,9 +117,12 @@ class TomlDepth {
 void checkJsonNesting(const std::string& text) {
   int depth = 0;
   for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '"') i = stringEnd(text, i);
-    else if (text[i] == '[' || text[i] == '{') ++depth;
-    else if (text[i] == ']' || text[i] == '}') --depth;
+    if (text[i] == '"')
+      i = stringEnd(text, i);
+    else if (text[i] == '[' || text[i] == '{')
+      ++depth;
+    else if (text[i] == ']' || text[i] == '}')
+      --depth;
     if (depth > kMaxNesting) tooDeep(text, i);
   }
 }
