@@ -26,12 +26,20 @@ std::string realText(double value) {
 }
 
 // A TOML leaf as the text Setting::assign reads: numbers, strings, booleans, [x, y, z].
+// An array is the x, y, z of a vector setting; given to another (`cores = [4]`) it was read as
+// its elements joined by commas, so one element passed as the value.
+void requireVectorSetting(const std::string& key) {
+  if (findSetting(key).kind != SettingKind::Vector)
+    throw std::invalid_argument(key + ": an array is given where the setting takes one value");
+}
+
 std::string tomlLeafText(const toml::node& node, const std::string& key) {
   if (const auto* s = node.as_string()) return s->get();
   if (const auto* i = node.as_integer()) return std::to_string(i->get());
   if (const auto* f = node.as_floating_point()) return realText(f->get());
   if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
   if (const auto* a = node.as_array()) {
+    requireVectorSetting(key);
     std::string text;
     for (const toml::node& element : *a)
       text += (text.empty() ? "" : ",") + tomlLeafText(element, key);
@@ -57,6 +65,7 @@ std::string jsonLeafText(const nlohmann::json& value, const std::string& key) {
   if (value.is_number_integer()) return value.dump();
   if (value.is_number()) return realText(value.get<double>());
   if (value.is_array()) {
+    requireVectorSetting(key);
     std::string text;
     for (const auto& element : value)
       text += (text.empty() ? "" : ",") + jsonLeafText(element, key);
