@@ -155,3 +155,10 @@ TEST_CASE("The PLY header check lets UTF-8 comments through", "[mesh]") {
   CHECK(mesh.triangles.size() == 4);
   CHECK(mesh.vertices.size() == 4);
 }
+
+TEST_CASE("OBJ values that are not decimal numbers are refused\\, not read as 0", "[mesh]") {
+  // assimp read the hexadecimal float 0x1p3 (8) as 0: a flat triangle of another model.
+  const std::string path = kMalformed + "obj/hexadecimal-float.obj";
+  CHECK_THROWS_WITH(rtu::loadTriangleMesh(path),
+                    "mesh '" + path + "', line 2: '0x1p3' is not a decimal number");
+}

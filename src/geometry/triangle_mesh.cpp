@@ -11,6 +11,7 @@
 
 #include "base/input_file.h"
 #include "base/plugin_loader.h"
+#include "geometry/obj_number_check.h"
 #include "geometry/ply_header_check.h"
 
 namespace rtu {
@@ -118,6 +119,7 @@ ProcessLimits meshLoadLimits(uint64_t fileBytes) {
 TriangleMesh loadTriangleMesh(const std::string& path, const ProcessLimits& limits) {
   inputFileBytes(path, "mesh file");
   checkPlyHeader(path);
+  checkObjNumbers(path);
   std::string answer;
   try {
     answer = runIsolated([&] { return loadWithAssimp(path); }, limits);
