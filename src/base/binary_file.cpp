@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "base/input_file.h"
+#include "base/work_phase.h"
 
 namespace rtu {
 
@@ -72,6 +73,8 @@ std::vector<uint32_t> readWordFile(const std::string& path, size_t recordBytes,
     throw std::runtime_error(what + " '" + path + "' has " +
                              std::to_string(reader.records() * recordBytes) +
                              " bytes, more than the 2^32 words a 32-bit word address reaches");
+  const WorkPhase phase("reading " + what + " '" + path + "' (" +
+                        std::to_string(reader.records() * recordBytes) + " bytes)");
   std::vector<uint32_t> words;
   words.reserve(reader.records() * recordBytes / sizeof(uint32_t));
   size_t count = 0;

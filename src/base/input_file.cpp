@@ -7,6 +7,8 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "base/work_phase.h"
+
 namespace rtu {
 
 namespace {
@@ -51,6 +53,7 @@ std::string readInputFile(const std::string& path, const std::string& what, uint
   if (bytes > maxBytes)
     throw std::runtime_error(named(what, path) + " has " + std::to_string(bytes) +
                              " bytes, more than the " + std::to_string(maxBytes) + " allowed");
+  const WorkPhase phase("reading " + named(what, path) + " (" + std::to_string(bytes) + " bytes)");
   std::string text(static_cast<size_t>(bytes), '\0');
   if (!file.read(text.data(), static_cast<std::streamsize>(bytes)))
     throw std::runtime_error("cannot read " + named(what, path));

@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/work_phase.h"
+
 namespace rtu {
 
 namespace {
@@ -58,6 +60,8 @@ Ray Camera::primaryRay(int x, int y) const {
 
 std::vector<Ray> frameRays(const Camera& camera) {
   camera.validate();
+  const WorkPhase phase("making the rays of a " + std::to_string(camera.width) + "x" +
+                        std::to_string(camera.height) + " frame");
   std::vector<Ray> rays;
   rays.reserve(camera.pixelCount());
   for (int y = 0; y < camera.height; ++y)

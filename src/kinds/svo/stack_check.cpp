@@ -39,13 +39,6 @@ void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int
   std::cerr << "rtusim: warning: " << message << ", deeper rays will be flagged\n";
 }
 
-std::string sceneSource(const SceneSpec& scene) {
-  if (!scene.svoFile.empty()) return "SVO image '" + scene.svoFile + "'";
-  if (!scene.meshFile.empty()) return "mesh '" + scene.meshFile + "'";
-  if (!scene.binvoxFile.empty()) return "binvox file '" + scene.binvoxFile + "'";
-  return "scene '" + scene.procedural + "'";
-}
-
 void checkBuiltSceneFitsStack(const SceneSpec& scene, int stackFrames, bool allowOverflow) {
   const bool built = scene.svoFile.empty() && scene.binvoxFile.empty();
   const int needed = scene.depth - 1;

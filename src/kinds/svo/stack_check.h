@@ -22,8 +22,7 @@ void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int sta
 // computed once for a scene that many runs share.
 void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int>& needed,
                        int stackFrames, bool allowOverflow, const std::string& source);
-// What the messages call a scene's tree: "SVO image 'f.svo'", "mesh 'f.obj'", "scene 'sphere'".
-std::string sceneSource(const SceneSpec& scene);
+
 // Adds a job's root to those for checkRootDepths unless it repeats the last: a frame's jobs
 // mostly share one root, so the roots' sort stays short.
 inline void addRoot(std::vector<uint32_t>& roots, uint32_t root) {
