@@ -39,9 +39,12 @@ grep -q "0 already done, 2 to run" fixed.txt || fail "failed rows not run again"
 [[ $(grep -c '"status":"ok"' broken.jsonl) -eq 2 ]] || fail "rerun rows not ok"
 
 # An invalid configuration is found before any worker starts, its row marked invalid, the others
-# run (exit 0, the first error on standard error); on resume it is kept, not run again.
-"$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 --out some.csv \
-  >some.txt 2>some.err
+# run (a non-zero exit with the first error, as for any row not ok); on resume it is kept, not
+# run again, and the resumed sweep, whose own rows are all ok, exits 0.
+if "$rtusim" sweep "${small[@]}" --memory cached --grid memory.l1.size=16,1KiB -j 1 \
+  --out some.csv >some.txt 2>some.err; then
+  fail "a sweep with an invalid row exited 0"
+fi
 grep -q '"status":"invalid","error":"L1 cache: 16 bytes do not hold one 32-byte line"' some.jsonl \
   || fail "invalid row without its error"
 grep -q "1 rows failed, the first: L1 cache: 16 bytes" some.err || fail "first error not printed"
@@ -112,4 +115,20 @@ assert "rays" in header, header
 assert sys.argv[1] == "fps.csv" or "config.rays" in header, header
 PY
 done
+# Every resource's utilisation is in the CSV; the limit is the highest when it reaches 0.8 and
+# "none" below, and limit_utilisation is the highest either way.
+"$python" - fps.csv <<'PY' || fail "utilisation columns of fps.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+names = ["cores", "memory_latency", "dram_bandwidth", "l2_port", "host_in", "host_out", "job_manager"]
+for row in rows:
+    use = {name: float(row["util_" + name]) for name in names}
+    assert all(0 <= value <= 1 for value in use.values()), row
+    top = max(names, key=lambda name: use[name])
+    assert abs(float(row["limit_utilisation"]) - use[top]) < 1e-9, row
+    assert row["limit"] == (top if use[top] >= 0.8 else "none"), row
+    # a core's time: busy and blocked are two of its four shares
+    assert use["cores"] + use["memory_latency"] <= 1 + 1e-9, row
+    assert abs(use["cores"] - float(row["core_busy"])) < 1e-9, row
+PY
 echo "exploration checks: ok"

@@ -113,9 +113,12 @@ grep -q "golden costs in the recurrence" golden_fps.txt || fail "fps --model gol
   >lt_sample.txt 2>&1 || true
 grep -q "does not go with --model lt" lt_sample.txt || fail "--sample with --model lt not refused"
 
-# A configuration that cannot run gets its error in its row; the sweep goes on.
-"$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
-  --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt
+# A configuration that cannot run gets its error in its row; the sweep goes on (and exits
+# non-zero).
+if "$rtusim" sweep --scene sphere --depth 5 --width 8 --height 8 --memory cached \
+  --grid memory.l1.size=16,1KiB --out bad.csv >bad.txt 2>&1; then
+  fail "a sweep with an invalid row exited 0"
+fi
 grep -q '"status":"invalid"' bad.jsonl && grep -q 'do not hold one 32-byte line' bad.jsonl \
   || fail "failed row without its error"
 grep -q '"status":"ok"' bad.jsonl || fail "the sweep stopped at a failed row"

@@ -223,6 +223,46 @@ TEST_CASE("Sums over cores, rows and frames", "[statistics]") {
          frames.jobs == 190 && frames.cycles == 1200 && frames.hostSeconds == 0.75));
 }
 
+TEST_CASE("Utilisation of every resource, and the limit named with its value", "[statistics]") {
+  // Two cores over 1000 cycles, 400 rays; cached memory.
+  RtuStatistics run;
+  run.totalCycles = 1000;
+  run.rays = 400;
+  run.cores = 2;
+  run.idealMemory = false;
+  run.coreTimes.resize(2);
+  run.coreTimes[0].busyCycles = 900, run.coreTimes[1].busyCycles = 800;       // 1700 / 2000
+  run.coreTimes[0].blockedCycles = 50, run.coreTimes[1].blockedCycles = 150;  // 200 / 2000
+  run.l2.dram.busyCycles = 300;
+  run.l2.cache.accesses = 500;
+  run.hostInBytesPerCycle = 16.0;  // a 32-byte record in 2 cycles: 800 of 1000
+  run.hostOutBytesPerCycle = 0.0;  // unlimited
+  const RtuStatistics::Utilisation use = run.utilisation();
+  CHECK(use.cores == Approx(0.85));
+  CHECK(use.memoryLatency == Approx(0.1));
+  CHECK(use.dramBandwidth == Approx(0.3));
+  CHECK(use.l2Port == Approx(0.5));
+  CHECK(use.hostIn == Approx(0.8));
+  CHECK(use.hostOut == 0.0);
+  CHECK(use.jobManager == Approx(0.4));
+  CHECK(run.limit() == "cores");
+  CHECK(run.limitUtilisation() == Approx(0.85));
+  // The input link 5 points behind or closer is named with it.
+  CHECK(run.describeLimit() == "limited by cores (85.0 %; host_in 80.0 % close behind)");
+  run.hostInBytesPerCycle = 32.0;
+  CHECK(run.describeLimit() == "limited by cores (85.0 %)");
+  // Below 0.8 nothing is saturated: limit "none", the highest still named in the report.
+  run.coreTimes[0].busyCycles = 500;  // 1300 / 2000
+  CHECK(run.limit() == "none");
+  CHECK(run.limitUtilisation() == Approx(0.65));
+  CHECK(run.describeLimit() == "nothing saturated (highest: cores 65.0 %)");
+  // Written with the run: the limit, its value and every resource's.
+  const Json json = run.toJson();
+  CHECK(json["limit"] == "none");
+  CHECK(json["utilisation"]["dram_bandwidth"] == Approx(0.3));
+  CHECK(json["utilisation"]["l2_port"] == Approx(0.5));
+}
+
 TEST_CASE("A frame's statistics: its CSV row, and its worker line read back exactly",
           "[statistics]") {
   FrameStatistics frame;

@@ -2,7 +2,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -16,6 +15,7 @@
 #include "app/scene_shading.h"
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
+#include "base/output_file.h"
 #include "explore/animation_run.h"
 #include "explore/animation_workers.h"
 #include "explore/exploration_run.h"
@@ -152,8 +152,9 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
                        rtu.clockMhz,
                        parseModelKind(options.model),
                        options.model == "golden" ? nullptr : &rtu};
-  std::ofstream csv(options.csvPath());
-  csv << csvLine(statisticsHeader<FrameStatistics>()) << std::flush;
+  OutputFile csvFile(options.csvPath());
+  std::ostream& csv = csvFile.stream();
+  csv << csvLine(statisticsHeader<FrameStatistics>());
   std::vector<FrameStatistics> statistics;
   std::vector<std::string> framePaths;
   const auto writeFrame = [&options, &scene](const SceneFrame& rendered) {
@@ -165,9 +166,9 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   renderFramesInWorkers(scene, models, run, workers, writeFrame, [&](const FrameStatistics& frame) {
     framePaths.push_back(options.framePath(frame.frame));
     statistics.push_back(frame);
-    csv << csvLine(statisticsFields(frame, "%.6g")) << std::flush;
+    csv << csvLine(statisticsFields(frame, "%.6g"));
   });
-  if (!csv) throw std::runtime_error("cannot write " + options.csvPath());
+  csvFile.commit();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   printSummary(statistics, rtu.clockMhz, options.model, seconds, workers);

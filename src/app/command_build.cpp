@@ -1,5 +1,4 @@
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -10,6 +9,7 @@
 #include "app/placement_flags.h"
 #include "app/schema_flags.h"
 #include "base/binary_file.h"
+#include "base/output_file.h"
 #include "explore/accel_build.h"
 #include "kinds/registry.h"
 #include "kinds/svo/svo_image.h"
@@ -61,18 +61,11 @@ void writeStats(const std::string& path, const RunConfig& config, const Triangle
   if (config.accel.structure == "kdtree") stats["builder"] = "pbrt";
   stats["scene"] = scene.name;
   stats["dropped_triangles"] = scene.dropped;
-  std::ofstream out(path);
-  out << stats.dump(2) << "\n";
-  out.close();
-  if (!out) throw std::runtime_error("cannot write the statistics '" + path + "'");
+  writeTextFile(path, stats.dump(2) + "\n");
 }
 
 void writeByteFile(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()),
-            static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  writeTextFile(path, std::string(bytes.begin(), bytes.end()));
 }
 
 void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {

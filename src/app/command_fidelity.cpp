@@ -3,13 +3,13 @@
 // error, hit-rate error, and whether the per-ray results equal the golden model's.
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "app/commands.h"
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
+#include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/frame_scene.h"
 #include "run/fidelity_study.h"
@@ -58,7 +58,8 @@ void printTable(const std::vector<ModeFidelity>& modes, std::ostream& out) {
 }
 
 void writeCsv(const std::vector<ModeFidelity>& modes, const std::string& path) {
-  std::ofstream file(path);
+  OutputFile output(path);
+  std::ostream& file = output.stream();
   file << csvLine({"mode", "host_seconds", "rays_per_host_second", "speed_up", "total_cycles",
                    "total_cycles_error", "total_cycles_ci_low", "total_cycles_ci_high",
                    "per_ray_error_mean", "per_ray_error_p99", "l1_hit_rate", "l1_hit_rate_error",
@@ -75,7 +76,7 @@ void writeCsv(const std::vector<ModeFidelity>& modes, const std::string& path) {
                      number(m.l1Error), number(m.l2HitRate), number(m.l2Error),
                      m.resultsEqualGolden ? yesNo(m.resultsEqualGolden) : ""});
   }
-  if (!file) throw std::runtime_error("cannot write " + path);
+  output.commit();
 }
 
 }  // namespace

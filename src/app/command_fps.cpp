@@ -1,4 +1,3 @@
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -10,6 +9,7 @@
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
+#include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 
@@ -53,7 +53,8 @@ void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& o
     out << std::setw(10) << s["rays"].get<uint64_t>() << std::setw(14)
         << s["total_cycles"].get<uint64_t>() << std::fixed << std::setprecision(2) << std::setw(11)
         << s["cycles_per_ray"].get<double>() << std::setw(11) << s["frame_ms"].get<double>()
-        << std::setw(10) << s["fps"].get<double>() << "  " << s["limit"].get<std::string>() << "\n";
+        << std::setw(10) << s["fps"].get<double>() << "  " << s["limit"].get<std::string>() << " "
+        << std::setprecision(1) << 100 * s["limit_utilisation"].get<double>() << " %\n";
   }
 }
 
@@ -83,7 +84,8 @@ void printMatrix(const std::vector<nlohmann::ordered_json>& rows, const std::vec
 }
 
 void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string& path) {
-  std::ofstream file(path);
+  OutputFile output(path);
+  std::ostream& file = output.stream();
   std::vector<std::string> header = {"width", "height", "cores"};
   for (const std::string& column : statisticsColumns()) header.push_back(column);
   header.push_back("error");
@@ -96,15 +98,15 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
     fields.push_back(row["error"].get<std::string>());
     file << csvLine(fields);
   }
-  if (!file) throw std::runtime_error("cannot write " + path);
+  output.commit();
 }
 
 // The rows in full beside the CSV, as sweep writes them: the CSV holds three keys of the
 // configuration, the report and diff read every key (and the preset) from here.
 void writeJsonLines(const std::vector<nlohmann::ordered_json>& rows, const std::string& path) {
-  std::ofstream file(path);
-  for (const nlohmann::ordered_json& row : rows) file << row.dump() << "\n";
-  if (!file) throw std::runtime_error("cannot write " + path);
+  OutputFile output(path);
+  for (const nlohmann::ordered_json& row : rows) output.stream() << row.dump() << "\n";
+  output.commit();
 }
 
 // The models that answered the rows, for the heading.

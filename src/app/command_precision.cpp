@@ -2,7 +2,6 @@
 // (src/kinds/svo/precision.h), as a table, a CSV and a difference image per format.
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -10,6 +9,7 @@
 #include "app/frame_images.h"
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
+#include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
 
@@ -47,7 +47,8 @@ void printTable(const std::vector<FormatPrecision>& results, std::ostream& out) 
 
 void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& frame,
               const std::string& sceneName, const std::string& path) {
-  std::ofstream file(path);
+  OutputFile output(path);
+  std::ostream& file = output.stream();
   file << csvLine({"scene",
                    "width",
                    "height",
@@ -99,7 +100,7 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
                      std::to_string(p.tOverflowRays),
                      std::to_string(p.wrongUnflagged),
                      std::to_string(p.belowResolutionRays)});
-  if (!file) throw std::runtime_error("cannot write " + path);
+  output.commit();
 }
 
 }  // namespace

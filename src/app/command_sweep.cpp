@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -12,6 +14,8 @@
 #include "app/plot_script.h"
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
+#include "base/file_lock.h"
+#include "base/output_file.h"
 #include "config/sweep_spec.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_slurm.h"
@@ -51,42 +55,75 @@ std::vector<std::string> csvFields(const Json& row) {
   return fields;
 }
 
-// The rows of an earlier run of the sweep, by configuration: those done and those of invalid
-// configurations, which would fail alike. A failed row (a scene file since fixed, a stalled run)
-// and a line cut short by an interruption are dropped: their rows run again.
-std::map<std::string, Json> readFinishedRows(const std::string& path) {
-  std::map<std::string, Json> rows;
+// The complete rows an earlier sweep into the same files wrote, in order (a line cut short by an
+// interruption is dropped).
+std::vector<Json> readEarlierRows(const std::string& path) {
+  std::vector<Json> rows;
   std::ifstream file(path);
   std::string line;
   while (std::getline(file, line)) {
     try {
       Json row = Json::parse(line);
-      if (row.contains("config") && (row["status"] == "ok" || row["status"] == "invalid"))
-        rows[row["config"].dump()] = row;
+      if (row.contains("config") && row.contains("status")) rows.push_back(std::move(row));
     } catch (const nlohmann::json::exception&) {
     }
   }
   return rows;
 }
 
-// Appends rows to the CSV and JSON-lines files as they finish, each flushed at once.
+bool finished(const Json& row) { return row["status"] == "ok" || row["status"] == "invalid"; }
+
+// What a sweep keeps of the earlier rows: per configuration its row done or invalid (which would
+// fail alike), else, for a configuration this sweep does not run (an earlier grid, preset or
+// list), its failed row too; each configuration once. A failed row of this sweep's (a scene file
+// since fixed, a stalled run) is dropped: it runs again.
+std::vector<Json> keptRows(const std::vector<Json>& earlier, const std::set<std::string>& swept) {
+  std::map<std::string, const Json*> chosen;
+  for (const Json& row : earlier) {
+    const std::string key = row["config"].dump();
+    const auto found = chosen.find(key);
+    if (found == chosen.end() ? finished(row) || !swept.count(key) : finished(row))
+      chosen[key] = &row;
+  }
+  std::vector<Json> kept;
+  for (const Json& row : earlier) {
+    const auto found = chosen.find(row["config"].dump());
+    if (found != chosen.end() && found->second == &row) kept.push_back(row);
+  }
+  return kept;
+}
+
+// Rewrites the CSV and JSON-lines files with the rows kept (each whole or not at all, as any
+// output), then appends rows as they finish, each flushed at once so that an interrupted sweep
+// resumes from the rows written.
 class RowWriter {
  public:
-  RowWriter(const std::string& csvPath, const std::vector<Json>& kept)
-      : csvPath_(csvPath),
-        csv_(csvPath, std::ios::trunc),
-        jsonLines_(jsonLinesPath(csvPath), std::ios::trunc) {
-    if (!csv_ || !jsonLines_) throw std::runtime_error("cannot write " + csvPath);
-    csv_ << csvLine(csvHeader());
-    for (const Json& row : kept) write(row);
+  RowWriter(const std::string& csvPath, const std::vector<Json>& kept) : csvPath_(csvPath) {
+    OutputFile csv(csvPath), jsonLines(jsonLinesPath(csvPath));
+    csv.stream() << csvLine(csvHeader());
+    for (const Json& row : kept) {
+      csv.stream() << csvLine(csvFields(row));
+      jsonLines.stream() << row.dump() << "\n";
+    }
+    jsonLines.commit();
+    csv.commit();
+    csv_.open(csvPath, std::ios::app);
+    jsonLines_.open(jsonLinesPath(csvPath), std::ios::app);
+    check();
   }
   void write(const Json& row) {
     csv_ << csvLine(csvFields(row)) << std::flush;
     jsonLines_ << row.dump() << "\n" << std::flush;
-    if (!csv_ || !jsonLines_) throw std::runtime_error("cannot write " + csvPath_);
+    check();
   }
 
  private:
+  void check() const {
+    if (!csv_ || !jsonLines_)
+      throw std::runtime_error("cannot write '" + csvPath_ + "' and '" + jsonLinesPath(csvPath_) +
+                               "': " + std::strerror(errno));
+  }
+
   std::string csvPath_;
   std::ofstream csv_, jsonLines_;
 };
@@ -109,18 +146,20 @@ class SweepTally {
     ok_ += status == "ok";
     invalid_ += status == "invalid";
   }
-  // The summary of `pending` rows; throws std::runtime_error with the first error when rows ran
-  // and none of them ended ok.
-  void finish(size_t pending, const std::string& files) const {
+  // The summary of `pending` rows.
+  void report(size_t pending, const std::string& files) const {
     std::cout << "sweep: " << ok_ << " rows done, " << written_ - ok_ << " failed"
               << (invalid_ > 0 ? " (" + std::to_string(invalid_) + " invalid)" : "") << ", "
               << pending - written_ << " lost; wrote " << files << "\n";
+  }
+  // One rule for the exit status: throws std::runtime_error with the first error when any of the
+  // `pending` rows failed, was invalid or was lost.
+  void check(size_t pending) const {
     const std::string first = firstError_.empty() ? "no row came back" : firstError_;
     if (pending > 0 && ok_ == 0)
       throw std::runtime_error("every row of the sweep failed, the first: " + first);
     if (ok_ < pending)
-      std::cerr << "rtusim: sweep: " << pending - ok_ << " rows failed, the first: " << first
-                << "\n";
+      throw std::runtime_error(std::to_string(pending - ok_) + " rows failed, the first: " + first);
   }
 
  private:
@@ -197,21 +236,32 @@ void addSweepCommand(CLI::App& app) {
       throw std::invalid_argument("sweep file '" + options->sweepFile + "': " + error.what());
     }
 
-    const std::map<std::string, Json> finished = readFinishedRows(jsonLinesPath(options->out));
-    std::vector<Json> kept;
+    // One sweep at a time writes these files: a second one is refused, naming the first.
+    const FileLock lock(options->out + ".lock", "sweep output '" + options->out + "'");
+    std::set<std::string> swept;
+    for (const Configuration& configuration : configurations)
+      swept.insert(configuration.toJson().dump());
+    const std::vector<Json> kept = keptRows(readEarlierRows(jsonLinesPath(options->out)), swept);
+    std::set<std::string> done;
+    for (const Json& row : kept)
+      if (finished(row)) done.insert(row["config"].dump());
     std::vector<size_t> pending;
     std::set<std::string> seen;
+    size_t alreadyDone = 0;
     for (size_t i = 0; i < configurations.size(); ++i) {
       const std::string key = configurations[i].toJson().dump();
       if (!seen.insert(key).second) continue;  // the same configuration twice runs once
-      const auto found = finished.find(key);
-      if (found != finished.end())
-        kept.push_back(found->second);
+      if (done.count(key))
+        ++alreadyDone;
       else
         pending.push_back(i);
     }
-    std::cout << "sweep: " << seen.size() << " configurations, " << kept.size() << " already done, "
-              << pending.size() << " to run with " << options->workers << " workers\n"
+    const size_t others = kept.size() - alreadyDone;
+    std::cout << "sweep: " << seen.size() << " configurations, " << alreadyDone << " already done, "
+              << pending.size() << " to run with " << options->workers << " workers"
+              << (others > 0 ? "; " + std::to_string(others) + " rows of other configurations kept"
+                             : "")
+              << "\n"
               << std::flush;
     RowWriter writer(options->out, kept);
     SweepTally tally(writer);
@@ -231,9 +281,10 @@ void addSweepCommand(CLI::App& app) {
       runRows(configurations, pending, options->workers, "sweep",
               [&](size_t, const Json& row) { write(row); });
     }
-    tally.finish(pending.size(), options->out + " and " + jsonLinesPath(options->out));
+    tally.report(pending.size(), options->out + " and " + jsonLinesPath(options->out));
     if (!options->plotDir.empty())
       runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
+    tally.check(pending.size());
   });
 }
 

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <ostream>
 #include <stdexcept>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "base/output_file.h"
 #include "base/plugin_loader.h"
 
 namespace rtu {
@@ -25,11 +27,19 @@ constexpr const char* kImagesPurpose = "needed to write images";
 
 void writeImage(const std::string& path, int width, int height, int channels,
                 const std::vector<float>& data, bool floatFile) {
-  using WriteFunction = const char*(const char*, int, int, int, const float*, int);
+  using WriteFunction = const char*(const char*, const char*, int, int, int, const float*, int,
+                                    const unsigned char**, size_t*);
   static WriteFunction* const write =
       pluginFunction<WriteFunction>(kImagesModule, "rtusim_images_write", kImagesPurpose);
-  if (const char* error = write(path.c_str(), width, height, channels, data.data(), floatFile))
-    throw std::runtime_error("cannot write image '" + path + "': " + error);
+  OutputFile file(path);
+  const unsigned char* bytes = nullptr;
+  size_t size = 0;
+  if (const char* error = write(path.c_str(), file.writePath().c_str(), width, height, channels,
+                                data.data(), floatFile, &bytes, &size))
+    file.fail(error);
+  if (bytes)
+    file.stream().write(reinterpret_cast<const char*>(bytes), static_cast<std::streamsize>(size));
+  file.commit();
 }
 
 }  // namespace

@@ -2,9 +2,12 @@
 // so that only commands writing an image load OpenImageIO and its many dependencies. It sees
 // plain float pixel buffers only, no rtusim type.
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -25,20 +28,33 @@ std::string fontName() {
 
 RTUSIM_PLUGIN_ABI_ENTRY
 
-// Writes `width` x `height` pixels of `channels` floats each (rows top to bottom) to `path`, in
-// the format its extension names: 32-bit float samples when `floatFile`, else 8-bit. Returns
-// nullptr, or the error message (valid until the thread's next call).
-RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, int width, int height,
-                                                     int channels, const float* data,
-                                                     int floatFile) {
+// Encodes `width` x `height` pixels of `channels` floats each (rows top to bottom) in the format
+// `path`'s extension names: 32-bit float samples when `floatFile`, else 8-bit. Into memory when
+// the format can (*bytes and *size then hold the file, valid until the thread's next call), so
+// that the caller checks every write; else into the file `writePath` (*bytes null), checked by
+// OpenImageIO's own status only. Returns nullptr, or the error message (valid as long).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, const char* writePath,
+                                                     int width, int height, int channels,
+                                                     const float* data, int floatFile,
+                                                     const unsigned char** bytes, size_t* size) {
+  thread_local std::vector<unsigned char> encoded;
+  *bytes = nullptr;
+  *size = 0;
   return rtu::pluginCall([&]() -> std::string {
     auto output = OIIO::ImageOutput::create(path);
     if (!output) return "OpenImageIO: " + OIIO::geterror();
+    encoded.clear();
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    const bool inMemory = output->supports("ioproxy") && output->set_ioproxy(&memory);
     const OIIO::ImageSpec spec(width, height, channels,
                                floatFile ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!output->open(path, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, data) ||
+    if (!output->open(writePath, spec) || !output->write_image(OIIO::TypeDesc::FLOAT, data) ||
         !output->close())
       return "OpenImageIO: " + output->geterror();
+    if (inMemory) {
+      *bytes = encoded.data();
+      *size = encoded.size();
+    }
     return {};
   });
 }

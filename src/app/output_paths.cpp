@@ -22,14 +22,15 @@ bool sameFile(const std::string& a, const std::string& b) {
 }
 
 void checkWritable(const NamedPath& output) {
-  const fs::path path(output.path);
+  fs::path path(output.path);
   std::error_code error;
   if (fs::is_directory(path, error))
     throw std::invalid_argument(named(output) + " is a directory, not a file");
   if (fs::exists(path, error)) {
     if (access(path.c_str(), W_OK) != 0)
       throw std::invalid_argument(named(output) + " exists and cannot be written");
-    return;
+    if (!fs::is_regular_file(path, error)) return;  // a device or a pipe is written in place
+    path = fs::canonical(path, error);  // a file is replaced by one written beside it (OutputFile)
   }
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(parent, error))

@@ -6,9 +6,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "base/output_file.h"
 #include "embedded_scripts.h"
 
 extern char** environ;
@@ -23,10 +23,8 @@ std::string writeScripts() {
   char folder[] = "/tmp/rtusim_plot_XXXXXX";
   if (::mkdtemp(folder) == nullptr)
     throw std::runtime_error("cannot write the plotting script to /tmp");
-  for (const auto& [name, text] : embeddedScripts()) {
-    std::ofstream script(std::string(folder) + "/" + name + ".py");
-    script << text;
-  }
+  for (const auto& [name, text] : embeddedScripts())
+    writeTextFile(std::string(folder) + "/" + name + ".py", text);
   return folder;
 }
 

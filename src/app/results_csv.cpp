@@ -1,8 +1,10 @@
 #include "app/results_csv.h"
 
 #include <charconv>
-#include <fstream>
+#include <ostream>
 #include <stdexcept>
+
+#include "base/output_file.h"
 
 namespace rtu {
 namespace {
@@ -29,11 +31,10 @@ std::string row(const ResultRow& r) {
 }  // namespace
 
 void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows) {
-  std::ofstream out(path);
-  out << "id,hit,t,primitive,u,v\n";
-  for (const ResultRow& r : rows) out << row(r) << '\n';
-  out.close();
-  if (!out) throw std::runtime_error("cannot write the results CSV '" + path + "'");
+  OutputFile file(path);
+  file.stream() << "id,hit,t,primitive,u,v\n";
+  for (const ResultRow& r : rows) file.stream() << row(r) << '\n';
+  file.commit();
 }
 
 }  // namespace rtu

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "base/output_file.h"
 #include "base/work_phase.h"
 #include "config/configuration.h"
 
@@ -31,10 +32,14 @@ int main(int argc, char** argv) {
   rtu::addPlotCommands(app);
   rtu::addDiffCommand(app);
   rtu::addWaveCommand(app);
+  int status = 0;
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+      status = app.exit(error);
+    }
+    rtu::checkStandardOutput();  // `rtusim config --dump > /dev/full` fails
   } catch (const std::bad_alloc&) {
     // The allocation names nothing: say which command ran out of memory, doing what.
     const auto commands = app.get_subcommands();
@@ -47,5 +52,5 @@ int main(int argc, char** argv) {
     std::cerr << "rtusim: error: " << error.what() << "\n";
     return 1;
   }
-  return 0;
+  return status;
 }

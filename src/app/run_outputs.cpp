@@ -1,10 +1,10 @@
 #include "app/run_outputs.h"
 
-#include <fstream>
 #include <ostream>
 #include <stdexcept>
 
 #include "app/placement_flags.h"
+#include "base/output_file.h"
 #include "base/timing_limits.h"
 #include "explore/sweep_workers.h"
 #include "run/trace_plan.h"
@@ -82,9 +82,7 @@ void reportRun(const RtuRun& run, const Configuration& configuration, const RunO
                std::ostream& out) {
   run.statistics.writeReport(out);
   if (outputs.statsPath.empty()) return;
-  std::ofstream file(outputs.statsPath);
-  file << runJson(run.statistics, configuration).dump(2) << "\n";
-  if (!file) throw std::runtime_error("cannot write statistics file " + outputs.statsPath);
+  writeTextFile(outputs.statsPath, runJson(run.statistics, configuration).dump(2) + "\n");
   out << "wrote       " << outputs.statsPath << "\n";
 }
 

@@ -40,10 +40,7 @@ const uint32_t* RecordFileReader::next(size_t& count) {
   return chunk_.data();
 }
 
-WordFileWriter::WordFileWriter(const std::string& path)
-    : out_(path, std::ios::binary | std::ios::trunc), path_(path), chunk_(kChunkWords) {
-  if (!out_) throw std::runtime_error("cannot create '" + path + "'");
-}
+WordFileWriter::WordFileWriter(const std::string& path) : out_(path), chunk_(kChunkWords) {}
 
 uint32_t* WordFileWriter::append(size_t words) {
   if (used_ + words > chunk_.size()) flush();
@@ -53,16 +50,14 @@ uint32_t* WordFileWriter::append(size_t words) {
 }
 
 void WordFileWriter::flush() {
-  out_.write(reinterpret_cast<const char*>(chunk_.data()),
-             static_cast<std::streamsize>(used_ * sizeof(uint32_t)));
+  out_.stream().write(reinterpret_cast<const char*>(chunk_.data()),
+                      static_cast<std::streamsize>(used_ * sizeof(uint32_t)));
   used_ = 0;
-  if (!out_) throw std::runtime_error("cannot write '" + path_ + "'");
 }
 
 void WordFileWriter::close() {
   flush();
-  out_.close();
-  if (!out_) throw std::runtime_error("cannot write '" + path_ + "'");
+  out_.commit();
 }
 
 std::vector<uint32_t> readWordFile(const std::string& path, size_t recordBytes,

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "base/output_file.h"
+
 namespace rtu {
 
 // Streams a file of fixed-size records. Throws std::runtime_error naming `path` when it cannot be
@@ -26,8 +28,9 @@ class RecordFileReader {
   std::vector<uint32_t> chunk_;
 };
 
-// Writes words through a fixed buffer; close() writes the rest and reports errors naming `path`
-// (a writer destroyed without it, as when encoding throws, leaves a truncated file).
+// Writes words through a fixed buffer into an OutputFile; close() writes the rest and puts the file
+// in place, or reports the error naming `path` (a writer destroyed without it, as when encoding
+// throws, leaves the path as it was).
 class WordFileWriter {
  public:
   explicit WordFileWriter(const std::string& path);
@@ -41,8 +44,7 @@ class WordFileWriter {
  private:
   void flush();
 
-  std::ofstream out_;
-  std::string path_;
+  OutputFile out_;
   std::vector<uint32_t> chunk_;
   size_t used_ = 0;
 };

@@ -93,7 +93,6 @@ void onSanitizerReport(const char* report) {
 [[noreturn]] void runChild(int fd, const std::function<std::string()>& work,
                            const ProcessLimits& limits) {
   restoreFatalSignals();
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // a killed parent (Ctrl-C) takes the child with it
   limitChild(limits);
   std::set_new_handler([] { ::_exit(kOutOfMemoryExit); });
 #if defined(__SANITIZE_ADDRESS__)
@@ -196,6 +195,13 @@ std::string interpret(const ChildOutput& output, int status, const ProcessLimits
 
 }  // namespace
 
+void dieWithParent(int parent) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  // The parent may have died between the fork and the prctl: the child was then re-parented
+  // and no signal will come.
+  if (::getppid() != parent) ::_exit(1);
+}
+
 std::string runIsolated(const std::function<std::string()>& work, const ProcessLimits& limits) {
   int pipeFds[2];
   if (::pipe(pipeFds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
@@ -203,6 +209,7 @@ std::string runIsolated(const std::function<std::string()>& work, const ProcessL
   std::cerr.flush();
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(limits.seconds));
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int error = errno;
@@ -211,6 +218,7 @@ std::string runIsolated(const std::function<std::string()>& work, const ProcessL
     throw std::runtime_error(std::string("fork: ") + std::strerror(error));
   }
   if (pid == 0) {
+    dieWithParent(parent);  // a killed parent (Ctrl-C) takes the child with it
     ::close(pipeFds[0]);
     runChild(pipeFds[1], work, limits);
   }

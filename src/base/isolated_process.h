@@ -28,4 +28,9 @@ struct IsolatedProcessError : std::runtime_error {
 // exception `work` threw, or when no process or pipe can be made.
 std::string runIsolated(const std::function<std::string()>& work, const ProcessLimits& limits);
 
+// Called first in a forked child: it is killed when `parent` (the parent's pid, read before the
+// fork) dies, as when the parent is killed with SIGKILL, and exits at once if the parent died
+// before the call.
+void dieWithParent(int parent);
+
 }  // namespace rtu

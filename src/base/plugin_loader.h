@@ -14,7 +14,7 @@ namespace rtu {
 
 // Bumped whenever an entry point's signature or a type passed through one changes, so a stale
 // module from an older build is refused instead of misread.
-constexpr int kPluginAbi = 1;
+constexpr int kPluginAbi = 2;
 
 // The address of `symbol` in module `file` (e.g. "librtusim_meshes.so"), loading the module on
 // first use; handles are kept for the life of the process. `purpose` completes the error

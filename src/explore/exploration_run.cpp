@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/binary_file.h"
+#include "base/output_file.h"
 #include "config/run_json.h"
 #include "explore/sweep_workers.h"
 #include "run/analytic_run.h"
@@ -67,9 +68,7 @@ void SceneCache::save(const std::string& directory) const {
                   {"stack_needed", scene.stackNeeded}};
   }
   for (const auto& [key, error] : errors_) index[key] = {{"error", error}};
-  std::ofstream out(directory + "/scenes.json");
-  out << index.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write scenes into " + directory);
+  writeTextFile(directory + "/scenes.json", index.dump(2) + "\n");
 }
 
 void SceneCache::load(const std::string& directory) {
@@ -237,6 +236,14 @@ std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
           {"frame_ms", "frame_ms"},
           {"fps", "fps"},
           {"limit", "limit"},
+          {"limit_utilisation", "limit_utilisation"},
+          {"util_cores", "utilisation/cores"},
+          {"util_memory_latency", "utilisation/memory_latency"},
+          {"util_dram_bandwidth", "utilisation/dram_bandwidth"},
+          {"util_l2_port", "utilisation/l2_port"},
+          {"util_host_in", "utilisation/host_in"},
+          {"util_host_out", "utilisation/host_out"},
+          {"util_job_manager", "utilisation/job_manager"},
           {"cost_mean", "cost/mean"},
           {"blocked_mean", "blocked_cycles/mean"},
           {"core_busy", "core_time/busy"},

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
 
@@ -56,7 +57,8 @@ std::vector<Configuration> readConfigurations(const std::string& directory) {
 void writeBatchScript(const std::string& path, const std::string& directory, int tasks,
                       const SlurmOptions& options) {
   const std::string rtusim = fs::read_symlink("/proc/self/exe").string();
-  std::ofstream script(path);
+  OutputFile file(path);
+  std::ostream& script = file.stream();
   script << "#!/bin/bash\n"
          << "# Written by rtusim sweep --slurm: array element i runs configurations i, i+" << tasks
          << ", ... of configs.jsonl.\n"
@@ -68,7 +70,7 @@ void writeBatchScript(const std::string& path, const std::string& directory, int
   if (!options.partition.empty()) script << "#SBATCH --partition=" << options.partition << "\n";
   script << "exec '" << rtusim << "' sweep --slurm-task \"$SLURM_ARRAY_TASK_ID\" --sweep-dir '"
          << directory << "'\n";
-  if (!script) throw std::runtime_error("cannot write " + path);
+  file.commit();
 }
 
 size_t countRows(const std::string& directory, int tasks) {
@@ -103,6 +105,19 @@ void submitAndWait(const std::string& script, const std::string& directory, int 
               << "; rows missing below run again next time\n";
 }
 
+// Removes an earlier plan's directory; refuses one the sweep did not make (a plan.json marks it),
+// whose files are not the sweep's to delete.
+void clearSweepDirectory(const std::string& directory) {
+  std::error_code error;
+  if (!fs::exists(directory, error)) return;
+  if (!fs::is_directory(directory, error) ||
+      (!fs::is_empty(directory, error) && !fs::exists(directory + "/plan.json", error)))
+    throw std::invalid_argument("sweep directory '" + directory +
+                                "' exists and is not one a sweep made (no plan.json): give "
+                                "another --sweep-dir, or remove it");
+  fs::remove_all(directory);
+}
+
 }  // namespace
 
 std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
@@ -112,19 +127,18 @@ std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
   const std::vector<size_t> rows =
       validRows(configurations, allRows, [&done](size_t, const Json& row) { done(row); });
   const std::string directory = fs::absolute(directoryName).string();
-  fs::remove_all(directory);  // a fresh plan: rows already done are in the sweep's own files
+  clearSweepDirectory(directory);  // a fresh plan: rows already done are in the sweep's own files
   fs::create_directories(directory);
   const int tasks = static_cast<int>(
       std::max<size_t>(1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
   std::vector<Configuration> pending;
-  {
-    std::ofstream plan(directory + "/configs.jsonl");
-    for (size_t row : rows) {
-      plan << configurations[row].toJson().dump() << "\n";
-      pending.push_back(configurations[row]);
-    }
-    std::ofstream(directory + "/plan.json") << Json{{"tasks", tasks}}.dump() << "\n";
+  std::string plan;
+  for (size_t row : rows) {
+    plan += configurations[row].toJson().dump() + "\n";
+    pending.push_back(configurations[row]);
   }
+  writeTextFile(directory + "/configs.jsonl", plan);
+  writeTextFile(directory + "/plan.json", Json{{"tasks", tasks}}.dump() + "\n");
   SceneCache scenes;
   scenes.build(pending);
   scenes.save(directory);

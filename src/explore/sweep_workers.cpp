@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/isolated_process.h"
+
 namespace rtu {
 namespace {
 
@@ -45,9 +47,11 @@ Worker startWorker(size_t row, const std::function<void(size_t, const WorkerSay&
   if (::pipe(pipeFds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   std::cout.flush();
   std::cerr.flush();
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
   if (pid == 0) {
+    dieWithParent(parent);  // no orphan runs on when the sweep is killed
     ::close(pipeFds[0]);
     work(row, [fd = pipeFds[1]](const std::string& text) { writeAll(fd, text); });
     ::_exit(0);  // no destructors or atexit handlers of the parent's objects in the child

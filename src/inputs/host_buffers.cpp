@@ -252,18 +252,13 @@ std::vector<Out> readAll(const std::string& path, std::vector<SkippedRecord>* sk
   return records;
 }
 
-// A record that cannot be encoded leaves no file behind.
+// A record that cannot be encoded leaves the path as it was (the writer is never closed).
 template <class Codec>
 void writeAll(const std::string& path, const std::vector<typename Codec::Record>& records) {
   WordFileWriter writer(path);
-  try {
-    for (size_t i = 0; i < records.size(); ++i)
-      Codec::encode(records[i], i, writer.append(Codec::kWords));
-    writer.close();
-  } catch (...) {
-    std::remove(path.c_str());
-    throw;
-  }
+  for (size_t i = 0; i < records.size(); ++i)
+    Codec::encode(records[i], i, writer.append(Codec::kWords));
+  writer.close();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "run/rtu_statistics.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <iomanip>
 #include <ostream>
 
@@ -85,22 +86,58 @@ double RtuStatistics::frameMilliseconds() const {
 
 RtuStatistics::Utilisation RtuStatistics::utilisation() const {
   const CoreTimeShares shares = coreTimeShares();
+  Utilisation use;
+  use.cores = shares.busy;
+  use.memoryLatency = shares.blocked;
+  // The DRAM's data bus and the L2's port, one request a cycle (sim/memory/l2_cache_timing.h).
+  use.dramBandwidth = idealMemory ? 0.0 : ratio(l2.dram.busyCycles, totalCycles);
+  use.l2Port = idealMemory ? 0.0 : ratio(l2.cache.accesses, totalCycles);
+  if (hostInBytesPerCycle > 0)
+    use.hostIn = linkUtilisation(rays, kHostRecordBytes, hostInBytesPerCycle, totalCycles);
+  if (hostOutBytesPerCycle > 0)
+    use.hostOut = linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
   // The job manager and scheduler issue at most one job a cycle.
-  const double issue = totalCycles == 0 ? 0.0 : ratio(rays, totalCycles);
-  const double hostIn = linkUtilisation(rays, kHostRecordBytes, hostInBytesPerCycle, totalCycles);
-  const double hostOut =
-      linkUtilisation(rays, hostOutRecordBytes, hostOutBytesPerCycle, totalCycles);
-  return {shares.busy, shares.blocked, hostInBytesPerCycle > 0 ? hostIn : 0.0,
-          hostOutBytesPerCycle > 0 ? hostOut : 0.0, issue};
+  use.jobManager = ratio(rays, totalCycles);
+  return use;
 }
 
+namespace {
+
+// The utilisations by name, the highest first (the first in declaration order among equals).
+std::vector<std::pair<std::string, double>> ranked(const RtuStatistics::Utilisation& utilisation) {
+  std::vector<std::pair<std::string, double>> all;
+  for (const auto& [name, value] : statisticValues(utilisation))
+    all.emplace_back(name, std::get<double>(value));
+  std::stable_sort(all.begin(), all.end(),
+                   [](const auto& a, const auto& b) { return a.second > b.second; });
+  return all;
+}
+
+std::string percent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f %%", 100 * share);
+  return text;
+}
+
+}  // namespace
+
 std::string RtuStatistics::limit() const {
-  const auto all = statisticValues(utilisation());
-  return std::max_element(all.begin(), all.end(),
-                          [](const auto& a, const auto& b) {
-                            return std::get<double>(a.second) < std::get<double>(b.second);
-                          })
-      ->first;
+  const auto all = ranked(utilisation());
+  return all.front().second >= kSaturated ? all.front().first : "none";
+}
+
+double RtuStatistics::limitUtilisation() const { return ranked(utilisation()).front().second; }
+
+std::string RtuStatistics::describeLimit() const {
+  const auto all = ranked(utilisation());
+  const auto& [name, value] = all.front();
+  if (value < kSaturated) return "nothing saturated (highest: " + name + " " + percent(value) + ")";
+  // A runner-up within 5 points could swap places with a small change: named with it.
+  const auto& [second, secondValue] = all[1];
+  if (value - secondValue < 0.05)
+    return "limited by " + name + " (" + percent(value) + "; " + second + " " +
+           percent(secondValue) + " close behind)";
+  return "limited by " + name + " (" + percent(value) + ")";
 }
 
 const StatisticGroup<RtuStatistics::CoreTimeShares>& RtuStatistics::CoreTimeShares::declaration() {
@@ -117,8 +154,16 @@ const StatisticGroup<RtuStatistics::Utilisation>& RtuStatistics::Utilisation::de
   static const StatisticGroup<Utilisation> group =
       StatisticGroup<Utilisation>("utilisation of what can bound the frame rate")
           .derived(Statistic("cores", "", "share of the cores' time busy"), &Utilisation::cores)
-          .derived(Statistic("memory", "", "share of the cores' time BLOCKED on memory"),
-                   &Utilisation::memory)
+          .derived(Statistic("memory_latency", "",
+                             "share of the cores' time BLOCKED waiting for memory reads"),
+                   &Utilisation::memoryLatency)
+          .derived(Statistic("dram_bandwidth", "",
+                             "share of the run the DRAM's data bus transfers (0: ideal memory)"),
+                   &Utilisation::dramBandwidth)
+          .derived(Statistic("l2_port", "",
+                             "L2 requests per cycle: its port accepts one a cycle (0: ideal "
+                             "memory)"),
+                   &Utilisation::l2Port)
           .derived(Statistic("host_in", "",
                              "share of the run the input link moves records (0: unlimited link)"),
                    &Utilisation::hostIn)
@@ -167,9 +212,11 @@ const StatisticGroup<RtuStatistics>& RtuStatistics::declaration() {
           .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
                    &S::raysPerSecond)
           .derived(Statistic("limit", "",
-                             "the first utilisation of the highest: what bounds the frame rate "
-                             "(docs/exploration.md)"),
+                             "the resource of the highest utilisation, when it reaches 0.8; "
+                             "none below (docs/exploration.md, §2)"),
                    &S::limit)
+          .derived(Statistic("limit_utilisation", "", "the highest utilisation, saturated or not"),
+                   &S::limitUtilisation)
           .computed<Utilisation>(Statistic("utilisation", "", ""), &S::utilisation)
           .derived(Statistic("cost/mean", "cycles",
                              "per ray: cycles a core spends on it outside IDLE, OUT and BLOCKED "
@@ -263,7 +310,7 @@ void RtuStatistics::writeReport(std::ostream& out) const {
   out << "rays " << rays << ", total cycles " << totalCycles << " (" << cyclesPerRay()
       << " per ray)\n";
   out << "at " << clockMhz << " MHz: " << raysPerSecond() / 1e6 << " M rays/s, frame "
-      << frameMilliseconds() << " ms, " << framesPerSecond() << " frames/s, limited by " << limit()
+      << frameMilliseconds() << " ms, " << framesPerSecond() << " frames/s, " << describeLimit()
       << "\n";
   out << "per ray: cost " << ratio(totalCost, rays) << " states (max " << maxCost << "), blocked "
       << ratio(totalBlocked, rays) << " cycles (max " << maxBlocked << ")\n";

@@ -59,13 +59,20 @@ struct RtuStatistics {
   };
   CoreTimeShares coreTimeShares() const;
   // Utilisation of each resource that can bound the frame rate, and the one that does (the
-  // first of the highest); the rule is in docs/exploration.md.
+  // first of the highest, when it reaches kSaturated); the rule is in docs/exploration.md, §2.
   struct Utilisation {
-    double cores = 0, memory = 0, hostIn = 0, hostOut = 0, jobManager = 0;
+    double cores = 0, memoryLatency = 0, dramBandwidth = 0, l2Port = 0, hostIn = 0, hostOut = 0,
+           jobManager = 0;
     static const StatisticGroup<Utilisation>& declaration();
   };
+  static constexpr double kSaturated = 0.8;
   Utilisation utilisation() const;
+  // The highest utilisation's resource, or "none" below kSaturated.
   std::string limit() const;
+  double limitUtilisation() const;  // the highest utilisation, saturated or not
+  // "limited by cores (96.1 %)", "limited by cores (96.1 %; memory_latency 94.0 % close
+  // behind)" or "nothing saturated (highest: cores 45.2 %)".
+  std::string describeLimit() const;
   double frameMilliseconds() const;
 
   double cyclesPerRay() const;

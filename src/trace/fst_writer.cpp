@@ -2,9 +2,15 @@
 // (fstapi.c, built from Debian's verilator package: modules/CMakeLists.txt). Variables with
 // named values get an enum table, so GTKWave shows the names (IDLE, INIT, ...) without a filter.
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <stdexcept>
 
+#include "base/output_file.h"
 #include "fstapi.h"
 #include "trace/trace_writer.h"
 
@@ -13,13 +19,18 @@ namespace {
 
 class FstWriter : public TraceWriter {
  public:
-  explicit FstWriter(const std::string& path) : fst_(fstWriterCreate(path.c_str(), 1)) {
-    if (!fst_) throw std::runtime_error("cannot write trace file " + path);
+  // The writer writes a scratch file in the temporary folder, copied into the output when
+  // complete: it maps a file of its own beside the trace (NAME.hier), which on a full disk
+  // killed the process with SIGBUS, and it checks none of its writes.
+  explicit FstWriter(const std::string& path) : file_(path), scratch_(scratchPath()) {
+    fst_ = fstWriterCreate(scratch_.c_str(), 1);
+    if (!fst_) file_.fail("the FST writer cannot open '" + scratch_ + "'");
     fstWriterSetTimescale(fst_, -12);  // 1 ps
     fstWriterSetPackType(fst_, FST_WR_PT_LZ4);
   }
   ~FstWriter() override {
     if (fst_) fstWriterClose(fst_);
+    ::unlink(scratch_.c_str());
   }
   void enterScope(const std::string& name) override {
     fstWriterSetScope(fst_, FST_ST_VCD_MODULE, name.c_str(), nullptr);
@@ -36,7 +47,10 @@ class FstWriter : public TraceWriter {
   void endDeclarations() override {}
   void beginInitial(uint64_t timePs) override { time(timePs); }
   void endInitial() override {}
-  void time(uint64_t timePs) override { fstWriterEmitTimeChange(fst_, timePs); }
+  void time(uint64_t timePs) override {
+    fstWriterEmitTimeChange(fst_, timePs);
+    endTime_ = timePs;
+  }
   void value(size_t index, bool known, uint64_t value) override {
     const auto [width, handle] = variables_[index];
     const std::string text = known ? bitString(value, width)
@@ -46,6 +60,11 @@ class FstWriter : public TraceWriter {
   void close() override {
     fstWriterClose(fst_);
     fst_ = nullptr;
+    checkWritten();
+    std::ifstream written(scratch_, std::ios::binary);
+    if (!written.is_open()) file_.fail("cannot read the FST writer's file '" + scratch_ + "'");
+    file_.stream() << written.rdbuf();
+    file_.commit();
   }
 
  private:
@@ -69,7 +88,34 @@ class FstWriter : public TraceWriter {
     return entry->second;
   }
 
-  void* fst_;
+  static std::string scratchPath() {
+    std::string path = (std::filesystem::temp_directory_path() / "rtusim-XXXXXX.fst").string();
+    const int fd = ::mkstemps(path.data(), 4);
+    if (fd < 0)
+      throw std::runtime_error("cannot create a scratch file for an FST trace in " + path);
+    ::close(fd);
+    return path;
+  }
+
+  // The FST writer reports no write error: its file is read back and must hold every variable
+  // and the last time written (a full disk leaves it short).
+  void checkWritten() {
+    void* reader = fstReaderOpen(scratch_.c_str());
+    if (!reader)
+      file_.fail("the FST writer left an unreadable file '" + scratch_ +
+                 "' (temporary folder full?)");
+    const bool whole = fstReaderGetVarCount(reader) == variables_.size() &&
+                       fstReaderGetEndTime(reader) == endTime_;
+    fstReaderClose(reader);
+    if (!whole)
+      file_.fail("the FST writer left an incomplete file '" + scratch_ +
+                 "' (temporary folder full?)");
+  }
+
+  OutputFile file_;
+  std::string scratch_;
+  void* fst_ = nullptr;
+  uint64_t endTime_ = 0;
   struct Variable {
     int width;
     fstHandle handle;

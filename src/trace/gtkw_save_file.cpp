@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <stdexcept>
 #include <tuple>
 
+#include "base/output_file.h"
 #include "trace/trace_writer.h"
 
 namespace rtu {
@@ -74,10 +74,10 @@ bool isFst(const std::string& tracePath) {
 std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSignal& signal) {
   std::filesystem::path path(tracePath);
   path.replace_extension("." + signal.name + ".txt");
-  std::ofstream out(path);
+  OutputFile file(path.string());
   for (size_t value = 0; value < signal.valueNames.size(); ++value)
-    out << bitString(value, signal.width) << ' ' << signal.valueNames[value] << '\n';
-  if (!out) throw std::runtime_error("cannot write GTKWave translate filter " + path.string());
+    file.stream() << bitString(value, signal.width) << ' ' << signal.valueNames[value] << '\n';
+  file.commit();
   return std::filesystem::absolute(path).string();
 }
 
@@ -90,8 +90,8 @@ std::string saveFilePath(const std::string& tracePath) {
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
                    uint64_t markerPs) {
   const std::string path = saveFilePath(tracePath);
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write GTKWave save file " + path);
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
   out << "*-20.000000 " << markerPs;
   for (int i = 0; i < 26; ++i) out << " -1";           // no named markers
@@ -123,7 +123,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
     }
     out << kGroupEnd << "\n-" << module << '\n';
   }
-  if (!out) throw std::runtime_error("error writing GTKWave save file " + path);
+  file.commit();
 }
 
 }  // namespace rtu

@@ -31,8 +31,7 @@ TimelineWriter::TimelineWriter(TimelineOptions options, uint64_t periodPs, State
   if (options_.fromCycle >= options_.toCycle)
     throw std::invalid_argument("timeline window is empty");
   if (options_.countOnly) return;
-  file_.open(options_.path);
-  if (!file_) throw std::runtime_error("cannot write timeline file " + options_.path);
+  file_.emplace(options_.path);
 }
 
 void TimelineWriter::declared(size_t signal, const std::string& scope,
@@ -150,7 +149,7 @@ void TimelineWriter::writeHeader() {
   const size_t width = std::to_string(cores_.empty() ? 0 : cores_.size() - 1).size();
   const std::string begin = "{\"traceEvents\":[\n";
   bytes_ += begin.size();
-  if (!options_.countOnly) file_ << begin;
+  if (!options_.countOnly) file_->stream() << begin;
   event(R"({"ph":"M","pid":1,"name":"process_name","args":{"name":"rtu"}})");
   for (size_t i = 0; i < cores_.size(); ++i) {
     std::string index = std::to_string(i);
@@ -168,7 +167,7 @@ void TimelineWriter::event(const std::string& json) {
   const std::string line = (firstEvent_ ? "" : ",\n") + json;
   firstEvent_ = false;
   bytes_ += line.size();
-  if (!options_.countOnly) file_ << line;
+  if (!options_.countOnly) file_->stream() << line;
 }
 
 bool TimelineWriter::inWindow(uint64_t cycle) const {
@@ -189,9 +188,8 @@ void TimelineWriter::finished() {
   const std::string end = "\n],\"displayTimeUnit\":\"ns\"}\n";
   bytes_ += end.size();
   if (options_.countOnly) return;
-  file_ << end;
-  file_.close();
-  if (!file_) throw std::runtime_error("error writing timeline file " + options_.path);
+  file_->stream() << end;
+  file_->commit();
 }
 
 }  // namespace rtu

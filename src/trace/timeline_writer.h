@@ -14,11 +14,12 @@
 // picosecond. Events carry nothing else, to keep the file small (docs/waveforms.md).
 
 #include <cstdint>
-#include <fstream>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "base/output_file.h"
 #include "rtu/core_kind.h"
 #include "trace/trace_listener.h"
 
@@ -85,7 +86,7 @@ class TimelineWriter : public TraceListener {
   TimelineOptions options_;
   uint64_t periodPs_;
   StateVocabulary states_;
-  std::ofstream file_;
+  std::optional<OutputFile> file_;  // none when only counting
   uint64_t bytes_ = 0;
   std::vector<SignalRole> roles_;
   std::vector<Channel> channels_;

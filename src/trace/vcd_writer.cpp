@@ -1,10 +1,11 @@
 // Value change dump (IEEE 1364), the text format every waveform viewer reads. Named values are
 // written as numbers; the save file names them through a translate filter (gtkw_save_file.h).
 
-#include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "base/counting_stream.h"
+#include "base/output_file.h"
 #include "trace/trace_writer.h"
 
 namespace rtu {
@@ -23,9 +24,8 @@ std::string identifierCode(size_t index) {
 class VcdWriter : public TraceWriter {
  public:
   // `counter` non-null: writes into it instead of the file at `path`, to count the bytes.
-  VcdWriter(const std::string& path, CountingStream* counter) : path_(path), counter_(counter) {
-    if (!counter_) file_.open(path);
-    if (!out()) throw std::runtime_error("cannot write trace file " + path);
+  VcdWriter(const std::string& path, CountingStream* counter) : counter_(counter) {
+    if (!counter_) file_.emplace(path);
     out() << "$timescale 1ps $end\n";
   }
   uint64_t bytes() const override { return counter_ ? counter_->count() : 0; }
@@ -51,17 +51,14 @@ class VcdWriter : public TraceWriter {
       out() << 'b' << (known ? bitString(value, width) : std::string("x")) << ' ' << code << '\n';
   }
   void close() override {
-    if (counter_) return;
-    file_.close();
-    if (!file_) throw std::runtime_error("error writing trace file " + path_);
+    if (file_) file_->commit();
   }
 
  private:
-  std::ostream& out() { return counter_ ? static_cast<std::ostream&>(*counter_) : file_; }
+  std::ostream& out() { return counter_ ? static_cast<std::ostream&>(*counter_) : file_->stream(); }
 
-  std::string path_;
   CountingStream* counter_;
-  std::ofstream file_;
+  std::optional<OutputFile> file_;
   struct Variable {
     int width;
     std::string code;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/input_file.h"
+#include "base/output_file.h"
 
 namespace rtu {
 namespace {
@@ -236,8 +237,8 @@ void writeBinvox(const std::string& path, int dim,
   if (dim < 1 || dim > kMaxBinvoxDim)
     throw std::invalid_argument("binvox dim must be 1 to " + std::to_string(kMaxBinvoxDim) +
                                 ", got " + std::to_string(dim));
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot create binvox file '" + path + "'");
+  OutputFile file(path);
+  std::ostream& out = file.stream();
   out << "#binvox 1\ndim " << dim << ' ' << dim << ' ' << dim
       << "\ntranslate 0 0 0\nscale 1\ndata\n";
 
@@ -258,7 +259,7 @@ void writeBinvox(const std::string& path, int dim,
     }
   }
   endRun();
-  if (!out) throw std::runtime_error("cannot write binvox file '" + path + "'");
+  file.commit();
 }
 
 }  // namespace rtu
