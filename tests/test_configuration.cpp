@@ -250,3 +250,26 @@ TEST_CASE("A statistics file is a configuration: its config object", "[config]")
   CHECK_FALSE(rerun.values().rtu.memory.ideal);
   CHECK(rerun.source("cores") == ConfigSource::File);
 }
+
+TEST_CASE("Numbers that would change value are refused\\, not read leniently", "[config]") {
+  Configuration c;
+  const auto set = [&c](const std::string& key, const std::string& text) {
+    c.set(key, text, ConfigSource::CommandLine);
+  };
+  CHECK_THROWS_WITH(set("cores", "010"), Contains("cores: '010' has a leading zero"));
+  CHECK_THROWS_WITH(set("cores", "0x4"), Contains("cores: '0x4' is not a decimal number"));
+  // 2^53 + 1 read as a double is 2^53, inside scene.seed's range: it was silently rounded.
+  CHECK_THROWS_WITH(set("scene.seed", "9007199254740993"),
+                    Contains("'9007199254740993' is beyond 2^53"));
+  set("scene.seed", "9007199254740992");
+  CHECK(c.values().scene.seed == 9007199254740992ull);
+  set("cores", "10");
+  CHECK(c.values().rtu.cores == 10);
+  // An array given to a setting of one value was read as its elements joined: [4] as 4.
+  CHECK_THROWS_WITH(c.loadText("cores = [4]", "toml", "'c.toml'", ConfigSource::File),
+                    "'c.toml': cores: an array is given where the setting takes one value");
+  CHECK_THROWS_WITH(c.loadText("{\"cores\": [4]}", "json", "'c.json'", ConfigSource::File),
+                    "'c.json': cores: an array is given where the setting takes one value");
+  c.loadText("camera.up = [0, 0, 1]", "toml", "'c.toml'", ConfigSource::File);
+  CHECK(c.values().camera.up.z == 1.0);
+}

@@ -200,3 +200,20 @@ TEST_CASE("Result flags: bit 0 stack overflow, bit 1 t overflow, bit 2 below res
   unknown[7] = 8u;
   CHECK_THROWS_WITH(decodeResultRecords(unknown), Catch::Contains("unknown flag bits"));
 }
+
+TEST_CASE("A camera that makes no rays is refused naming its setting", "[camera]") {
+  Camera camera;
+  camera.up = {0.0, 0.0, 0.0};  // rendered an empty frame with exit 0
+  CHECK_THROWS_WITH(camera.validate(), "camera.up must be a non-zero vector, got 0,0,0");
+  camera.up = glm::dvec3(camera.lookAt - camera.position) * 3.0;
+  CHECK_THROWS_WITH(camera.validate(), Catch::Contains("camera.up (") &&
+                                           Catch::Contains(") is parallel to the view direction"));
+  camera.up = {0.0, 1.0, 0.0};
+  camera.position = {-1e308, 0.0, 0.0};
+  camera.lookAt = {1e308, 0.0, 0.0};
+  CHECK_THROWS_WITH(camera.validate(),
+                    Catch::Contains("camera.position and camera.look_at are too far apart"));
+  camera.lookAt = camera.position;
+  CHECK_THROWS_WITH(camera.validate(),
+                    Catch::Contains("camera.position and camera.look_at coincide"));
+}

@@ -99,12 +99,36 @@ TEST_CASE("Meshes that crashed, hung or exhausted rtusim now give an error namin
   expectError("no-end-header.ply", "PLY header has no end_header line");
   expectError("binary-end-header-without-newline.ply", "PLY header has no end_header line");
   expectError("binary-0xff-before-end-header.ply", "PLY header line 8 is not text");
-  expectError("face-of-0-vertices.ply", "assimp crashed (SIGABRT)");
-  expectError("face-of-minus-1-vertices.ply", "assimp crashed (SIGABRT)");
-  expectError("face-of-4294967295-vertices.ply", "assimp needed more than");
+  expectError("face-of-0-vertices-alone.ply", "assimp crashed (SIGABRT)");
+  // Refused by the ASCII body check before assimp (which crashed, or asked for 32 GiB).
+  expectError("face-of-0-vertices.ply", "'face' element 1 of the 1 declared (body line 4)");
+  expectError("face-of-minus-1-vertices.ply", "'face' element 1 of the 1 declared (body line 4)");
+  expectError("face-of-4294967295-vertices.ply", "'face' element 1 of the 1 declared");
   expectError("element-count-not-a-number.ply", "element 'vertex' has the count '3x'");
   expectError("element-count-beyond-the-file.ply",
               "declares 1000000 'face' elements but only 50 bytes follow the header");
+}
+
+TEST_CASE("An ASCII PLY holds the elements its header declares\\, each on its line", "[mesh]") {
+  const auto problem = [](const std::string& name) {
+    const std::string path = kMalformed + "ply/" + name;
+    try {
+      rtu::loadTriangleMesh(path);
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("loaded");
+  };
+  // assimp read these as other models: a face as the fifth vertex, or a vertex as a face.
+  CHECK(problem("more-vertices-declared-than-held.ply") ==
+        "mesh '" + kMalformed +
+            "ply/more-vertices-declared-than-held.ply': PLY header does not match the data: "
+            "'vertex' element 5 of the 5 declared (body line 5) has 4 values");
+  CHECK_THAT(problem("more-faces-declared-than-held.ply"),
+             Contains("declares more data than the file holds: 'face' element 3 of the 3 "
+                      "declared is missing"));
+  CHECK_THAT(problem("fewer-vertices-declared-than-held.ply"),
+             Contains("'face' element 1 of the 1 declared (body line 4) has 3 values"));
 }
 
 TEST_CASE("Mesh loading limits come from the input size or the environment", "[mesh]") {
@@ -130,4 +154,11 @@ TEST_CASE("The PLY header check lets UTF-8 comments through", "[mesh]") {
       rtu::loadTriangleMesh(std::string(RTUSIM_TEST_DATA) + "/meshes/tetrahedron-utf8-comment.ply");
   CHECK(mesh.triangles.size() == 4);
   CHECK(mesh.vertices.size() == 4);
+}
+
+TEST_CASE("OBJ values that are not decimal numbers are refused\\, not read as 0", "[mesh]") {
+  // assimp read the hexadecimal float 0x1p3 (8) as 0: a flat triangle of another model.
+  const std::string path = kMalformed + "obj/hexadecimal-float.obj";
+  CHECK_THROWS_WITH(rtu::loadTriangleMesh(path),
+                    "mesh '" + path + "', line 2: '0x1p3' is not a decimal number");
 }

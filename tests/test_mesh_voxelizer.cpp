@@ -198,7 +198,7 @@ TEST_CASE("loadTriangleMesh applies nested node transforms", "[mesh]") {
 TEST_CASE("loadTriangleMesh rejects bad files with the file and the problem", "[mesh]") {
   SECTION("missing file") {
     CHECK_THROWS_WITH(loadTriangleMesh("/nonexistent/model.obj"),
-                      Contains("'/nonexistent/model.obj' does not exist"));
+                      Contains("cannot open mesh file '/nonexistent/model.obj'"));
   }
   SECTION("unsupported format") {
     const TempFile file("garbage.unknownformat", std::string("\x01\x02\x03 not a mesh"));

@@ -83,7 +83,7 @@ TEST_CASE("Scene file errors name the file, the line and the key") {
   CHECK_THAT(errorOf("[models.ball]\nprocedural = \"spiral\"\n" + kCamera + kInstance),
              Catch::Contains("models.ball.procedural"));
   CHECK_THAT(errorOf("[models.ball]\nmesh = \"missing.obj\"\n" + kCamera + kInstance),
-             Catch::Contains("models.ball.mesh") && Catch::Contains("cannot read"));
+             Catch::Contains("models.ball.mesh") && Catch::Contains("cannot open"));
   CHECK_THAT(
       errorOf("[models.ball]\nprocedural = \"sphere\"\nsvo = \"x.svo\"\n" + kCamera + kInstance),
       Catch::Contains("models.ball") && Catch::Contains("exactly one"));

@@ -4,6 +4,7 @@
 #include "app/commands.h"
 #include "app/schema_flags.h"
 #include "kinds/svo/accuracy.h"
+#include "kinds/svo/stack_check.h"
 
 namespace rtu {
 
@@ -40,7 +41,10 @@ void addAccuracyCommand(CLI::App& app) {
     const GoldenConfig golden = frame.rtu.coreConfig<SvoKind>();
     golden.format.validate();
     frame.camera.validate();
+    checkBuiltSceneFitsStack(frame.scene, golden.stackFrames, frame.allowStackOverflow);
     const Scene scene = loadScene(frame.scene);
+    checkRootDepths(scene.image, {scene.image.root}, golden.stackFrames, frame.allowStackOverflow,
+                    sceneSource(frame.scene));
     const WordMemory memory = scene.image.memory();
     const std::vector<Ray> rays = frameRays(frame.camera);
     const AccuracyReport report =

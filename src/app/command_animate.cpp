@@ -9,6 +9,7 @@
 #include "app/animated_image.h"
 #include "app/commands.h"
 #include "app/frame_images.h"
+#include "app/input_file_check.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/scene_shading.h"
@@ -187,7 +188,7 @@ void addAnimateCommand(CLI::App& app) {
   auto request = addConfigOptions(*command, kUseModel | kUseArithmetic);
   command->add_option("--scene-file", options->sceneFile, "scene description (TOML)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   command
       ->add_option("--frames", options->overrides.frames, "frames to render (default: the file's)")
       ->check(CLI::Range(1, 100000));

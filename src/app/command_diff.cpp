@@ -1,6 +1,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/input_file_check.h"
 #include "app/plot_script.h"
 
 namespace rtu {
@@ -13,7 +14,7 @@ void addDiffCommand(CLI::App& app) {
   command->add_option("inputs", diff->inputs, "A and B: two .json or two .jsonl files")
       ->required()
       ->expected(2)
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   command
       ->add_option("--stat", diff->options["--stat"],
                    "only these statistics (repeatable; a JSON path such as fps or "

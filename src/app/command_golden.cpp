@@ -43,7 +43,7 @@ void goldenSvo(const RunConfig& settings, const GoldenOptions& options) {
                                golden.epsilon);
   warnSkippedRecords(settings.rays.empty() ? "job buffer" : "ray buffer",
                      settings.rays.empty() ? settings.jobs : settings.rays, skipped, std::cout);
-  checkInputTrees(image, jobs, golden.stackFrames, /*allowOverflow=*/true, settings);
+  checkInputTrees(image, jobs, golden.stackFrames, settings.allowStackOverflow, settings);
   GoldenModel model(image.memory(), golden);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<TraversalResult> results = model.traceAll(jobs);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/input_file_check.h"
 #include "app/plot_script.h"
 
 namespace rtu {
@@ -48,7 +49,7 @@ void addPlotCommands(CLI::App& app) {
   plot->add_option("inputs", plotRows->inputs,
                    "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   plotRows->values["--out-dir"] = "plots";
   plot->add_option("--out-dir", plotRows->values["--out-dir"], "folder for the plots")
       ->capture_default_str();
@@ -73,7 +74,7 @@ void addPlotCommands(CLI::App& app) {
       ->add_option("inputs", reportRows->inputs,
                    "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   reportRows->values["--out"] = "report.html";
   report->add_option("--out", reportRows->values["--out"], "HTML file")->capture_default_str();
   addRowOptions(*report, *reportRows);
@@ -87,7 +88,7 @@ void addPlotCommands(CLI::App& app) {
   best->add_option("inputs", bestRows->inputs,
                    "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   addRowOptions(*best, *bestRows);
   addObjectiveOptions(*best, *bestRows);
   best->callback([bestRows] { runPlotScript("best", bestRows->arguments()); });

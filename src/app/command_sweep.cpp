@@ -9,6 +9,7 @@
 #include <set>
 
 #include "app/commands.h"
+#include "app/input_file_check.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/schema_flags.h"
@@ -195,7 +196,7 @@ void addSweepCommand(CLI::App& app) {
   command
       ->add_option("--sweep-file", options->sweepFile,
                    "TOML sweep: [grid] key = [values], [[configs]] explicit configurations")
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   command
       ->add_option("--out", options->out,
                    "rows as CSV; JSON lines beside it (.jsonl). Rows already there are kept "

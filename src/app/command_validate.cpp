@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/input_file_check.h"
 #include "app/placement_flags.h"
 #include "base/binary_file.h"
 #include "kinds/bih/bih_file.h"
@@ -72,7 +73,7 @@ void addValidateCommand(CLI::App& app) {
       "check a memory image: an SVO, or a BVH, BIH or k-d tree (recognised by its header)");
   command->add_option("file", options->file, ".svo, .bvh, .bih or .kd file")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   command->add_option("--root", options->root, "SVO: word address of the root descriptor")
       ->capture_default_str()
       ->check(kNotNegative);

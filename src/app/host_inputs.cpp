@@ -15,7 +15,8 @@ namespace {
 void checkRootTrees(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
                     bool allowOverflow, const RunConfig& settings) {
   try {
-    checkRootDepths(image, std::move(roots), stackFrames, allowOverflow);
+    checkRootDepths(image, std::move(roots), stackFrames, allowOverflow,
+                    "SVO image '" + settings.scene.svoFile + "'");
   } catch (const SvoFormatError& error) {
     // The tree is broken, or a record's root points outside it: either file may be at fault.
     const std::string records = settings.rays.empty() ? "job buffer '" + settings.jobs + "'"

@@ -26,7 +26,7 @@ constexpr size_t kShownSkipped = 5;
 void warnSkippedRecords(const std::string& what, const std::string& path,
                         const std::vector<SkippedRecord>& skipped, std::ostream& out);
 
-// checkStackDepth (stack_check.h) on the trees the jobs start from; a malformed tree is an
+// checkRootDepths (stack_check.h) on the trees the jobs start from; a malformed tree is an
 // error naming the SVO image and the job or ray buffer of `settings` that points into it.
 void checkInputTrees(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
                      bool allowOverflow, const RunConfig& settings);

@@ -2,11 +2,13 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
 #include "base/output_file.h"
+#include "base/work_phase.h"
 #include "config/configuration.h"
 
 int main(int argc, char** argv) {
@@ -38,6 +40,14 @@ int main(int argc, char** argv) {
       status = app.exit(error);
     }
     rtu::checkStandardOutput();  // `rtusim config --dump > /dev/full` fails
+  } catch (const std::bad_alloc&) {
+    // The allocation names nothing: say which command ran out of memory, doing what.
+    const auto commands = app.get_subcommands();
+    const std::string& phase = rtu::currentWorkPhase();
+    std::cerr << "rtusim: error: " << (commands.empty() ? "rtusim" : commands[0]->get_name())
+              << " ran out of memory" << (phase.empty() ? "" : " while " + phase)
+              << " (std::bad_alloc)\n";
+    return 1;
   } catch (const std::exception& error) {
     std::cerr << "rtusim: error: " << error.what() << "\n";
     return 1;

@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "app/input_file_check.h"
+
 namespace rtu {
 namespace {
 
@@ -60,7 +62,7 @@ std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses
   command
       .add_option("--config", request->files,
                   "configuration file(s), TOML or JSON, applied in order")
-      ->check(CLI::ExistingFile)
+      ->check(regularInputFile())
       ->group("Configuration");
   command
       .add_option("--set", request->assignments,

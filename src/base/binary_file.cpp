@@ -4,6 +4,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "base/input_file.h"
+#include "base/work_phase.h"
+
 namespace rtu {
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
@@ -15,15 +18,13 @@ constexpr size_t kReadChunkBytes = size_t{1} << 20;
 
 RecordFileReader::RecordFileReader(const std::string& path, size_t recordBytes,
                                    const std::string& what)
-    : in_(path, std::ios::binary | std::ios::ate), path_(path), what_(what) {
-  if (!in_) throw std::runtime_error("cannot open " + what + " '" + path + "'");
-  const std::streamoff size = in_.tellg();
-  if (size < 0) throw std::runtime_error("cannot read " + what + " '" + path + "'");
-  if (size % static_cast<std::streamoff>(recordBytes) != 0)
+    : path_(path), what_(what) {
+  uint64_t size = 0;
+  in_ = openInputFile(path, what, size);
+  if (size % recordBytes != 0)
     throw std::runtime_error(what + " '" + path + "' has " + std::to_string(size) +
                              " bytes, not a multiple of its " + std::to_string(recordBytes) +
                              "-byte records");
-  in_.seekg(0);
   recordWords_ = recordBytes / sizeof(uint32_t);
   records_ = recordsLeft_ = static_cast<size_t>(size) / recordBytes;
   chunk_.resize(std::max<size_t>(1, kReadChunkBytes / recordBytes) * recordWords_);
@@ -62,6 +63,13 @@ void WordFileWriter::close() {
 std::vector<uint32_t> readWordFile(const std::string& path, size_t recordBytes,
                                    const std::string& what) {
   RecordFileReader reader(path, recordBytes, what);
+  // Images are addressed by 32-bit word addresses: a larger file is no image.
+  if (reader.records() * recordBytes / sizeof(uint32_t) > kMaxImageWords)
+    throw std::runtime_error(what + " '" + path + "' has " +
+                             std::to_string(reader.records() * recordBytes) +
+                             " bytes, more than the 2^32 words a 32-bit word address reaches");
+  const WorkPhase phase("reading " + what + " '" + path + "' (" +
+                        std::to_string(reader.records() * recordBytes) + " bytes)");
   std::vector<uint32_t> words;
   words.reserve(reader.records() * recordBytes / sizeof(uint32_t));
   size_t count = 0;

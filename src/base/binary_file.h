@@ -49,6 +49,9 @@ class WordFileWriter {
   size_t used_ = 0;
 };
 
+constexpr uint64_t kMaxImageWords = uint64_t{1} << 32;
+
+// A whole file of 32-bit words, at most kMaxImageWords, read after the checks of RecordFileReader.
 std::vector<uint32_t> readWordFile(const std::string& path, size_t recordBytes,
                                    const std::string& what);
 void writeWordFile(const std::string& path, const std::vector<uint32_t>& words);

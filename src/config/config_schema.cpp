@@ -1,8 +1,10 @@
 #include "config/config_schema.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
@@ -46,6 +48,24 @@ std::string formatReal(T value) {
   return text;
 }
 
+// Integers are decimal and exact: "010" is not read as 10 (nor as octal 8), "0x10" not as 16, and
+// a value beyond 2^53, where a double holds integers no longer exactly, is refused, not rounded
+// (9007199254740993 became 9007199254740992).
+void checkIntegerText(const std::string& value, double number, const std::string& key) {
+  const size_t digits = value.find_first_not_of("+-");
+  if (value.find_first_of("xX") != std::string::npos)
+    fail(key, "'" + value + "' is not a decimal number");
+  if (digits != std::string::npos && value[digits] == '0' && digits + 1 < value.size() &&
+      std::isdigit(static_cast<unsigned char>(value[digits + 1])))
+    fail(key, "'" + value + "' has a leading zero (octal is not read: write it without)");
+  constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
+  const bool plain = value.find_first_not_of("+-0123456789") == std::string::npos;
+  if (std::fabs(number) > kExactIntegers ||
+      (plain && std::to_string(static_cast<long long>(number)) !=
+                    std::to_string(std::strtoll(value.c_str(), nullptr, 10))))
+    fail(key, "'" + value + "' is beyond 2^53, where it would be rounded");
+}
+
 double parseNumber(const std::string& text, const std::string& key, bool integer) {
   const std::string value = trim(text);
   size_t used = 0;
@@ -58,6 +78,7 @@ double parseNumber(const std::string& text, const std::string& key, bool integer
   if (value.empty() || used != value.size() || !std::isfinite(number))
     fail(key, "'" + text + "' is not a number");
   if (integer && number != std::floor(number)) fail(key, "'" + text + "' is not a whole number");
+  if (integer) checkIntegerText(value, number, key);
   return number;
 }
 

@@ -1,13 +1,14 @@
 #include "config/configuration.h"
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 
 #include <toml++/toml.h>
 
+#include "base/input_file.h"
+#include "base/nesting_depth.h"
 #include "embedded_presets.h"
 #include "rtusim_version.h"
 
@@ -25,12 +26,20 @@ std::string realText(double value) {
 }
 
 // A TOML leaf as the text Setting::assign reads: numbers, strings, booleans, [x, y, z].
+// An array is the x, y, z of a vector setting; given to another (`cores = [4]`) it was read as
+// its elements joined by commas, so one element passed as the value.
+void requireVectorSetting(const std::string& key) {
+  if (findSetting(key).kind != SettingKind::Vector)
+    throw std::invalid_argument(key + ": an array is given where the setting takes one value");
+}
+
 std::string tomlLeafText(const toml::node& node, const std::string& key) {
   if (const auto* s = node.as_string()) return s->get();
   if (const auto* i = node.as_integer()) return std::to_string(i->get());
   if (const auto* f = node.as_floating_point()) return realText(f->get());
   if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
   if (const auto* a = node.as_array()) {
+    requireVectorSetting(key);
     std::string text;
     for (const toml::node& element : *a)
       text += (text.empty() ? "" : ",") + tomlLeafText(element, key);
@@ -56,6 +65,7 @@ std::string jsonLeafText(const nlohmann::json& value, const std::string& key) {
   if (value.is_number_integer()) return value.dump();
   if (value.is_number()) return realText(value.get<double>());
   if (value.is_array()) {
+    requireVectorSetting(key);
     std::string text;
     for (const auto& element : value)
       text += (text.empty() ? "" : ",") + jsonLeafText(element, key);
@@ -127,12 +137,14 @@ void Configuration::applyPreset(const std::string& name) {
 }
 
 void Configuration::loadFile(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw std::invalid_argument("cannot read configuration file '" + path + "'");
-  std::stringstream text;
-  text << file.rdbuf();
+  std::string text;
+  try {
+    text = readInputFile(path, "configuration file", kMaxSettingsFileBytes);
+  } catch (const std::runtime_error& error) {
+    throw std::invalid_argument(error.what());
+  }
   const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
-  loadText(text.str(), json ? "json" : "toml", "'" + path + "'", ConfigSource::File);
+  loadText(text, json ? "json" : "toml", "'" + path + "'", ConfigSource::File);
 }
 
 void Configuration::loadText(const std::string& text, const std::string& format,
@@ -140,6 +152,7 @@ void Configuration::loadText(const std::string& text, const std::string& format,
   std::vector<std::pair<std::string, std::string>> entries;
   try {
     if (format == "json") {
+      checkJsonNesting(text);
       const nlohmann::json json = nlohmann::json::parse(text);
       // A statistics file (--stats of render or replay, a sweep row) holds its run's configuration
       // as its "config" object, which no setting's key starts: it reruns that run.
@@ -147,6 +160,7 @@ void Configuration::loadText(const std::string& text, const std::string& format,
           json.is_object() && json.contains("config") && json["config"].is_object();
       flattenJson(statistics ? json["config"] : json, "", entries);
     } else {
+      checkTomlNesting(text);
       flattenToml(toml::parse(text, origin), "", entries);
     }
     for (const auto& [key, value] : entries) set(key, value, source);

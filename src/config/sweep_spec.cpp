@@ -6,6 +6,9 @@
 
 #include <toml++/toml.h>
 
+#include "base/input_file.h"
+#include "base/nesting_depth.h"
+
 namespace rtu {
 namespace {
 
@@ -61,7 +64,9 @@ void SweepSpec::addGrid(const std::string& argument) {
 
 void SweepSpec::loadFile(const std::string& path) {
   try {
-    const toml::table file = toml::parse_file(path);
+    const std::string text = readInputFile(path, "sweep file", kMaxSettingsFileBytes);
+    checkTomlNesting(text);
+    const toml::table file = toml::parse(text, path);
     for (const auto& [name, node] : file) {
       const std::string section(name.str());
       if (section == "grid" && node.is_table()) {
@@ -93,6 +98,8 @@ void SweepSpec::loadFile(const std::string& path) {
     throw std::invalid_argument("sweep file '" + path + "': " + std::string(error.description()));
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument("sweep file '" + path + "': " + error.what());
+  } catch (const std::runtime_error& error) {  // from readInputFile, naming the file
+    throw std::invalid_argument(error.what());
   }
 }
 

@@ -75,9 +75,9 @@ struct FrameSceneOf {
 template <>
 struct FrameSceneOf<SvoKind> {
   static FrameScene load(const RunConfig& settings) {
-    if (settings.model != ModelKind::Golden)  // a deep build takes minutes: refused before it
-      checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
-                               settings.allowStackOverflow);
+    // A deep build takes minutes: refused before it.
+    checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                             settings.allowStackOverflow);
     Scene built = loadScene(settings.scene);
     FrameScene scene;
     scene.stackNeeded = descriptorDepths(built.image, {built.image.root}).front();
@@ -88,10 +88,9 @@ struct FrameSceneOf<SvoKind> {
     return scene;
   }
   static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings) {
-    if (settings.model != ModelKind::Golden)
-      checkNeededFrames({scene.entry}, {scene.stackNeeded},
-                        settings.rtu.coreConfig<SvoKind>().stackFrames,
-                        settings.allowStackOverflow);
+    checkNeededFrames({scene.entry}, {scene.stackNeeded},
+                      settings.rtu.coreConfig<SvoKind>().stackFrames, settings.allowStackOverflow,
+                      sceneSource(settings.scene));
     const std::vector<TValueRecord> jobs =
         makeFrameJobs(settings.camera, scene.entry, settings.epsilon);
     return {jobs.begin(), jobs.end()};

@@ -2,9 +2,10 @@
 
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "base/input_file.h"
 
 namespace rtu {
 namespace {
@@ -100,11 +101,8 @@ ObjMesh parseObjExact(const std::string& text, const std::string& name) {
 }
 
 ObjMesh readObjExact(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error(path + ": cannot open");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseObjExact(text.str(), path);
+  // Read whole like the mesh loader's answer; bounded as a word image is.
+  return parseObjExact(readInputFile(path, "OBJ file", uint64_t{16} << 30), path);
 }
 
 }  // namespace rtu

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -19,10 +20,13 @@ struct HeaderProblem {
 struct PlyElement {
   std::string name;
   uint64_t count;
+  // Its properties in order: true for a list (a count, then that many values).
+  std::vector<bool> lists;
 };
 
 struct PlyHeader {
   std::vector<PlyElement> elements;
+  bool ascii = false;
   size_t bytes = 0;  // up to and including the end_header line
 };
 
@@ -51,6 +55,16 @@ void readHeaderLine(const std::string& line, size_t lineNumber, PlyHeader& heade
   for (char c : line)
     if (!isHeaderText(c, comment))
       throw HeaderProblem{"line " + std::to_string(lineNumber) + " is not text"};
+  if (keyword == "format") {
+    std::string format;
+    words >> format;
+    header.ascii = format == "ascii";
+  }
+  if (keyword == "property" && !header.elements.empty()) {
+    std::string type;
+    words >> type;
+    header.elements.back().lists.push_back(type == "list");
+  }
   PlyElement element;
   if (keyword != "element") return;
   words >> element.name >> count;
@@ -91,6 +105,55 @@ void checkElementCounts(const PlyHeader& header, uint64_t fileBytes) {
                           " bytes follow the header"};
 }
 
+// The values one line of `element` must hold, given the line's words (a list's count among them),
+// or 0 when a list's count is not a number.
+uint64_t valuesOnLine(const PlyElement& element, const std::vector<std::string>& words) {
+  uint64_t expected = 0;
+  for (const bool list : element.lists) {
+    if (!list) {
+      ++expected;
+      continue;
+    }
+    uint64_t length = 0;
+    if (expected >= words.size() || !parseCount(words[expected], length)) return 0;
+    expected += 1 + length;
+  }
+  return expected;
+}
+
+// An ASCII body holds each element on a line of its own. A header declaring more vertices than
+// the body holds made assimp read faces as vertices, silently another model (issue 33): every
+// element's lines are counted and their values checked against its properties.
+void checkAsciiBody(std::istream& body, const PlyHeader& header) {
+  std::string line;
+  uint64_t lineNumber = 0;
+  const auto nextLine = [&](std::vector<std::string>& words) {
+    while (std::getline(body, line)) {
+      ++lineNumber;
+      std::istringstream in(line);
+      words.assign(std::istream_iterator<std::string>(in), std::istream_iterator<std::string>());
+      if (!words.empty()) return true;
+    }
+    return false;
+  };
+  std::vector<std::string> words;
+  for (const PlyElement& element : header.elements) {
+    for (uint64_t i = 0; i < element.count; ++i) {
+      const std::string which = "'" + element.name + "' element " + std::to_string(i + 1) +
+                                " of the " + std::to_string(element.count) + " declared";
+      if (!nextLine(words))
+        throw HeaderProblem{"declares more data than the file holds: " + which + " is missing"};
+      if (valuesOnLine(element, words) != words.size())
+        throw HeaderProblem{"does not match the data: " + which + " (body line " +
+                            std::to_string(lineNumber) + ") has " + std::to_string(words.size()) +
+                            " values"};
+    }
+  }
+  if (nextLine(words))
+    throw HeaderProblem{"declares less data than the file holds: body line " +
+                        std::to_string(lineNumber) + " follows the last element"};
+}
+
 }  // namespace
 
 void checkPlyHeader(const std::string& path) {
@@ -103,7 +166,13 @@ void checkPlyHeader(const std::string& path) {
   start.resize(static_cast<size_t>(file.gcount()));
   if (start.compare(0, 3, "ply") != 0 && start.compare(0, 3, "PLY") != 0) return;  // as assimp
   try {
-    checkElementCounts(parseHeader(start), fileBytes);
+    const PlyHeader header = parseHeader(start);
+    checkElementCounts(header, fileBytes);
+    if (header.ascii) {
+      file.clear();
+      file.seekg(static_cast<std::streamoff>(header.bytes));
+      checkAsciiBody(file, header);
+    }
   } catch (const HeaderProblem& problem) {
     throw std::runtime_error("mesh '" + path + "': PLY header " + problem.text);
   }

@@ -9,7 +9,9 @@ namespace rtu {
 // When the file at `path` starts with "ply" or "PLY" (assimp's magic numbers), requires its
 // header to be printable ASCII (UTF-8 in comments), to end with an `end_header` line within the
 // first 64 KiB, and every `element NAME COUNT` to have a decimal count no larger than the bytes
-// after the header (each element takes at least one).
+// after the header (each element takes at least one). An ASCII file's body must hold exactly the
+// elements declared, one a line, each with the values its properties take (a list's count read
+// from the line): a header declaring more vertices than held was read as another model.
 // Throws std::runtime_error naming `path` and the problem. Other files pass unchecked.
 void checkPlyHeader(const std::string& path);
 

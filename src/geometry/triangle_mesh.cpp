@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "base/input_file.h"
 #include "base/plugin_loader.h"
+#include "geometry/obj_number_check.h"
 #include "geometry/ply_header_check.h"
 
 namespace rtu {
@@ -115,9 +117,9 @@ ProcessLimits meshLoadLimits(uint64_t fileBytes) {
 }
 
 TriangleMesh loadTriangleMesh(const std::string& path, const ProcessLimits& limits) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error("mesh file '" + path + "' does not exist");
+  inputFileBytes(path, "mesh file");
   checkPlyHeader(path);
+  checkObjNumbers(path);
   std::string answer;
   try {
     answer = runIsolated([&] { return loadWithAssimp(path); }, limits);
@@ -133,9 +135,7 @@ TriangleMesh loadTriangleMesh(const std::string& path, const ProcessLimits& limi
 }
 
 TriangleMesh loadTriangleMesh(const std::string& path) {
-  std::error_code error;
-  const uintmax_t bytes = std::filesystem::file_size(path, error);
-  return loadTriangleMesh(path, meshLoadLimits(error ? 0 : bytes));
+  return loadTriangleMesh(path, meshLoadLimits(inputFileBytes(path, "mesh file")));
 }
 
 }  // namespace rtu

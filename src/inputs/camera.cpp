@@ -6,7 +6,19 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/work_phase.h"
+
 namespace rtu {
+
+namespace {
+
+std::string vectorText(const glm::dvec3& v) {
+  std::ostringstream text;
+  text << v.x << "," << v.y << "," << v.z;
+  return text.str();
+}
+
+}  // namespace
 
 void Camera::validate() const {
   if (width < 1 || height < 1)
@@ -16,12 +28,23 @@ void Camera::validate() const {
     throw std::invalid_argument("image has " + std::to_string(pixelCount()) +
                                 " pixels; job ids have 28 bits, so at most 268435456");
   if (!(verticalFovDegrees > 0.0 && verticalFovDegrees < 180.0))
-    throw std::invalid_argument("field of view must be between 0 and 180 degrees");
+    throw std::invalid_argument("camera.fov must be between 0 and 180 degrees");
+  // Each setting is named: a camera that makes no rays used to surface as "ray origin and
+  // direction must be finite numbers", or as an empty frame (up = 0,0,0).
   const glm::dvec3 forward = lookAt - position;
-  if (glm::length(forward) == 0.0)
-    throw std::invalid_argument("camera position and look-at point coincide");
-  if (glm::length(glm::cross(forward, up)) < 1e-12 * glm::length(forward) * glm::length(up))
-    throw std::invalid_argument("camera view direction is parallel to its up vector");
+  const double upLength = glm::length(up), forwardLength = glm::length(forward);
+  if (!std::isfinite(forwardLength))
+    throw std::invalid_argument("camera.position and camera.look_at are too far apart (" +
+                                vectorText(position) + " and " + vectorText(lookAt) + ")");
+  if (forwardLength == 0.0)
+    throw std::invalid_argument("camera.position and camera.look_at coincide (" +
+                                vectorText(position) + ")");
+  if (!(upLength > 0.0) || !std::isfinite(upLength))
+    throw std::invalid_argument("camera.up must be a non-zero vector, got " + vectorText(up));
+  if (!(glm::length(glm::cross(forward, up)) > 1e-12 * forwardLength * upLength))
+    throw std::invalid_argument("camera.up (" + vectorText(up) +
+                                ") is parallel to the view direction from camera.position to "
+                                "camera.look_at");
 }
 
 Ray Camera::primaryRay(int x, int y) const {
@@ -37,6 +60,8 @@ Ray Camera::primaryRay(int x, int y) const {
 
 std::vector<Ray> frameRays(const Camera& camera) {
   camera.validate();
+  const WorkPhase phase("making the rays of a " + std::to_string(camera.width) + "x" +
+                        std::to_string(camera.height) + " frame");
   std::vector<Ray> rays;
   rays.reserve(camera.pixelCount());
   for (int y = 0; y < camera.height; ++y)

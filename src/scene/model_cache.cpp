@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+
+#include "base/binary_file.h"
+#include "base/input_file.h"
 
 namespace rtu {
 
@@ -20,10 +21,10 @@ uint64_t fnv1a(uint64_t hash, const std::string& bytes) {
   return hash;
 }
 
+// The model's file is hashed whole; the scene file checked it is a regular file, and it is
+// bounded like an image (a file beyond that could not be built).
 std::string fileContents(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw std::runtime_error("cannot read '" + path + "'");
-  return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  return readInputFile(path, "model", kMaxImageWords * sizeof(uint32_t));
 }
 
 // What decides the built image; the format version changes when the builders' output does.

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
 #include <glm/geometric.hpp>
 #include <toml++/toml.h>
 
+#include "base/input_file.h"
+#include "base/nesting_depth.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 
@@ -24,8 +25,17 @@ class SceneFileReader {
 
   SceneDescription read() {
     toml::table root;
+    std::string text;
     try {
-      root = toml::parse_file(path_);
+      text = readInputFile(path_, "scene file", kMaxSettingsFileBytes);
+      checkTomlNesting(text);
+    } catch (const std::runtime_error& error) {  // names the file
+      throw SceneFileError(error.what());
+    } catch (const std::invalid_argument& error) {
+      throw SceneFileError("scene file '" + path_ + "': " + error.what());
+    }
+    try {
+      root = toml::parse(text, path_);
     } catch (const toml::parse_error& error) {
       throw SceneFileError("scene file '" + path_ + "', line " +
                            std::to_string(error.source().begin.line) + ": " +
@@ -132,13 +142,16 @@ class SceneFileReader {
     return *node.as_table();
   }
 
-  // Relative to the scene file's directory; must be a readable file.
+  // Relative to the scene file's directory; must be a regular file.
   std::string inputFile(const toml::table& table, const std::string& prefix,
                         const std::string& key) const {
     std::filesystem::path file = text(table, prefix, key);
     if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
-    if (!std::ifstream(file))
-      fail(table.get(key), join(prefix, key), "cannot read '" + file.string() + "'");
+    try {
+      inputFileBytes(file.string(), "");
+    } catch (const std::runtime_error& error) {
+      fail(table.get(key), join(prefix, key), error.what());
+    }
     return file.string();
   }
 

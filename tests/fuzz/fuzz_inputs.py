@@ -300,9 +300,61 @@ def shuffle_lines(data, rng):
     return b"\n".join(lines)
 
 
-BINARY_MUTATIONS = [flip_bits, overwrite_bytes, splice, truncate, replace_word, replace_number]
+def deep_nesting(data, rng):
+    """A number wrapped in hundreds to tens of thousands of brackets or braces (issue 33: a JSON
+    configuration 20,000 deep overflowed the stack)."""
+    numbers = list(NUMBER.finditer(data))
+    if not numbers:
+        return data
+    match = rng.choice(numbers)
+    depth = rng.choice([100, 1000, 20000])
+    opening, closing = rng.choice([(b"[", b"]"), (b"{a=", b"}"), (b'{"a":', b"}")])
+    return (data[:match.start()] + opening * depth + match.group() + closing * depth +
+            data[match.end():])
+
+
+ELEMENT_COUNT = re.compile(rb"(element \w+ )(\d+)")
+
+
+def count_mismatch(data, rng):
+    """A PLY element count off by a few from the data (issue 33: more vertices declared than
+    held read the faces as vertices, silently another model)."""
+    counts = list(ELEMENT_COUNT.finditer(data))
+    if not counts:
+        return data
+    match = rng.choice(counts)
+    count = max(0, int(match.group(2)) + rng.choice([-2, -1, 1, 2]))
+    return data[:match.start(2)] + str(count).encode() + data[match.end(2):]
+
+
+BINARY_MUTATIONS = [flip_bits, overwrite_bytes, splice, truncate, replace_word, replace_number,
+                    count_mismatch]
 TEXT_MUTATIONS = [flip_bits, overwrite_bytes, splice, truncate, replace_number, replace_number,
-                  shuffle_lines, shuffle_lines]
+                  shuffle_lines, shuffle_lines, deep_nesting]
+
+
+def special_files(scratch):
+    """Paths that are no regular file, given as any input (issue 33: a FIFO blocked forever,
+    /dev/zero grew without end, a directory was "9223372036854775807 bytes")."""
+    fifo, directory = os.path.join(scratch, "special.fifo"), os.path.join(scratch, "special.dir")
+    if not os.path.exists(fifo):
+        os.mkfifo(fifo)
+        os.mkdir(directory)
+    return [fifo, directory, "/dev/zero", "/dev/urandom"]
+
+
+def check_special_files(runner, names):
+    """Every command of every format must refuse each special file by name; the failures."""
+    failures = 0
+    for name in names:
+        for path in special_files(runner.scratch):
+            for command in FORMATS[name].commands + FORMATS[name].check_commands:
+                outcome, message = runner.outcome(command, path)
+                if outcome != "rejected":
+                    failures += 1
+                    print("FAIL special file %s as %s: rtusim %s: %s %s" % (
+                        path, name, command[0], outcome, message.strip()[-300:]))
+    return failures
 
 
 def mutate(seed, text, rng):
@@ -354,7 +406,7 @@ def fuzz(args, runner):
             os.remove(path)
         tally["seconds"] = round(time.monotonic() - start, 1)
         print("%-7s %4d mutants  %s" % (name, args.mutants, tally), flush=True)
-    return failures
+    return failures + check_special_files(runner, args.formats.split(","))
 
 
 def save(corpus, name, fmt, data):
@@ -386,6 +438,7 @@ def check(args, runner):
                         failures += 1
                         print("FAIL %s: rtusim %s: %s (%.1f s) %s" % (
                             path, command[0], outcome, seconds, message.strip()[-300:]))
+    failures += check_special_files(runner, FORMATS)
     print("%d files, %d runs, %d failures; seconds per run: mean %.3f, slowest %.3f" % (
         files, len(durations), failures, sum(durations) / max(1, len(durations)),
         max(durations, default=0)))

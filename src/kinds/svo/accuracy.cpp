@@ -13,12 +13,13 @@ std::string AccuracyReport::describe() const {
   char text[512];
   std::snprintf(
       text, sizeof text,
-      "agreement   %.4f %% of %zu rays (t within %g), %zu float64 hits\n"
+      "agreement   %.4f %% of %zu rays compared (t within %g), %zu float64 hits\n"
+      "overflows   %zu rays overflowed the stack (flagged, not compared)\n"
       "mismatches  %zu hit/miss, %zu t beyond tolerance (%zu edge hits agree on t, not face)\n"
       "t error     mean %.3g, max %.3g (where both hit)\n"
       "cost        fixed %llu, float64 %llu cycles in total\n",
-      100.0 * agreement(), rays, tTolerance, referenceHits, hitMismatches, tOutliers, edgeHits,
-      meanTError, maxTError, static_cast<unsigned long long>(fixedCost),
+      100.0 * agreement(), compared(), tTolerance, referenceHits, stackOverflows, hitMismatches,
+      tOutliers, edgeHits, meanTError, maxTError, static_cast<unsigned long long>(fixedCost),
       static_cast<unsigned long long>(referenceCost));
   return text;
 }
@@ -39,7 +40,9 @@ AccuracyReport measureAccuracy(const WordMemory& memory, uint32_t root,
     report.fixedCost += fixed.cost;
     report.referenceCost += exact.cost;
     report.referenceHits += exact.hit;
-    if (fixed.hit != exact.hit) {
+    if (fixed.stackOverflow) {
+      ++report.stackOverflows;
+    } else if (fixed.hit != exact.hit) {
       ++report.hitMismatches;
     } else if (fixed.hit) {
       const double error = std::abs(config.format.toDouble(fixed.tHit) - exact.tHit);

@@ -14,6 +14,9 @@ struct AccuracyReport {
   double tTolerance = 0.0;
   size_t rays = 0;
   size_t referenceHits = 0;
+  // Rays the golden model flagged as overflowing its stack (traced only with
+  // --allow-stack-overflow): ended as misses, they are not compared with the reference.
+  size_t stackOverflows = 0;
   size_t hitMismatches = 0;  // one model hits, the other misses
   size_t edgeHits = 0;       // both hit at the same t, but name different faces: an edge
   size_t tOutliers = 0;      // both hit, t differs by more than the tolerance
@@ -22,8 +25,11 @@ struct AccuracyReport {
   uint64_t fixedCost = 0;  // total cost of each model, to see traversal differences
   uint64_t referenceCost = 0;
 
-  size_t agreeing() const { return rays - hitMismatches - tOutliers; }
-  double agreement() const { return rays ? static_cast<double>(agreeing()) / rays : 1.0; }
+  size_t compared() const { return rays - stackOverflows; }
+  size_t agreeing() const { return compared() - hitMismatches - tOutliers; }
+  double agreement() const {
+    return compared() ? static_cast<double>(agreeing()) / compared() : 1.0;
+  }
   std::string describe() const;
 };
 

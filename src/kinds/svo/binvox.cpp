@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "base/input_file.h"
 #include "base/output_file.h"
 
 namespace rtu {
@@ -144,13 +145,18 @@ int depthFor(int dim) {
 }  // namespace
 
 BinvoxGrid::BinvoxGrid(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open binvox file '" + path + "'");
+  uint64_t fileBytes = 0;
+  std::ifstream in = openInputFile(path, "binvox file", fileBytes);
   const Header header = HeaderReader(in, path).read();
   const uint64_t dataOffset = static_cast<uint64_t>(in.tellg());
+  const auto dim = static_cast<uint64_t>(header.dim);
+  // A run covers at least one voxel, so more than two bytes a voxel is no grid (checked before
+  // reading: zero-length runs would otherwise let any file size through).
+  if (fileBytes - dataOffset > 2 * dim * dim * dim)
+    fail(path, std::to_string(fileBytes - dataOffset) + " bytes of runs, more than 2 for each of " +
+                   std::to_string(dim * dim * dim) + " voxels");
   const std::vector<uint8_t> data{std::istreambuf_iterator<char>(in),
                                   std::istreambuf_iterator<char>()};
-  const auto dim = static_cast<uint64_t>(header.dim);
   checkRuns(data, dim * dim * dim, dataOffset, path);
 
   dim_ = header.dim;

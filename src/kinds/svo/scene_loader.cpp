@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "base/work_phase.h"
 #include "kinds/svo/binvox.h"
 #include "kinds/svo/mesh_voxelizer.h"
 #include "kinds/svo/procedural_scenes.h"
@@ -67,7 +68,16 @@ void checkBuildFits(const VoxelSource& source, const SceneSpec& spec, const std:
 
 }  // namespace
 
+std::string sceneSource(const SceneSpec& scene) {
+  if (!scene.svoFile.empty()) return "SVO image '" + scene.svoFile + "'";
+  if (!scene.meshFile.empty()) return "mesh '" + scene.meshFile + "'";
+  if (!scene.binvoxFile.empty()) return "binvox file '" + scene.binvoxFile + "'";
+  return "scene '" + scene.procedural + "'";
+}
+
 Scene loadScene(const SceneSpec& spec) {
+  const WorkPhase phase("loading the scene (" + sceneSource(spec) + ", --depth " +
+                        std::to_string(spec.depth) + ")");
   const int files = !spec.svoFile.empty() + !spec.meshFile.empty() + !spec.binvoxFile.empty();
   if (files > 1)
     throw std::invalid_argument("give one scene: --svo, --mesh or --binvox, not several");

@@ -33,6 +33,8 @@ struct Scene {
 // Throws std::invalid_argument when more than one source is given, std::runtime_error for
 // unreadable or malformed files.
 Scene loadScene(const SceneSpec& spec);
+// What messages call the scene: "SVO image 'f.svo'", "mesh 'f.obj'", "scene 'sphere'".
+std::string sceneSource(const SceneSpec& scene);
 
 struct TriangleScene {
   TriangleMesh mesh;

@@ -10,22 +10,15 @@
 
 namespace rtu {
 
-void checkStackDepth(const SvoImage& image, const std::vector<TValueRecord>& jobs, int stackFrames,
-                     bool allowOverflow) {
-  std::vector<uint32_t> roots;
-  for (const TValueRecord& job : jobs) addRoot(roots, job.root);
-  checkRootDepths(image, std::move(roots), stackFrames, allowOverflow);
-}
-
 void checkRootDepths(const SvoImage& image, std::vector<uint32_t> roots, int stackFrames,
-                     bool allowOverflow) {
+                     bool allowOverflow, const std::string& source) {
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
-  checkNeededFrames(roots, descriptorDepths(image, roots), stackFrames, allowOverflow);
+  checkNeededFrames(roots, descriptorDepths(image, roots), stackFrames, allowOverflow, source);
 }
 
 void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int>& needed,
-                       int stackFrames, bool allowOverflow) {
+                       int stackFrames, bool allowOverflow, const std::string& source) {
   size_t deepest = 0;
   size_t tooDeep = 0;
   for (size_t i = 0; i < roots.size(); ++i) {
@@ -33,7 +26,7 @@ void checkNeededFrames(const std::vector<uint32_t>& roots, const std::vector<int
     if (needed[i] > needed[deepest]) deepest = i;
   }
   if (tooDeep == 0) return;
-  std::string message = "the tree at root " + std::to_string(roots[deepest]) +
+  std::string message = source + ": the tree at root " + std::to_string(roots[deepest]) +
                         " has descriptors at depth " + std::to_string(needed[deepest]) +
                         " and needs " + std::to_string(needed[deepest]) + " stack frames; " +
                         std::to_string(stackFrames) + " are configured";
