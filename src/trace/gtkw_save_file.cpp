@@ -83,9 +83,7 @@ std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSig
 
 }  // namespace
 
-std::string saveFilePath(const std::string& tracePath) {
-  return std::filesystem::path(tracePath).replace_extension(".gtkw").string();
-}
+std::string saveFilePath(const std::string& tracePath) { return tracePath + ".gtkw"; }
 
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
                    uint64_t markerPs) {
