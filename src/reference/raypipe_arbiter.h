@@ -1,0 +1,111 @@
+#pragma once
+// The per-cycle reference of seed 001's ray pipe: R1 COMMON/library.sv `VS_buf` and `arbitor`.
+//
+// VsBuf: a one-entry skid buffer with a registered stall. stall_us = stall_reg & valid_us (so an
+//   arbiter's input stall never depends combinationally on anything downstream); valid_ds =
+//   tmp_valid | valid_us, the held item first. At the edge stall_reg := stall_ds and, by the
+//   RTL's case table on {stall_ds, stall_reg}: 10 holds the upstream item just accepted, 11 keeps
+//   the held one, 0x empties it. The case 01 with nothing held and an upstream item offered would
+//   pass one item twice (the downstream takes it while the upstream sees a stall); it cannot
+//   arise when the downstream stalls only valid items (the arbiter's stall_TMP = valid & ~choice)
+//   and is a logic_error here.
+// RotatingArbiter: `arbitor`: a VS_buf per input; priority pointer p (rrptr_arr[0]) advances by
+//   one every cycle the output FIFO is not full and any VS_buf offers an item, whoever wins; the
+//   first offering input in the order p, p+1, ... is written into the output FIFO, one a cycle;
+//   every other offering input is stalled. The output FIFO is a 512-deep show-ahead BRAM FIFO for
+//   the tarb_t and leaf_info_t widths (tarb, larb), else a 2-entry register FIFO (the shader's).
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace rtu {
+namespace raypipe_ref {
+
+template <class T>
+class VsBuf {
+ public:
+  bool validDs(bool validUs) const { return tmpValid_ || validUs; }
+  const T& dataDs(const T* us) const { return tmpValid_ ? tmp_ : *us; }
+  bool stallUs(bool validUs) const { return stallReg_ && validUs; }
+  void tick(bool validUs, const T* us, bool stallDs) {
+    if (stallDs && !stallReg_) {
+      tmpValid_ = validUs;
+      if (validUs) tmp_ = *us;
+    } else if (!stallDs) {
+      if (stallReg_ && !tmpValid_ && validUs)
+        throw std::logic_error("raypipe reference: VS_buf passed an item twice");
+      tmpValid_ = false;
+    }
+    stallReg_ = stallDs;
+  }
+
+ private:
+  bool stallReg_ = false, tmpValid_ = false;
+  T tmp_{};
+};
+
+template <class T, int N, class Fifo>
+class RotatingArbiter {
+ public:
+  RotatingArbiter(std::string name, int depth) : fifo_(std::move(name), depth) {}
+
+  // This cycle's upstream offers (null: not valid), copied: the upstream may pop its FIFO before
+  // the arbiter's tick. Then stallUs(i) is the input's stall.
+  void offer(int i, const T* item) {
+    const size_t s = static_cast<size_t>(i);
+    us_[s] = item ? &items_[s] : nullptr;
+    if (item) items_[s] = *item;
+  }
+  bool stallUs(int i) const {
+    return vs_[static_cast<size_t>(i)].stallUs(us_[static_cast<size_t>(i)] != nullptr);
+  }
+  // True when input i's offer is accepted into its VS_buf this cycle.
+  bool accepted(int i) const { return us_[static_cast<size_t>(i)] != nullptr && !stallUs(i); }
+
+  // The choice of the cycle: writes the winner into the output FIFO.
+  void arbitrate(int64_t now) {
+    chosen_ = -1;
+    bool any = false;
+    for (int k = 0; k < N; ++k) any = any || validDs(k);
+    if (fifo_.full()) return;
+    for (int k = 0; k < N && chosen_ < 0; ++k) {
+      const int i = (pointer_ + k) % N;
+      if (validDs(i)) chosen_ = i;
+    }
+    if (chosen_ >= 0) {
+      fifo_.push(now, vs_[static_cast<size_t>(chosen_)].dataDs(us_[static_cast<size_t>(chosen_)]));
+      ++grants_;
+    }
+    if (any) pointer_ = (pointer_ + 1) % N;
+  }
+  Fifo& out() { return fifo_; }
+  const Fifo& out() const { return fifo_; }
+  int64_t grants() const { return grants_; }
+
+  void tick(int64_t now) {
+    for (int i = 0; i < N; ++i) {
+      const size_t s = static_cast<size_t>(i);
+      vs_[s].tick(us_[s] != nullptr, us_[s], validDs(i) && i != chosen_);
+      us_[s] = nullptr;
+    }
+    chosen_ = -1;
+    fifo_.tick(now);
+  }
+
+ private:
+  bool validDs(int i) const {
+    return vs_[static_cast<size_t>(i)].validDs(us_[static_cast<size_t>(i)] != nullptr);
+  }
+  std::array<VsBuf<T>, N> vs_{};
+  std::array<const T*, N> us_{};
+  std::array<T, N> items_{};
+  Fifo fifo_;
+  int pointer_ = 0;
+  int chosen_ = -1;
+  int64_t grants_ = 0;
+};
+
+}  // namespace raypipe_ref
+}  // namespace rtu

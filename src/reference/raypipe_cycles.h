@@ -1,0 +1,85 @@
+#pragma once
+// The per-cycle reference of seed 001's ray pipe (the Tray Racer, issue 29 §3): the final build R1
+// demonstrated (DEMOS/t5.sv with RAYTRACER/raypipe_simple_caches.sv), every unit stepped once a
+// cycle with the RTL's valid/stall handshake, written from the RTL apart from any timed model, as
+// rtl_cycle_model is for the thesis RTU. docs/raypipe.md, "Timing rules (the per-cycle
+// reference)", gives the rules unit by unit with their R1 files, and what is not modelled yet.
+//
+// The arithmetic and the traversal's decisions are kinds/kd's (kd_units.h over the memory image of
+// kd_image.h, read as kd_traversal.h reads it), so each ray's result is bit-exact with the golden
+// traversal; the control (short stack, restart, list unit, routing) is transcribed here from the
+// RTL. Input: the primary rays in the PRG's issue order with their pixel ids (the PRG's values and
+// pixel order are raypipe/'s); the PRG's timing is modelled here.
+//
+// Cycle 0 is the first cycle the PRG is active (a v0 cycle of the shared modulo-3 phase: v0 when
+// cycle % 3 == 0, v1 at 1, v2 at 2, as t5.sv's counter). The shader's ray-id FIFO is full at cycle
+// 0 (reset long past: R1 fills it over the 512 cycles after reset and blocks results meanwhile).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kinds/kd/kd_image.h"
+#include "kinds/kd/kd_traversal.h"
+#include "raypipe/raypipe_config.h"
+
+namespace rtu {
+
+// The SRAM writer behind the pixel buffer (R1 PERIPHERALS/simple_frame_buffer_handler.sv
+// fbh_writer: pb_re = sram_re_b & ~pb_empty). The VGA reader's window is not modelled yet: the
+// writer takes one pixel every cycle the buffer is not empty.
+struct RaypipePixelWriter {
+  bool vgaReadWindow = false;  // reserved: must be false
+};
+
+struct RaypipeCycleRay {
+  KdRay ray;
+  uint32_t pixelId = 0;
+};
+
+// One ray's outcome: the golden traversal's result fields, and when it left.
+struct RaypipeCycleResult {
+  uint32_t pixelId = 0;
+  bool hit = false, boxMiss = false;
+  float t = 0, u = 0, v = 0;   // 0 on a miss, as KdResult
+  uint32_t primitive = 0;      // the hit triangle's id; 0 on a miss
+  KdRayCounts counts;          // as the golden traversal counts them
+  int64_t issueCycle = -1;     // the PRG accepted the pixel (x_y_valid)
+  int64_t shaderInCycle = -1;  // the shader gave it a ray id (into SINT)
+  int64_t exitCycle = -1;      // it left the shader into the pixel buffer (pb_we)
+  uint32_t rayId = 0;
+};
+
+struct RaypipeUnitActivity {
+  std::string unit;
+  int64_t busy = 0;   // cycles the unit accepted an item
+  int64_t stall = 0;  // cycles an item was offered to it and stalled
+};
+
+struct RaypipeFifoPeak {
+  std::string fifo;
+  int depth = 0;
+  int peak = 0;
+};
+
+struct RaypipeCycleRun {
+  std::vector<RaypipeCycleResult> results;  // in input order
+  int64_t lastExitCycle = -1;               // the cycle the last pixel left the shader
+  int64_t frameCycles = 0;                  // lastExitCycle + 1: cycles 0 .. lastExitCycle
+  int64_t lastWriteCycle = -1;              // the SRAM writer took the last pixel
+  std::vector<RaypipeUnitActivity> units;
+  std::vector<RaypipeFifoPeak> fifos;
+  int maxRaysInFlight = 0;    // ray ids held at once, at most RaypipeConfig::raysInFlight
+  int64_t staleListHits = 0;  // rays that ended as a miss with a hit kept in the list record
+  double hostSeconds = 0;
+};
+
+// Runs one frame. Throws std::invalid_argument for a configuration the reference does not take
+// (more than one traversal unit, the set-associative caches, a VGA window), std::logic_error when
+// the pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, a hazard on a
+// ray's stack or restart record, no progress for a million cycles).
+RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,
+                                 const std::vector<RaypipeCycleRay>& rays,
+                                 const RaypipePixelWriter& writer = {});
+
+}  // namespace rtu

@@ -1,0 +1,308 @@
+// The per-cycle reference of seed 001's ray pipe (reference/raypipe_cycles.h): per-ray results
+// bit-exact with the golden k-d traversal on small pbrt-built scenes, exit cycles counted by hand
+// from the timing rules (docs/raypipe.md, "Timing rules (the per-cycle reference)"), and the pipe's
+// invariants.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "kd_hand_scene.h"
+#include "kinds/kd/kd_kind.h"
+#include "kinds/kd/pbrt_kd_builder.h"
+#include "reference/raypipe_cycles.h"
+
+namespace rtu {
+namespace {
+
+// A scene of world-space triangles (three corners each) built as R1's software builds it.
+KdImage builtImage(const std::vector<glm::dvec3>& corners) {
+  const KdBuild build = buildPbrtKd(pbrtTriangleBoxes(corners), PbrtKdParameters{});
+  const std::vector<glm::dvec3> normals(corners.size() / 3, glm::dvec3(0, 0, 1));
+  return layOutKd(makeTrayRacerScene(build, corners, normals, {}));
+}
+
+// A sphere-like mesh: a UV sphere of radius 1 at `centre`, `rings` x `segments` quads.
+std::vector<glm::dvec3> sphereCorners(glm::dvec3 centre, int rings, int segments) {
+  const double pi = std::acos(-1.0);
+  auto at = [&](int ring, int segment) {
+    const double theta = pi * ring / rings, phi = 2 * pi * segment / segments;
+    return centre + glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta),
+                               std::sin(theta) * std::sin(phi));
+  };
+  std::vector<glm::dvec3> corners;
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const glm::dvec3 a = at(r, s), b = at(r + 1, s), c = at(r + 1, s + 1), d = at(r, s + 1);
+      if (r > 0) corners.insert(corners.end(), {a, b, d});
+      if (r + 1 < rings) corners.insert(corners.end(), {b, c, d});
+    }
+  return corners;
+}
+
+// A few triangles at different depths, so rays cross several leaves.
+std::vector<glm::dvec3> fewTriangles() {
+  std::vector<glm::dvec3> corners;
+  for (int i = 0; i < 6; ++i) {
+    const double z = 0.5 * i, x = 0.3 * (i % 3), y = 0.2 * (i % 2);
+    corners.insert(corners.end(), {{x, y, z}, {x + 1.5, y, z + 0.1}, {x, y + 1.5, z + 0.2}});
+  }
+  return corners;
+}
+
+KdSections sectionsOfImage(const KdImage& image) {
+  return sectionsOf(decodeKdHeader(image.words.data()));
+}
+
+// Rays in hardware space: from outside the box towards points inside it, a few away from it, and
+// the PRG's kind (unnormalised, |d| >= 240, so the as-built clamp gives t_max = 1).
+std::vector<RaypipeCycleRay> mixedRays(const KdImage& image, int count, uint32_t seed) {
+  const std::array<float, 6> box = sectionsOfImage(image).box;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  auto inside = [&] {
+    return std::array<float, 3>{box[0] + unit(random) * (box[3] - box[0]),
+                                box[1] + unit(random) * (box[4] - box[1]),
+                                box[2] + unit(random) * (box[5] - box[2])};
+  };
+  std::vector<RaypipeCycleRay> rays;
+  for (int i = 0; i < count; ++i) {
+    const std::array<float, 3> target = inside();
+    std::array<float, 3> origin{};
+    for (int a = 0; a < 3; ++a)
+      origin[a] = box[a] - 1.5f * (box[a + 3] - box[a]) + unit(random) * 4 * (box[a + 3] - box[a]);
+    KdRay ray;
+    ray.origin = origin;
+    const float scale = (i % 3 == 0) ? 240.0f : 1.0f;
+    for (int a = 0; a < 3; ++a) ray.direction[a] = (target[a] - origin[a]) * scale;
+    if (i % 7 == 3)  // away from the box
+      for (int a = 0; a < 3; ++a) ray.direction[a] = -ray.direction[a];
+    rays.push_back(RaypipeCycleRay{ray, static_cast<uint32_t>(i)});
+  }
+  return rays;
+}
+
+KdTraversal golden(const KdImage& image, const KdRay& ray, const RaypipeConfig& config) {
+  KdTraversalConfig c;
+  c.stackDepth = config.shortStackDepth;
+  c.division = config.division;
+  c.tMaxClamp = config.tMaxClamp;
+  KdTraversal traversal(c);
+  traversal.start(KdJob{ray, sectionsOfImage(image)});
+  const WordMemory memory = image.memory();
+  while (traversal.busy()) traversal.step([&memory](uint32_t a) { return memory.read(a); });
+  return traversal;
+}
+
+struct Coverage {
+  int hits = 0, boxMisses = 0, restarts = 0, dropped = 0, pushes = 0;
+};
+
+// Every ray's result and counters equal the golden traversal's, bit for bit.
+Coverage checkAgainstGolden(const KdImage& image, const std::vector<RaypipeCycleRay>& rays,
+                            const RaypipeConfig& config) {
+  const RaypipeCycleRun run = runRaypipeCycles(config, image, rays);
+  REQUIRE(run.results.size() == rays.size());
+  Coverage coverage;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const KdTraversal g = golden(image, rays[i].ray, config);
+    const RaypipeCycleResult& r = run.results[i];
+    INFO("ray " << i);
+    CHECK(r.pixelId == rays[i].pixelId);
+    CHECK(r.hit == g.hit());
+    const KdRayCounts gc = g.counts();
+    CHECK(r.boxMiss == (gc.boxMisses == 1));
+    if (g.hit()) {
+      CHECK(floatBits(r.t) == floatBits(g.t()));
+      CHECK(floatBits(r.u) == floatBits(g.u()));
+      CHECK(floatBits(r.v) == floatBits(g.v()));
+      CHECK(r.primitive == g.primitive());
+    }
+    CHECK(r.counts.nodes == gc.nodes);
+    CHECK(r.counts.leaves == gc.leaves);
+    CHECK(r.counts.triangleTests == gc.triangleTests);
+    CHECK(r.counts.restarts == gc.restarts);
+    CHECK(r.counts.boxMisses == gc.boxMisses);
+    CHECK(r.counts.pushes == gc.pushes);
+    CHECK(r.counts.dropped == gc.dropped);
+    CHECK(r.exitCycle > r.shaderInCycle);
+    CHECK(r.shaderInCycle > r.issueCycle);
+    coverage.hits += g.hit() ? 1 : 0;
+    coverage.boxMisses += static_cast<int>(gc.boxMisses);
+    coverage.restarts += static_cast<int>(gc.restarts);
+    coverage.dropped += static_cast<int>(gc.dropped);
+    coverage.pushes += static_cast<int>(gc.pushes);
+  }
+  for (const RaypipeFifoPeak& f : run.fifos) {
+    INFO(f.fifo);
+    CHECK(f.peak <= f.depth);
+  }
+  CHECK(run.maxRaysInFlight <= config.raysInFlight);
+  return coverage;
+}
+
+// One triangle in the plane z = 1 of hardware space (x and y swapped from world: the corners are
+// given in world space), so the root is a leaf.
+KdImage oneTriangle() {
+  return builtImage({{0, 0, 1}, {0, 2, 1}, {2, 0, 1}});  // hardware: (0,0), (2,0), (0,2)
+}
+
+KdRay downZ(float x, float y) { return KdRay{{x, y, 0}, {0, 0, 1}, false}; }
+
+}  // namespace
+
+TEST_CASE("raypipe reference: results equal the golden traversal on small scenes",
+          "[raypipe_cycles]") {
+  RaypipeConfig config;
+  SECTION("a few triangles with stack depths 4 then 2 then 1") {
+    const KdImage image = builtImage(fewTriangles());
+    const std::vector<RaypipeCycleRay> rays = mixedRays(image, 300, 1);
+    for (int depth : {4, 2, 1}) {
+      config.shortStackDepth = depth;
+      const Coverage c = checkAgainstGolden(image, rays, config);
+      CHECK(c.hits > 20);
+      CHECK(c.boxMisses > 10);
+      CHECK(c.pushes > 0);
+    }
+  }
+  SECTION("a sphere-like mesh with overflows and restarts") {
+    const KdImage image = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+    const std::vector<RaypipeCycleRay> rays = mixedRays(image, 400, 2);
+    config.shortStackDepth = 1;
+    const Coverage one = checkAgainstGolden(image, rays, config);
+    CHECK(one.restarts > 0);
+    CHECK(one.dropped > 0);
+    config.shortStackDepth = 2;
+    CHECK(checkAgainstGolden(image, rays, config).dropped > 0);
+    config.shortStackDepth = 4;
+    config.tMaxClamp = KdTMaxClamp::Intended;
+    const Coverage four = checkAgainstGolden(image, rays, config);
+    CHECK(four.hits > 50);
+  }
+  SECTION("the hand scene") {
+    const KdImage image = layOutKd(handKdScene());
+    std::vector<RaypipeCycleRay> rays;
+    for (int i = 0; i < 40; ++i)
+      rays.push_back(
+          RaypipeCycleRay{KdRay{{-1.0f + 0.1f * i, 0.05f * i, 0.04f * i}, {1, 0.01f, 0.02f}, false},
+                          static_cast<uint32_t>(i)});
+    config.shortStackDepth = 1;
+    checkAgainstGolden(image, rays, config);
+  }
+}
+
+// Hand-counted exit cycles on one triangle (the root is a leaf), from the rules of docs/raypipe.md:
+//   PRG accepts on v0 (cycle % 3 == 0): cycle 0; its pipe (41) writes the 16-deep BRAM FIFO at
+//     41, shown 2 cycles after a write: 43
+//   the shader gives the ray an id and SINT accepts on v2 (cycle % 3 == 2): 44
+//   SINT's pipe (18) writes its register FIFO at 62, at its head at 63
+//   tarb's VS_buf passes it on (no stall registered), the arbiter writes its BRAM FIFO at 63,
+//     shown at 65; tcache's pipe (2) at 67, its FIFO's head at 68
+//   TRAV: a leaf into the leaf FIFO at 68, its head at 69; the larb register at 70
+//   larb writes its BRAM FIFO at 70, shown at 72; lcache 72 + 2 -> head 75; icache 75 + 2 -> 78;
+//     raystore #1 78 + 2 -> 81
+//   INT accepts at 81, its pipe (45) writes the BRAM list FIFO at 126, shown at 128
+//   the list unit's VS pipe (4) from 128 writes the last FIFO at 132, its head at 133
+//   a hit: hit pipe (2) 133 -> hit FIFO's head 136; raystore #2 136 + 2 -> 139
+//     a miss instead: the to-shortstack register at 134, the restart read FIFO's head at 135,
+//     the restart pipe (3) writes the miss FIFO at 138, its head at 139
+//   the shader's arbiter writes its register FIFO at 139, head at 140; its VS pipe (2) writes the
+//     ray-data FIFO at 142; its head leaves into the pixel buffer at 143
+//   a box miss: SINT's shader FIFO at 63, the arbiter's FIFO head at 64, the VS pipe to 66, out
+//     at 67
+TEST_CASE("raypipe reference: hand-counted cycles on one triangle", "[raypipe_cycles]") {
+  const KdImage image = oneTriangle();
+  RaypipeConfig config;
+  const KdRay hit = downZ(0.5f, 0.5f), miss = downZ(1.5f, 1.5f);
+  const KdRay boxMiss{{5, 5, 0}, {0, 0, 1}, false};
+  SECTION("one ray") {
+    RaypipeCycleRun run = runRaypipeCycles(config, image, {{hit, 7}});
+    REQUIRE(run.results.size() == 1);
+    CHECK(run.results[0].hit);
+    CHECK(run.results[0].issueCycle == 0);
+    CHECK(run.results[0].shaderInCycle == 44);
+    CHECK(run.results[0].exitCycle == 143);
+    CHECK(run.lastExitCycle == 143);
+    CHECK(run.frameCycles == 144);
+    CHECK(run.lastWriteCycle == 144);  // the pixel buffer's head one cycle after the write
+    run = runRaypipeCycles(config, image, {{miss, 0}});
+    CHECK_FALSE(run.results[0].hit);
+    CHECK(run.results[0].exitCycle == 143);
+    run = runRaypipeCycles(config, image, {{boxMiss, 0}});
+    CHECK(run.results[0].boxMiss);
+    CHECK(run.results[0].exitCycle == 67);
+  }
+  SECTION("a handful of rays") {
+    // The PRG accepts one ray every 3 cycles (0, 3, 6, 9); each then keeps its distance of 3
+    // cycles through every unit, so nothing waits: each leaves at its issue cycle plus its
+    // single-ray latency (143 for a leaf, 67 for a box miss).
+    const RaypipeCycleRun run =
+        runRaypipeCycles(config, image, {{hit, 0}, {boxMiss, 1}, {miss, 2}, {hit, 3}});
+    CHECK(run.results[0].exitCycle == 143);
+    CHECK(run.results[1].exitCycle == 3 + 67);
+    CHECK(run.results[2].exitCycle == 6 + 143);
+    CHECK(run.results[3].exitCycle == 9 + 143);
+    CHECK(run.lastExitCycle == 152);
+  }
+}
+
+// With one ray id, rays cannot overlap: each ray's latency from the shader on is its latency
+// alone, and the next ray enters SINT on the first v2 cycle once its id is back in the id FIFO
+// (freed when the result enters the shader's VS pipe, 3 cycles before it leaves; shown 2 cycles
+// after its write), so the frame is the sum of the single rays' latencies and those gaps.
+TEST_CASE("raypipe reference: one ray in flight is the sum of single-ray latencies",
+          "[raypipe_cycles]") {
+  const KdImage image = builtImage(fewTriangles());
+  const std::vector<RaypipeCycleRay> rays = mixedRays(image, 12, 5);
+  RaypipeConfig config;
+  config.raysInFlight = 1;
+  const RaypipeCycleRun run = runRaypipeCycles(config, image, rays);
+  int64_t expected = 44;  // the first ray into SINT, as in the hand count above
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const RaypipeCycleRun alone = runRaypipeCycles(RaypipeConfig{}, image, {rays[i]});
+    const int64_t latency = alone.results[0].exitCycle - alone.results[0].shaderInCycle;
+    INFO("ray " << i);
+    CHECK(run.results[i].shaderInCycle == expected);
+    CHECK(run.results[i].exitCycle == expected + latency);
+    int64_t next = run.results[i].exitCycle - 3 + 2;  // the id shown again
+    while (next % 3 != 2) ++next;
+    expected = next;
+  }
+  CHECK(run.maxRaysInFlight == 1);
+}
+
+TEST_CASE("raypipe reference: invariants with few ray ids", "[raypipe_cycles]") {
+  const KdImage image = builtImage(sphereCorners({0, 0, 3}, 5, 8));
+  const std::vector<RaypipeCycleRay> rays = mixedRays(image, 500, 9);
+  RaypipeConfig config;
+  const RaypipeCycleRun full = runRaypipeCycles(config, image, rays);
+  config.raysInFlight = 4;
+  const RaypipeCycleRun four = runRaypipeCycles(config, image, rays);
+  CHECK(four.maxRaysInFlight == 4);
+  CHECK(full.maxRaysInFlight > 4);
+  CHECK(four.frameCycles > full.frameCycles);
+  for (const RaypipeCycleRun* run : {&full, &four}) {
+    std::vector<int> seen(rays.size(), 0);
+    for (const RaypipeCycleResult& r : run->results) {
+      CHECK(r.exitCycle >= 0);
+      ++seen[r.pixelId];
+    }
+    for (int n : seen) CHECK(n == 1);
+    for (const RaypipeFifoPeak& f : run->fifos) {
+      INFO(f.fifo);
+      CHECK(f.peak <= f.depth);
+    }
+    for (size_t i = 0; i < rays.size(); ++i) {
+      CHECK(run->results[i].hit == four.results[i].hit);
+      CHECK(floatBits(run->results[i].t) == floatBits(four.results[i].t));
+    }
+  }
+  SECTION("refused settings") {
+    RaypipeConfig two;
+    two.traversalUnits = 2;
+    CHECK_THROWS_AS(runRaypipeCycles(two, image, rays), std::invalid_argument);
+  }
+}
+
+}  // namespace rtu
