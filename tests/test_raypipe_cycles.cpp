@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -302,6 +303,90 @@ TEST_CASE("raypipe reference: invariants with few ray ids", "[raypipe_cycles]") 
     RaypipeConfig two;
     two.traversalUnits = 2;
     CHECK_THROWS_AS(runRaypipeCycles(two, image, rays), std::invalid_argument);
+  }
+}
+
+}  // namespace rtu
+
+namespace rtu {
+namespace {
+
+// Primary rays as R1's PRG makes them (PRG/primary_ray_generator.sv, prg_pl.sv; specs/001 §2.2),
+// enough for frame figures: 20x15 blocks in Z order (x from the block counter's even bits, y from
+// its odd bits, the top block row first), x fastest and y from the block's top row down inside a
+// block, pixelID = (rows - 1 - y) cols + x, dir = U (x pw - 320) + V (y pw - 240) + W 240 in
+// binary32 in the RTL's order, from E = INIT_CAM with U, V, W the axes.
+std::vector<RaypipeCycleRay> prgRays(int level) {
+  const int cols = 20 << level, rows = 15 << level, blocks = 1 << (2 * level);
+  const float pw = static_cast<float>(32 >> level);
+  const int maxYIndex = (1 << level) - 1;
+  std::vector<RaypipeCycleRay> rays;
+  for (int block = 0; block < blocks; ++block) {
+    int xIndex = 0, yIndex = 0;
+    for (int b = 0; b < level; ++b) {
+      xIndex |= ((block >> (2 * b)) & 1) << b;
+      yIndex |= ((block >> (2 * b + 1)) & 1) << b;
+    }
+    for (int yIn = 14; yIn >= 0; --yIn)
+      for (int xIn = 0; xIn < 20; ++xIn) {
+        const int x = 20 * xIndex + xIn, y = 15 * (maxYIndex - yIndex) + yIn;
+        const float u = add32(mul32(static_cast<float>(x), pw), -320.0f);
+        const float v = add32(mul32(static_cast<float>(y), pw), -240.0f);
+        KdRay ray;
+        ray.origin = {1.125f, 1.125f, -1.25f};
+        // U = (1, 0, 0), V = (0, 1, 0), W = (0, 0, 1): each component's three products, summed
+        // in the RTL's order
+        const float uc[3] = {1, 0, 0}, vc[3] = {0, 1, 0}, wc[3] = {0, 0, 1};
+        for (int a = 0; a < 3; ++a)
+          ray.direction[a] = add32(add32(mul32(u, uc[a]), mul32(v, vc[a])), mul32(wc[a], 240.0f));
+        rays.push_back(RaypipeCycleRay{ray, static_cast<uint32_t>((rows - 1 - y) * cols + x)});
+      }
+  }
+  return rays;
+}
+
+// A sphere-like mesh of 80 triangles in front of the camera.
+KdImage frameScene() { return builtImage(sphereCorners({1.125, 1.125, 1.5}, 5, 10)); }
+
+}  // namespace
+
+TEST_CASE("raypipe reference: a frame at 20x15 and 40x30", "[raypipe_cycles]") {
+  const KdImage image = frameScene();
+  for (int level : {0, 1}) {
+    const std::vector<RaypipeCycleRay> rays = prgRays(level);
+    const RaypipeCycleRun run = runRaypipeCycles(RaypipeConfig{}, image, rays);
+    std::vector<int> seen(rays.size(), 0);
+    int hits = 0;
+    for (const RaypipeCycleResult& r : run.results) {
+      ++seen.at(r.pixelId);
+      hits += r.hit ? 1 : 0;
+    }
+    for (int n : seen) CHECK(n == 1);
+    CHECK(hits > 0);
+    // The PRG's 1 ray in 3 cycles bounds the frame from below.
+    CHECK(run.frameCycles > 3 * static_cast<int64_t>(rays.size()));
+  }
+}
+
+// Not run by default: the figures docs/raypipe.md quotes.
+TEST_CASE("raypipe reference: frame figures", "[.raypipe_figures]") {
+  const KdImage image = frameScene();
+  for (int level : {0, 2, 3}) {
+    const std::vector<RaypipeCycleRay> rays = prgRays(level);
+    const RaypipeCycleRun run = runRaypipeCycles(RaypipeConfig{}, image, rays);
+    int hits = 0, boxMisses = 0;
+    for (const RaypipeCycleResult& r : run.results) {
+      hits += r.hit ? 1 : 0;
+      boxMisses += r.boxMiss ? 1 : 0;
+    }
+    std::printf("%dx%d: %zu rays, %d hits, %d box misses: frame %lld cycles, host %.3f s\n",
+                20 << level, 15 << level, rays.size(), hits, boxMisses,
+                static_cast<long long>(run.frameCycles), run.hostSeconds);
+    for (const RaypipeUnitActivity& a : run.units)
+      std::printf("  %-14s busy %8lld stall %8lld\n", a.unit.c_str(),
+                  static_cast<long long>(a.busy), static_cast<long long>(a.stall));
+    for (const RaypipeFifoPeak& f : run.fifos)
+      if (f.peak > 0) std::printf("  %-18s peak %3d of %d\n", f.fifo.c_str(), f.peak, f.depth);
   }
 }
 

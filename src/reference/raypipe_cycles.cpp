@@ -237,8 +237,8 @@ void Pipe::listUnit() {
 void Pipe::intersection() {
   u_.larb.arbitrate(now_);
   if (u_.larb.accepted(1)) u_.intLarb.pop();
-  const int larger = std::max(u_.intList.size(), u_.intLarb.size());
-  const int minLeft = std::min(u_.intList.depth() - larger, u_.intShaderNumLeft);
+  // 256 - max(usedw of the list and larb FIFOs), or the shadow FIFO's free slots if fewer
+  const int minLeft = std::min({u_.intList.numLeft(), u_.intLarb.numLeft(), u_.intShaderNumLeft});
   const bool intDsStall = u_.larb.stallUs(1) || intToListStall_;
   const bool intUsStall = u_.intPipe.usStall(intDsStall, minLeft);
   if (u_.intPipe.outValid(now_)) {
