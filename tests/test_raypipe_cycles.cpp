@@ -13,6 +13,7 @@
 #include "kinds/kd/kd_kind.h"
 #include "kinds/kd/pbrt_kd_builder.h"
 #include "reference/raypipe_cycles.h"
+#include "reference/raypipe_vga.h"
 
 namespace rtu {
 namespace {
@@ -150,6 +151,43 @@ KdImage oneTriangle() {
 }
 
 KdRay downZ(float x, float y) { return KdRay{{x, y, 0}, {0, 0, 1}, false}; }
+
+// Primary rays as R1's PRG makes them (PRG/primary_ray_generator.sv, prg_pl.sv; specs/001 §2.2),
+// enough for frame figures: 20x15 blocks in Z order (x from the block counter's even bits, y from
+// its odd bits, the top block row first), x fastest and y from the block's top row down inside a
+// block, pixelID = (rows - 1 - y) cols + x, dir = U (x pw - 320) + V (y pw - 240) + W 240 in
+// binary32 in the RTL's order, from E = INIT_CAM with U, V, W the axes.
+std::vector<RaypipeCycleRay> prgRays(int level) {
+  const int cols = 20 << level, rows = 15 << level, blocks = 1 << (2 * level);
+  const float pw = static_cast<float>(32 >> level);
+  const int maxYIndex = (1 << level) - 1;
+  std::vector<RaypipeCycleRay> rays;
+  for (int block = 0; block < blocks; ++block) {
+    int xIndex = 0, yIndex = 0;
+    for (int b = 0; b < level; ++b) {
+      xIndex |= ((block >> (2 * b)) & 1) << b;
+      yIndex |= ((block >> (2 * b + 1)) & 1) << b;
+    }
+    for (int yIn = 14; yIn >= 0; --yIn)
+      for (int xIn = 0; xIn < 20; ++xIn) {
+        const int x = 20 * xIndex + xIn, y = 15 * (maxYIndex - yIndex) + yIn;
+        const float u = add32(mul32(static_cast<float>(x), pw), -320.0f);
+        const float v = add32(mul32(static_cast<float>(y), pw), -240.0f);
+        KdRay ray;
+        ray.origin = {1.125f, 1.125f, -1.25f};
+        // U = (1, 0, 0), V = (0, 1, 0), W = (0, 0, 1): each component's three products, summed
+        // in the RTL's order
+        const float uc[3] = {1, 0, 0}, vc[3] = {0, 1, 0}, wc[3] = {0, 0, 1};
+        for (int a = 0; a < 3; ++a)
+          ray.direction[a] = add32(add32(mul32(u, uc[a]), mul32(v, vc[a])), mul32(wc[a], 240.0f));
+        rays.push_back(RaypipeCycleRay{ray, static_cast<uint32_t>((rows - 1 - y) * cols + x)});
+      }
+  }
+  return rays;
+}
+
+// A sphere-like mesh of 80 triangles in front of the camera.
+KdImage frameScene() { return builtImage(sphereCorners({1.125, 1.125, 1.5}, 5, 10)); }
 
 }  // namespace
 
@@ -306,50 +344,6 @@ TEST_CASE("raypipe reference: invariants with few ray ids", "[raypipe_cycles]") 
   }
 }
 
-}  // namespace rtu
-
-namespace rtu {
-namespace {
-
-// Primary rays as R1's PRG makes them (PRG/primary_ray_generator.sv, prg_pl.sv; specs/001 §2.2),
-// enough for frame figures: 20x15 blocks in Z order (x from the block counter's even bits, y from
-// its odd bits, the top block row first), x fastest and y from the block's top row down inside a
-// block, pixelID = (rows - 1 - y) cols + x, dir = U (x pw - 320) + V (y pw - 240) + W 240 in
-// binary32 in the RTL's order, from E = INIT_CAM with U, V, W the axes.
-std::vector<RaypipeCycleRay> prgRays(int level) {
-  const int cols = 20 << level, rows = 15 << level, blocks = 1 << (2 * level);
-  const float pw = static_cast<float>(32 >> level);
-  const int maxYIndex = (1 << level) - 1;
-  std::vector<RaypipeCycleRay> rays;
-  for (int block = 0; block < blocks; ++block) {
-    int xIndex = 0, yIndex = 0;
-    for (int b = 0; b < level; ++b) {
-      xIndex |= ((block >> (2 * b)) & 1) << b;
-      yIndex |= ((block >> (2 * b + 1)) & 1) << b;
-    }
-    for (int yIn = 14; yIn >= 0; --yIn)
-      for (int xIn = 0; xIn < 20; ++xIn) {
-        const int x = 20 * xIndex + xIn, y = 15 * (maxYIndex - yIndex) + yIn;
-        const float u = add32(mul32(static_cast<float>(x), pw), -320.0f);
-        const float v = add32(mul32(static_cast<float>(y), pw), -240.0f);
-        KdRay ray;
-        ray.origin = {1.125f, 1.125f, -1.25f};
-        // U = (1, 0, 0), V = (0, 1, 0), W = (0, 0, 1): each component's three products, summed
-        // in the RTL's order
-        const float uc[3] = {1, 0, 0}, vc[3] = {0, 1, 0}, wc[3] = {0, 0, 1};
-        for (int a = 0; a < 3; ++a)
-          ray.direction[a] = add32(add32(mul32(u, uc[a]), mul32(v, vc[a])), mul32(wc[a], 240.0f));
-        rays.push_back(RaypipeCycleRay{ray, static_cast<uint32_t>((rows - 1 - y) * cols + x)});
-      }
-  }
-  return rays;
-}
-
-// A sphere-like mesh of 80 triangles in front of the camera.
-KdImage frameScene() { return builtImage(sphereCorners({1.125, 1.125, 1.5}, 5, 10)); }
-
-}  // namespace
-
 TEST_CASE("raypipe reference: a frame at 20x15 and 40x30", "[raypipe_cycles]") {
   const KdImage image = frameScene();
   for (int level : {0, 1}) {
@@ -388,6 +382,49 @@ TEST_CASE("raypipe reference: frame figures", "[.raypipe_figures]") {
     for (const RaypipeFifoPeak& f : run.fifos)
       if (f.peak > 0) std::printf("  %-18s peak %3d of %d\n", f.fifo.c_str(), f.peak, f.depth);
   }
+}
+
+// The VGA reader's window, counted from vga.sv's and fbh_reader's rules (raypipe_vga.h): after n
+// 50 MHz edges the 25 MHz counters have advanced (n + 1) / 2 times; the first screen row is line
+// 31, where vga_col = 0x3ff is clk_cnt 143: (n + 1) / 2 = 31 * 800 + 143 = 24943 first at n =
+// 49885, so fbh_active is on from cycle 49886, which reads (the one-hot register at 0001), then
+// every other cycle: 639 reads in the row's 1278 active cycles, 480 rows a screen of 833,600
+// cycles.
+TEST_CASE("raypipe reference: the VGA reader's window", "[raypipe_cycles]") {
+  raypipe_ref::VgaReader vga;
+  int64_t first = -1, reads = 0, inFirstRow = 0, twice = 0;
+  bool previous = false;
+  for (int64_t n = 0; n < 833600; ++n) {
+    const bool reading = vga.reading();
+    if (reading && first < 0) first = n;
+    if (reading) ++reads;
+    if (reading && n < 49886 + 1600) ++inFirstRow;
+    if (reading && previous) ++twice;  // never two cycles in a row
+    previous = reading;
+    vga.tick();
+  }
+  CHECK(twice == 0);
+  CHECK(first == 49886);
+  CHECK(inFirstRow == 639);
+  CHECK(reads == 480 * 639);
+}
+
+TEST_CASE("raypipe reference: the pixel writer waits out the VGA reader", "[raypipe_cycles]") {
+  const KdImage image = builtImage(sphereCorners({1.125, 1.125, 1.5}, 5, 10));
+  const std::vector<RaypipeCycleRay> rays = prgRays(0);
+  const RaypipeCycleRun free = runRaypipeCycles(RaypipeConfig{}, image, rays);
+  RaypipePixelWriter writer;
+  writer.vgaReadWindow = true;
+  writer.vgaPhase = 49886;  // cycle 0 is the first cycle of the screen's first active row
+  const RaypipeCycleRun vga = runRaypipeCycles(RaypipeConfig{}, image, rays, writer);
+  CHECK(vga.writerWaits > 0);
+  CHECK(vga.lastWriteCycle >= free.lastWriteCycle);
+  // A pixel every 3 cycles at most never fills 20 entries when the writer gets every other
+  // cycle: the exits do not move.
+  for (size_t i = 0; i < rays.size(); ++i)
+    CHECK(vga.results[i].exitCycle == free.results[i].exitCycle);
+  writer.vgaPhase = -1;
+  CHECK_THROWS_AS(runRaypipeCycles(RaypipeConfig{}, image, rays, writer), std::invalid_argument);
 }
 
 }  // namespace rtu

@@ -35,9 +35,8 @@ RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& ima
         "raypipe.traversal_units: the per-cycle reference models one traversal unit (t5.sv)");
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the per-cycle reference models the block RAMs");
-  if (writer.vgaReadWindow)
-    throw std::invalid_argument("the per-cycle reference does not model the VGA read window");
-  raypipe_ref::Pipe pipe(config, image, rays);
+  if (writer.vgaPhase < 0) throw std::invalid_argument("the VGA phase must not be negative");
+  raypipe_ref::Pipe pipe(config, image, rays, writer);
   return pipe.run();
 }
 

@@ -26,10 +26,14 @@
 namespace rtu {
 
 // The SRAM writer behind the pixel buffer (R1 PERIPHERALS/simple_frame_buffer_handler.sv
-// fbh_writer: pb_re = sram_re_b & ~pb_empty). The VGA reader's window is not modelled yet: the
-// writer takes one pixel every cycle the buffer is not empty.
+// fbh_writer: pb_re = sram_re_b & ~pb_empty). By default it takes one pixel every cycle the buffer
+// is not empty; with the VGA read window (raypipe_vga.h) it waits out the cycles the VGA reader
+// holds the SRAM: every other cycle of each screen row's active part. vgaPhase: the 50 MHz
+// cycles from reset to cycle 0 (the VGA counters start at reset; R1 does not tie a frame's start
+// to the screen's).
 struct RaypipePixelWriter {
-  bool vgaReadWindow = false;  // reserved: must be false
+  bool vgaReadWindow = false;
+  int64_t vgaPhase = 0;
 };
 
 struct RaypipeCycleRay {
@@ -67,6 +71,7 @@ struct RaypipeCycleRun {
   int64_t lastExitCycle = -1;               // the cycle the last pixel left the shader
   int64_t frameCycles = 0;                  // lastExitCycle + 1: cycles 0 .. lastExitCycle
   int64_t lastWriteCycle = -1;              // the SRAM writer took the last pixel
+  int64_t writerWaits = 0;                  // cycles a pixel waited for the VGA reader
   std::vector<RaypipeUnitActivity> units;
   std::vector<RaypipeFifoPeak> fifos;
   int maxRaysInFlight = 0;    // ray ids held at once, at most RaypipeConfig::raysInFlight
@@ -75,9 +80,9 @@ struct RaypipeCycleRun {
 };
 
 // Runs one frame. Throws std::invalid_argument for a configuration the reference does not take
-// (more than one traversal unit, the set-associative caches, a VGA window), std::logic_error when
-// the pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, a hazard on a
-// ray's stack or restart record, no progress for a million cycles).
+// (more than one traversal unit, the set-associative caches, a negative VGA phase), logic_error
+// when the pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, a hazard
+// on a ray's stack or restart record, no progress for a million cycles).
 RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,
                                  const std::vector<RaypipeCycleRay>& rays,
                                  const RaypipePixelWriter& writer = {});

@@ -1,6 +1,7 @@
 // The per-cycle reference of seed 001's ray pipe: the shader's return side (R1
 // RAYTRACER/shader/simple_shade_unit.sv: its 4-input arbiter, VS pipe 2, ray-data FIFO 3, the ray
-// id freed) and the pixel buffer (DEMOS/t5.sv, 20 deep) with its SRAM writer.
+// id freed) and the pixel buffer (DEMOS/t5.sv, 20 deep) with its SRAM writer and the VGA
+// reader's window (raypipe_vga.h).
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -60,13 +61,21 @@ void Pipe::shaderReturn(size_t& exited, size_t& written) {
     u_.pixelBuffer.push(now_, f);
     u_.shaderData.pop();
   }
-  // The SRAM writer: one pixel a cycle while the buffer holds one (no VGA window).
+  // The SRAM writer: one pixel a cycle while the buffer holds one, unless the VGA reader holds
+  // the SRAM.
+  const bool vgaReads = writer_.vgaReadWindow && vga_.reading();
   if (!u_.pixelBuffer.empty()) {
-    u_.pixelBuffer.pop();
-    lastWrite_ = now_;
-    ++written;
-    activity_.busy(Unit::PixelWriter);
+    if (vgaReads) {
+      ++writerWaits_;
+      activity_.stall(Unit::PixelWriter);
+    } else {
+      u_.pixelBuffer.pop();
+      lastWrite_ = now_;
+      ++written;
+      activity_.busy(Unit::PixelWriter);
+    }
   }
+  if (writer_.vgaReadWindow) vga_.tick();
 }
 
 }  // namespace raypipe_ref

@@ -14,14 +14,17 @@
 
 #include "reference/raypipe_cycles.h"
 #include "reference/raypipe_units.h"
+#include "reference/raypipe_vga.h"
 
 namespace rtu {
 namespace raypipe_ref {
 
 class Pipe {
  public:
-  Pipe(const RaypipeConfig& config, const KdImage& image, const std::vector<RaypipeCycleRay>& rays)
+  Pipe(const RaypipeConfig& config, const KdImage& image, const std::vector<RaypipeCycleRay>& rays,
+       const RaypipePixelWriter& writer)
       : config_(config),
+        writer_(writer),
         memory_(image.memory()),
         sections_(sectionsOf(decodeKdHeader(image.words.data()))),
         rays_(rays),
@@ -31,6 +34,8 @@ class Pipe {
     slots_.resize(static_cast<size_t>(config.raysInFlight));
     for (auto& slot : slots_) slot.stack.resize(static_cast<size_t>(config.shortStackDepth));
     for (int id = 0; id < config.raysInFlight; ++id) u_.idFifo.preload(static_cast<uint32_t>(id));
+    if (writer.vgaReadWindow)
+      for (int64_t i = 0; i < writer.vgaPhase; ++i) vga_.tick();
   }
 
   RaypipeCycleRun run() {
@@ -51,6 +56,7 @@ class Pipe {
     for (const auto& r : results_) run.lastExitCycle = std::max(run.lastExitCycle, r.exitCycle);
     run.frameCycles = run.lastExitCycle + 1;
     run.lastWriteCycle = lastWrite_;
+    run.writerWaits = writerWaits_;
     run.units = activity_.table();
     run.fifos = u_.fifoPeaks();
     run.maxRaysInFlight = maxInFlight_;
@@ -74,6 +80,9 @@ class Pipe {
   void tick();
 
   const RaypipeConfig& config_;
+  RaypipePixelWriter writer_;
+  VgaReader vga_;
+  int64_t writerWaits_ = 0;
   WordMemory memory_;
   KdSections sections_;
   const std::vector<RaypipeCycleRay>& rays_;
