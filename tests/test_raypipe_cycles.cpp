@@ -286,6 +286,50 @@ TEST_CASE("raypipe reference: hand-counted cycles on one triangle", "[raypipe_cy
   }
 }
 
+// Hand-counted exit cycles on the hand scene (kd_hand_scene.h: root split x = 4 -> node 1 split
+// x = 2 -> leaves 2 [T0], 3 [T1, T3], 4 [T2]), one ray along +x from x = 0.5, from the rules:
+//   the root reaches TRAV at 68, as the leaf above. An interior node at TRAV in cycle T: raystore
+//     #0 (2) -> its FIFO's head at T + 3; the math pipe (14) -> the 15-deep FIFO's head at T + 18,
+//     decided; the tarb register at T + 19, tarb's BRAM FIFO written then, shown at T + 21;
+//     tcache (2) -> head at T + 24: the next node at TRAV. So node 1 at 92, leaf 2 at 116.
+//   a leaf at TRAV in cycle L leaves the shader at L + 75 on a hit (68 -> 143 above); the last
+//     FIFO's head is at L + 65 (68 -> 133)
+//   (a) y = z = 0.25 hits T0 in leaf 2: 116 + 75 = 191
+//   (b) y = z = 0.9 misses T0 (y + z >= 1): last FIFO head 181; the miss register at 182; the
+//     stack read FIFO's head 183, read, pipe (2) -> the stack FIFO's head at 186; tarb's FIFO
+//     written 186, shown 188; tcache -> leaf 3 at TRAV at 191. Leaf 3's two triangles: larb
+//     register 193, shown 195, lcache 198, icache 201, raystore #1 204: T1 into INT at 204, out at
+//     249 into the larb FIFO (BRAM), shown 251; larb's FIFO written 251, shown 253; lcache 256,
+//     icache 259, raystore #1 262: T3 into INT at 262, out 307 into the list FIFO, shown 309; list
+//     pipe (4) -> last FIFO head 314, a miss: register 315, stack read FIFO head 316, the stack
+//     FIFO's head 319, tarb shown 321, leaf 4 at TRAV at 324: T2 hits (y + z < 2): 324 + 75 = 399
+//   (c) as (b) with a stack of 1: the push of node 3 overwrote node 4, so leaf 3's miss finds the
+//     stack empty: the restart read FIFO's head at 316, the restart pipe (3) -> the restart FIFO's
+//     head at 320, tarb shown 322, the root (the restart node) at TRAV at 325, only high over
+//     [3.5, 8]: leaf 4 at 349, out at 349 + 75 = 424
+TEST_CASE("raypipe reference: hand-counted cycles on the hand scene", "[raypipe_cycles]") {
+  const KdImage image = layOutKd(handKdScene());
+  RaypipeConfig config;
+  const KdRay a{{0.5f, 0.25f, 0.25f}, {1, 0, 0}, false};
+  const KdRay b{{0.5f, 0.9f, 0.9f}, {1, 0, 0}, false};
+  RaypipeCycleRun run = runRaypipeCycles(config, image, {{a, 0}});
+  CHECK(run.results[0].hit);
+  CHECK(run.results[0].primitive == 0);
+  CHECK(run.results[0].exitCycle == 191);
+  run = runRaypipeCycles(config, image, {{b, 0}});
+  CHECK(run.results[0].hit);
+  CHECK(run.results[0].primitive == 2);
+  CHECK(run.results[0].counts.restarts == 0);
+  CHECK(run.results[0].exitCycle == 399);
+  config.shortStackDepth = 1;
+  run = runRaypipeCycles(config, image, {{b, 0}});
+  CHECK(run.results[0].hit);
+  CHECK(run.results[0].primitive == 2);
+  CHECK(run.results[0].counts.restarts == 1);
+  CHECK(run.results[0].counts.dropped == 1);
+  CHECK(run.results[0].exitCycle == 424);
+}
+
 // With one ray id, rays cannot overlap: each ray's latency from the shader on is its latency
 // alone, and the next ray enters SINT on the first v2 cycle once its id is back in the id FIFO
 // (freed when the result enters the shader's VS pipe, 3 cycles before it leaves; shown 2 cycles
