@@ -404,6 +404,12 @@ TEST_CASE("raypipe reference: a frame at 20x15 and 40x30", "[raypipe_cycles]") {
     // The PRG's 1 ray in 3 cycles bounds the frame from below.
     CHECK(run.frameCycles > 3 * static_cast<int64_t>(rays.size()));
   }
+  // The PRG's rays (|d| >= 240: the as-built clamp's t_max = 1) against the golden traversal.
+  RaypipeConfig config;
+  for (int depth : {4, 2}) {
+    config.shortStackDepth = depth;
+    CHECK(checkAgainstGolden(image, prgRays(1), config).hits > 50);
+  }
 }
 
 // Not run by default: the figures docs/raypipe.md quotes.
@@ -467,6 +473,10 @@ TEST_CASE("raypipe reference: the pixel writer waits out the VGA reader", "[rayp
   // cycle: the exits do not move.
   for (size_t i = 0; i < rays.size(); ++i)
     CHECK(vga.results[i].exitCycle == free.results[i].exitCycle);
+  writer.vgaPhase += raypipe_ref::VgaReader::kScreenCycles;  // a screen later: the same
+  const RaypipeCycleRun again = runRaypipeCycles(RaypipeConfig{}, image, rays, writer);
+  CHECK(again.lastWriteCycle == vga.lastWriteCycle);
+  CHECK(again.writerWaits == vga.writerWaits);
   writer.vgaPhase = -1;
   CHECK_THROWS_AS(runRaypipeCycles(RaypipeConfig{}, image, rays, writer), std::invalid_argument);
 }

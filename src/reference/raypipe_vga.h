@@ -21,6 +21,7 @@ class VgaReader {
  public:
   static constexpr int kHsTotal = 800, kHsOffset = 144, kVsTotal = 521, kVsOffset = 31;
   static constexpr int kRows = 480;
+  static constexpr int64_t kScreenCycles = 2 * kHsTotal * kVsTotal;  // 833,600
 
   // True when the reader holds the SRAM this cycle (sram_re_b low).
   bool reading() const { return active_ && (shift_ & 0x5) != 0; }
