@@ -219,6 +219,25 @@ TEST_CASE("raypipe reference: results equal the golden traversal on small scenes
     const Coverage four = checkAgainstGolden(image, rays, config);
     CHECK(four.hits > 50);
   }
+  SECTION("small FIFOs: every stall path taken") {
+    // The FIFOs behind a pipe_valid_stall kept deep enough for the pipe's items in flight (the
+    // credit rule can overfill shallower ones: docs/raypipe.md), the others at 1.
+    const KdImage image = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+    const std::vector<RaypipeCycleRay> rays = mixedRays(image, 400, 4);
+    config.fifo.travLeaf = 1;
+    config.fifo.pixelBuffer = 1;
+    config.fifo.prg = 14;  // the PRG's pipe holds at most 41 / 3 rays
+    config.fifo.sint = 6;  // SINT's at most 18 / 3
+    config.fifo.travMath = 14;
+    config.fifo.intList = config.fifo.intLarb = 45;
+    config.fifo.intShader = 1;  // INT's credit: the least free space
+    config.shortStackDepth = 2;
+    const RaypipeCycleRun run = runRaypipeCycles(config, image, rays);
+    int64_t stalls = 0;
+    for (const RaypipeUnitActivity& a : run.units) stalls += a.stall;
+    CHECK(stalls > 1000);
+    checkAgainstGolden(image, rays, config);
+  }
   SECTION("the hand scene") {
     const KdImage image = layOutKd(handKdScene());
     std::vector<RaypipeCycleRay> rays;
