@@ -434,7 +434,7 @@ TEST_CASE("raypipe reference: a frame at 20x15 and 40x30", "[raypipe_cycles]") {
 // Not run by default: the figures docs/raypipe.md quotes.
 TEST_CASE("raypipe reference: frame figures", "[.raypipe_figures]") {
   const KdImage image = frameScene();
-  for (int level : {0, 2, 3}) {
+  for (int level : {0, 2, 3, 4, 5}) {
     const std::vector<RaypipeCycleRay> rays = prgRays(level);
     const RaypipeCycleRun run = runRaypipeCycles(RaypipeConfig{}, image, rays);
     int hits = 0, boxMisses = 0;
