@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "kd_hand_scene.h"
@@ -284,6 +286,18 @@ TEST_CASE("raypipe reference: hand-counted cycles on one triangle", "[raypipe_cy
     CHECK(run.lastExitCycle == 143);
     CHECK(run.frameCycles == 144);
     CHECK(run.lastWriteCycle == 144);  // the pixel buffer's head one cycle after the write
+    // The same ray's transfers, unit by unit, at the cycles counted above.
+    RaypipeCycleOptions options;
+    options.recordTransfers = true;
+    run = runRaypipeCycles(config, image, {{hit, 7}}, options);
+    std::vector<std::pair<std::string, int64_t>> seen;
+    for (const RaypipeTransfer& t : run.transfers) seen.emplace_back(t.unit, t.cycle);
+    const std::vector<std::pair<std::string, int64_t>> expected = {
+        {"prg", 0},           {"sint", 44},  {"tarb", 63},        {"tcache", 65},
+        {"trav", 68},         {"larb", 70},  {"lcache", 72},      {"icache", 75},
+        {"int", 81},          {"list", 128}, {"shader_arb", 139}, {"shader_return", 140},
+        {"pixel_writer", 144}};
+    CHECK(seen == expected);
     run = runRaypipeCycles(config, image, {{miss, 0}});
     CHECK_FALSE(run.results[0].hit);
     CHECK(run.results[0].exitCycle == 143);
@@ -482,10 +496,11 @@ TEST_CASE("raypipe reference: the pixel writer waits out the VGA reader", "[rayp
   const KdImage image = builtImage(sphereCorners({1.125, 1.125, 1.5}, 5, 10));
   const std::vector<RaypipeCycleRay> rays = prgRays(0);
   const RaypipeCycleRun free = runRaypipeCycles(RaypipeConfig{}, image, rays);
-  RaypipePixelWriter writer;
+  RaypipeCycleOptions options;
+  RaypipePixelWriter& writer = options.writer;
   writer.vgaReadWindow = true;
   writer.vgaPhase = 49886;  // cycle 0 is the first cycle of the screen's first active row
-  const RaypipeCycleRun vga = runRaypipeCycles(RaypipeConfig{}, image, rays, writer);
+  const RaypipeCycleRun vga = runRaypipeCycles(RaypipeConfig{}, image, rays, options);
   CHECK(vga.writerWaits > 0);
   CHECK(vga.lastWriteCycle >= free.lastWriteCycle);
   // A pixel every 3 cycles at most never fills 20 entries when the writer gets every other
@@ -493,11 +508,11 @@ TEST_CASE("raypipe reference: the pixel writer waits out the VGA reader", "[rayp
   for (size_t i = 0; i < rays.size(); ++i)
     CHECK(vga.results[i].exitCycle == free.results[i].exitCycle);
   writer.vgaPhase += raypipe_ref::VgaReader::kScreenCycles;  // a screen later: the same
-  const RaypipeCycleRun again = runRaypipeCycles(RaypipeConfig{}, image, rays, writer);
+  const RaypipeCycleRun again = runRaypipeCycles(RaypipeConfig{}, image, rays, options);
   CHECK(again.lastWriteCycle == vga.lastWriteCycle);
   CHECK(again.writerWaits == vga.writerWaits);
   writer.vgaPhase = -1;
-  CHECK_THROWS_AS(runRaypipeCycles(RaypipeConfig{}, image, rays, writer), std::invalid_argument);
+  CHECK_THROWS_AS(runRaypipeCycles(RaypipeConfig{}, image, rays, options), std::invalid_argument);
 }
 
 }  // namespace rtu

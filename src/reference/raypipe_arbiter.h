@@ -51,6 +51,12 @@ class RotatingArbiter {
     }
     if (any) pointer_ = (pointer_ + 1) % N;
   }
+  // The item written into the output FIFO this cycle (after arbitrate, before tick), or null.
+  const T* granted() const {
+    return chosen_ >= 0
+               ? &vs_[static_cast<size_t>(chosen_)].dataDs(us_[static_cast<size_t>(chosen_)])
+               : nullptr;
+  }
   Fifo& out() { return fifo_; }
   const Fifo& out() const { return fifo_; }
   int64_t grants() const { return grants_; }

@@ -28,7 +28,8 @@ void Pipe::tick() { u_.tick(now_); }
 
 RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,
                                  const std::vector<RaypipeCycleRay>& rays,
-                                 const RaypipePixelWriter& writer) {
+                                 const RaypipeCycleOptions& options) {
+  const RaypipePixelWriter& writer = options.writer;
   config.validate();
   if (config.traversalUnits != 1)
     throw std::invalid_argument(
@@ -36,7 +37,7 @@ RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& ima
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the per-cycle reference models the block RAMs");
   if (writer.vgaPhase < 0) throw std::invalid_argument("the VGA phase must not be negative");
-  raypipe_ref::Pipe pipe(config, image, rays, writer);
+  raypipe_ref::Pipe pipe(config, image, rays, options);
   return pipe.run();
 }
 

@@ -36,6 +36,22 @@ struct RaypipePixelWriter {
   int64_t vgaPhase = 0;
 };
 
+// What runRaypipeCycles does besides the frame.
+struct RaypipeCycleOptions {
+  RaypipePixelWriter writer;
+  bool recordTransfers = false;  // fill RaypipeCycleRun::transfers
+};
+
+// A unit taking an item in a cycle (as RaypipeUnitActivity counts it; an arbiter's grant into its
+// output FIFO), for cycle-by-cycle comparison with a timed model.
+struct RaypipeTransfer {
+  int64_t cycle = 0;
+  const char* unit = "";  // RaypipeUnitActivity::unit's names
+  uint32_t rayId = 0;     // kNoRayId before the shader gives one (the PRG)
+  uint32_t index = 0;     // the pixel's place in the PRG's order
+  static constexpr uint32_t kNoRayId = 0xffffffffu;
+};
+
 struct RaypipeCycleRay {
   KdRay ray;
   uint32_t pixelId = 0;
@@ -76,6 +92,7 @@ struct RaypipeCycleRun {
   std::vector<RaypipeFifoPeak> fifos;
   int maxRaysInFlight = 0;    // ray ids held at once, at most RaypipeConfig::raysInFlight
   int64_t staleListHits = 0;  // rays that ended as a miss with a hit kept in the list record
+  std::vector<RaypipeTransfer> transfers;  // in cycle order, when recorded
   double hostSeconds = 0;
 };
 
@@ -85,6 +102,6 @@ struct RaypipeCycleRun {
 // on a ray's stack or restart record, no progress for a million cycles).
 RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,
                                  const std::vector<RaypipeCycleRay>& rays,
-                                 const RaypipePixelWriter& writer = {});
+                                 const RaypipeCycleOptions& options = {});
 
 }  // namespace rtu

@@ -65,7 +65,7 @@ void Pipe::shaderIssueAndPrg() {
     ++inFlight_;
     maxInFlight_ = std::max(maxInFlight_, inFlight_);
     u_.sintPipe.accept(f);
-    activity_.busy(Unit::Sint);
+    busy(Unit::Sint, f);
   } else if (u_.prgFifo.valid(now_)) {
     activity_.stall(Unit::Sint);
   }
@@ -80,7 +80,7 @@ void Pipe::shaderIssueAndPrg() {
       results_[issued_].issueCycle = now_;
       ++issued_;
       u_.prgPipe.accept(f);
-      activity_.busy(Unit::Prg);
+      busy(Unit::Prg, f, false);
     }
   }
 }

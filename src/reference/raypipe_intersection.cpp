@@ -14,6 +14,7 @@ namespace raypipe_ref {
 // RAYTRACER/caches/simple_cache.sv, raystore/raystore_simple.sv).
 void Pipe::intersection() {
   u_.larb.arbitrate(now_);
+  if (const Flit* g = u_.larb.granted()) busy(Unit::Larb, *g);
   if (u_.larb.accepted(1)) u_.intLarb.pop();
   // 256 - max(usedw of the list and larb FIFOs), or the shadow FIFO's free slots if fewer
   const int minLeft = std::min({u_.intList.numLeft(), u_.intLarb.numLeft(), u_.intShaderNumLeft});
@@ -46,7 +47,7 @@ void Pipe::intersection() {
       f.lindex += 1;
       f.last = f.lnum == 0;
       u_.intPipe.accept(f);
-      activity_.busy(Unit::Int);
+      busy(Unit::Int, f);
     }
   }
   const bool rs1UsStall = u_.rs1.usStall(rsToIntStall);
@@ -61,7 +62,7 @@ void Pipe::intersection() {
   if (!u_.lcache.fifo.empty() && !icUsStall) {
     u_.icache.pipe.accept(u_.lcache.fifo.front());
     u_.lcache.fifo.pop();
-    activity_.busy(Unit::Icache);
+    busy(Unit::Icache, u_.lcache.fifo.front());
   }
   const bool lcUsStall = u_.lcache.usStall(icUsStall);
   if (u_.lcache.pipe.outValid(now_)) {
@@ -76,7 +77,7 @@ void Pipe::intersection() {
     } else {
       u_.lcache.pipe.accept(larbOut.front());
       larbOut.pop();
-      activity_.busy(Unit::Lcache);
+      busy(Unit::Lcache, larbOut.front());
     }
   }
 }

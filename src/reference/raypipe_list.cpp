@@ -74,7 +74,7 @@ void Pipe::listUnit() {
     } else {
       u_.listPipe.accept(u_.intList.front());
       u_.intList.pop();
-      activity_.busy(Unit::List);
+      busy(Unit::List, u_.intList.front());
     }
   }
 }

@@ -14,6 +14,7 @@ namespace raypipe_ref {
 // R1 RAYTRACER/shader/simple_shade_unit.sv (return side) and DEMOS/t5.sv's pixel buffer.
 void Pipe::shaderReturn(size_t& exited, size_t& written) {
   u_.shaderArb.arbitrate(now_);
+  if (const Flit* g = u_.shaderArb.granted()) busy(Unit::ShaderArb, *g);
   const bool pbFull = u_.pixelBuffer.full();
   const bool dataRe = !pbFull && !u_.shaderData.empty();
   const bool pipeDsStall = pbFull && !u_.shaderData.empty();
@@ -49,7 +50,7 @@ void Pipe::shaderReturn(size_t& exited, size_t& written) {
     u_.shaderPipe.accept(out);
     u_.idFifo.push(now_, f.ray);  // rayID_wrreq: the id is free again
     arbOut.pop();
-    activity_.busy(Unit::ShaderReturn);
+    busy(Unit::ShaderReturn, out);
   }
   if (u_.shaderPipe.outValid(now_)) u_.shaderData.push(now_, u_.shaderPipe.out(now_));
   if (dataRe) {
@@ -72,7 +73,7 @@ void Pipe::shaderReturn(size_t& exited, size_t& written) {
       u_.pixelBuffer.pop();
       lastWrite_ = now_;
       ++written;
-      activity_.busy(Unit::PixelWriter);
+      busy(Unit::PixelWriter, u_.pixelBuffer.front());
     }
   }
   if (writer_.vgaReadWindow) vga_.tick();

@@ -74,7 +74,7 @@ void Pipe::shortStack() {
     f.tMax = e.tMax;
     f.search = false;
     u_.stackPipe.accept(f);
-    activity_.busy(Unit::StackRead);
+    busy(Unit::StackRead, f);
   } else {
     for (int i = 0; i < 3; ++i)
       if (!u_.stackRead[i].empty()) activity_.stall(Unit::StackRead);
@@ -118,7 +118,7 @@ void Pipe::shortStack() {
     f.search = false;
     f.isHit = false;
     u_.restPipe.accept(f);
-    activity_.busy(Unit::RestartRead);
+    busy(Unit::RestartRead, f);
   } else {
     for (int i = 0; i < 3; ++i)
       if (!u_.restRead[i].empty()) activity_.stall(Unit::RestartRead);

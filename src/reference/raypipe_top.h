@@ -22,9 +22,10 @@ namespace raypipe_ref {
 class Pipe {
  public:
   Pipe(const RaypipeConfig& config, const KdImage& image, const std::vector<RaypipeCycleRay>& rays,
-       const RaypipePixelWriter& writer)
+       const RaypipeCycleOptions& options)
       : config_(config),
-        writer_(writer),
+        writer_(options.writer),
+        recordTransfers_(options.recordTransfers),
         memory_(image.memory()),
         sections_(sectionsOf(decodeKdHeader(image.words.data()))),
         rays_(rays),
@@ -36,8 +37,8 @@ class Pipe {
     for (int id = 0; id < config.raysInFlight; ++id) u_.idFifo.preload(static_cast<uint32_t>(id));
     // The reader's state repeats every screen: 521 lines of 800 25 MHz clocks, 480 x 1278 active
     // cycles (a multiple of the one-hot register's 4).
-    if (writer.vgaReadWindow)
-      for (int64_t i = 0; i < writer.vgaPhase % VgaReader::kScreenCycles; ++i) vga_.tick();
+    if (writer_.vgaReadWindow)
+      for (int64_t i = 0; i < writer_.vgaPhase % VgaReader::kScreenCycles; ++i) vga_.tick();
   }
 
   RaypipeCycleRun run() {
@@ -59,6 +60,7 @@ class Pipe {
     run.frameCycles = run.lastExitCycle + 1;
     run.lastWriteCycle = lastWrite_;
     run.writerWaits = writerWaits_;
+    run.transfers = std::move(transfers_);
     run.units = activity_.table();
     run.fifos = u_.fifoPeaks();
     run.maxRaysInFlight = maxInFlight_;
@@ -83,6 +85,15 @@ class Pipe {
 
   const RaypipeConfig& config_;
   RaypipePixelWriter writer_;
+  bool recordTransfers_ = false;
+  std::vector<RaypipeTransfer> transfers_;
+  // A unit took `f` this cycle.
+  void busy(Unit u, const Flit& f, bool hasRay = true) {
+    activity_.busy(u);
+    if (recordTransfers_)
+      transfers_.push_back(
+          RaypipeTransfer{now_, unitName(u), hasRay ? f.ray : RaypipeTransfer::kNoRayId, f.index});
+  }
   VgaReader vga_;
   int64_t writerWaits_ = 0;
   WordMemory memory_;

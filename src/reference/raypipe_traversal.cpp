@@ -13,6 +13,7 @@ namespace raypipe_ref {
 // tarb -> tcache -> TRAV (R1 RAYTRACER/trav/trav_unit.sv, trav_math.sv) with raystore #0.
 void Pipe::traversal() {
   u_.tarb.arbitrate(now_);
+  if (const Flit* g = u_.tarb.granted()) busy(Unit::Tarb, *g);
   const int depth = config_.shortStackDepth;
   const bool toTarbStall = u_.tarb.stallUs(2);
   const bool toLarbStall = u_.larb.stallUs(0);
@@ -71,7 +72,7 @@ void Pipe::traversal() {
       if (ssReq.num == static_cast<uint32_t>(depth)) ++s.counts.dropped;
     }
     u_.travFifo.pop();
-    activity_.busy(Unit::TravDecide);
+    busy(Unit::TravDecide, ssReq);
   } else if (!u_.travFifo.empty()) {
     activity_.stall(Unit::TravDecide);
   }
@@ -88,7 +89,7 @@ void Pipe::traversal() {
       f.plane = planeTest(slot(f.ray).ray, f.nodeData.axis, bitsToFloat(f.nodeData.splitBits),
                           f.tMin, f.tMax, config_.division);
       u_.travPipe.accept(f);
-      activity_.busy(Unit::TravMath);
+      busy(Unit::TravMath, f);
     }
   }
   const bool rs0UsStall = u_.rs0.usStall(rsToTravStall);
@@ -116,7 +117,7 @@ void Pipe::traversal() {
         u_.rs0.pipe.accept(f);
       }
       u_.tcache.fifo.pop();
-      activity_.busy(Unit::Trav);
+      busy(Unit::Trav, f);
     }
   }
   // the leaf FIFO's two registered outputs: to larb and to the list unit (leaf_max)
@@ -145,7 +146,7 @@ void Pipe::traversal() {
     } else {
       u_.tcache.pipe.accept(tarbOut.front());
       tarbOut.pop();
-      activity_.busy(Unit::Tcache);
+      busy(Unit::Tcache, tarbOut.front());
     }
   }
 }

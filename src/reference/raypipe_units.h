@@ -74,20 +74,31 @@ struct Slot {
 enum class Unit {
   Prg,
   Sint,
+  Tarb,
   Tcache,
   Trav,
   TravMath,
   TravDecide,
   StackRead,
   RestartRead,
+  Larb,
   Lcache,
   Icache,
   Int,
   List,
+  ShaderArb,
   ShaderReturn,
   PixelWriter,
   kCount
 };
+
+inline const char* unitName(Unit u) {
+  static const char* names[] = {
+      "prg",         "sint",     "tarb",       "tcache",        "trav",        "trav_math",
+      "trav_decide", "ss_stack", "ss_restart", "larb",          "lcache",      "icache",
+      "int",         "list",     "shader_arb", "shader_return", "pixel_writer"};
+  return names[static_cast<size_t>(u)];
+}
 
 class Activity {
  public:
@@ -98,12 +109,9 @@ class Activity {
   void stall(Unit u) { ++stall_[static_cast<size_t>(u)]; }
   int64_t total() const { return total_; }
   std::vector<RaypipeUnitActivity> table() const {
-    static const char* names[] = {
-        "prg",        "sint",   "tcache", "trav", "trav_math", "trav_decide",   "ss_stack",
-        "ss_restart", "lcache", "icache", "int",  "list",      "shader_return", "pixel_writer"};
     std::vector<RaypipeUnitActivity> rows;
     for (size_t i = 0; i < static_cast<size_t>(Unit::kCount); ++i)
-      rows.push_back(RaypipeUnitActivity{names[i], busy_[i], stall_[i]});
+      rows.push_back(RaypipeUnitActivity{unitName(static_cast<Unit>(i)), busy_[i], stall_[i]});
     return rows;
   }
 
