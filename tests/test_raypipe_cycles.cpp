@@ -304,6 +304,15 @@ TEST_CASE("raypipe reference: hand-counted cycles on one triangle", "[raypipe_cy
     run = runRaypipeCycles(config, image, {{boxMiss, 0}});
     CHECK(run.results[0].boxMiss);
     CHECK(run.results[0].exitCycle == 67);
+    // A frame started at reset (R1's shader fills its ray ids over 512 cycles, id 0 written in
+    // cycle 0, shown at 2, and blocks its arbiter's output until cycle 512): the box miss enters
+    // SINT at 44 as before, waits at the arbiter's output from 64 to 512, the VS pipe to 514,
+    // the ray-data FIFO's head at 515: out at 515.
+    RaypipeCycleOptions atReset;
+    atReset.cyclesSinceReset = 0;
+    run = runRaypipeCycles(config, image, {{boxMiss, 0}}, atReset);
+    CHECK(run.results[0].shaderInCycle == 44);
+    CHECK(run.results[0].exitCycle == 515);
   }
   SECTION("a handful of rays") {
     // The PRG accepts one ray every 3 cycles (0, 3, 6, 9); each then keeps its distance of 3

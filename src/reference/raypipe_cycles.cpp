@@ -37,6 +37,8 @@ RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& ima
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the per-cycle reference models the block RAMs");
   if (writer.vgaPhase < 0) throw std::invalid_argument("the VGA phase must not be negative");
+  if (options.cyclesSinceReset < 0)
+    throw std::invalid_argument("the cycles since reset must not be negative");
   raypipe_ref::Pipe pipe(config, image, rays, options);
   return pipe.run();
 }

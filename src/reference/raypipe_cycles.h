@@ -12,8 +12,8 @@
 // pixel order are raypipe/'s); the PRG's timing is modelled here.
 //
 // Cycle 0 is the first cycle the PRG is active (a v0 cycle of the shared modulo-3 phase: v0 when
-// cycle % 3 == 0, v1 at 1, v2 at 2, as t5.sv's counter). The shader's ray-id FIFO is full at cycle
-// 0 (reset long past: R1 fills it over the 512 cycles after reset and blocks results meanwhile).
+// cycle % 3 == 0, v1 at 1, v2 at 2, as t5.sv's counter). By default the shader's ray-id FIFO is
+// full at cycle 0 (reset long past; RaypipeCycleOptions::cyclesSinceReset models the fill).
 
 #include <cstdint>
 #include <string>
@@ -40,6 +40,9 @@ struct RaypipePixelWriter {
 struct RaypipeCycleOptions {
   RaypipePixelWriter writer;
   bool recordTransfers = false;  // fill RaypipeCycleRun::transfers
+  // Cycles from reset to cycle 0: the shader writes ray id i into its FIFO i cycles after reset and
+  // blocks results for the first 512 (is_init). By default long past: every id shown at cycle 0.
+  int64_t cyclesSinceReset = 1000000;
 };
 
 // A unit taking an item in a cycle (as RaypipeUnitActivity counts it; an arbiter's grant into its

@@ -88,9 +88,9 @@ class ShowAheadFifo : public FifoStats {
     pushed_ = true;
     staged_ = Entry{item, now};
   }
-  // An item present from long before cycle 0 (the shader's ray ids after reset).
-  void preload(const T& item) {
-    items_.push_back(Entry{item, -1000});
+  // An item written in cycle `written`, before the run's first cycle (the shader's ray ids).
+  void preload(const T& item, int64_t written) {
+    items_.push_back(Entry{item, written});
     notePeak(size());
   }
   void tick(int64_t) {

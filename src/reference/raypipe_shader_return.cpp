@@ -21,8 +21,9 @@ void Pipe::shaderReturn(size_t& exited, size_t& written) {
   const bool pipeUsStall = u_.shaderPipe.usStall(pipeDsStall, u_.shaderData.numLeft());
   auto& arbOut = u_.shaderArb.out();
   const bool arbValid = arbOut.valid(now_);
-  if (arbValid && pipeUsStall) activity_.stall(Unit::ShaderReturn);
-  if (arbValid && !pipeUsStall) {
+  const bool isInit = now_ < initEnd_;  // arb_stall_ds = valid & (us_stall | is_init)
+  if (arbValid && (pipeUsStall || isInit)) activity_.stall(Unit::ShaderReturn);
+  if (arbValid && !pipeUsStall && !isInit) {
     const Flit& f = arbOut.front();
     Slot& s = slot(f.ray);
     if (!s.busy)

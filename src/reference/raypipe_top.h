@@ -34,7 +34,12 @@ class Pipe {
     for (size_t i = 0; i < rays.size(); ++i) results_[i].pixelId = rays[i].pixelId;
     slots_.resize(static_cast<size_t>(config.raysInFlight));
     for (auto& slot : slots_) slot.stack.resize(static_cast<size_t>(config.shortStackDepth));
-    for (int id = 0; id < config.raysInFlight; ++id) u_.idFifo.preload(static_cast<uint32_t>(id));
+    // The shader's reset fill (is_init): ray id i written i cycles after reset; results blocked
+    // for the 512 cycles of the fill.
+    const int64_t reset = -std::min<int64_t>(options.cyclesSinceReset, 1000000);
+    for (int id = 0; id < config.raysInFlight; ++id)
+      u_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
+    initEnd_ = reset + 512;
     // The reader's state repeats every screen: 521 lines of 800 25 MHz clocks, 480 x 1278 active
     // cycles (a multiple of the one-hot register's 4).
     if (writer_.vgaReadWindow)
@@ -86,6 +91,7 @@ class Pipe {
   const RaypipeConfig& config_;
   RaypipePixelWriter writer_;
   bool recordTransfers_ = false;
+  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
   std::vector<RaypipeTransfer> transfers_;
   // A unit took `f` this cycle.
   void busy(Unit u, const Flit& f, bool hasRay = true) {
