@@ -363,6 +363,20 @@ TEST_CASE("raypipe reference: hand-counted cycles on the hand scene", "[raypipe_
   CHECK(run.results[0].primitive == 2);
   CHECK(run.results[0].counts.restarts == 0);
   CHECK(run.results[0].exitCycle == 399);
+  // Nine rays like (a), issued every 3 cycles. Ray k is granted by tarb from SINT at G = 63 + 3k,
+  // reaches TRAV at G + 5, offers node 1 to tarb at G + 24 and node 2 at G + 48, reaches leaf 2 at
+  // G + 53 and leaves at G + 128. Ray 8's SINT offer (87) meets ray 0's node-1 offer from TRAV
+  // (87): tarb's pointer, advanced in each of the 8 cycles with an offer before (63, 66, ... 84),
+  // is back at input 0, so input 2 (TRAV) comes before input 3 (SINT): ray 0 is granted, ray 8
+  // waits in its VS_buf and is granted at 88 (pointer 1): it leaves at 88 + 128 = 216, one cycle
+  // late. No other offers meet (TRAV's at 87 ... 108 and 112, then 111 ... 132 and 136).
+  {
+    std::vector<RaypipeCycleRay> nine;
+    for (uint32_t k = 0; k < 9; ++k) nine.push_back(RaypipeCycleRay{a, k});
+    run = runRaypipeCycles(config, image, nine);
+    for (uint32_t k = 0; k < 8; ++k) CHECK(run.results[k].exitCycle == 191 + 3 * k);
+    CHECK(run.results[8].exitCycle == 216);
+  }
   config.shortStackDepth = 1;
   run = runRaypipeCycles(config, image, {{b, 0}});
   CHECK(run.results[0].hit);
