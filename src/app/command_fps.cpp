@@ -239,8 +239,11 @@ void addFpsCommand(CLI::App& app) {
                       : settings.scene.svoFile + settings.scene.meshFile +
                             settings.scene.binvoxFile)
               << ", " << toString(settings.rtu.scheduler) << ", "
-              << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory, "
-              << settings.rtu.clockMhz << " MHz, " << answeredBy(rows) << "\n";
+              << (settings.rtu.memory.ideal
+                      ? std::string("ideal memory")
+                      : "cached memory (caches " + RtuStatistics::of(settings.rtu).cacheStart() +
+                            ")")
+              << ", " << settings.rtu.clockMhz << " MHz, " << answeredBy(rows) << "\n";
     printTable(rows, std::cout);
     printMatrix(rows, options->cores, std::cout);
     if (!options->csv.empty()) {

@@ -490,6 +490,11 @@ std::vector<Setting> makeSchema() {
                          kMinBytesPerCycle, kMaxBytesPerCycle, model,
                          "host output link rate, 32-byte records (0: one record a cycle)",
                          [](C& c) -> double& { return c.rtu.hostOutput.bytesPerCycle; }));
+  s.push_back(integer("warm_frames", "--warm-frames", "frames", 0, kMaxWarmFrames, model,
+                      "frames of the same rays run through the caches before the measured one, "
+                      "as a unit rendering frame after frame (0: cold caches)",
+                      [](C& c) -> int& { return c.rtu.warmFrames; }));
+  s.back().ignoredBecause = ignoredWithIdealMemory;
   s.push_back(integer("reorder", "--reorder", "results", 0, 1 << 24, model,
                       "reorder buffer capacity: results in submission order (0: none)",
                       [](C& c) -> int& { return c.rtu.reorderCapacity; }));

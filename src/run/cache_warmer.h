@@ -48,6 +48,16 @@ class CacheWarmer {
       core_.finish();
     }
   }
+  // Traces every record `frames` times, as that many frames before the run leave the caches (the
+  // warm_frames setting); the next warmUpTo starts again from the first record.
+  template <class Record>
+  void warmFrames(const std::vector<Record>& records, int frames) {
+    for (int frame = 0; frame < frames; ++frame) {
+      next_ = 0;
+      warmUpTo(records, records.size());
+    }
+    next_ = 0;
+  }
   uint64_t next() const { return next_; }
   const CacheContents& contents() const { return contents_; }
 

@@ -16,6 +16,8 @@ namespace rtu {
 // The model is the recurrence with the memory's timing in the traversals: it runs what the
 // recurrence runs, with any memory.
 std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
+  if (config.warmFrames > 0 && !config.memory.ideal)
+    return "its caches start cold: warm_frames needs --model ca";
   RtuConfig anyMemory = config;
   anyMemory.memory.ideal = true;
   return whyNotAnalytic(anyMemory);

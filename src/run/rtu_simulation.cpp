@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include <systemc>
 
+#include "run/warm_frames.h"
 #include "sim/ca/rtu_top.h"
 #include "sim/kernel/sc_kernel.h"
 
@@ -95,6 +97,13 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
                 const std::vector<SceneInstance>* scene = nullptr) {
   validate(config);
   checkCoreTakes(config.core, records);
+  if (scene && config.warmFrames > 0)
+    throw std::invalid_argument("warm_frames: a scene's frames (animate) run back to back already; "
+                                "set warm_frames to 0");
+  // A sampled block brings its own caches; a whole frame, those of its warm frames.
+  const std::optional<CacheContents> warmed =
+      plan.startCaches ? std::nullopt : warmedCaches(memory, records, config);
+  const CacheContents* startCaches = warmed ? &*warmed : plan.startCaches;
   freshKernel();
   std::unique_ptr<TimelineWriter> timeline;
   if (config.timeline.wanted()) {
@@ -104,8 +113,8 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
     listeners.push_back(timeline.get());
   }
   std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));
-  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), plan.startCaches,
-                                      scene);
+  auto top =
+      std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), startCaches, scene);
   if (trace) trace->checkScopesMatched();
 
   RtuRun run;

@@ -34,6 +34,7 @@ RtuStatistics RtuStatistics::of(const RtuConfig& config) {
   stats.hostInBytesPerCycle = config.hostInput.bytesPerCycle;
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
   stats.hostOutRecordBytes = config.outputLink().recordBytes;
+  stats.warmFrames = config.warmFrames;
   return stats;
 }
 
@@ -127,6 +128,11 @@ std::string RtuStatistics::limit() const {
 }
 
 double RtuStatistics::limitUtilisation() const { return ranked(utilisation()).front().second; }
+
+std::string RtuStatistics::cacheStart() const {
+  if (warmFrames == 0) return "cold";
+  return "warm after " + std::to_string(warmFrames) + (warmFrames == 1 ? " frame" : " frames");
+}
 
 std::string RtuStatistics::describeLimit() const {
   const auto all = ranked(utilisation());
@@ -263,6 +269,10 @@ const StatisticGroup<RtuStatistics>& RtuStatistics::declaration() {
                    &S::resultBuffersMaxFull)
           .setting(Statistic("memory/kind", "", "ideal or cached"),
                    [](const S& s) { return s.idealMemory ? "ideal" : "cached"; })
+          .setting(Statistic("memory/caches", "",
+                             "cold, or warm after N frames of the same rays (warm_frames)"),
+                   [](const S& s) { return s.cacheStart(); })
+          .writtenWhen(cached)
           .computed<CacheStats>(Statistic("memory/l1", "", "the L1s summed"), &S::allL1)
           .writtenWhen(cached)
           .group(Statistic("memory", "", ""), &S::l2)
@@ -326,7 +336,7 @@ void RtuStatistics::writeReport(std::ostream& out) const {
     out << "L1 hit rate " << 100 * hitRate(l1Total) << " % of " << l1Total.accesses
         << " reads; L2 hit rate " << 100 * hitRate(l2.cache) << " % of " << l2.cache.accesses
         << "; DRAM " << l2.dram.bytes << " bytes (" << dramBytesPerCycle() << " B/cycle, "
-        << dramBytesPerCycle() * clockMhz << " MB/s)\n";
+        << dramBytesPerCycle() * clockMhz << " MB/s), caches " << cacheStart() << "\n";
   }
   if (scene)
     out << "scene manager: " << ratio(scene->jobs, scene->rays) << " jobs per ray, "

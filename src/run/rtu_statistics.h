@@ -37,6 +37,7 @@ struct RtuStatistics {
   uint64_t reorderMaxOccupancy = 0;
   std::optional<SceneManagerStatistics> scene;  // a run through the scene manager
   bool idealMemory = true;
+  int warmFrames = 0;  // frames run through the caches before this one (warm_frames)
   std::vector<CacheStats> l1;
   L2Stats l2;
   uint64_t belowResolution = 0;  // rays flagged for nodes narrower than a step (result flag 4)
@@ -73,6 +74,8 @@ struct RtuStatistics {
   // "limited by cores (96.1 %)", "limited by cores (96.1 %; memory_latency 94.0 % close
   // behind)" or "nothing saturated (highest: cores 45.2 %)".
   std::string describeLimit() const;
+  // How the run's caches started: "cold", or "warm after N frames" (warm_frames).
+  std::string cacheStart() const;
   double frameMilliseconds() const;
 
   double cyclesPerRay() const;

@@ -100,6 +100,7 @@ WarmUp makeWarmUp(const WordMemory& memory, const std::vector<HostRecord>& jobs,
                   const RtuConfig& config) {
   return withCoreKind(config.core, [&](auto kind) -> WarmUp {
     auto warmer = std::make_shared<CacheWarmer<decltype(kind)>>(memory, config);
+    warmer->warmFrames(jobs, config.warmFrames);  // then each block's rays before it
     return [warmer, &jobs](uint64_t end) {
       warmer->warmUpTo(jobs, end);
       return &warmer->contents();

@@ -70,6 +70,9 @@ void validate(const RtuConfig& config) {
   config.sceneManager.validate();
   if (config.reorderCapacity < 0)
     throw std::invalid_argument("reorder buffer capacity must not be negative");
+  if (config.warmFrames < 0 || config.warmFrames > kMaxWarmFrames)
+    throw std::invalid_argument("warm_frames must be 0 to " + std::to_string(kMaxWarmFrames) +
+                                ", got " + std::to_string(config.warmFrames));
   validate(config.memory);  // settings are checked even when ideal memory ignores them
   checkCacheTagsFit(config);
   checkAccessFitsLines(config);

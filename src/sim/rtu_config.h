@@ -25,7 +25,10 @@ struct RtuConfig {
   JobManagerTiming jobManager;
   CoreKindConfigs coreConfigs;  // every kind's own settings (SVO's: format, stack, ...)
   HostLinkConfig hostInput, hostOutput;
-  int reorderCapacity = 0;          // 0: no reorder buffer
+  int reorderCapacity = 0;  // 0: no reorder buffer
+  // warm_frames: frames of the same records run through the caches before the measured one
+  // (functional warming, run/warm_frames.h); 0: the frame starts from cold caches.
+  int warmFrames = 0;
   SceneManagerConfig sceneManager;  // used when the run traces a scene
   double clockMhz = 100.0;
   uint64_t ltQuantum = 1000;  // loosely-timed model: global quantum in cycles (lt.quantum)
@@ -51,6 +54,9 @@ struct RtuConfig {
 };
 
 // Throws std::invalid_argument with a message naming the setting for impossible configurations.
+// The most warm frames a run takes: each costs one untimed pass over the frame's rays.
+constexpr int kMaxWarmFrames = 100;
+
 void validate(const RtuConfig& config);
 
 constexpr int kMaxCores = 1024;
