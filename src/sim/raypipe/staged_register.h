@@ -1,0 +1,45 @@
+#pragma once
+// A unit's registered output for the timed model (TRAV's requests to the shortstack, tarb and
+// larb, its leaf_max to the list unit, the list unit's miss to the shortstack), lazy in time:
+// timing rule: a value set in cycle t is read from t + 1; in t every reader sees the old one. A
+// register nobody sets keeps its value and costs nothing.
+
+#include <cstdint>
+
+namespace rtu {
+namespace raypipe_timed {
+
+template <class T>
+class StagedRegister {
+ public:
+  bool valid(int64_t now) {
+    commit(now);
+    return valid_;
+  }
+  const T& value(int64_t now) {
+    commit(now);
+    return value_;
+  }
+  // The value from the next cycle on (only `valid` when invalid).
+  void set(int64_t now, bool valid, const T* value) {
+    commit(now);
+    pending_ = true;
+    nextValid_ = valid;
+    if (value) next_ = *value;
+    setAt_ = now;
+  }
+
+ private:
+  void commit(int64_t now) {
+    if (!pending_ || setAt_ >= now) return;
+    valid_ = nextValid_;
+    value_ = next_;
+    pending_ = false;
+  }
+  bool valid_ = false, nextValid_ = false, pending_ = false;
+  T value_{}, next_{};
+  int64_t setAt_ = 0;
+};
+
+}  // namespace raypipe_timed
+}  // namespace rtu

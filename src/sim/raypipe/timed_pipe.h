@@ -1,0 +1,77 @@
+#pragma once
+// The timed model of seed 001's ray pipe (raypipe_timed.h): the top as a class, each unit group's
+// cycle function in its own file (timed_front.cpp, timed_traversal.cpp, timed_shortstack.cpp,
+// timed_intersection.cpp, timed_list.cpp, timed_shader_return.cpp). A cycle visits the groups
+// from the pixel buffer back to the PRG, as the RTL's combinational stalls settle; inside a group
+// a unit does nothing unless it holds or is offered an item, and every FIFO, pipe and register is
+// lazy in time, so no end-of-cycle tick is needed. Cycles in which no unit can act (every ray in a
+// fixed-latency pipe or a FIFO not yet shown) are skipped to the next one that can.
+
+#include <cstdint>
+#include <vector>
+
+#include "kinds/kd/kd_image.h"
+#include "raypipe/raypipe_config.h"
+#include "raypipe/raypipe_run.h"
+#include "sim/raypipe/timed_units.h"
+
+namespace rtu {
+namespace raypipe_timed {
+
+class TimedPipe {
+ public:
+  TimedPipe(const RaypipeConfig& config, const KdImage& image,
+            const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options);
+  RaypipeCycleRun run();
+
+ private:
+  RayRecord& record(uint32_t ray) { return records_[ray]; }
+  StackRow& stackRow(uint32_t ray, uint32_t row) {
+    return stack_[ray * static_cast<uint32_t>(config_.shortStackDepth) + row];
+  }
+  void busy(Unit u, const RayToken& t, bool hasRay = true);
+  void stall(Unit u) { ++stall_[static_cast<size_t>(u)]; }
+
+  void step();
+  void shaderReturn();
+  void listUnit();
+  void listRecord(bool dsStall);
+  void intersection();
+  void traversal();
+  void travDecision(bool toTarbStall);
+  void travMath(bool pipeDsStall);
+  void travInputAndLeaves(bool rs0UsStall, bool toLarbStall);
+  void shortStack();
+  void shortStackInputs();
+  void stackPath();
+  void restartPath();
+  void restartWrites(bool restReading);
+  void sceneIntersection();
+  void shaderIssueAndPrg();
+  bool travToSsStall();
+  bool listToSsStall();
+
+  const RaypipeConfig& config_;
+  bool recordTransfers_ = false;
+  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
+  WordMemory memory_;
+  KdSections sections_;
+  const std::vector<RaypipeCycleRay>& rays_;
+  Channels c_;
+  std::vector<RayRecord> records_;
+  std::vector<StackRow> stack_;
+  std::vector<RaypipeCycleResult> results_;
+  std::vector<RaypipeTransfer> transfers_;
+  std::vector<int64_t> busy_, stall_;
+  int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
+  size_t issued_ = 0, written_ = 0;
+  int inFlight_ = 0, maxInFlight_ = 0;
+  int64_t staleListHits_ = 0;
+  // The stalls every group reads, from registered state at the cycle's start or from a group
+  // visited earlier in the cycle.
+  bool travToSsStall_ = false, listToSsStall_ = false, sintToSsStall_ = false;
+  bool listToRsStall_ = false, intToListStall_ = false, sintUsStall_ = false;
+};
+
+}  // namespace raypipe_timed
+}  // namespace rtu
