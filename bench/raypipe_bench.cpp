@@ -1,0 +1,51 @@
+// Seed 001's ray pipe (issue 29 §4): host seconds of the timed model (sim/raypipe/raypipe_timed.h)
+// against the per-cycle reference (reference/raypipe_cycles.h) on R1's primary rays at a
+// resolution level (default 5: 640x480) over the sphere-like mesh of 80 triangles the reference's
+// "[.raypipe_figures]" test renders (R1's bunny is not in the repository). The two run alternately
+// --repeat times (default 3), each run's host seconds printed and the fastest of each compared, so
+// a busy moment of the shared machine weighs on neither side alone; the frame cycles must agree.
+// Not a test: run it and record the figures in docs/performance.md, "Ray pipe".
+//   build/bench/raypipe_bench [--level 0-5] [--repeat N]
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "raypipe_scenes.h"
+#include "reference/raypipe_cycles.h"
+#include "sim/raypipe/raypipe_timed.h"
+
+using namespace rtu;
+
+int main(int argc, char** argv) {
+  int level = 5, repeat = 3;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--level") level = std::atoi(argv[i + 1]);
+    else if (flag == "--repeat") repeat = std::atoi(argv[i + 1]);
+  }
+  const KdImage image = frameScene();
+  const std::vector<RaypipeCycleRay> rays = prgRays(level);
+  const RaypipeConfig config;
+  double bestTimed = 1e30, bestReference = 1e30;
+  for (int r = 0; r < repeat; ++r) {
+    const RaypipeCycleRun timed = runRaypipeTimed(config, image, rays);
+    const RaypipeCycleRun reference = runRaypipeCycles(config, image, rays);
+    if (timed.frameCycles != reference.frameCycles) {
+      std::fprintf(stderr, "frame cycles differ: timed %lld, reference %lld\n",
+                   static_cast<long long>(timed.frameCycles),
+                   static_cast<long long>(reference.frameCycles));
+      return 1;
+    }
+    std::printf("round %d: %dx%d, %zu rays, %lld cycles: timed %.3f s, reference %.3f s\n", r + 1,
+                20 << level, 15 << level, rays.size(), static_cast<long long>(timed.frameCycles),
+                timed.hostSeconds, reference.hostSeconds);
+    bestTimed = std::min(bestTimed, timed.hostSeconds);
+    bestReference = std::min(bestReference, reference.hostSeconds);
+  }
+  std::printf("fastest: timed %.3f s, reference %.3f s, %.1fx\n", bestTimed, bestReference,
+              bestReference / bestTimed);
+  return 0;
+}
