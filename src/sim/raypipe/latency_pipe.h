@@ -5,15 +5,18 @@
 // us_stall = ds_stall & (one_cnt >= the FIFO's free slots), one_cnt the items accepted before t
 // and not left before t (the one leaving in t included).
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
+
+#include "sim/raypipe/wake_calendar.h"
 
 namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class LatencyPipe {
+class LatencyPipe : public Scheduled {
  public:
   explicit LatencyPipe(int depth) : depth_(depth) {
     size_t capacity = 1;
@@ -36,6 +39,10 @@ class LatencyPipe {
     --count_;
     lastTake_ = now;
     return item;
+  }
+  // Its head leaving.
+  int64_t nextCycle(int64_t now) const override {
+    return count_ > 0 ? std::max(now + 1, slots_[head_].accepted + depth_) : kNoCycle;
   }
   void accept(int64_t now, const T& item) {
     if (lastAccept_ == now) throw std::logic_error("raypipe timed model: two items into one pipe");

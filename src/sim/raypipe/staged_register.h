@@ -6,11 +6,13 @@
 
 #include <cstdint>
 
+#include "sim/raypipe/wake_calendar.h"
+
 namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class StagedRegister {
+class StagedRegister : public Scheduled {
  public:
   bool valid(int64_t now) {
     commit(now);
@@ -19,6 +21,10 @@ class StagedRegister {
   const T& value(int64_t now) {
     commit(now);
     return value_;
+  }
+  // Valid in the next cycle.
+  int64_t nextCycle(int64_t now) const override {
+    return (pending_ ? nextValid_ : valid_) ? now + 1 : kNoCycle;
   }
   // The value from the next cycle on (only `valid` when invalid).
   void set(int64_t now, bool valid, const T* value) {

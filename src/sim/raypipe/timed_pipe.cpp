@@ -6,6 +6,8 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <initializer_list>
+#include <utility>
 
 #include "sim/raypipe/raypipe_timed.h"
 
@@ -20,6 +22,9 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
       sections_(sectionsOf(decodeKdHeader(image.words.data()))),
       rays_(rays),
       c_(config),
+      calendar_(8 + std::max({config.latency.prg, config.latency.prgInterval, config.latency.sint,
+                              config.latency.travMath, config.latency.intersection,
+                              config.latency.memoryRead, 4})),
       records_(static_cast<size_t>(config.raysInFlight)),
       stack_(static_cast<size_t>(config.raysInFlight * config.shortStackDepth)),
       results_(rays.size()),
@@ -32,6 +37,68 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
   for (int id = 0; id < config.raysInFlight; ++id)
     c_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
   initEnd_ = reset + 512;
+  wireCalendar();
+  calendar_.book(kPrg, 0, -1);
+}
+
+void TimedPipe::touch(const Scheduled& channel, uint32_t groups, uint32_t pushers) {
+  for (int g = 0; g < kGroups; ++g)
+    if ((groups | pushers) & (1u << g)) touches_[g].push_back(Touch{&channel, groups});
+}
+
+// Which groups act on which channel: the one that reads it and the one whose code pops it when
+// an arbiter takes its head, the one that leaves a pipe, the ones reading a register.
+void TimedPipe::wireCalendar() {
+  touch(c_.prgPipe, kPrg);
+  touch(c_.prgFifo, kPrg);
+  touch(c_.idFifo, kPrg, kShader);
+  touch(c_.sintPipe, kSint, kPrg);
+  touch(c_.sintTarb, kSint | kTrav);
+  touch(c_.sintSs, kSint | kStack);
+  touch(c_.sintShader, kSint | kShader);
+  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.tarb.out()), &c_.tcache.pipe,
+                              &c_.tcache.fifo, &c_.rs0.pipe, &c_.rs0.fifo, &c_.leafFifo,
+                              &c_.travPipe, &c_.travFifo, &c_.travTarb, &c_.travList})
+    touch(*ch, kTrav);
+  touch(c_.travSs, kTrav | kStack);
+  touch(c_.travLarb, kTrav | kInt);
+  for (size_t i = 0; i < 3; ++i) {
+    touch(c_.stackRead[i], kStack);
+    touch(c_.restRead[i], kStack);
+    touch(c_.restWrite[i], kStack);
+  }
+  touch(c_.stackWrite, kStack);
+  touch(c_.stackPipe, kStack);
+  touch(c_.restPipe, kStack);
+  touch(c_.stackFifo, kStack | kTrav);
+  touch(c_.notMissFifo, kStack | kTrav);
+  touch(c_.missFifo, kStack | kShader);
+  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.larb.out()), &c_.lcache.pipe, &c_.lcache.fifo,
+        &c_.icache.pipe, &c_.icache.fifo, &c_.rs1.pipe, &c_.rs1.fifo, &c_.intPipe, &c_.intLarb})
+    touch(*ch, kInt);
+  touch(c_.intList, kInt | kList);
+  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.listPipe), &c_.listLast,
+                              &c_.listHitPipe, &c_.listHitFifo, &c_.rs2.pipe})
+    touch(*ch, kList);
+  touch(c_.toSs, kList | kStack);
+  touch(c_.rs2.fifo, kList | kShader);
+  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.shaderArb.out()), &c_.shaderPipe,
+                              &c_.shaderData, &c_.pixelBuffer})
+    touch(*ch, kShader);
+}
+
+// After `group` acted in now_: every channel it touches books its groups; an arbiter holding an
+// item books its group for the next cycle, the PRG its next v0 while pixels are left.
+void TimedPipe::settle(uint32_t group) {
+  const int g = __builtin_ctz(group);
+  for (const Touch& t : touches_[g]) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
+  const bool holds = (group == kTrav && c_.tarb.holds()) || (group == kInt && c_.larb.holds()) ||
+                     (group == kShader && c_.shaderArb.holds());
+  if (holds) calendar_.book(group, now_ + 1, now_);
+  if (group == kPrg && issued_ < rays_.size()) {
+    const int64_t interval = config_.latency.prgInterval;
+    calendar_.book(kPrg, (now_ / interval + 1) * interval, now_);
+  }
 }
 
 void TimedPipe::busy(Unit u, const RayToken& t, bool hasRay) {
@@ -46,19 +113,24 @@ void TimedPipe::step() {
   travToSsStall_ = travToSsStall();
   listToSsStall_ = listToSsStall();
   sintToSsStall_ = c_.sintSs.shown(now_) && c_.restWrite[2].full(now_);
-  shaderReturn();
-  listUnit();
-  intersection();
-  traversal();
-  shortStack();
-  sceneIntersection();
-  shaderIssueAndPrg();
+  listToRsStall_ = intToListStall_ = sintUsStall_ = false;  // a group not called: low
+  const std::pair<uint32_t, void (TimedPipe::*)()> groups[] = {
+      {kShader, &TimedPipe::shaderReturn}, {kList, &TimedPipe::listUnit},
+      {kInt, &TimedPipe::intersection},    {kTrav, &TimedPipe::traversal},
+      {kStack, &TimedPipe::shortStack},    {kSint, &TimedPipe::sceneIntersection},
+      {kPrg, &TimedPipe::shaderIssueAndPrg}};
+  for (const auto& g : groups) {
+    if (!runs(g.first)) continue;
+    (this->*g.second)();
+    settle(g.first);
+  }
 }
 
 RaypipeCycleRun TimedPipe::run() {
   const auto start = std::chrono::steady_clock::now();
   while (written_ < rays_.size()) {
-    step();
+    booked_ = calendar_.take(now_);
+    if (booked_) step();
     if (now_ - lastProgress_ > 1000000)
       throw std::logic_error("raypipe timed model: no progress for a million cycles at cycle " +
                              std::to_string(now_));

@@ -4,8 +4,11 @@
 // timed_intersection.cpp, timed_list.cpp, timed_shader_return.cpp). A cycle visits the groups
 // from the pixel buffer back to the PRG, as the RTL's combinational stalls settle; inside a group
 // a unit does nothing unless it holds or is offered an item, and every FIFO, pipe and register is
-// lazy in time, so no end-of-cycle tick is needed. Cycles in which no unit can act (every ray in a
-// fixed-latency pipe or a FIFO not yet shown) are skipped to the next one that can.
+// lazy in time, so no end-of-cycle tick is needed. A group is called only in the cycles the wake
+// calendar (wake_calendar.h) books it for: a FIFO's head shown, a pipe's head leaving, a register
+// valid, an arbiter holding an item, the PRG's v0; a group not called computes nothing and its
+// stalls are low (each is some valid signal of its channels ANDed with more, and a valid one books
+// the group).
 
 #include <cstdint>
 #include <vector>
@@ -14,6 +17,7 @@
 #include "raypipe/raypipe_config.h"
 #include "raypipe/raypipe_run.h"
 #include "sim/raypipe/timed_units.h"
+#include "sim/raypipe/wake_calendar.h"
 
 namespace rtu {
 namespace raypipe_timed {
@@ -31,6 +35,21 @@ class TimedPipe {
   }
   void busy(Unit u, const RayToken& t, bool hasRay = true);
   void stall(Unit u) { ++stall_[static_cast<size_t>(u)]; }
+
+  // The unit groups, as calendar bits, in the order a cycle visits them.
+  enum Group : uint32_t {
+    kShader = 1, kList = 2, kInt = 4, kTrav = 8, kStack = 16, kSint = 32, kPrg = 64
+  };
+  static constexpr int kGroups = 7;
+  struct Touch {
+    const Scheduled* channel;
+    uint32_t groups;  // the groups that act on it
+  };
+  // `channel` needs `groups`; `pushers` also write it (and book its groups after they act).
+  void touch(const Scheduled& channel, uint32_t groups, uint32_t pushers = 0);
+  void wireCalendar();
+  void settle(uint32_t group);
+  bool runs(uint32_t group) const { return (booked_ & group) != 0; }
 
   void step();
   void shaderReturn();
@@ -58,6 +77,9 @@ class TimedPipe {
   KdSections sections_;
   const std::vector<RaypipeCycleRay>& rays_;
   Channels c_;
+  WakeCalendar calendar_;
+  std::vector<Touch> touches_[kGroups];
+  uint32_t booked_ = 0;  // the groups booked for now_
   std::vector<RayRecord> records_;
   std::vector<StackRow> stack_;
   std::vector<RaypipeCycleResult> results_;

@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "sim/raypipe/wake_calendar.h"
+
 namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class TimedQueue {
+class TimedQueue : public Scheduled {
  public:
   TimedQueue(std::string name, int depth, int showDelay)
       : name_(std::move(name)), depth_(depth), delay_(showDelay) {
@@ -50,6 +52,10 @@ class TimedQueue {
   // An item written before the run's first cycle (the shader's ray ids).
   void preload(const T& item, int64_t written) { write(written, item, written); }
   int peak() const { return std::max(peak_, count_); }
+  // Its head shown (again, after a read in `now`).
+  int64_t nextCycle(int64_t now) const override {
+    return count_ > 0 ? std::max(now + 1, slots_[head_].written + delay_) : kNoCycle;
+  }
 
  private:
   void settle(int64_t now) {
