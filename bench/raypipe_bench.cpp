@@ -2,7 +2,8 @@
 // against the per-cycle reference (reference/raypipe_cycles.h) on R1's primary rays at a
 // resolution level (default 5: 640x480) over the sphere-like mesh of 80 triangles the reference's
 // "[.raypipe_figures]" test renders (R1's bunny is not in the repository). The two run alternately
-// --repeat times (default 3), each run's host seconds printed and the fastest of each compared, so
+// --repeat times (default 3), each run's host seconds (wall, and the thread's CPU seconds, which other
+// processes on the shared machine change far less) printed and the fastest of each compared, so
 // a busy moment of the shared machine weighs on neither side alone; the frame cycles must agree.
 // Not a test: run it and record the figures in docs/performance.md, "Ray pipe".
 //   build/bench/raypipe_bench [--level 0-5] [--repeat N]
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,16 @@
 #include "sim/raypipe/raypipe_timed.h"
 
 using namespace rtu;
+
+namespace {
+
+double threadCpuSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   int level = 5, repeat = 3;
@@ -29,23 +41,31 @@ int main(int argc, char** argv) {
   const KdImage image = frameScene();
   const std::vector<RaypipeCycleRay> rays = prgRays(level);
   const RaypipeConfig config;
-  double bestTimed = 1e30, bestReference = 1e30;
+  double bestTimed = 1e30, bestReference = 1e30, cpuTimed = 1e30, cpuReference = 1e30;
   for (int r = 0; r < repeat; ++r) {
+    const double t0 = threadCpuSeconds();
     const RaypipeCycleRun timed = runRaypipeTimed(config, image, rays);
+    const double t1 = threadCpuSeconds();
     const RaypipeCycleRun reference = runRaypipeCycles(config, image, rays);
+    const double t2 = threadCpuSeconds();
+    cpuTimed = std::min(cpuTimed, t1 - t0);
+    cpuReference = std::min(cpuReference, t2 - t1);
     if (timed.frameCycles != reference.frameCycles) {
       std::fprintf(stderr, "frame cycles differ: timed %lld, reference %lld\n",
                    static_cast<long long>(timed.frameCycles),
                    static_cast<long long>(reference.frameCycles));
       return 1;
     }
-    std::printf("round %d: %dx%d, %zu rays, %lld cycles: timed %.3f s, reference %.3f s\n", r + 1,
-                20 << level, 15 << level, rays.size(), static_cast<long long>(timed.frameCycles),
-                timed.hostSeconds, reference.hostSeconds);
+    std::printf(
+        "round %d: %dx%d, %zu rays, %lld cycles: timed %.3f s (cpu %.3f), reference %.3f s (cpu "
+        "%.3f)\n",
+        r + 1, 20 << level, 15 << level, rays.size(), static_cast<long long>(timed.frameCycles),
+        timed.hostSeconds, t1 - t0, reference.hostSeconds, t2 - t1);
     bestTimed = std::min(bestTimed, timed.hostSeconds);
     bestReference = std::min(bestReference, reference.hostSeconds);
   }
-  std::printf("fastest: timed %.3f s, reference %.3f s, %.1fx\n", bestTimed, bestReference,
-              bestReference / bestTimed);
+  std::printf("fastest: timed %.3f s (cpu %.3f), reference %.3f s (cpu %.3f): %.1fx (cpu %.1fx)\n",
+              bestTimed, cpuTimed, bestReference, cpuReference, bestReference / bestTimed,
+              cpuReference / cpuTimed);
   return 0;
 }

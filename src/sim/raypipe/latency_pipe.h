@@ -1,11 +1,10 @@
 #pragma once
 // R1's `pipe_valid_stall` for the timed model: a fixed-latency pipe that never stalls inside, lazy
 // in time (each item carries the cycle it was accepted; nothing happens between its entry and its
-// exit). Timing rule: accepted in t, it leaves in t + depth into the FIFO behind it;
+// exit, for which accept books the groups that take it out on the wake calendar). Timing rule: accepted in t, it leaves in t + depth into the FIFO behind it;
 // us_stall = ds_stall & (one_cnt >= the FIFO's free slots), one_cnt the items accepted before t
 // and not left before t (the one leaving in t included).
 
-#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -16,7 +15,7 @@ namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class LatencyPipe : public Scheduled {
+class LatencyPipe {
  public:
   explicit LatencyPipe(int depth) : depth_(depth) {
     size_t capacity = 1;
@@ -40,15 +39,17 @@ class LatencyPipe : public Scheduled {
     lastTake_ = now;
     return item;
   }
-  // Its head leaving.
-  int64_t nextCycle(int64_t now) const override {
-    return count_ > 0 ? std::max(now + 1, slots_[head_].accepted + depth_) : kNoCycle;
+  // Each item accepted books `groups` for the cycle it leaves.
+  void bookExitsOn(WakeCalendar& calendar, uint32_t groups) {
+    calendar_ = &calendar;
+    groups_ = groups;
   }
   void accept(int64_t now, const T& item) {
     if (lastAccept_ == now) throw std::logic_error("raypipe timed model: two items into one pipe");
     slots_[(head_ + static_cast<size_t>(count_)) & (slots_.size() - 1)] = Slot{item, now};
     ++count_;
     lastAccept_ = now;
+    if (calendar_) calendar_->book(groups_, now + depth_, now);
   }
 
  private:
@@ -61,6 +62,8 @@ class LatencyPipe : public Scheduled {
   size_t head_ = 0;
   int count_ = 0;
   int64_t lastAccept_ = INT64_MIN, lastTake_ = INT64_MIN;
+  WakeCalendar* calendar_ = nullptr;
+  uint32_t groups_ = 0;
 };
 
 }  // namespace raypipe_timed

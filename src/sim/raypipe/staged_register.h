@@ -12,7 +12,7 @@ namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class StagedRegister : public Scheduled {
+class StagedRegister {
  public:
   bool valid(int64_t now) {
     commit(now);
@@ -23,7 +23,7 @@ class StagedRegister : public Scheduled {
     return value_;
   }
   // Valid in the next cycle.
-  int64_t nextCycle(int64_t now) const override {
+  int64_t nextCycle(int64_t now) const {
     return (pending_ ? nextValid_ : valid_) ? now + 1 : kNoCycle;
   }
   // The value from the next cycle on (only `valid` when invalid).

@@ -41,11 +41,6 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
   calendar_.book(kPrg, 0, -1);
 }
 
-void TimedPipe::touch(const Scheduled& channel, uint32_t groups, uint32_t pushers) {
-  for (int g = 0; g < kGroups; ++g)
-    if ((groups | pushers) & (1u << g)) touches_[g].push_back(Touch{&channel, groups});
-}
-
 // Which groups act on which channel: the one that reads it and the one whose code pops it when
 // an arbiter takes its head, the one that leaves a pipe, the ones reading a register.
 void TimedPipe::wireCalendar() {
@@ -56,10 +51,10 @@ void TimedPipe::wireCalendar() {
   touch(c_.sintTarb, kSint | kTrav);
   touch(c_.sintSs, kSint | kStack);
   touch(c_.sintShader, kSint | kShader);
-  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.tarb.out()), &c_.tcache.pipe,
-                              &c_.tcache.fifo, &c_.rs0.pipe, &c_.rs0.fifo, &c_.leafFifo,
-                              &c_.travPipe, &c_.travFifo, &c_.travTarb, &c_.travList})
-    touch(*ch, kTrav);
+  touchAll<Fifo>({&c_.tarb.out(), &c_.tcache.fifo, &c_.rs0.fifo, &c_.leafFifo, &c_.travFifo},
+                 kTrav);
+  for (auto* pipe : {&c_.tcache.pipe, &c_.rs0.pipe, &c_.travPipe}) touch(*pipe, kTrav);
+  touchAll<Register>({&c_.travTarb, &c_.travList}, kTrav);
   touch(c_.travSs, kTrav | kStack);
   touch(c_.travLarb, kTrav | kInt);
   for (size_t i = 0; i < 3; ++i) {
@@ -73,25 +68,27 @@ void TimedPipe::wireCalendar() {
   touch(c_.stackFifo, kStack | kTrav);
   touch(c_.notMissFifo, kStack | kTrav);
   touch(c_.missFifo, kStack | kShader);
-  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.larb.out()), &c_.lcache.pipe, &c_.lcache.fifo,
-        &c_.icache.pipe, &c_.icache.fifo, &c_.rs1.pipe, &c_.rs1.fifo, &c_.intPipe, &c_.intLarb})
-    touch(*ch, kInt);
+  touchAll<Fifo>({&c_.larb.out(), &c_.lcache.fifo, &c_.icache.fifo, &c_.rs1.fifo, &c_.intLarb},
+                 kInt);
+  for (auto* pipe : {&c_.lcache.pipe, &c_.icache.pipe, &c_.rs1.pipe, &c_.intPipe}) touch(*pipe, kInt);
   touch(c_.intList, kInt | kList);
-  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.listPipe), &c_.listLast,
-                              &c_.listHitPipe, &c_.listHitFifo, &c_.rs2.pipe})
-    touch(*ch, kList);
+  touchAll<Fifo>({&c_.listLast, &c_.listHitFifo}, kList);
+  for (auto* pipe : {&c_.listPipe, &c_.listHitPipe, &c_.rs2.pipe}) touch(*pipe, kList);
   touch(c_.toSs, kList | kStack);
   touch(c_.rs2.fifo, kList | kShader);
-  for (const Scheduled* ch : std::initializer_list<const Scheduled*>{(&c_.shaderArb.out()), &c_.shaderPipe,
-                              &c_.shaderData, &c_.pixelBuffer})
-    touch(*ch, kShader);
+  touchAll<Fifo>({&c_.shaderArb.out(), &c_.shaderData, &c_.pixelBuffer}, kShader);
+  touch(c_.shaderPipe, kShader);
 }
 
 // After `group` acted in now_: every channel it touches books its groups; an arbiter holding an
 // item books its group for the next cycle, the PRG its next v0 while pixels are left.
 void TimedPipe::settle(uint32_t group) {
   const int g = __builtin_ctz(group);
-  for (const Touch& t : touches_[g]) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
+  const Touches& touches = touches_[g];
+  for (const auto& t : touches.fifos) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
+  for (const auto& t : touches.registers)
+    calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
+  for (const auto& t : touches.ids) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
   const bool holds = (group == kTrav && c_.tarb.holds()) || (group == kInt && c_.larb.holds()) ||
                      (group == kShader && c_.shaderArb.holds());
   if (holds) calendar_.book(group, now_ + 1, now_);

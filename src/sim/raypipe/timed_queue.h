@@ -19,7 +19,7 @@ namespace rtu {
 namespace raypipe_timed {
 
 template <class T>
-class TimedQueue : public Scheduled {
+class TimedQueue {
  public:
   TimedQueue(std::string name, int depth, int showDelay)
       : name_(std::move(name)), depth_(depth), delay_(showDelay) {
@@ -53,7 +53,7 @@ class TimedQueue : public Scheduled {
   void preload(const T& item, int64_t written) { write(written, item, written); }
   int peak() const { return std::max(peak_, count_); }
   // Its head shown (again, after a read in `now`).
-  int64_t nextCycle(int64_t now) const override {
+  int64_t nextCycle(int64_t now) const {
     return count_ > 0 ? std::max(now + 1, slots_[head_].written + delay_) : kNoCycle;
   }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The timed model's scheduler (docs/raypipe.md, "The timed model"): which unit groups act in which
-// cycle. Every channel (FIFO, fixed-latency pipe, register) says the next cycle it needs its
-// groups (a FIFO: its head shown; a pipe: its head leaving; a register: valid); after a group acts
+// cycle. Every channel (FIFO, fixed-latency pipe, register) says (nextCycle: after `now`, or
+// kNoCycle) the next cycle it needs its groups (a FIFO: its head shown; a pipe: its head leaving; a register: valid); after a group acts
 // in cycle t, every channel it touches books its groups for that cycle, so a group is called
 // exactly in the cycles one of its channels needs it (and a few more: an extra call does what the
 // RTL does in a cycle with nothing to move, nothing), and a cycle with no group booked costs one
@@ -16,15 +16,6 @@ namespace rtu {
 namespace raypipe_timed {
 
 constexpr int64_t kNoCycle = std::numeric_limits<int64_t>::max();
-
-// A channel the calendar asks: the first cycle after `now` its groups must act in, or kNoCycle.
-class Scheduled {
- public:
-  virtual int64_t nextCycle(int64_t now) const = 0;
-
- protected:
-  ~Scheduled() = default;
-};
 
 class WakeCalendar {
  public:
