@@ -42,6 +42,11 @@ void TimedPipe::sceneIntersection() {
 
 void TimedPipe::shaderIssueAndPrg() {
   const auto& lat = config_.latency;
+  // SINT stalled in every cycle since the last call from the one the PRG FIFO's head was shown
+  if (c_.prgFifo.any())
+    stall_[static_cast<size_t>(Unit::Sint)] +=
+        std::max<int64_t>(0, now_ - std::max(lastPrgCall_ + 1, c_.prgFifo.headShownFrom()));
+  lastPrgCall_ = now_;
   const bool idShown = c_.idFifo.shown(now_);
   const bool prgShown = c_.prgFifo.shown(now_);
   const bool toSintValid = prgShown && idShown;

@@ -44,9 +44,7 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
 // Which groups act on which channel: the one that reads it and the one whose code pops it when
 // an arbiter takes its head, the one that leaves a pipe, the ones reading a register.
 void TimedPipe::wireCalendar() {
-  touch(c_.prgPipe, kPrg);
-  touch(c_.prgFifo, kPrg);
-  touch(c_.idFifo, kPrg, kShader);
+  touch(c_.prgPipe, kPrg);  // the PRG FIFO and the ids: settle
   touch(c_.sintPipe, kSint, kPrg);
   touch(c_.sintTarb, kSint | kTrav);
   touch(c_.sintSs, kSint | kStack);
@@ -81,7 +79,9 @@ void TimedPipe::wireCalendar() {
 }
 
 // After `group` acted in now_: every channel it touches books its groups; an arbiter holding an
-// item books its group for the next cycle, the PRG its next v0 while pixels are left.
+// item books its group for the next cycle; the PRG and the shader's issue side book their next v0
+// while pixels are left and their next v2 while the PRG's FIFO holds a ray (the cycles between
+// change nothing but SINT's stall count, which shaderIssueAndPrg adds up).
 void TimedPipe::settle(uint32_t group) {
   const int g = __builtin_ctz(group);
   const Touches& touches = touches_[g];
@@ -92,9 +92,15 @@ void TimedPipe::settle(uint32_t group) {
   const bool holds = (group == kTrav && c_.tarb.holds()) || (group == kInt && c_.larb.holds()) ||
                      (group == kShader && c_.shaderArb.holds());
   if (holds) calendar_.book(group, now_ + 1, now_);
-  if (group == kPrg && issued_ < rays_.size()) {
+  if (group != kPrg) return;
+  if (issued_ < rays_.size()) {
     const int64_t interval = config_.latency.prgInterval;
     calendar_.book(kPrg, (now_ / interval + 1) * interval, now_);
+  }
+  if (c_.prgFifo.any()) {
+    const int64_t interval = config_.latency.sintInterval;
+    const int64_t from = std::max(now_ + 1, c_.prgFifo.headShownFrom());
+    calendar_.book(kPrg, (from + 1 + interval - 1) / interval * interval - 1, now_);
   }
 }
 

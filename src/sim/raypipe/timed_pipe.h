@@ -109,6 +109,7 @@ class TimedPipe {
   std::vector<RaypipeTransfer> transfers_;
   std::vector<int64_t> busy_, stall_;
   int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
+  int64_t lastPrgCall_ = -1;  // the last cycle shaderIssueAndPrg ran
   size_t issued_ = 0, written_ = 0;
   int inFlight_ = 0, maxInFlight_ = 0;
   int64_t staleListHits_ = 0;

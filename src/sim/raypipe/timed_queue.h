@@ -54,8 +54,10 @@ class TimedQueue {
   int peak() const { return std::max(peak_, count_); }
   // Its head shown (again, after a read in `now`).
   int64_t nextCycle(int64_t now) const {
-    return count_ > 0 ? std::max(now + 1, slots_[head_].written + delay_) : kNoCycle;
+    return count_ > 0 ? std::max(now + 1, headShownFrom()) : kNoCycle;
   }
+  // The first cycle the head is shown in (with an item).
+  int64_t headShownFrom() const { return slots_[head_].written + delay_; }
 
  private:
   void settle(int64_t now) {
