@@ -2,9 +2,9 @@
 // against the per-cycle reference (reference/raypipe_cycles.h) on R1's primary rays at a
 // resolution level (default 5: 640x480) over the sphere-like mesh of 80 triangles the reference's
 // "[.raypipe_figures]" test renders (R1's bunny is not in the repository). The two run alternately
-// --repeat times (default 3), each run's host seconds (wall, and the thread's CPU seconds, which other
-// processes on the shared machine change far less) printed and the fastest of each compared, so
-// a busy moment of the shared machine weighs on neither side alone; the frame cycles must agree.
+// --repeat times (default 3), each run's host seconds (wall, and the thread's CPU seconds, which
+// other processes on the shared machine change far less) printed and the fastest of each compared,
+// so a busy moment of the shared machine weighs on neither side alone; the frame cycles must agree.
 // Not a test: run it and record the figures in docs/performance.md, "Ray pipe".
 //   build/bench/raypipe_bench [--level 0-5] [--repeat N]
 
@@ -35,8 +35,10 @@ int main(int argc, char** argv) {
   int level = 5, repeat = 3;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--level") level = std::atoi(argv[i + 1]);
-    else if (flag == "--repeat") repeat = std::atoi(argv[i + 1]);
+    if (flag == "--level")
+      level = std::atoi(argv[i + 1]);
+    else if (flag == "--repeat")
+      repeat = std::atoi(argv[i + 1]);
   }
   const KdImage image = frameScene();
   const std::vector<RaypipeCycleRay> rays = prgRays(level);

@@ -49,12 +49,9 @@ class RotatingArbiter {
       }
       if (any) pointer_ = (pointer_ + 1) % N;
     }
-    if (chosen >= 0) {
-      granted_ = *data[static_cast<size_t>(chosen)];
-      out_.push(now, granted_);
-    }
+    if (chosen >= 0) out_.push(now, *data[static_cast<size_t>(chosen)]);
     for (int i = 0; i < N; ++i) hold(i, data[static_cast<size_t>(i)] && i != chosen, offers);
-    return chosen >= 0 ? &granted_ : nullptr;
+    return chosen >= 0 ? &out_.back() : nullptr;
   }
   bool stallUs(int i, int64_t now) const {
     return stamp_ == now && stallUs_[static_cast<size_t>(i)];
@@ -84,7 +81,6 @@ class RotatingArbiter {
   std::array<Input, N> inputs_{};
   std::array<bool, N> offered_{}, stallUs_{};
   TimedQueue<T> out_;
-  T granted_{};
   int pointer_ = 0;
   int64_t stamp_ = INT64_MIN;
 };

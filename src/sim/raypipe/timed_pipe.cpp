@@ -6,7 +6,6 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
-#include <initializer_list>
 #include <utility>
 
 #include "sim/raypipe/raypipe_timed.h"
@@ -42,53 +41,48 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
 }
 
 // Which groups act on which channel: the one that reads it and the one whose code pops it when
-// an arbiter takes its head, the one that leaves a pipe, the ones reading a register.
+// an arbiter takes its head, the one that takes a pipe's items out, the ones reading a register.
+// The PRG's FIFO and the ray ids book nobody: the PRG and SINT's issue side run on v0 and v2.
 void TimedPipe::wireCalendar() {
-  touch(c_.prgPipe, kPrg);  // the PRG FIFO and the ids: settle
-  touch(c_.sintPipe, kSint, kPrg);
-  touch(c_.sintTarb, kSint | kTrav);
-  touch(c_.sintSs, kSint | kStack);
-  touch(c_.sintShader, kSint | kShader);
-  touchAll<Fifo>({&c_.tarb.out(), &c_.tcache.fifo, &c_.rs0.fifo, &c_.leafFifo, &c_.travFifo},
-                 kTrav);
-  for (auto* pipe : {&c_.tcache.pipe, &c_.rs0.pipe, &c_.travPipe}) touch(*pipe, kTrav);
-  touchAll<Register>({&c_.travTarb, &c_.travList}, kTrav);
-  touch(c_.travSs, kTrav | kStack);
-  touch(c_.travLarb, kTrav | kInt);
-  for (size_t i = 0; i < 3; ++i) {
-    touch(c_.stackRead[i], kStack);
-    touch(c_.restRead[i], kStack);
-    touch(c_.restWrite[i], kStack);
-  }
-  touch(c_.stackWrite, kStack);
-  touch(c_.stackPipe, kStack);
-  touch(c_.restPipe, kStack);
-  touch(c_.stackFifo, kStack | kTrav);
-  touch(c_.notMissFifo, kStack | kTrav);
-  touch(c_.missFifo, kStack | kShader);
-  touchAll<Fifo>({&c_.larb.out(), &c_.lcache.fifo, &c_.icache.fifo, &c_.rs1.fifo, &c_.intLarb},
-                 kInt);
-  for (auto* pipe : {&c_.lcache.pipe, &c_.icache.pipe, &c_.rs1.pipe, &c_.intPipe}) touch(*pipe, kInt);
-  touch(c_.intList, kInt | kList);
-  touchAll<Fifo>({&c_.listLast, &c_.listHitFifo}, kList);
-  for (auto* pipe : {&c_.listPipe, &c_.listHitPipe, &c_.rs2.pipe}) touch(*pipe, kList);
-  touch(c_.toSs, kList | kStack);
-  touch(c_.rs2.fifo, kList | kShader);
-  touchAll<Fifo>({&c_.shaderArb.out(), &c_.shaderData, &c_.pixelBuffer}, kShader);
-  touch(c_.shaderPipe, kShader);
+  WakeCalendar& k = calendar_;
+  c_.prgPipe.bookOn(k, kPrg);
+  c_.sintPipe.bookOn(k, kSint);
+  c_.sintTarb.bookOn(k, kSint | kTrav);
+  c_.sintSs.bookOn(k, kSint | kStack);
+  c_.sintShader.bookOn(k, kSint | kShader);
+  for (Fifo* f : {&c_.tarb.out(), &c_.tcache.fifo, &c_.rs0.fifo, &c_.leafFifo, &c_.travFifo})
+    f->bookOn(k, kTrav);
+  for (auto* p : {&c_.tcache.pipe, &c_.rs0.pipe, &c_.travPipe}) p->bookOn(k, kTrav);
+  c_.travTarb.bookOn(k, kTrav);
+  c_.travList.bookOn(k, kTrav);
+  c_.travSs.bookOn(k, kTrav | kStack);
+  c_.travLarb.bookOn(k, kTrav | kInt);
+  for (size_t i = 0; i < 3; ++i)
+    for (Fifo* f : {&c_.stackRead[i], &c_.restRead[i], &c_.restWrite[i]}) f->bookOn(k, kStack);
+  c_.stackWrite.bookOn(k, kStack);
+  c_.stackPipe.bookOn(k, kStack);
+  c_.restPipe.bookOn(k, kStack);
+  c_.stackFifo.bookOn(k, kStack | kTrav);
+  c_.notMissFifo.bookOn(k, kStack | kTrav);
+  c_.missFifo.bookOn(k, kStack | kShader);
+  for (Fifo* f : {&c_.larb.out(), &c_.lcache.fifo, &c_.icache.fifo, &c_.rs1.fifo, &c_.intLarb})
+    f->bookOn(k, kInt);
+  for (auto* p : {&c_.lcache.pipe, &c_.icache.pipe, &c_.rs1.pipe, &c_.intPipe}) p->bookOn(k, kInt);
+  c_.intList.bookOn(k, kInt | kList);
+  c_.listLast.bookOn(k, kList);
+  c_.listHitFifo.bookOn(k, kList);
+  for (auto* p : {&c_.listPipe, &c_.listHitPipe, &c_.rs2.pipe}) p->bookOn(k, kList);
+  c_.toSs.bookOn(k, kList | kStack);
+  c_.rs2.fifo.bookOn(k, kList | kShader);
+  for (Fifo* f : {&c_.shaderArb.out(), &c_.shaderData, &c_.pixelBuffer}) f->bookOn(k, kShader);
+  c_.shaderPipe.bookOn(k, kShader);
 }
 
-// After `group` acted in now_: every channel it touches books its groups; an arbiter holding an
-// item books its group for the next cycle; the PRG and the shader's issue side book their next v0
-// while pixels are left and their next v2 while the PRG's FIFO holds a ray (the cycles between
-// change nothing but SINT's stall count, which shaderIssueAndPrg adds up).
+// After `group` acted in now_ (its channels booked their groups as they were used): an arbiter
+// holding an item books its group for the next cycle; the PRG and the shader's issue side book
+// their next v0 while pixels are left and their next v2 while the PRG's FIFO holds a ray (the
+// cycles between change nothing but SINT's stall count, which shaderIssueAndPrg adds up).
 void TimedPipe::settle(uint32_t group) {
-  const int g = __builtin_ctz(group);
-  const Touches& touches = touches_[g];
-  for (const auto& t : touches.fifos) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
-  for (const auto& t : touches.registers)
-    calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
-  for (const auto& t : touches.ids) calendar_.book(t.groups, t.channel->nextCycle(now_), now_);
   const bool holds = (group == kTrav && c_.tarb.holds()) || (group == kInt && c_.larb.holds()) ||
                      (group == kShader && c_.shaderArb.holds());
   if (holds) calendar_.book(group, now_ + 1, now_);
@@ -113,14 +107,18 @@ void TimedPipe::busy(Unit u, const RayToken& t, bool hasRay) {
 }
 
 void TimedPipe::step() {
+  // every register read once (a valid one books its readers for the next cycle)
+  c_.travTarb.valid(now_);
+  c_.travLarb.valid(now_);
+  c_.travList.valid(now_);
   travToSsStall_ = travToSsStall();
   listToSsStall_ = listToSsStall();
   sintToSsStall_ = c_.sintSs.shown(now_) && c_.restWrite[2].full(now_);
   listToRsStall_ = intToListStall_ = sintUsStall_ = false;  // a group not called: low
   const std::pair<uint32_t, void (TimedPipe::*)()> groups[] = {
-      {kShader, &TimedPipe::shaderReturn}, {kList, &TimedPipe::listUnit},
-      {kInt, &TimedPipe::intersection},    {kTrav, &TimedPipe::traversal},
-      {kStack, &TimedPipe::shortStack},    {kSint, &TimedPipe::sceneIntersection},
+      {kShader, &TimedPipe::shaderReturn},  {kList, &TimedPipe::listUnit},
+      {kInt, &TimedPipe::intersection},     {kTrav, &TimedPipe::traversal},
+      {kStack, &TimedPipe::shortStack},     {kSint, &TimedPipe::sceneIntersection},
       {kPrg, &TimedPipe::shaderIssueAndPrg}};
   for (const auto& g : groups) {
     if (!runs(g.first)) continue;

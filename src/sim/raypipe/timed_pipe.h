@@ -11,7 +11,6 @@
 // the group).
 
 #include <cstdint>
-#include <initializer_list>
 #include <vector>
 
 #include "kinds/kd/kd_image.h"
@@ -39,37 +38,14 @@ class TimedPipe {
 
   // The unit groups, as calendar bits, in the order a cycle visits them.
   enum Group : uint32_t {
-    kShader = 1, kList = 2, kInt = 4, kTrav = 8, kStack = 16, kSint = 32, kPrg = 64
+    kShader = 1,
+    kList = 2,
+    kInt = 4,
+    kTrav = 8,
+    kStack = 16,
+    kSint = 32,
+    kPrg = 64
   };
-  static constexpr int kGroups = 7;
-  template <class Channel>
-  struct Touch {
-    const Channel* channel;
-    uint32_t groups;  // the groups that act on it
-  };
-  // What a group books after it acts, by kind of channel.
-  struct Touches {
-    std::vector<Touch<Fifo>> fifos;
-    std::vector<Touch<Register>> registers;
-    std::vector<Touch<TimedQueue<uint32_t>>> ids;
-    std::vector<Touch<Fifo>>& of(const Fifo*) { return fifos; }
-    std::vector<Touch<Register>>& of(const Register*) { return registers; }
-    std::vector<Touch<TimedQueue<uint32_t>>>& of(const TimedQueue<uint32_t>*) { return ids; }
-  };
-  // `channel` needs `groups`; `pushers` also write it (and book its groups after they act).
-  template <class Channel>
-  void touch(const Channel& channel, uint32_t groups, uint32_t pushers = 0) {
-    for (int g = 0; g < kGroups; ++g)
-      if ((groups | pushers) & (1u << g))
-        touches_[g].of(&channel).push_back(Touch<Channel>{&channel, groups});
-  }
-  void touch(LatencyPipe<RayToken>& pipe, uint32_t groups, uint32_t = 0) {
-    pipe.bookExitsOn(calendar_, groups);
-  }
-  template <class Channel>
-  void touchAll(std::initializer_list<const Channel*> channels, uint32_t groups) {
-    for (const Channel* c : channels) touch(*c, groups);
-  }
   void wireCalendar();
   void settle(uint32_t group);
   bool runs(uint32_t group) const { return (booked_ & group) != 0; }
@@ -101,7 +77,6 @@ class TimedPipe {
   const std::vector<RaypipeCycleRay>& rays_;
   Channels c_;
   WakeCalendar calendar_;
-  Touches touches_[kGroups];
   uint32_t booked_ = 0;  // the groups booked for now_
   std::vector<RayRecord> records_;
   std::vector<StackRow> stack_;

@@ -17,12 +17,14 @@ namespace raypipe_timed {
 namespace {
 
 // The round-robin read over three request FIFOs: the first shown from the pointer on; the
-// pointer turns whenever one is shown and the path takes (`canRead`).
+// pointer turns whenever one is shown and the path takes (`canRead`). Every head is looked at (a
+// head seen shown books its group again).
 int roundRobin(std::array<Fifo, 3>& fifos, int& pointer, int64_t now, bool canRead) {
+  const bool shown[3] = {fifos[0].shown(now), fifos[1].shown(now), fifos[2].shown(now)};
   if (!canRead) return -1;
   for (int k = 0; k < 3; ++k) {
     const int i = (pointer + k) % 3;
-    if (fifos[static_cast<size_t>(i)].shown(now)) {
+    if (shown[i]) {
       pointer = (pointer + 1) % 3;
       return i;
     }

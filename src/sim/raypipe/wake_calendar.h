@@ -1,11 +1,12 @@
 #pragma once
 // The timed model's scheduler (docs/raypipe.md, "The timed model"): which unit groups act in which
 // cycle. Every channel (FIFO, fixed-latency pipe, register) says (nextCycle: after `now`, or
-// kNoCycle) the next cycle it needs its groups (a FIFO: its head shown; a pipe: its head leaving; a register: valid); after a group acts
-// in cycle t, every channel it touches books its groups for that cycle, so a group is called
-// exactly in the cycles one of its channels needs it (and a few more: an extra call does what the
-// RTL does in a cycle with nothing to move, nothing), and a cycle with no group booked costs one
-// look-up. The calendar is a ring of group masks longer than the longest booking ahead.
+// kNoCycle) the next cycle it needs its groups (a FIFO: its head shown; a pipe: its head leaving; a
+// register: valid); after a group acts in cycle t, every channel it touches books its groups for
+// that cycle, so a group is called exactly in the cycles one of its channels needs it (and a few
+// more: an extra call does what the RTL does in a cycle with nothing to move, nothing), and a cycle
+// with no group booked costs one look-up. The calendar is a ring of group masks longer than the
+// longest booking ahead.
 
 #include <cstdint>
 #include <limits>
