@@ -6,7 +6,9 @@
 // other processes on the shared machine change far less) printed and the fastest of each compared,
 // so a busy moment of the shared machine weighs on neither side alone; the frame cycles must agree.
 // Not a test: run it and record the figures in docs/performance.md, "Ray pipe".
-//   build/bench/raypipe_bench [--level 0-5] [--repeat N]
+// --rays-in-flight N gives the shader fewer ray ids (R1: 512), a pipe mostly idle, where the
+// model's cost follows the rays and the reference's the cycles.
+//   build/bench/raypipe_bench [--level 0-5] [--repeat N] [--rays-in-flight N]
 
 #include <algorithm>
 #include <cstdio>
@@ -33,16 +35,18 @@ double threadCpuSeconds() {
 
 int main(int argc, char** argv) {
   int level = 5, repeat = 3;
+  RaypipeConfig config;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--level")
       level = std::atoi(argv[i + 1]);
     else if (flag == "--repeat")
       repeat = std::atoi(argv[i + 1]);
+    else if (flag == "--rays-in-flight")
+      config.raysInFlight = std::atoi(argv[i + 1]);
   }
   const KdImage image = frameScene();
   const std::vector<RaypipeCycleRay> rays = prgRays(level);
-  const RaypipeConfig config;
   double bestTimed = 1e30, bestReference = 1e30, cpuTimed = 1e30, cpuReference = 1e30;
   for (int r = 0; r < repeat; ++r) {
     const double t0 = threadCpuSeconds();
