@@ -55,7 +55,6 @@ struct MemoryRead {
   bool usStall(int64_t now, bool dsStall) const {
     return pipe.usStall(now, dsStall, fifo.numLeft(now));
   }
-  bool any() const { return pipe.any() || fifo.any(); }
   LatencyPipe<RayToken> pipe;
   TimedQueue<RayToken> fifo;
 };

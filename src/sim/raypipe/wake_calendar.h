@@ -1,22 +1,19 @@
 #pragma once
 // The timed model's scheduler (docs/raypipe.md, "The timed model"): which unit groups act in which
-// cycle. Every channel (FIFO, fixed-latency pipe, register) says (nextCycle: after `now`, or
-// kNoCycle) the next cycle it needs its groups (a FIFO: its head shown; a pipe: its head leaving; a
-// register: valid); after a group acts in cycle t, every channel it touches books its groups for
-// that cycle, so a group is called exactly in the cycles one of its channels needs it (and a few
-// more: an extra call does what the RTL does in a cycle with nothing to move, nothing), and a cycle
-// with no group booked costs one look-up. The calendar is a ring of group masks longer than the
-// longest booking ahead.
+// cycle. The channels book their groups as they are used (timed_queue.h, latency_pipe.h,
+// staged_register.h: a FIFO write for the cycle it is shown, a read for the cycle the next head is
+// shown, a head or register seen valid for the next cycle, a pipe's accept for the item's exit),
+// so a group is called in the cycles one of its channels needs it (and a few more: an extra call
+// does what the RTL does in a cycle with nothing to move, nothing), and a cycle with no group
+// booked costs one look-up. The calendar is a ring of group masks longer than the longest booking
+// ahead.
 
 #include <cstdint>
-#include <limits>
 #include <stdexcept>
 #include <vector>
 
 namespace rtu {
 namespace raypipe_timed {
-
-constexpr int64_t kNoCycle = std::numeric_limits<int64_t>::max();
 
 class WakeCalendar {
  public:
@@ -27,7 +24,6 @@ class WakeCalendar {
   }
   // Books `groups` for `cycle` (after the current one, within the horizon).
   void book(uint32_t groups, int64_t cycle, int64_t now) {
-    if (cycle == kNoCycle) return;
     if (cycle <= now || cycle - now >= static_cast<int64_t>(ring_.size()))
       throw std::logic_error("raypipe timed model: a booking outside the calendar");
     ring_[static_cast<size_t>(cycle) & (ring_.size() - 1)] |= groups;
