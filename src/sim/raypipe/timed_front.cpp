@@ -46,6 +46,10 @@ void TimedPipe::shaderIssueAndPrg() {
   if (c_.prgFifo.any())
     stall_[static_cast<size_t>(Unit::Sint)] +=
         std::max<int64_t>(0, now_ - std::max(lastPrgCall_ + 1, c_.prgFifo.headShownFrom()));
+  if (prgBlocked_) {
+    const int64_t interval = lat.prgInterval;  // the v0 cycles after the last call, before now
+    stall_[static_cast<size_t>(Unit::Prg)] += (now_ - 1) / interval - lastPrgCall_ / interval;
+  }
   lastPrgCall_ = now_;
   const bool idShown = c_.idFifo.shown(now_);
   const bool prgShown = c_.prgFifo.shown(now_);

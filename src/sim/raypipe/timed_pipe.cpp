@@ -88,8 +88,12 @@ void TimedPipe::settle(uint32_t group) {
   if (holds) calendar_.book(group, now_ + 1, now_);
   if (group != kPrg) return;
   if (issued_ < rays_.size()) {
+    // Blocked: its FIFO full with its head shown and its pipe empty, the PRG stalls on every v0
+    // until a v2 call (booked below) reads the FIFO; shaderIssueAndPrg adds those stalls up.
+    prgBlocked_ =
+        !c_.prgPipe.any() && c_.prgFifo.full(now_ + 1) && c_.prgFifo.headShownFrom() <= now_ + 1;
     const int64_t interval = config_.latency.prgInterval;
-    calendar_.book(kPrg, (now_ / interval + 1) * interval, now_);
+    if (!prgBlocked_) calendar_.book(kPrg, (now_ / interval + 1) * interval, now_);
   }
   if (c_.prgFifo.any()) {
     const int64_t interval = config_.latency.sintInterval;

@@ -85,6 +85,7 @@ class TimedPipe {
   std::vector<int64_t> busy_, stall_;
   int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
   int64_t lastPrgCall_ = -1;  // the last cycle shaderIssueAndPrg ran
+  bool prgBlocked_ = false;   // since then, the PRG stalls on every v0 (settle)
   size_t issued_ = 0, written_ = 0;
   int inFlight_ = 0, maxInFlight_ = 0;
   int64_t staleListHits_ = 0;
