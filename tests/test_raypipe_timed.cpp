@@ -201,6 +201,25 @@ TEST_CASE("raypipe timed model: the reference's cycles with 4 rays in flight", "
   checkSameCycles(image, mixedRays(builtImage(fewTriangles()), 12, 5), config);
 }
 
+TEST_CASE("raypipe timed model: the reference's cycles with other latencies and a frame at reset",
+          "[raypipe_timed]") {
+  const KdImage image = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+  const std::vector<RaypipeCycleRay> rays = mixedRays(image, 300, 6);
+  RaypipeConfig config;
+  config.latency.prg = 20;
+  config.latency.sint = 9;
+  config.latency.travMath = 7;
+  config.latency.intersection = 20;
+  config.latency.memoryRead = 1;
+  config.latency.prgInterval = 2;
+  config.latency.sintInterval = 4;
+  config.division = Division::TowardZero;
+  checkSameCycles(image, rays, config);
+  RaypipeCycleOptions atReset;
+  atReset.cyclesSinceReset = 100;
+  checkSameCycles(image, rays, RaypipeConfig{}, atReset);
+}
+
 TEST_CASE("raypipe timed model: refused settings", "[raypipe_timed]") {
   const KdImage image = oneTriangle();
   const std::vector<RaypipeCycleRay> rays = {{downZ(0.5f, 0.5f), 0}};
