@@ -1,0 +1,28 @@
+#pragma once
+// The timed model of seed 001's ray pipe (the Tray Racer, issue 29 §1, §4): the final build R1
+// demonstrated (DEMOS/t5.sv with RAYTRACER/raypipe_simple_caches.sv), cycle-exact with the
+// per-cycle reference (reference/raypipe_cycles.h) at a cost that follows the rays: each unit is
+// called only in a cycle it holds an item or is offered one, and its FIFOs, fixed-latency pipes
+// and registers are lazy in time, so nothing happens between a ray's entry into a pipe and its
+// exit. docs/raypipe.md, "The timed model", gives the design and why it is exact.
+//
+// Same inputs and results as the reference (raypipe/raypipe_run.h). Not modelled: the VGA
+// reader's window (RaypipePixelWriter::vgaReadWindow is refused).
+
+#include <vector>
+
+#include "kinds/kd/kd_image.h"
+#include "raypipe/raypipe_config.h"
+#include "raypipe/raypipe_run.h"
+
+namespace rtu {
+
+// Runs one frame. Throws std::invalid_argument for a configuration the model does not take (more
+// than one traversal unit, the set-associative caches, the VGA read window), logic_error when the
+// pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, no progress for a
+// million cycles).
+RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
+                                const std::vector<RaypipeCycleRay>& rays,
+                                const RaypipeCycleOptions& options = {});
+
+}  // namespace rtu

@@ -1,0 +1,99 @@
+#pragma once
+// The timed model of seed 001's ray pipe (raypipe_timed.h): the top as a class, each unit group's
+// cycle function in its own file (timed_front.cpp, timed_traversal.cpp, timed_shortstack.cpp,
+// timed_intersection.cpp, timed_list.cpp, timed_shader_return.cpp). A cycle visits the groups
+// from the pixel buffer back to the PRG, as the RTL's combinational stalls settle; inside a group
+// a unit does nothing unless it holds or is offered an item, and every FIFO, pipe and register is
+// lazy in time, so no end-of-cycle tick is needed. A group is called only in the cycles the wake
+// calendar (wake_calendar.h) books it for: a FIFO's head shown, a pipe's head leaving, a register
+// valid, an arbiter holding an item, the PRG's v0; a group not called computes nothing and its
+// stalls are low (each is some valid signal of its channels ANDed with more, and a valid one books
+// the group).
+
+#include <cstdint>
+#include <vector>
+
+#include "kinds/kd/kd_image.h"
+#include "raypipe/raypipe_config.h"
+#include "raypipe/raypipe_run.h"
+#include "sim/raypipe/timed_units.h"
+#include "sim/raypipe/wake_calendar.h"
+
+namespace rtu {
+namespace raypipe_timed {
+
+class TimedPipe {
+ public:
+  TimedPipe(const RaypipeConfig& config, const KdImage& image,
+            const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options);
+  RaypipeCycleRun run();
+
+ private:
+  RayRecord& record(uint32_t ray) { return records_[ray]; }
+  StackRow& stackRow(uint32_t ray, uint32_t row) {
+    return stack_[ray * static_cast<uint32_t>(config_.shortStackDepth) + row];
+  }
+  void busy(Unit u, const RayToken& t, bool hasRay = true);
+  void stall(Unit u) { ++stall_[static_cast<size_t>(u)]; }
+
+  // The unit groups, as calendar bits, in the order a cycle visits them.
+  enum Group : uint32_t {
+    kShader = 1,
+    kList = 2,
+    kInt = 4,
+    kTrav = 8,
+    kStack = 16,
+    kSint = 32,
+    kPrg = 64
+  };
+  void wireCalendar();
+  void settle(uint32_t group);
+  bool runs(uint32_t group) const { return (booked_ & group) != 0; }
+
+  void step();
+  void shaderReturn();
+  void listUnit();
+  void listRecord(bool dsStall);
+  void intersection();
+  void traversal();
+  void travDecision(bool toTarbStall);
+  void travMath(bool pipeDsStall);
+  void travInputAndLeaves(bool rs0UsStall, bool toLarbStall);
+  void shortStack();
+  void shortStackInputs();
+  void stackPath();
+  void restartPath();
+  void restartWrites(bool restReading);
+  void sceneIntersection();
+  void shaderIssueAndPrg();
+  bool travToSsStall();
+  bool listToSsStall();
+
+  const RaypipeConfig& config_;
+  bool recordTransfers_ = false;
+  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
+  WordMemory memory_;
+  KdSections sections_;
+  const std::vector<RaypipeCycleRay>& rays_;
+  Channels c_;
+  WakeCalendar calendar_;
+  uint32_t booked_ = 0;  // the groups booked for now_
+  std::vector<RayRecord> records_;
+  std::vector<StackRow> stack_;
+  std::vector<RaypipeCycleResult> results_;
+  std::vector<RaypipeTransfer> transfers_;
+  std::vector<int64_t> busy_, stall_;
+  int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
+  int64_t lastPrgCall_ = -1;  // the last cycle shaderIssueAndPrg ran
+  bool prgBlocked_ = false;   // since then, the PRG stalls on every v0 (settle)
+  size_t issued_ = 0, written_ = 0;
+  int inFlight_ = 0, maxInFlight_ = 0;
+  int64_t staleListHits_ = 0;
+  // The stalls every group reads, from registered state at the cycle's start or from a group
+  // visited earlier in the cycle.
+  bool travToSsStall_ = false, listToSsStall_ = false, sintToSsStall_ = false;
+  bool listToRsStall_ = false, intToListStall_ = false, sintUsStall_ = false;
+};
+
+}  // namespace raypipe_timed
+}  // namespace rtu

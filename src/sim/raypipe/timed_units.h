@@ -1,0 +1,102 @@
+#pragma once
+// The timed model of seed 001's ray pipe: its channels and per-unit counters (timed_pipe.h steps
+// them). Depths and latencies come from RaypipeConfig where it has them; the units' small internal
+// FIFOs and pipes are R1's constants (docs/raypipe.md, "Timing rules"): the shader's arbiter FIFO
+// 2, VS pipe 2 and ray-data FIFO 3; the shortstack's request and write FIFOs 3, stack pipe 2 and
+// FIFO 3, restart pipe 3, miss and not-miss FIFOs 4; the list unit's pipe 4, last FIFO 5, hit
+// pipe 2 and hit FIFO 3.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "raypipe/raypipe_config.h"
+#include "raypipe/raypipe_run.h"
+#include "sim/raypipe/latency_pipe.h"
+#include "sim/raypipe/ray_token.h"
+#include "sim/raypipe/rotating_arbiter.h"
+#include "sim/raypipe/staged_register.h"
+#include "sim/raypipe/timed_queue.h"
+
+namespace rtu {
+namespace raypipe_timed {
+
+constexpr int kRegister = 1;   // a register FIFO shows a write the next cycle
+constexpr int kShowAhead = 2;  // a BRAM scfifo two cycles on
+
+enum class Unit {
+  Prg,
+  Sint,
+  Tarb,
+  Tcache,
+  Trav,
+  TravMath,
+  TravDecide,
+  StackRead,
+  RestartRead,
+  Larb,
+  Lcache,
+  Icache,
+  Int,
+  List,
+  ShaderArb,
+  ShaderReturn,
+  PixelWriter,
+  kCount
+};
+const char* unitName(Unit u);
+
+// A block-RAM read (simple_cache.sv, raystore_simple.sv): a pipe of the read latency, then a
+// 3-entry register FIFO.
+struct MemoryRead {
+  MemoryRead(const std::string& name, int latency, int depth)
+      : pipe(latency), fifo(name, depth, kRegister) {}
+  bool usStall(int64_t now, bool dsStall) const {
+    return pipe.usStall(now, dsStall, fifo.numLeft(now));
+  }
+  LatencyPipe<RayToken> pipe;
+  TimedQueue<RayToken> fifo;
+};
+
+using Fifo = TimedQueue<RayToken>;
+using Register = StagedRegister<RayToken>;
+
+struct Channels {
+  explicit Channels(const RaypipeConfig& c);
+  std::vector<RaypipeFifoPeak> peaks() const;
+
+  LatencyPipe<RayToken> prgPipe;
+  Fifo prgFifo;
+  TimedQueue<uint32_t> idFifo;
+  LatencyPipe<RayToken> sintPipe;
+  Fifo sintTarb, sintSs, sintShader;
+  RotatingArbiter<RayToken, 4> tarb;
+  MemoryRead tcache, rs0;
+  Fifo leafFifo;
+  LatencyPipe<RayToken> travPipe;
+  Fifo travFifo;
+  Register travSs, travTarb, travLarb, travList;
+  std::array<Fifo, 3> stackRead, restRead, restWrite;  // [trav0, trav1, list or SINT]
+  Fifo stackWrite;
+  LatencyPipe<RayToken> stackPipe, restPipe;
+  Fifo stackFifo, notMissFifo, missFifo;
+  int stackReadPointer = 0, restReadPointer = 0, restWritePointer = 0;
+  RotatingArbiter<RayToken, 2> larb;
+  MemoryRead lcache, icache, rs1;
+  LatencyPipe<RayToken> intPipe;
+  Fifo intList, intLarb;
+  int intShaderNumLeft;  // the shadow-hit FIFO, never written by primary rays
+  LatencyPipe<RayToken> listPipe;
+  Fifo listLast;
+  LatencyPipe<RayToken> listHitPipe;
+  Fifo listHitFifo;
+  Register toSs;
+  MemoryRead rs2;
+  RotatingArbiter<RayToken, 4> shaderArb;
+  LatencyPipe<RayToken> shaderPipe;
+  Fifo shaderData, pixelBuffer;
+};
+
+}  // namespace raypipe_timed
+}  // namespace rtu
