@@ -165,6 +165,12 @@ TEST_CASE("rtusim's camera as the seed's registers", "[raypipe][prg]") {
   const glm::dvec3 topLeft =
       glm::normalize(world(prgRay(registers, prgLevelSize(5), 0, 0).direction));
   CHECK(glm::length(topLeft - corner) < 1e-6);
+  // And back: the nearest rtusim camera looks the same way with the same field.
+  const Camera back = cameraOfRegisters(registers, 640, 480);
+  CHECK(glm::length(back.position - camera.position) < 1e-6);
+  CHECK(glm::length(glm::normalize(back.lookAt - back.position) - toTarget) < 1e-6);
+  CHECK(glm::length(glm::normalize(back.up) - up) < 1e-6);
+  CHECK(back.verticalFovDegrees == Approx(60).epsilon(1e-6));
   // Registers given are kept, the rest converted.
   RaypipeCameraSettings settings;
   settings.eye = std::array<float, 3>{1, 2, 3};

@@ -269,7 +269,7 @@ void addAccelSettings(std::vector<Setting>& schema) {
                         "drop degenerate and duplicate triangles instead of refusing the mesh",
                         [](C& c) -> bool& { return c.accel.dropBadTriangles; }));
   schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "svo" && c.rtu.core == "svo"
+    return c.accel.structure == "svo" && c.rtu.core == "svo" && c.architecture == Architecture::Rtu
                ? std::string("accel is svo and the core kind is svo")
                : std::string();
   };
@@ -286,7 +286,10 @@ void addAccelSettings(std::vector<Setting>& schema) {
       [](C& c) -> std::string& { return c.accel.index; }, sameText, sameText));
   schema.back().ignoredBecause = [](const C& c) {
     const std::string bih = ignoredUnlessBuilt("bih")(c);
-    return bih.empty() || c.accel.structure == "kdtree" ? std::string() : bih;
+    // The ray pipe's k-d tree takes it too (the scene file's narrow or wide form).
+    return bih.empty() || c.accel.structure == "kdtree" || c.architecture == Architecture::Raypipe
+               ? std::string()
+               : bih;
   };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",

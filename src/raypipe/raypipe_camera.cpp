@@ -15,6 +15,10 @@ std::array<float, 3> hardwareFloats(const glm::dvec3& world) {
           static_cast<float>(hardware.z)};
 }
 
+glm::dvec3 worldOf(const std::array<float, 3>& hardware) {
+  return toHardwareSpace(glm::dvec3(hardware[0], hardware[1], hardware[2]));  // its own inverse
+}
+
 }  // namespace
 
 RaypipeCamera raypipeCameraOf(const Camera& camera) {
@@ -25,6 +29,18 @@ RaypipeCamera raypipeCameraOf(const Camera& camera) {
   const double screen = 1.0 / std::tan(camera.verticalFovDegrees * M_PI / 360.0);
   return RaypipeCamera{hardwareFloats(camera.position), hardwareFloats(right),
                        hardwareFloats(trueUp), hardwareFloats(forward * screen)};
+}
+
+Camera cameraOfRegisters(const RaypipeCamera& registers, int width, int height) {
+  Camera camera;
+  camera.position = worldOf(registers.eye);
+  camera.lookAt = camera.position + worldOf(registers.w);
+  camera.up = worldOf(registers.v);
+  camera.verticalFovDegrees =
+      2 * std::atan(glm::length(camera.up) / glm::length(worldOf(registers.w))) * 180 / M_PI;
+  camera.width = width;
+  camera.height = height;
+  return camera;
 }
 
 RaypipeCamera RaypipeCameraSettings::resolve(const Camera& camera) const {

@@ -22,6 +22,11 @@ namespace rtu {
 // Throws std::invalid_argument as Camera::validate does for a camera that makes no rays.
 RaypipeCamera raypipeCameraOf(const Camera& camera);
 
+// rtusim's camera nearest the registers (the inverse of raypipeCameraOf, exact up to rounding
+// when U, V and W are orthogonal and U, V of one length), for a frame of width x height: what the
+// images that shade by rtusim's camera (the surface turned to the viewer) take.
+Camera cameraOfRegisters(const RaypipeCamera& registers, int width, int height);
+
 // The registers a run sets; an unset one is converted from rtusim's camera.
 struct RaypipeCameraSettings {
   std::optional<std::array<float, 3>> eye, u, v, w;
