@@ -2,7 +2,8 @@
 # `rtusim render --architecture raypipe` end to end (issue 29): seed 001's ray pipe renders a voxel
 # scene's faces, built into the Tray Racer's k-d tree, on its golden model at the seed's level 1
 # (40x30): the report, the simple shader's image and the shaded one, --results-csv with the seed's
-# pixel ids in the primary ray generator's order; the trayracer preset; the pipe's cycle model
+# pixel ids in the primary ray generator's order; the same rays from the scene built before (a k-d
+# image, the seed's scene file: --accel-file); the trayracer preset; the pipe's cycle model
 # refused before any work; a ray pipe setting under the RTU reported as having no effect.
 # Usage: cli_raypipe_render.sh path/to/rtusim
 set -euo pipefail
@@ -40,6 +41,18 @@ for r in rows:
     if r["box_miss"] == "1":
         assert r["hit"] == "0" and r["nodes"] == "0", r
 PY
+
+# The same scene built before, as a k-d image and as the seed's scene file: the same rays.
+"$rtusim" build --accel kdtree "${frame[@]}" --out sphere.kd --trayracer-scene sphere.scene >build.txt
+for file in sphere.kd sphere.scene; do
+  "$rtusim" render --architecture raypipe --model golden --index wide --level 1 --accel-file $file \
+    --results-csv $file.csv >$file.txt
+  cmp -s rays.csv $file.csv || fail "--accel-file $file traces other rays than the build"
+done
+grep -q "^scene       sphere.scene: the Tray Racer's scene file (wide), 1488 triangles" \
+  sphere.scene.txt || fail "scene file line: $(cat sphere.scene.txt)"
+expect_error "needs the scene's triangles" "$rtusim" render --architecture raypipe --model golden \
+  --index wide --level 0 --accel-file sphere.kd --shaded-image no.png
 
 # The preset: the seed's camera registers at 640x480 (level 5) unless a level is given.
 "$rtusim" render --preset trayracer --model golden "${frame[@]}" --level 0 >preset.txt

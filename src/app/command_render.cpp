@@ -129,7 +129,9 @@ void addRenderCommand(CLI::App& app) {
       checkRaypipeOnly(options->raypipe);
     checkOutputsOfModel(*options, *request, configuration);
     if (raypipe) {
-      checkOutputPaths(options->outputPaths(), inputPaths(settings));
+      std::vector<NamedPath> inputs = inputPaths(settings);
+      inputs.push_back({"--accel-file", options->raypipe.accelFile});
+      checkOutputPaths(options->outputPaths(), inputs);
       options->checkImageFormats();
       renderRaypipe(configuration, {options->image, options->depthImage, options->costImage},
                     options->raypipe, std::cout);

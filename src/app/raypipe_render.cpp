@@ -3,6 +3,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <ostream>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 
 #include "app/frame_images.h"
 #include "app/results_csv.h"
+#include "base/binary_file.h"
 #include "explore/accel_build.h"
 #include "kinds/kd/kd_image.h"
 #include "raypipe/raypipe_golden.h"
@@ -42,6 +44,33 @@ RaypipeScene loadRaypipeScene(const RunConfig& settings) {
   scene.image = layOutKd(readTrayRacerScene(build.sceneFile, format)).words;
   scene.mesh = std::move(triangles.mesh);
   scene.warnings = build.warnings;
+  return scene;
+}
+
+// A k-d image (its magic first) or the seed's scene file (big-endian words), read as a scene
+// with no triangles: the shaded image needs them.
+RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
+  std::vector<uint32_t> words = readWordFile(path, sizeof(uint32_t), "k-d image or scene file");
+  RaypipeScene scene;
+  scene.name = path;
+  if (!words.empty() && words[0] == kKdMagic) {
+    const std::vector<ImageProblem> problems = validateKd(words);
+    if (!problems.empty())
+      throw std::runtime_error(path + ": not a sound k-d image (rtusim validate lists why)");
+    const KdHeader header = decodeKdHeader(words.data());
+    scene.description = "k-d image, " + std::to_string(header.uttmCount) + " triangles";
+    scene.image = std::move(words);
+    return scene;
+  }
+  const bool wide = settings.accel.index == "wide";
+  std::vector<uint8_t> bytes(words.size() * sizeof(uint32_t));
+  std::memcpy(bytes.data(), words.data(), bytes.size());
+  const TrayRacerScene file =
+      readTrayRacerScene(bytes, wide ? TrayRacerFormat::Wide : TrayRacerFormat::Narrow);
+  scene.description = std::string("the Tray Racer's scene file (") + (wide ? "wide" : "narrow") +
+                      "), " + std::to_string(file.uttms.size()) + " triangles";
+  scene.image = layOutKd(file).words;
+  scene.warnings = trayRacerCapacityWarnings(file);
   return scene;
 }
 
@@ -151,6 +180,9 @@ RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<P
 }  // namespace
 
 void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options) {
+  command.add_option("--accel-file", options.accelFile,
+                     "ray pipe: the scene as a k-d image (.kd) or the seed's scene file (narrow "
+                     "unless --index wide) instead of building the scene's triangles");
   command.add_option("--results-csv", options.resultsCsv,
                      "ray pipe: one row per ray in issue order (id = the seed's pixel id, x, y, "
                      "hit, box_miss, t, primitive, u, v and the ray's counts)");
@@ -159,7 +191,9 @@ void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options) {
 }
 
 void checkRaypipeOnly(const RaypipeRenderOptions& options) {
-  for (const NamedPath& file : options.paths())
+  std::vector<NamedPath> given = options.paths();
+  given.push_back({"--accel-file", options.accelFile});
+  for (const NamedPath& file : given)
     if (!file.path.empty())
       throw std::invalid_argument(file.option + " is written for --architecture raypipe");
 }
@@ -175,9 +209,13 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
                    const RaypipeRenderOptions& options, std::ostream& out) {
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
+  if (!options.accelFile.empty() && !options.shadedImage.empty())
+    throw std::invalid_argument("--shaded-image needs the scene's triangles: a built file "
+                                "(--accel-file) holds none");
   const PrgFrameSize size = frameSize(settings);
   const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
-  const RaypipeScene scene = loadRaypipeScene(settings);
+  const RaypipeScene scene = options.accelFile.empty() ? loadRaypipeScene(settings)
+                                                       : loadSceneFile(options.accelFile, settings);
   const std::vector<PrimaryRay> rays = primaryRays(registers, size);
   const auto start = std::chrono::steady_clock::now();
   const RaypipeGoldenFrame frame = runGoldenFrame(scene.image, rays, settings.raypipe);

@@ -4,7 +4,10 @@
 // accel_build.h, `accel.index` choosing the file's narrow or wide form) and traced as the
 // hardware reads that file; the primary ray generator's rays (raypipe/primary_rays.h) from the
 // camera registers (raypipe.camera.*, or rtusim's camera converted) at raypipe.level or
-// width x height run through the golden k-d traversal (raypipe/raypipe_golden.h). Its outputs:
+// width x height run through the golden k-d traversal (raypipe/raypipe_golden.h). Or the scene is
+// a file built before (--accel-file): a k-d image (`build --accel kdtree --out x.kd`) or the
+// seed's scene file (`--trayracer-scene`, R1's SCENES/*.scene; narrow unless --index wide). Its
+// outputs:
 // the report, the simple shader's image (--image), a Lambert-shaded, depth or cost image, and
 // --results-csv in issue order. The pipe's cycle model is not built yet: --model ca or lt is
 // refused before any work.
@@ -20,8 +23,9 @@
 
 namespace rtu {
 
-// The outputs only the ray pipe writes.
+// The options only the ray pipe takes: its scene as a built file, and the outputs it writes.
 struct RaypipeRenderOptions {
+  std::string accelFile;  // a k-d image (.kd) or the seed's scene file instead of a build
   std::string resultsCsv, shadedImage;
 
   std::vector<NamedPath> paths() const {
@@ -31,7 +35,7 @@ struct RaypipeRenderOptions {
 
 void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options);
 
-// Throws std::invalid_argument naming an option given for the RTU, which only the pipe writes.
+// Throws std::invalid_argument naming an option given for the RTU, which only the pipe takes.
 void checkRaypipeOnly(const RaypipeRenderOptions& options);
 
 // Throws std::invalid_argument for a model other than golden: the pipe's cycle model is not built.
