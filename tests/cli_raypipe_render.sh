@@ -4,7 +4,7 @@
 # (40x30): the report, the simple shader's image and the shaded one, --results-csv with the seed's
 # pixel ids in the primary ray generator's order; the same rays from the scene built before (a k-d
 # image, the seed's scene file: --accel-file); the trayracer preset; the pipe's cycle model
-# refused before any work; a ray pipe setting under the RTU reported as having no effect.
+# refused before any work, and by the commands that run only the RTU; a ray pipe setting under the RTU reported as having no effect.
 # Usage: cli_raypipe_render.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -66,6 +66,10 @@ expect_error "cycle model is not built yet" \
 [[ ! -e ca.png ]] || fail "--model ca wrote an image"
 expect_error "written for --architecture raypipe" \
   "$rtusim" render --model golden "${frame[@]}" --results-csv rtu.csv
+
+# The commands that run only the RTU refuse the pipe rather than run the RTU in its place.
+expect_error "rtusim fps runs the RTU only" "$rtusim" fps --preset trayracer --model golden \
+  "${frame[@]}"
 
 # A ray pipe setting with the RTU has no effect, and says so.
 "$rtusim" render --model golden --scene sphere --depth 4 --width 16 --height 12 \

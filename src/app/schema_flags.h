@@ -29,7 +29,8 @@ struct ConfigRequest {
   // user gave has an effect (see Configuration::checkApplicable).
   Configuration resolve() const;
   // The same without the check, for a command that checks its configurations together (a sweep:
-  // checkSettingsHaveEffect).
+  // checkSettingsHaveEffect). Both refuse architecture = raypipe for a command that runs only the
+  // RTU (every one but render and config).
   Configuration resolveUnchecked() const;
 };
 
