@@ -47,6 +47,14 @@ RaypipeScene loadRaypipeScene(const RunConfig& settings) {
   return scene;
 }
 
+void checkImage(const std::vector<uint32_t>& words, const std::string& path) {
+  const std::vector<ImageProblem> problems = validateKd(words);
+  if (!problems.empty())
+    throw std::runtime_error(
+        path + ": not a sound k-d scene: " + problems.front().what +
+        (problems.size() > 1 ? " (and more: rtusim validate lists them)" : ""));
+}
+
 // A k-d image (its magic first) or the seed's scene file (big-endian words), read as a scene
 // with no triangles: the shaded image needs them.
 RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
@@ -54,9 +62,7 @@ RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
   RaypipeScene scene;
   scene.name = path;
   if (!words.empty() && words[0] == kKdMagic) {
-    const std::vector<ImageProblem> problems = validateKd(words);
-    if (!problems.empty())
-      throw std::runtime_error(path + ": not a sound k-d image (rtusim validate lists why)");
+    checkImage(words, path);
     const KdHeader header = decodeKdHeader(words.data());
     scene.description = "k-d image, " + std::to_string(header.uttmCount) + " triangles";
     scene.image = std::move(words);
@@ -70,6 +76,7 @@ RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
   scene.description = std::string("the Tray Racer's scene file (") + (wide ? "wide" : "narrow") +
                       "), " + std::to_string(file.uttms.size()) + " triangles";
   scene.image = layOutKd(file).words;
+  checkImage(scene.image, path);  // a child or a list entry out of range
   scene.warnings = trayRacerCapacityWarnings(file);
   return scene;
 }
