@@ -70,6 +70,8 @@ expect_error "written for --architecture raypipe" \
 # The commands that run only the RTU refuse the pipe rather than run the RTU in its place.
 expect_error "rtusim fps runs the RTU only" "$rtusim" fps --preset trayracer --model golden \
   "${frame[@]}"
+expect_error "rtusim sweep runs the RTU only" "$rtusim" sweep --model golden "${frame[@]}" \
+  --width 8 --height 8 --grid architecture=rtu,raypipe --out rows.csv
 
 # A ray pipe setting with the RTU has no effect, and says so.
 "$rtusim" render --model golden --scene sphere --depth 4 --width 16 --height 12 \
