@@ -98,6 +98,11 @@ std::string registerText(const std::array<float, 3>& value) {
   return text;
 }
 
+// A setting's value as the configuration writes it.
+std::string settingText(const std::string& key, const RunConfig& settings) {
+  return findSetting(key).get(settings);
+}
+
 std::string perRay(uint64_t count, uint64_t rays) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", rays ? static_cast<double>(count) / rays : 0.0);
@@ -107,15 +112,15 @@ std::string perRay(uint64_t count, uint64_t rays) {
 void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeCamera& registers,
             const RaypipeGoldenFrame& frame, double seconds, std::ostream& out) {
   const PrgFrameSize size = frameSize(settings);
-  const RaypipeConfig& pipe = settings.raypipe;
+  const RaypipeConfig& pipe = settings.raypipe;  // its short stack
   const RaypipeFrameTotals& t = frame.totals;
   const std::string level = settings.raypipeView.level >= 0
                                 ? " (level " + std::to_string(settings.raypipeView.level) + ")"
                                 : "";
   out << "scene       " << scene.name << ": " << scene.description << "\n"
       << "model       golden, ray pipe (seed 001): short stack " << pipe.shortStackDepth
-      << ", divider " << (pipe.division == Division::Ieee ? "ieee" : "toward_zero") << ", t_max "
-      << (pipe.tMaxClamp == KdTMaxClamp::AsBuilt ? "as_built" : "intended") << "\n"
+      << ", divider " << settingText("raypipe.division", settings) << ", t_max "
+      << settingText("raypipe.tmax_clamp", settings) << "\n"
       << "frame       " << size.width << "x" << size.height << level << "\n"
       << "camera      E " << registerText(registers.eye) << "  U " << registerText(registers.u)
       << "  V " << registerText(registers.v) << "  W " << registerText(registers.w) << "\n"
