@@ -84,6 +84,20 @@ TEST_CASE("PRG levels\\, first ray\\, order inside a block and pixel ids", "[ray
   CHECK(*ids.rbegin() == 640 * 480 - 1);
 }
 
+TEST_CASE("PRG frames end where the RTL's done fires at every level", "[raypipe][prg]") {
+  // done = done_sub_box && pixelID == num_rays - 1: the last ray closes a block (x = 19 and
+  // y_prg = 0 in it) and has the last pixel id, 300 * 4^level - 1.
+  for (int level = 0; level < kPrgLevels; ++level) {
+    INFO("level " << level);
+    const std::vector<PrgPixel> order = prgIssueOrder(prgLevelSize(level));
+    const uint32_t rays = 300u << (2 * level);
+    REQUIRE(order.size() == rays);
+    CHECK(order.back().pixelId == rays - 1);
+    CHECK(order.back().x % 20 == 19);
+    CHECK(order.back().y % 15 == 14);
+  }
+}
+
 TEST_CASE("PRG order for sizes that are not the seed's levels", "[raypipe][prg]") {
   // 60x45 is 3x3 blocks: the Z order of a 4x4 grid with its outside codes skipped.
   const std::vector<PrgPixel> tiled = prgIssueOrder({60, 45});
