@@ -51,7 +51,10 @@ for file in sphere.kd sphere.scene; do
 done
 grep -q "^scene       sphere.scene: the Tray Racer's scene file (wide), 1488 triangles" \
   sphere.scene.txt || fail "scene file line: $(cat sphere.scene.txt)"
-expect_error "needs the scene's triangles" "$rtusim" render --architecture raypipe --model golden \
+"$rtusim" render --architecture raypipe --model golden --index wide --level 1 \
+  --accel-file sphere.scene --shaded-image file-shaded.png >/dev/null
+[[ -s file-shaded.png ]] || fail "no shaded image from the scene file's normals"
+expect_error "a k-d image holds none" "$rtusim" render --architecture raypipe --model golden \
   --index wide --level 0 --accel-file sphere.kd --shaded-image no.png
 
 # The preset: the seed's camera registers at 640x480 (level 5) unless a level is given.

@@ -20,12 +20,12 @@
 namespace rtu {
 namespace {
 
-// The scene as the pipe reads it: its triangles (for the shaded image) and the memory image of
-// its Tray Racer scene file.
+// The scene as the pipe reads it: the memory image of its Tray Racer scene file and, for the
+// shaded image, each triangle's normal in world space (none from a k-d image).
 struct RaypipeScene {
   std::string name, description;
-  TriangleMesh mesh;
   std::vector<uint32_t> image;
+  std::vector<glm::dvec3> normals;
   std::vector<std::string> warnings;
 };
 
@@ -42,7 +42,11 @@ RaypipeScene loadRaypipeScene(const RunConfig& settings) {
       build.description + ", " + std::to_string(triangles.mesh.triangles.size()) + " triangles";
   // Read back from the file, as the hardware loads it: a narrow file's splits keep 28 bits.
   scene.image = layOutKd(readTrayRacerScene(build.sceneFile, format)).words;
-  scene.mesh = std::move(triangles.mesh);
+  for (const auto& triangle : triangles.mesh.triangles) {
+    const glm::dvec3& a = triangles.mesh.vertices[triangle[0]];
+    scene.normals.push_back(glm::cross(triangles.mesh.vertices[triangle[1]] - a,
+                                       triangles.mesh.vertices[triangle[2]] - a));
+  }
   scene.warnings = build.warnings;
   return scene;
 }
@@ -55,8 +59,8 @@ void checkImage(const std::vector<uint32_t>& words, const std::string& path) {
         (problems.size() > 1 ? " (and more: rtusim validate lists them)" : ""));
 }
 
-// A k-d image (its magic first) or the seed's scene file (big-endian words), read as a scene
-// with no triangles: the shaded image needs them.
+// A k-d image (its magic first), which holds no normals, or the seed's scene file (big-endian
+// words), whose colour section does (vertex 0's).
 RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
   std::vector<uint32_t> words = readWordFile(path, sizeof(uint32_t), "k-d image or scene file");
   RaypipeScene scene;
@@ -77,6 +81,7 @@ RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
                       "), " + std::to_string(file.uttms.size()) + " triangles";
   scene.image = layOutKd(file).words;
   checkImage(scene.image, path);  // a child or a list entry out of range
+  for (const TrayRacerShade& shade : file.shades) scene.normals.push_back(trayRacerNormal(shade));
   scene.warnings = trayRacerCapacityWarnings(file);
   return scene;
 }
@@ -167,9 +172,9 @@ void writePaletteImage(const RaypipeGoldenFrame& frame, PrgFrameSize size,
 }
 
 // The frame as rtusim's images take it: t in world units (hardware space only swaps axes), the
-// hit triangle's normal in world space, the golden traversal's states as the cost.
+// hit triangle's normal (none without normals), the golden traversal's states as the cost.
 RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<PrimaryRay>& rays,
-                            const TriangleMesh& mesh, const RaypipeCamera& registers,
+                            const std::vector<glm::dvec3>& normals, const RaypipeCamera& registers,
                             PrgFrameSize size) {
   RenderedFrame rendered(cameraOfRegisters(registers, size.width, size.height));
   for (size_t i = 0; i < frame.pixels.size(); ++i) {
@@ -180,9 +185,7 @@ RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<P
     if (p.hit) {
       const auto& d = rays[i].ray.direction;
       pixel.t = p.t * glm::length(glm::dvec3(d[0], d[1], d[2]));
-      const auto& triangle = mesh.triangles.at(p.primitive);
-      const glm::dvec3& a = mesh.vertices[triangle[0]];
-      pixel.normal = glm::cross(mesh.vertices[triangle[1]] - a, mesh.vertices[triangle[2]] - a);
+      if (p.primitive < normals.size()) pixel.normal = normals[p.primitive];
     }
     rendered.place(p.pixel.pixelId, pixel);
   }
@@ -221,15 +224,15 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
                    const RaypipeRenderOptions& options, std::ostream& out) {
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
-  if (!options.accelFile.empty() && !options.shadedImage.empty())
-    throw std::invalid_argument("--shaded-image needs the scene's triangles: a built file "
-                                "(--accel-file) holds none");
   const PrgFrameSize size = frameSize(settings);
   const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
   const RaypipeScene scene = options.accelFile.empty() ? loadRaypipeScene(settings)
                                                        : loadSceneFile(options.accelFile, settings);
   const std::vector<PrimaryRay> rays = primaryRays(registers, size);
   const auto start = std::chrono::steady_clock::now();
+  if (scene.normals.empty() && !options.shadedImage.empty())
+    throw std::invalid_argument("--shaded-image needs the triangles' normals: a k-d image holds "
+                                "none (give the mesh, or the seed's scene file)");
   const RaypipeGoldenFrame frame = runGoldenFrame(scene.image, rays, settings.raypipe);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -238,7 +241,7 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
     writeResultsCsv(options.resultsCsv, resultRows(frame), kExtraColumns);
   if (!images.image.empty()) writePaletteImage(frame, size, images.image);
   if (!options.shadedImage.empty() || !images.depthImage.empty() || !images.costImage.empty()) {
-    const RenderedFrame rendered = renderedFrame(frame, rays, scene.mesh, registers, size);
+    const RenderedFrame rendered = renderedFrame(frame, rays, scene.normals, registers, size);
     if (!options.shadedImage.empty()) writeShadedImage(rendered, options.shadedImage);
     if (!images.depthImage.empty()) writeDepthImage(rendered, images.depthImage);
     if (!images.costImage.empty()) writeCostImage(rendered, images.costImage);
