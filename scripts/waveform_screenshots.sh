@@ -28,7 +28,7 @@ sleep 1
 shot() {
   local name=$1 zoom=$2; shift 2
   "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin "$@" --trace "$name.fst" >/dev/null
-  { echo "[size] 1600 900"; sed "s/^\*-20.000000 /*$zoom /" "$name.gtkw"; } >"$name.view.gtkw"
+  { echo "[size] 1600 900"; sed "s/^\*-20.000000 /*$zoom /" "$name.fst.gtkw"; } >"$name.view.gtkw"
   DISPLAY=$display gtkwave "$name.fst" "$name.view.gtkw" >/dev/null 2>&1 &
   local viewer=$!
   sleep 4

@@ -98,6 +98,17 @@ assert float(sampled["total_cycles_ci_low"]) <= float(sampled["total_cycles"]) <
 assert rows["golden"]["total_cycles"] == "" and rows["golden"]["results_equal_golden"] == "yes"
 PY
 
+# On a frame too small for the default sampled fractions, fidelity skips them with a note and
+# measures the other modes; a fraction asked for on the command line is still refused.
+"$rtusim" fidelity --scene menger --depth 3 --width 32 --height 24 --quanta 100 \
+  --csv small_fidelity.csv >small_fidelity.txt || fail "fidelity on a small frame: $(cat small_fidelity.txt)"
+test "$(grep -c "^note: the sampled mode at" small_fidelity.txt)" = 3 || fail "skipped fractions not noted"
+! grep -q "^sampled" small_fidelity.csv || fail "a skipped fraction has a row"
+grep -q "^golden" small_fidelity.csv || fail "golden row missing on a small frame"
+! "$rtusim" fidelity --scene menger --depth 3 --width 32 --height 24 --quanta 100 --fractions 0.02 \
+  >small_asked.txt 2>&1 || fail "a fraction too small, asked for, was not refused"
+grep -q "sample.fraction 0.02" small_asked.txt || fail "the refused fraction is not named"
+
 # --model: the loosely-timed and golden models answer fps and sweep rows, named in the CSV.
 "$rtusim" sweep --scene menger --depth 5 --width 64 --height 48 --memory cached --model lt \
   --grid cores=4,16 --out lt_sweep.csv -j 1 >/dev/null

@@ -31,7 +31,7 @@ done
 # Ray ids (signal class ids), read back from the FST with fst2vcd: every ray followed from the
 # host's input through one core to the host's output, in the output buffer's order.
 python3 "$here/trace_ids_check.py" fst.txt out.bin || fail "the ray ids do not follow the run"
-grep -qx '+{in ray} rtu.core_1.in.ray\[31:0\]' t.gtkw || fail "t.gtkw does not show the cores' ray ids"
+grep -qx '+{in ray} rtu.core_1.in.ray\[31:0\]' t.fst.gtkw || fail "t.fst.gtkw does not show the cores' ray ids"
 
 # --trace-clock: rtu.clk high in the first half of every cycle of the window up to its last
 # change, read back from the FST; first in the save file; counted by the dry run.
@@ -52,9 +52,9 @@ for line in open(sys.argv[1]):
 expected = [(cycle * 10000 + half * 5000, 1 - half) for cycle in range(100, 140) for half in (0, 1)]
 assert edges == expected[:len(edges)] and len(edges) >= 70, edges[:6]
 PY
-grep -A1 -x '\[signals_width\] 240' clk.gtkw | tail -1 | grep -qx '@28' &&
-  sed -n 6p clk.gtkw | grep -qx '+{clk} rtu.clk' || fail "clk.gtkw does not show the clock first"
-! grep -q 'clk' t.gtkw || fail "a trace without --trace-clock has a clock"
+grep -A1 -x '\[signals_width\] 240' clk.fst.gtkw | tail -1 | grep -qx '@28' &&
+  sed -n 6p clk.fst.gtkw | grep -qx '+{clk} rtu.clk' || fail "clk.fst.gtkw does not show the clock first"
+! grep -q 'clk' t.fst.gtkw || fail "a trace without --trace-clock has a clock"
 "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace c.vcd \
   --trace-clock >report.txt
 [[ $(sed -n 's/^trace size  c.vcd: .*(\([0-9]*\) bytes)$/\1/p' report.txt) == $(stat -c %s c.vcd) ]] ||
@@ -62,25 +62,25 @@ grep -A1 -x '\[signals_width\] 240' clk.gtkw | tail -1 | grep -qx '@28' &&
 
 # The save file next to the last trace: this trace, every signal of it, grouped per module in
 # pipeline order, a marker at the first result.
-[[ -f t.gtkw ]] || fail "no save file t.gtkw"
-grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.gtkw || fail "t.gtkw does not open $PWD/t.fst"
-groups=$(grep '^-' t.gtkw | uniq | tr -d '-' | tr '\n' ' ')
+[[ -f t.fst.gtkw ]] || fail "no save file t.fst.gtkw"
+grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.fst.gtkw || fail "t.fst.gtkw does not open $PWD/t.fst"
+groups=$(grep '^-' t.fst.gtkw | uniq | tr -d '-' | tr '\n' ' ')
 [[ $groups == "job_manager scheduler core_0 core_1 core_2 memory result_manager " ]] ||
   fail "groups out of pipeline order: $groups"
-grep -v '^[-@*[]' t.gtkw | sed 's/^+{[^}]*} //; s/\[[0-9]*:0\]$//' | sort >shown.txt
+grep -v '^[-@*[]' t.fst.gtkw | sed 's/^+{[^}]*} //; s/\[[0-9]*:0\]$//' | sort >shown.txt
 awk '{ print $2 }' fst.txt | sort -u >traced.txt
-cmp -s shown.txt traced.txt || fail "t.gtkw does not show exactly the traced signals"
+cmp -s shown.txt traced.txt || fail "t.fst.gtkw does not show exactly the traced signals"
 # Names within a group: the path below the module, apart by spaces (GTKWave cuts at dots).
-grep -qx '+{in valid} rtu.core_1.in.valid' t.gtkw && grep -qx '+{state} rtu.core_1.state\[2:0\]' t.gtkw ||
-  fail "t.gtkw lacks the aliases within groups"
+grep -qx '+{in valid} rtu.core_1.in.valid' t.fst.gtkw && grep -qx '+{state} rtu.core_1.state\[2:0\]' t.fst.gtkw ||
+  fail "t.fst.gtkw lacks the aliases within groups"
 # Core states shown by the names of the FST's enum table: GTKWave's own flags for it.
-[[ $(grep -B1 -x '+{state} rtu.core_1.state\[2:0\]' t.gtkw | head -1) == @100000028 ]] ||
-  fail "t.gtkw does not show the core state by its enum names"
+[[ $(grep -B1 -x '+{state} rtu.core_1.state\[2:0\]' t.fst.gtkw | head -1) == @100000028 ]] ||
+  fail "t.fst.gtkw does not show the core state by its enum names"
 # A VCD has no enum table: its save file names the states through a translate filter beside it.
 "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace v.vcd >/dev/null
 [[ $(printf '%s\n' 000 001 010 011 100 101 110 111 | paste -d' ' - <(printf '%s\n' IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED)) == "$(cat v.state.txt)" ]] ||
   fail "v.state.txt does not name the eight state codes"
-grep -A2 -x '@2028' v.gtkw | grep -qx "\^1 $PWD/v.state.txt" || fail "v.gtkw does not use v.state.txt"
+grep -A2 -x '@2028' v.vcd.gtkw | grep -qx "\^1 $PWD/v.state.txt" || fail "v.vcd.gtkw does not use v.state.txt"
 # Levels of the host's result handshake, cycle by cycle: the first cycle with both at 1.
 first_result=$(python3 - fst.txt <<'PY'
 import sys
@@ -96,15 +96,21 @@ for cycle in sorted(changes):
         break
 PY
 )
-[[ $(awk '/^\*/ { print $2 }' t.gtkw) == $((first_result * 10000)) ]] ||
+[[ $(awk '/^\*/ { print $2 }' t.fst.gtkw) == $((first_result * 10000)) ]] ||
   fail "the marker is not at the first result (cycle $first_result)"
 
 # rtusim wave: GTKWave (here a stand-in that prints its arguments) gets the trace and its save file.
 expect_error "no such trace file: missing.fst" "$rtusim" wave missing.fst
 expect_error "gtkwave not found on PATH" env PATH=/nonexistent "$rtusim" wave t.fst
 mkdir bin && printf '#!/bin/sh\necho "$@"\n' >bin/gtkwave && chmod +x bin/gtkwave
-[[ $(PATH=$PWD/bin:$PATH "$rtusim" wave t.fst) == "t.fst t.gtkw" ]] ||
-  fail "rtusim wave did not open t.gtkw"
+expect_error "no display to open GTKWave on" env -u DISPLAY -u WAYLAND_DISPLAY PATH=$PWD/bin:$PATH \
+  "$rtusim" wave t.fst
+[[ $(DISPLAY=:99 PATH=$PWD/bin:$PATH "$rtusim" wave t.fst) == "t.fst t.fst.gtkw" ]] ||
+  fail "rtusim wave did not open t.fst.gtkw"
+# A VCD and an FST of the same name keep their own save files.
+"$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace t.vcd >/dev/null
+[[ -f t.vcd.gtkw ]] && grep -qx "\[dumpfile\] \"$PWD/t.fst\"" t.fst.gtkw ||
+  fail "t.vcd's save file overwrote t.fst's"
 
 fst2vcd --extensions t.fst >extensions.vcd
 grep -q 'IDLE INIT EVAL NEXT PUSH POP OUT BLOCKED 000 001 010 011 100 101 110 111' extensions.vcd ||

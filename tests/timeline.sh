@@ -45,12 +45,12 @@ expect_error "the input has 192 rays" "${replay[@]}" --trace t3.vcd --trace-ray 
 # last the handshake of the 100th job's result with the host, in the full trace of the same run.
 "${replay[@]}" --cores 4 --memory cached --trace full.vcd >/dev/null
 "${replay[@]}" --cores 4 --memory cached --trace ray.vcd --timeline ray.json --trace-ray 100 >report.txt
-read -r from to < <(sed -n 's/^window *ray 100: cycles \([0-9]*\) to \([0-9]*\)$/\1 \2/p' report.txt)
+read -r from to core < <(sed -n 's/^window *ray 100: cycles \([0-9]*\) to \([0-9]*\), on core \([0-9]*\)$/\1 \2 \3/p' report.txt)
 [[ -n ${to:-} ]] || fail "no window reported: $(cat report.txt)"
 python3 "$here/vcd_normalise.py" full.vcd 10000 >full.txt
-python3 - full.txt out.bin "$from" "$to" <<'PY' || fail "--trace-ray window"
+python3 - full.txt out.bin "$from" "$to" "$core" <<'PY' || fail "--trace-ray window"
 import struct, sys
-changes, out, first, last = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+changes, out, first, last, core = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
 levels = {}
 for line in open(changes):
     cycle, name, value = line.split()
@@ -71,7 +71,17 @@ order = [words[i] & 0x0FFFFFFF for i in range(0, len(words), 8)]
 results = transfers("rtu.result_manager.out")
 assert entries[100] == first, (entries[100], first)
 assert results[order.index(100)] == last, (results[order.index(100)], last)
+def level(name, cycle):
+    """The value of signal `name` in `cycle`."""
+    value = None
+    for c, v in levels[name]:
+        if c > cycle: break
+        value = v
+    return value
+took = [n for n in range(4) if any(level("rtu.core_%d.in.ray" % n, c) == 100 for c in transfers("rtu.core_%d.in" % n))]
+assert took == [core], (took, core)
 PY
+[[ $(grep -m1 '^-' ray.vcd.gtkw) == "-core_$core" ]] || fail "the save file does not show core $core first"
 python3 - ray.json "$from" "$to" <<'PY' || fail "--trace-ray timeline"
 import json, sys
 events, first, last = json.load(open(sys.argv[1]))["traceEvents"], int(sys.argv[2]), int(sys.argv[3])

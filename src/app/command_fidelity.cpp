@@ -79,6 +79,28 @@ void writeCsv(const std::vector<ModeFidelity>& modes, const std::string& path) {
   output.commit();
 }
 
+// The sampled fractions the frame can take. A fraction given on the command line that is too
+// small for the frame is refused, up front; a default one is skipped with a note, so that
+// `fidelity` on a small frame measures the other modes instead of refusing them all.
+std::vector<double> plannedFractions(const std::vector<double>& asked, bool given, uint64_t rays,
+                                     const RunConfig& settings) {
+  std::vector<double> planned;
+  for (double fraction : asked) {
+    SampleSpec spec = settings.sample;
+    spec.fraction = fraction;
+    try {
+      planSample(rays, settings.rtu.cores, spec);
+      planned.push_back(fraction);
+    } catch (const std::invalid_argument& error) {
+      if (given) throw;
+      std::cout << "note: the sampled mode at " << fraction
+                << " is skipped (a default fraction; --fractions asks for it): " << error.what()
+                << "\n";
+    }
+  }
+  return planned;
+}
+
 }  // namespace
 
 void addFidelityCommand(CLI::App& app) {
@@ -98,9 +120,10 @@ void addFidelityCommand(CLI::App& app) {
       {"--sample", "--accel"});
   // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
   request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
-  command->add_option("--fractions", options->fractions, "sampled fractions to measure")
-      ->delimiter(',')
-      ->capture_default_str();
+  CLI::Option* fractionsOption =
+      command->add_option("--fractions", options->fractions, "sampled fractions to measure")
+          ->delimiter(',')
+          ->capture_default_str();
   command
       ->add_option("--quanta", options->quanta,
                    "global quanta (cycles) of the loosely-timed model to measure")
@@ -108,7 +131,7 @@ void addFidelityCommand(CLI::App& app) {
       ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
       ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per mode");
-  command->callback([options, request] {
+  command->callback([options, request, fractionsOption] {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     settings.camera.validate();
@@ -118,17 +141,14 @@ void addFidelityCommand(CLI::App& app) {
     const std::vector<HostRecord> jobs = frameRecords(scene, settings);
     if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
       throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
-    for (double fraction : options->fractions) {
-      SampleSpec spec = settings.sample;
-      spec.fraction = fraction;
-      planSample(jobs.size(), settings.rtu.cores, spec);  // refuses a fraction too small, up front
-    }
+    const std::vector<double> fractions =
+        plannedFractions(options->fractions, fractionsOption->count() > 0, jobs.size(), settings);
     std::cout << "scene " << scene.name << ", " << settings.camera.width << "x"
               << settings.camera.height << ", " << settings.rtu.cores << " cores, "
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory; errors against "
               << "the SystemC model\n";
     const std::vector<ModeFidelity> modes = measureFidelity(
-        scene.memory(), jobs, settings.rtu, options->quanta, options->fractions, settings.sample);
+        scene.memory(), jobs, settings.rtu, options->quanta, fractions, settings.sample);
     printTable(modes, std::cout);
     if (!options->csv.empty()) {
       writeCsv(modes, options->csv);

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -34,6 +35,29 @@ Resolution parseResolution(const std::string& text) {
   throw std::invalid_argument("--resolutions: '" + text + "' is not WIDTHxHEIGHT");
 }
 
+// The workload of a recorded run: its buffer's file name.
+std::string workloadName(const RunConfig& settings) {
+  return std::filesystem::path(settings.jobs.empty() ? settings.rays : settings.jobs)
+      .filename()
+      .string();
+}
+
+// The buffer of a row's recorded workload, or "" for a camera's frame.
+std::string recordedBuffer(const nlohmann::ordered_json& config) {
+  for (const char* buffer : {"jobs", "rays"})
+    if (config.contains(buffer) && !config[buffer].get<std::string>().empty())
+      return config[buffer].get<std::string>();
+  return {};
+}
+
+// A row's frame: WIDTHxHEIGHT, or the recorded workload's buffer.
+std::string frameOf(const nlohmann::ordered_json& config) {
+  const std::string buffer = recordedBuffer(config);
+  if (!buffer.empty()) return std::filesystem::path(buffer).filename().string();
+  return std::to_string(config["width"].get<int>()) + "x" +
+         std::to_string(config["height"].get<int>());
+}
+
 void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& out) {
   out << std::left << std::setw(11) << "resolution" << std::right << std::setw(6) << "cores"
       << std::setw(10) << "rays" << std::setw(14) << "total cycles" << std::setw(11) << "cycles/ray"
@@ -41,9 +65,7 @@ void printTable(const std::vector<nlohmann::ordered_json>& rows, std::ostream& o
       << "  limit\n";
   for (const nlohmann::ordered_json& row : rows) {
     const auto& config = row["config"];
-    const std::string resolution = std::to_string(config["width"].get<int>()) + "x" +
-                                   std::to_string(config["height"].get<int>());
-    out << std::left << std::setw(11) << resolution << std::right << std::setw(6)
+    out << std::left << std::setw(11) << frameOf(config) << std::right << std::setw(6)
         << config["cores"].get<int>();
     if (row["status"] != "ok") {
       out << "  failed: " << row["error"].get<std::string>() << "\n";
@@ -66,9 +88,7 @@ void printMatrix(const std::vector<nlohmann::ordered_json>& rows, const std::vec
   out << "\n";
   for (size_t first = 0; first < rows.size(); first += cores.size()) {
     const auto& config = rows[first]["config"];
-    out << std::left << std::setw(11)
-        << (std::to_string(config["width"].get<int>()) + "x" +
-            std::to_string(config["height"].get<int>()));
+    out << std::left << std::setw(11) << frameOf(config);
     for (size_t i = first; i < first + cores.size(); ++i) {
       std::ostringstream cell;
       if (rows[i]["status"] == "ok")
@@ -92,7 +112,10 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
   file << csvLine(header);
   for (const nlohmann::ordered_json& row : rows) {
     const auto& config = row["config"];
-    std::vector<std::string> fields = {config["width"].dump(), config["height"].dump(),
+    // A recorded workload's rows have no frame size: its rays are the buffer's (in the .jsonl).
+    const bool recorded = !recordedBuffer(config).empty();
+    std::vector<std::string> fields = {recorded ? "" : config["width"].dump(),
+                                       recorded ? "" : config["height"].dump(),
                                        config["cores"].dump()};
     for (const std::string& value : statisticsValues(row)) fields.push_back(value);
     fields.push_back(row["error"].get<std::string>());
@@ -153,11 +176,15 @@ void addFpsCommand(CLI::App& app) {
              "the form of thesis Tables 8.4 and 8.5");
   auto request = addConfigOptions(*command,
                                   kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
-                                      kUseCamera | kUseSampling | kUseAccel,
-                                  {"--cores", "--width", "--height", "--accel"});
-  command->add_option("--resolutions", options->resolutions, "WIDTHxHEIGHT list")
-      ->delimiter(',')
-      ->capture_default_str();
+                                      kUseCamera | kUseSampling | kUseAccel | kUseBuffers,
+                                  {"--cores", "--width", "--height", "--accel", "--jobs"});
+  CLI::Option* resolutionsOption =
+      command
+          ->add_option("--resolutions", options->resolutions,
+                       "WIDTHxHEIGHT list (not with a recorded workload: --set jobs=FILE or "
+                       "--rays FILE)")
+          ->delimiter(',')
+          ->capture_default_str();
   command->add_option("--cores", options->cores, "core counts")
       ->delimiter(',')
       ->capture_default_str();
@@ -169,18 +196,28 @@ void addFpsCommand(CLI::App& app) {
                     "run the SystemC model even where the recurrence gives the same answer "
                     "(ideal memory, no reorder buffer, steady host links)");
   addWorkersOption(*command, options->workers, "rows run in parallel (default: all cores)", 1024);
-  command->callback([options, request] {
+  command->callback([options, request, resolutionsOption] {
     const Configuration base = request->resolve();
+    const bool recorded = recordedWorkload(base.values());
+    if (recorded && resolutionsOption->count() > 0)
+      throw std::invalid_argument("--resolutions: a recorded workload (" +
+                                  workloadName(base.values()) +
+                                  ") has its own rays; give one or the other");
     const std::string jsonLines = options->csv.empty() ? "" : jsonLinesPath(options->csv);
     checkOutputPaths({{"--csv", options->csv}, {"--csv (.jsonl)", jsonLines}},
                      inputPaths(base.values()));
     std::vector<Configuration> configurations;
-    for (const std::string& text : options->resolutions) {
-      const Resolution resolution = parseResolution(text);
+    // A recorded workload is one "resolution": its buffer.
+    const std::vector<std::string> resolutions = recorded ? std::vector<std::string>{""}
+                                                          : options->resolutions;
+    for (const std::string& text : resolutions) {
       for (int cores : options->cores) {
         Configuration configuration = base;
-        configuration.set("width", std::to_string(resolution.width), ConfigSource::CommandLine);
-        configuration.set("height", std::to_string(resolution.height), ConfigSource::CommandLine);
+        if (!recorded) {
+          const Resolution resolution = parseResolution(text);
+          configuration.set("width", std::to_string(resolution.width), ConfigSource::CommandLine);
+          configuration.set("height", std::to_string(resolution.height), ConfigSource::CommandLine);
+        }
         configuration.set("cores", std::to_string(cores), ConfigSource::CommandLine);
         configuration.values().camera.validate();
         configurations.push_back(configuration);

@@ -189,8 +189,8 @@ void addSweepCommand(CLI::App& app) {
   // The accel settings of a triangle core's build (--builder, --drop-bad-triangles), as render's.
   auto request = addConfigOptions(*command,
                                   kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
-                                      kUseCamera | kUseSampling | kUseAccel,
-                                  {"--accel"});
+                                      kUseCamera | kUseSampling | kUseAccel | kUseBuffers,
+                                  {"--accel", "--jobs"});
   command->add_option("--grid", options->grid,
                       "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
   command

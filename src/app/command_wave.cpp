@@ -26,12 +26,20 @@ bool onPath(const std::string& program) {
   return false;
 }
 
+bool hasDisplay() {
+  for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY"}) {
+    const char* value = std::getenv(variable);
+    if (value && *value) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void addWaveCommand(CLI::App& app) {
   auto trace = std::make_shared<std::string>();
   CLI::App* command = app.add_subcommand(
-      "wave", "open a trace (--trace t.fst) in GTKWave with its save file t.gtkw");
+      "wave", "open a trace (--trace t.fst) in GTKWave with its save file t.fst.gtkw");
   command->add_option("trace", *trace, "trace file (.fst or .vcd)")->required();
   command->callback([trace] {
     if (!std::filesystem::is_regular_file(*trace))
@@ -39,6 +47,11 @@ void addWaveCommand(CLI::App& app) {
     if (!onPath("gtkwave"))
       throw std::runtime_error("gtkwave not found on PATH: install the gtkwave package "
                                "(scripts/setup.sh)");
+    if (!hasDisplay())
+      throw std::runtime_error("no display to open GTKWave on (DISPLAY and WAYLAND_DISPLAY are "
+                               "unset): run it under xvfb-run, or open " +
+                               *trace + " with " + saveFilePath(*trace) +
+                               " on a machine with a screen");
     std::string saveFile = saveFilePath(*trace);
     const bool withSaveFile = std::filesystem::is_regular_file(saveFile);
     char* arguments[] = {const_cast<char*>("gtkwave"), trace->data(),

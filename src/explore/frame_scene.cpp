@@ -6,6 +6,7 @@
 #include "explore/accel_build.h"
 #include "geometry/ray_sets.h"
 #include "inputs/camera.h"
+#include "inputs/host_buffers.h"
 #include "kinds/bih/bih_config.h"
 #include "kinds/bih/bih_model.h"
 #include "kinds/svo/mesh_voxelizer.h"
@@ -107,10 +108,28 @@ FrameScene loadFrameScene(const RunConfig& settings) {
   return scene;
 }
 
+// A recorded workload: the records of the job buffer (`jobs`) or ray buffer (`rays`), read whole;
+// a record with impossible values is an error naming the buffer and the record.
+std::vector<HostRecord> recordedRecords(const RunConfig& settings) {
+  if (!settings.jobs.empty() && !settings.rays.empty())
+    throw std::invalid_argument("jobs excludes rays: give one recorded workload");
+  if (!settings.jobs.empty()) {
+    const std::vector<TValueRecord> jobs = readJobBuffer(settings.jobs);
+    return {jobs.begin(), jobs.end()};
+  }
+  const std::vector<RayRecord> rays = readRayBuffer(settings.rays);
+  return {rays.begin(), rays.end()};
+}
+
+bool recordedWorkload(const RunConfig& settings) {
+  return !settings.jobs.empty() || !settings.rays.empty();
+}
+
 std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& settings) {
   if (settings.rtu.core != scene.core)
     throw std::invalid_argument("a scene built for the " + scene.core + " core cannot run on the " +
                                 settings.rtu.core + " core");
+  if (recordedWorkload(settings)) return recordedRecords(settings);
   return withCoreKind(scene.core, [&](auto kind) {
     return FrameSceneOf<decltype(kind)>::records(scene, settings);
   });

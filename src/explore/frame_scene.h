@@ -42,10 +42,15 @@ struct FrameScene {
 // throw (a mesh with degenerate or duplicate triangles names --drop-bad-triangles).
 FrameScene loadFrameScene(const RunConfig& settings);
 
+// Whether `settings` name a recorded workload (a job buffer, `jobs`, or a ray buffer, `rays`)
+// instead of the camera's frame.
+bool recordedWorkload(const RunConfig& settings);
+
 // The host records of the camera's frame of primary rays on `scene` (in pixel order, id words the
-// pixel indices), for its kind. Throws std::invalid_argument when `settings` chooses another kind
-// than the scene's, and, for the SVO kind on a timed model, when the tree is deeper than the stack
-// (unless overflow is allowed).
+// pixel indices), for its kind; or, for a recorded workload, its buffer's records (a job buffer
+// for the SVO kind only: another kind refuses it when the run starts). Throws std::invalid_argument
+// when `settings` chooses another kind than the scene's, and, for the SVO kind on a timed model,
+// when the tree is deeper than the stack (unless overflow is allowed).
 std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& settings);
 
 // What decides which scene is built for a run, as text (the scene, the kind, its build settings):

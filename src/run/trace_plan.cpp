@@ -1,6 +1,7 @@
 #include "run/trace_plan.h"
 
 #include <cstdio>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,47 @@ class JobEntry : public TraceListener {
   uint64_t since_ = 0, transfers_ = 0;
 };
 
+// The core that took job `ray`: the one whose input shows a transfer (valid and ready high) of
+// that ray's id (the channels record each payload's ray id, transfer_channel.h).
+class CoreOfRay : public TraceListener {
+ public:
+  explicit CoreOfRay(uint64_t ray) : ray_(ray) {}
+  void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override {
+    static const std::string prefix = "rtu.core_", suffix = ".in";
+    if (scope.rfind(prefix, 0) != 0 || scope.size() <= prefix.size() + suffix.size() ||
+        scope.compare(scope.size() - suffix.size(), suffix.size(), suffix) != 0)
+      return;
+    const int core = std::stoi(scope.substr(prefix.size()));
+    if (variable.name == "valid") roles_[signal] = {core, Role::Valid};
+    if (variable.name == "ready") roles_[signal] = {core, Role::Ready};
+    if (variable.name == "ray") roles_[signal] = {core, Role::Ray};
+  }
+  void changed(uint64_t, const std::vector<TraceChange>& changes) override {
+    for (const TraceChange& change : changes) {
+      const auto role = roles_.find(change.signal);
+      if (role == roles_.end()) continue;
+      Input& input = inputs_[role->second.first];
+      if (role->second.second == Role::Valid) input.valid = change.value != 0;
+      if (role->second.second == Role::Ready) input.ready = change.value != 0;
+      if (role->second.second == Role::Ray) input.ray = change.value;
+    }
+    for (const auto& [core, input] : inputs_)
+      if (core_ < 0 && input.valid && input.ready && input.ray == ray_) core_ = core;
+  }
+  int core() const { return core_; }
+
+ private:
+  enum class Role { Valid, Ready, Ray };
+  struct Input {
+    bool valid = false, ready = false;
+    uint64_t ray = ~uint64_t{0};
+  };
+  uint64_t ray_;
+  std::map<size_t, std::pair<int, Role>> roles_;
+  std::map<int, Input> inputs_;
+  int core_ = -1;
+};
+
 std::string megabytes(uint64_t bytes) {
   char text[64];
   std::snprintf(text, sizeof text, "%.1f MB (%llu bytes)", static_cast<double>(bytes) / 1e6,
@@ -59,9 +101,8 @@ void refuseAbove(const std::string& what, const std::string& path, uint64_t byte
 
 }  // namespace
 
-std::pair<uint64_t, uint64_t> rayWindow(const WordMemory& memory,
-                                        const std::vector<HostRecord>& records,
-                                        const RtuConfig& config, uint64_t ray) {
+RayWindow rayWindow(const WordMemory& memory, const std::vector<HostRecord>& records,
+                    const RtuConfig& config, uint64_t ray) {
   if (ray >= records.size())
     throw std::invalid_argument("--trace-ray " + std::to_string(ray) + ": the input has " +
                                 std::to_string(records.size()) + " rays (0 to " +
@@ -70,10 +111,11 @@ std::pair<uint64_t, uint64_t> rayWindow(const WordMemory& memory,
   plain.trace.reset();
   plain.timeline = {};
   JobEntry entry(ray);
-  const RtuRun run = simulateRtu(memory, records, plain, {}, {&entry});
+  CoreOfRay core(ray);
+  const RtuRun run = simulateRtu(memory, records, plain, {}, {&entry, &core});
   for (size_t i = 0; i < run.jobIndices.size(); ++i)
     if (run.jobIndices[i] == ray && entry.cycle() >= 0)
-      return {static_cast<uint64_t>(entry.cycle()), run.arrivalCycles[i] + 1};
+      return {static_cast<uint64_t>(entry.cycle()), run.arrivalCycles[i] + 1, core.core()};
   throw std::logic_error("--trace-ray: the run shows no entry or result of ray " +
                          std::to_string(ray));
 }
@@ -95,14 +137,18 @@ RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& rec
                     const RunProgress& progress) {
   if (!config.trace && !config.timeline.wanted()) return config;
   if (limits.ray >= 0) {
-    const auto [from, to] = rayWindow(memory, records, config, static_cast<uint64_t>(limits.ray));
-    out << "window      ray " << limits.ray << ": cycles " << from << " to " << to - 1 << "\n";
+    const RayWindow window = rayWindow(memory, records, config, static_cast<uint64_t>(limits.ray));
+    out << "window      ray " << limits.ray << ": cycles " << window.from << " to "
+        << window.to - 1;
+    if (window.core >= 0) out << ", on core " << window.core;
+    out << "\n";
     if (config.trace) {
-      config.trace->fromCycle = from;
-      config.trace->toCycle = to;
+      config.trace->fromCycle = window.from;
+      config.trace->toCycle = window.to;
+      if (window.core >= 0) config.trace->firstModule = "core_" + std::to_string(window.core);
     }
-    config.timeline.fromCycle = from;
-    config.timeline.toCycle = to;
+    config.timeline.fromCycle = window.from;
+    config.timeline.toCycle = window.to;
   }
   const TraceSizes sizes = measureTrace(memory, records, config, progress);
   if (config.trace) {

@@ -30,10 +30,14 @@ struct TraceSizes {
 };
 
 // The window of job `ray`: from its handshake into the job manager to the cycle after its result's
-// handshake with the host. Throws std::invalid_argument for a ray the records do not have.
-std::pair<uint64_t, uint64_t> rayWindow(const WordMemory& memory,
-                                        const std::vector<HostRecord>& records,
-                                        const RtuConfig& config, uint64_t ray);
+// handshake with the host, and the core that ran it (-1 when no core did: a scene's ray). Throws
+// std::invalid_argument for a ray the records do not have.
+struct RayWindow {
+  uint64_t from = 0, to = 0;
+  int core = -1;
+};
+RayWindow rayWindow(const WordMemory& memory, const std::vector<HostRecord>& records,
+                    const RtuConfig& config, uint64_t ray);
 
 // The sizes of the files `config` asks for, from a dry run.
 TraceSizes measureTrace(const WordMemory& memory, const std::vector<HostRecord>& records,

@@ -144,7 +144,7 @@ void CycleTrace::finish(uint64_t markerCycle) {
   std::vector<SaveFileSignal> shown;
   for (const Signal& s : signals_)
     shown.push_back({s.scope, s.variable.name, s.variable.width, s.variable.valueNames});
-  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs);
+  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs, options_.firstModule);
 }
 
 void CycleTrace::writeDeclarations() {

@@ -35,6 +35,9 @@ struct TraceOptions {
   // A clock `clk` in the top scope, high in the first half of every cycle from the window's first
   // cycle to its last change (two changes per cycle: a trace of every cycle).
   bool clock = false;
+  // The module whose group the save file shows first ("core_3": the core of --trace-ray's ray);
+  // empty: pipeline order only.
+  std::string firstModule = {};
 };
 
 class CycleTrace {

@@ -32,8 +32,11 @@ std::string moduleOf(const std::string& scope) {
   return scope.substr(first + 1, length);
 }
 
-// Pipeline position of a module, then its instance number (core_10 after core_9).
-std::tuple<int, long, std::string> pipelineKey(const std::string& module) {
+// Pipeline position of a module, then its instance number (core_10 after core_9); `first` before
+// all.
+std::tuple<int, long, std::string> pipelineKey(const std::string& module,
+                                               const std::string& first) {
+  if (module == first) return {-1, 0, module};
   static const std::vector<std::string> order{"job_manager", "scheduler",      "core_",
                                               "memory",      "result_manager", "reorder_buffer"};
   for (size_t i = 0; i < order.size(); ++i)
@@ -83,12 +86,10 @@ std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSig
 
 }  // namespace
 
-std::string saveFilePath(const std::string& tracePath) {
-  return std::filesystem::path(tracePath).replace_extension(".gtkw").string();
-}
+std::string saveFilePath(const std::string& tracePath) { return tracePath + ".gtkw"; }
 
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
-                   uint64_t markerPs) {
+                   uint64_t markerPs, const std::string& firstModule) {
   const std::string path = saveFilePath(tracePath);
   OutputFile file(path);
   std::ostream& out = file.stream();
@@ -105,7 +106,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
       out << kBinary << "\n+{" << signal.name << "} " << displayName(signal) << '\n';
   for (const SaveFileSignal& signal : signals) {
     if (signal.scope.find('.') == std::string::npos) continue;
-    byModule[pipelineKey(moduleOf(signal.scope))].push_back(&signal);
+    byModule[pipelineKey(moduleOf(signal.scope), firstModule)].push_back(&signal);
     if (!signal.valueNames.empty() && !isFst(tracePath) && !translateFilters.count(signal.name))
       translateFilters[signal.name] = writeTranslateFilter(tracePath, signal);
   }

@@ -17,11 +17,13 @@ struct SaveFileSignal {
   std::vector<std::string> valueNames;  // names of the values 0, 1, ...; empty for numbers
 };
 
-// The save file's path: the trace's, with ".gtkw" for its extension.
+// The save file's path: the trace's with ".gtkw" appended (t.fst.gtkw, t.vcd.gtkw: a VCD and an
+// FST of one name keep their own).
 std::string saveFilePath(const std::string& tracePath);
 
-// Writes saveFilePath(tracePath); throws std::runtime_error when it cannot be written.
+// Writes saveFilePath(tracePath), the group of `firstModule` (e.g. "core_3") first when it is
+// not empty; throws std::runtime_error when it cannot be written.
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
-                   uint64_t markerPs);
+                   uint64_t markerPs, const std::string& firstModule = {});
 
 }  // namespace rtu
