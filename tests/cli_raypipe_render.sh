@@ -3,8 +3,9 @@
 # scene's faces, built into the Tray Racer's k-d tree, on its golden model at the seed's level 1
 # (40x30): the report, the simple shader's image and the shaded one, --results-csv with the seed's
 # pixel ids in the primary ray generator's order; the same rays from the scene built before (a k-d
-# image, the seed's scene file: --accel-file); the trayracer preset; the pipe's cycle model
-# refused before any work, and by the commands that run only the RTU; a ray pipe setting under the RTU reported as having no effect.
+# image, the seed's scene file: --accel-file); the trayracer preset; the same frame on the pipe's
+# timed model (--model ca) with its cycles; --model lt refused before any work, and the pipe by
+# the commands that run only the RTU; a ray pipe setting under the RTU reported as having no effect.
 # Usage: cli_raypipe_render.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -63,10 +64,34 @@ grep -q "^frame       20x15 (level 0)" preset.txt || fail "preset frame: $(cat p
 grep -q "^camera      E 1.125,1.125,-1.25  U 1,0,0  V 0,1,0  W 0,0,1" preset.txt ||
   fail "preset camera: $(cat preset.txt)"
 
-# The pipe's cycle model is not built: refused before any work.
-expect_error "cycle model is not built yet" \
-  "$rtusim" render --architecture raypipe --model ca "${frame[@]}" --level 0 --image ca.png
-[[ ! -e ca.png ]] || fail "--model ca wrote an image"
+# --model ca: the same frame on the pipe's timed model. The same pixels as golden's; the report's
+# frame cycles are the last exit + 1; the PRG takes at most one pixel every 3 cycles, in issue
+# order; the shader lets out at most one pixel a cycle.
+# (Depth 3: at depth 4 a ray reaches a leaf with no triangle, which the timed model refuses.)
+small=(--scene sphere --depth 3 --index wide --level 1)
+"$rtusim" render --architecture raypipe --model golden "${small[@]}" --image g3.png \
+  --results-csv rays3.csv >/dev/null
+"$rtusim" render --architecture raypipe --model ca "${small[@]}" --image ca.png \
+  --results-csv ca.csv >ca.txt
+cmp -s g3.png ca.png || fail "--model ca's image differs from golden's"
+cycles=$(sed -n 's/^timing *\([0-9]*\) cycles at 50 MHz: .*/\1/p' ca.txt)
+[[ -n $cycles ]] || fail "no timing line: $(cat ca.txt)"
+grep -q "^busiest .* %;" ca.txt && grep -q "ray ids in flight at most" ca.txt || fail "ca report: $(cat ca.txt)"
+python3 - rays3.csv ca.csv "$cycles" <<'PY' || fail "ca results CSV"
+import csv, sys
+golden, timed = (list(csv.DictReader(open(path))) for path in sys.argv[1:3])
+assert [(r["id"], r["hit"], r["primitive"], r["t"]) for r in golden] == \
+       [(r["id"], r["hit"], r["primitive"], r["t"]) for r in timed]
+issue = [int(r["issue_cycle"]) for r in timed]
+exits = [int(r["exit_cycle"]) for r in timed]
+assert all(b - a >= 3 for a, b in zip(issue, issue[1:])), "the PRG took two pixels within 3 cycles"
+assert len(set(exits)) == len(exits), "two pixels left the shader in one cycle"
+assert all(e > i for i, e in zip(issue, exits))
+assert max(exits) + 1 == int(sys.argv[3]), (max(exits), sys.argv[3])
+PY
+expect_error "no loosely-timed form" \
+  "$rtusim" render --architecture raypipe --model lt "${frame[@]}" --level 0 --image lt.png
+[[ ! -e lt.png ]] || fail "--model lt wrote an image"
 expect_error "written for --architecture raypipe" \
   "$rtusim" render --model golden "${frame[@]}" --results-csv rtu.csv
 

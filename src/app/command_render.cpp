@@ -105,7 +105,7 @@ void addRenderCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
                 "loosely-timed or golden model: --model; or seed 001's ray pipe: --architecture "
-                "raypipe --model golden) and report it");
+                "raypipe) and report it");
   // The accel settings of the triangle cores' builds (--builder, --bih-format, --index, ...);
   // render builds the structure of its core, so not --accel.
   auto request = addConfigOptions(

@@ -1,9 +1,11 @@
 #include "app/raypipe_render.h"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -16,6 +18,7 @@
 #include "kinds/kd/kd_image.h"
 #include "raypipe/raypipe_golden.h"
 #include "raypipe/simple_shader.h"
+#include "sim/raypipe/raypipe_timed.h"
 
 namespace rtu {
 namespace {
@@ -123,8 +126,12 @@ void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeC
                                 ? " (level " + std::to_string(settings.raypipeView.level) + ")"
                                 : "";
   out << "scene       " << scene.name << ": " << scene.description << "\n"
-      << "model       golden, ray pipe (seed 001): short stack " << pipe.shortStackDepth
-      << ", divider " << settingText("raypipe.division", settings) << ", t_max "
+      << "model       "
+      << (settings.model == ModelKind::CycleAccurate
+              ? "ca (the timed model, cycle for cycle the per-cycle reference)"
+              : "golden")
+      << ", ray pipe (seed 001): short stack " << pipe.shortStackDepth << ", divider "
+      << settingText("raypipe.division", settings) << ", t_max "
       << settingText("raypipe.tmax_clamp", settings) << "\n"
       << "frame       " << size.width << "x" << size.height << level << "\n"
       << "camera      E " << registerText(registers.eye) << "  U " << registerText(registers.u)
@@ -141,13 +148,78 @@ void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeC
   for (const std::string& warning : scene.warnings) out << "warning     " << warning << "\n";
 }
 
-const std::vector<std::string> kExtraColumns = {
-    "x", "y", "box_miss", "nodes", "triangle_tests", "pushes", "restarts"};
+// The frame on the timed model (sim/raypipe), from the PRG's rays in issue order. Its results
+// must be the golden frame's, pixel by pixel: anything else is a model defect, never a number.
+RaypipeCycleRun timedFrame(const RaypipeScene& scene, const std::vector<PrimaryRay>& rays,
+                           const RaypipeConfig& config, const RaypipeGoldenFrame& golden) {
+  std::vector<RaypipeCycleRay> input;
+  input.reserve(rays.size());
+  for (const PrimaryRay& ray : rays) input.push_back({ray.ray, ray.pixel.pixelId});
+  RaypipeCycleRun run = runRaypipeTimed(config, KdImage{scene.image}, input);
+  for (size_t i = 0; i < run.results.size(); ++i) {
+    const RaypipeCycleResult& timed = run.results[i];
+    const RaypipePixel& expected = golden.pixels[i];
+    if (timed.hit != expected.hit || timed.boxMiss != expected.boxMiss ||
+        timed.primitive != expected.primitive || !(timed.t == expected.t))
+      throw std::logic_error(
+          "the ray pipe's timed model and its golden traversal differ at pixel " +
+          std::to_string(expected.pixel.pixelId) + " (a model defect)");
+  }
+  return run;
+}
 
-std::vector<ResultRow> resultRows(const RaypipeGoldenFrame& frame) {
+std::string percent(int64_t part, int64_t whole) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f %%", whole ? 100.0 * part / whole : 0.0);
+  return text;
+}
+
+// The timed frame's lines: frame cycles and rate at the pipe's clock, the busiest units, where
+// rays waited, and the FIFOs that filled.
+void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::ostream& out) {
+  const double ms = run.frameCycles / (config.clockMHz * 1e3);
+  char line[160];
+  std::snprintf(line, sizeof line,
+                "timing      %lld cycles at %g MHz: frame %.3f ms, %.2f frames/s, %.3f "
+                "rays/cycle\n",
+                static_cast<long long>(run.frameCycles), config.clockMHz, ms, 1e3 / ms,
+                static_cast<double>(run.results.size()) / run.frameCycles);
+  out << line;
+  std::vector<RaypipeUnitActivity> units = run.units;
+  std::sort(units.begin(), units.end(),
+            [](const auto& a, const auto& b) { return a.busy > b.busy; });
+  out << "busiest    ";
+  for (size_t i = 0; i < units.size() && i < 4; ++i)
+    out << " " << units[i].unit << " " << percent(units[i].busy, run.frameCycles) << ";";
+  std::sort(units.begin(), units.end(),
+            [](const auto& a, const auto& b) { return a.stall > b.stall; });
+  out << "\nstalled    ";
+  for (size_t i = 0; i < units.size() && i < 3 && units[i].stall > 0; ++i)
+    out << " " << units[i].unit << " " << units[i].stall << " cycles;";
+  out << "\nfifos      ";
+  int full = 0;
+  for (const RaypipeFifoPeak& fifo : run.fifos)
+    if (fifo.peak >= fifo.depth) out << (full++ ? ", " : " full at some point: ") << fifo.fifo;
+  if (full == 0) out << " none filled";
+  out << "; " << run.maxRaysInFlight << " of " << config.raysInFlight
+      << " ray ids in flight at most\n";
+  std::snprintf(line, sizeof line, "host        %.3f s timed model, %.2f M rays/s\n",
+                run.hostSeconds, run.results.size() / run.hostSeconds / 1e6);
+  out << line;
+}
+
+std::vector<std::string> extraColumns(bool timed) {
+  std::vector<std::string> columns = {"x",      "y",       "box_miss", "nodes", "triangle_tests",
+                                      "pushes", "restarts"};
+  if (timed) columns.insert(columns.end(), {"issue_cycle", "exit_cycle"});
+  return columns;
+}
+
+std::vector<ResultRow> resultRows(const RaypipeGoldenFrame& frame, const RaypipeCycleRun* timed) {
   std::vector<ResultRow> rows;
   rows.reserve(frame.pixels.size());
-  for (const RaypipePixel& p : frame.pixels) {
+  for (size_t i = 0; i < frame.pixels.size(); ++i) {
+    const RaypipePixel& p = frame.pixels[i];
     ResultRow row{p.pixel.pixelId, p.hit, p.t, p.primitive, p.u, p.v, {}};
     row.extra = {static_cast<uint64_t>(p.pixel.x),
                  static_cast<uint64_t>(p.pixel.y),
@@ -156,6 +228,9 @@ std::vector<ResultRow> resultRows(const RaypipeGoldenFrame& frame) {
                  p.counts.triangleTests,
                  p.counts.pushes,
                  p.counts.restarts};
+    if (timed)
+      row.extra.insert(row.extra.end(), {static_cast<uint64_t>(timed->results[i].issueCycle),
+                                         static_cast<uint64_t>(timed->results[i].exitCycle)});
     rows.push_back(std::move(row));
   }
   return rows;
@@ -214,10 +289,9 @@ void checkRaypipeOnly(const RaypipeRenderOptions& options) {
 }
 
 void checkRaypipeModel(ModelKind model) {
-  if (model != ModelKind::Golden)
-    throw std::invalid_argument(std::string("--model ") + toString(model) +
-                                ": the ray pipe's cycle model is not built yet; --architecture "
-                                "raypipe runs --model golden");
+  if (model == ModelKind::LooselyTimed)
+    throw std::invalid_argument("--model lt: the ray pipe has no loosely-timed form; its timed "
+                                "model (--model ca) is exact and costs per ray already");
 }
 
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
@@ -237,8 +311,14 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report(scene, settings, registers, frame, seconds, out);
+  std::optional<RaypipeCycleRun> timed;
+  if (settings.model == ModelKind::CycleAccurate) {
+    timed = timedFrame(scene, rays, settings.raypipe, frame);
+    reportTiming(*timed, settings.raypipe, out);
+  }
   if (!options.resultsCsv.empty())
-    writeResultsCsv(options.resultsCsv, resultRows(frame), kExtraColumns);
+    writeResultsCsv(options.resultsCsv, resultRows(frame, timed ? &*timed : nullptr),
+                    extraColumns(timed.has_value()));
   if (!images.image.empty()) writePaletteImage(frame, size, images.image);
   if (!options.shadedImage.empty() || !images.depthImage.empty() || !images.costImage.empty()) {
     const RenderedFrame rendered = renderedFrame(frame, rays, scene.normals, registers, size);

@@ -9,8 +9,10 @@
 // seed's scene file (`--trayracer-scene`, R1's SCENES/*.scene; narrow unless --index wide). Its
 // outputs:
 // the report, the simple shader's image (--image), a Lambert-shaded, depth or cost image, and
-// --results-csv in issue order. The pipe's cycle model is not built yet: --model ca or lt is
-// refused before any work.
+// --results-csv in issue order. With --model ca (the default) the frame also runs on the pipe's
+// timed model (sim/raypipe/raypipe_timed.h), whose results must equal the golden frame's: the
+// report gains the frame's cycles and rate, the busiest units, stalls and FIFOs, and the CSV each
+// ray's issue and exit cycles. --model lt is refused before any work.
 
 #include <iosfwd>
 #include <string>
@@ -38,7 +40,7 @@ void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options);
 // Throws std::invalid_argument naming an option given for the RTU, which only the pipe takes.
 void checkRaypipeOnly(const RaypipeRenderOptions& options);
 
-// Throws std::invalid_argument for a model other than golden: the pipe's cycle model is not built.
+// Throws std::invalid_argument for --model lt: the pipe has golden and its timed model only.
 void checkRaypipeModel(ModelKind model);
 
 // The images `render` writes of any architecture's frame.
