@@ -3,6 +3,7 @@
 // per-cycle reference (reference/raypipe_cycles.h) and the timed model (sim/raypipe/) share these,
 // so a run of one compares with a run of the other field by field.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -59,6 +60,37 @@ struct RaypipeCycleResult {
   int64_t exitCycle = -1;      // it left the shader into the pixel buffer (pb_we)
   uint32_t rayId = 0;
 };
+
+// The pipe's units as the models count their activity and name them in transfer records: one
+// vocabulary, so that a run of the reference and one of the timed model compare name by name.
+enum class RaypipeUnit {
+  Prg,
+  Sint,
+  Tarb,
+  Tcache,
+  Trav,
+  TravMath,
+  TravDecide,
+  StackRead,
+  RestartRead,
+  Larb,
+  Lcache,
+  Icache,
+  Int,
+  List,
+  ShaderArb,
+  ShaderReturn,
+  PixelWriter,
+  kCount
+};
+
+inline const char* raypipeUnitName(RaypipeUnit u) {
+  static const char* names[] = {
+      "prg",         "sint",     "tarb",       "tcache",        "trav",        "trav_math",
+      "trav_decide", "ss_stack", "ss_restart", "larb",          "lcache",      "icache",
+      "int",         "list",     "shader_arb", "shader_return", "pixel_writer"};
+  return names[static_cast<size_t>(u)];
+}
 
 struct RaypipeUnitActivity {
   std::string unit;

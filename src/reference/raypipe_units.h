@@ -71,34 +71,9 @@ struct Slot {
   KdRayCounts counts;
 };
 
-enum class Unit {
-  Prg,
-  Sint,
-  Tarb,
-  Tcache,
-  Trav,
-  TravMath,
-  TravDecide,
-  StackRead,
-  RestartRead,
-  Larb,
-  Lcache,
-  Icache,
-  Int,
-  List,
-  ShaderArb,
-  ShaderReturn,
-  PixelWriter,
-  kCount
-};
+using Unit = RaypipeUnit;
 
-inline const char* unitName(Unit u) {
-  static const char* names[] = {
-      "prg",         "sint",     "tarb",       "tcache",        "trav",        "trav_math",
-      "trav_decide", "ss_stack", "ss_restart", "larb",          "lcache",      "icache",
-      "int",         "list",     "shader_arb", "shader_return", "pixel_writer"};
-  return names[static_cast<size_t>(u)];
-}
+inline const char* unitName(Unit u) { return raypipeUnitName(u); }
 
 class Activity {
  public:

@@ -13,14 +13,6 @@ std::array<Fifo, 3> three(const std::string& name) {
 
 }  // namespace
 
-const char* unitName(Unit u) {
-  static const char* names[] = {
-      "prg",         "sint",     "tarb",       "tcache",        "trav",        "trav_math",
-      "trav_decide", "ss_stack", "ss_restart", "larb",          "lcache",      "icache",
-      "int",         "list",     "shader_arb", "shader_return", "pixel_writer"};
-  return names[static_cast<size_t>(u)];
-}
-
 Channels::Channels(const RaypipeConfig& c)
     : prgPipe(c.latency.prg),
       prgFifo("prg", c.fifo.prg, kShowAhead),

@@ -25,27 +25,8 @@ namespace raypipe_timed {
 constexpr int kRegister = 1;   // a register FIFO shows a write the next cycle
 constexpr int kShowAhead = 2;  // a BRAM scfifo two cycles on
 
-enum class Unit {
-  Prg,
-  Sint,
-  Tarb,
-  Tcache,
-  Trav,
-  TravMath,
-  TravDecide,
-  StackRead,
-  RestartRead,
-  Larb,
-  Lcache,
-  Icache,
-  Int,
-  List,
-  ShaderArb,
-  ShaderReturn,
-  PixelWriter,
-  kCount
-};
-const char* unitName(Unit u);
+using Unit = RaypipeUnit;
+inline const char* unitName(Unit u) { return raypipeUnitName(u); }
 
 // A block-RAM read (simple_cache.sv, raystore_simple.sv): a pipe of the read latency, then a
 // 3-entry register FIFO.
