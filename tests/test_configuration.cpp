@@ -121,13 +121,16 @@ TEST_CASE("Each flag names one setting, the two epsilons have their own (issue 2
 
 TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]") {
   const std::vector<std::string> names = presetNames();
-  CHECK(names == std::vector<std::string>{"asic", "cached", "fixedpoint", "thesis"});
+  CHECK(names == std::vector<std::string>{"asic", "cached", "fixedpoint", "thesis", "trayracer"});
   for (const std::string& name : names) {
     INFO(name);
     Configuration c;
     c.applyPreset(name);
     CHECK_NOTHROW(validate(c.values().rtu));
-    CHECK(c.source("cores") == ConfigSource::Preset);
+    CHECK_NOTHROW(c.values().raypipe.validate());
+    // An RTU preset states its cores; the ray pipe's has none.
+    const bool rtu = c.values().architecture == Architecture::Rtu;
+    CHECK(c.source(rtu ? "cores" : "architecture") == ConfigSource::Preset);
   }
   Configuration thesis;
   thesis.applyPreset("thesis");
@@ -135,7 +138,8 @@ TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]")
   CHECK(thesis.values().rtu.memory.ideal);
   CHECK(thesis.values().rtu.clockMhz == 100.0);
   CHECK(thesis.values().rtu.hostInput.bytesPerCycle == 8.0);  // 64-bit AXI DMA, 4 cycles a ray
-  CHECK_THROWS_WITH(thesis.applyPreset("fast"), Contains("asic, cached, fixedpoint, thesis"));
+  CHECK_THROWS_WITH(thesis.applyPreset("fast"),
+                    Contains("asic, cached, fixedpoint, thesis, trayracer"));
   // Seed 004's hardware: one BIH core at 233 MHz on ROM, the VHDL's formats, the 41-cycle unit.
   Configuration fixedpoint;
   fixedpoint.applyPreset("fixedpoint");
@@ -149,6 +153,51 @@ TEST_CASE("Every shipped preset loads and is a valid configuration", "[config]")
   CHECK(bih.cycles.triangleLatency == 41);
   CHECK(bih.cycles.triangleInterval == 1);
   CHECK_FALSE(bih.earlyOut);
+}
+
+TEST_CASE("The trayracer preset is seed 001's final build at 640x480", "[config][raypipe]") {
+  Configuration c;
+  c.applyPreset("trayracer");
+  const RunConfig& run = c.values();
+  CHECK(run.architecture == Architecture::Raypipe);
+  CHECK(run.raypipeView.level == 5);
+  // R1 INIT_CAM (SYNTH): 0x3F900000 = 1.125, 0xBFA00000 = -1.25; U, V, W the unit axes.
+  CHECK(run.raypipeView.camera.eye == std::array<float, 3>{1.125f, 1.125f, -1.25f});
+  CHECK(run.raypipeView.camera.u == std::array<float, 3>{1, 0, 0});
+  CHECK(run.raypipeView.camera.v == std::array<float, 3>{0, 1, 0});
+  CHECK(run.raypipeView.camera.w == std::array<float, 3>{0, 0, 1});
+  CHECK(run.raypipe.shortStackDepth == 4);
+  CHECK(run.raypipe.raysInFlight == 512);
+  CHECK(run.raypipe.clockMHz == 50.0);
+  CHECK(run.raypipe.cache == RaypipeCacheKind::BlockRam);
+  // Its dump loads back to the same configuration, the unset registers of another included.
+  Configuration again;
+  again.loadText(c.toToml(), "toml", "dump", ConfigSource::File);
+  CHECK(again.toJson() == c.toJson());
+  Configuration unset;
+  unset.loadText(Configuration().toToml(), "toml", "dump", ConfigSource::File);
+  CHECK_FALSE(unset.values().raypipeView.camera.eye.has_value());
+}
+
+TEST_CASE("Ray pipe settings and the RTU's report each other as having no effect",
+          "[config][raypipe]") {
+  Configuration rtu;
+  rtu.set("raypipe.short_stack_depth", "2", ConfigSource::File);
+  const std::string why = whyIneffective(findSetting("raypipe.short_stack_depth"), rtu.values(),
+                                         kUseArithmetic, "render");
+  CHECK(why == "architecture is rtu");
+  Configuration pipe;
+  pipe.set("architecture", "raypipe", ConfigSource::CommandLine);
+  pipe.set("raypipe.level", "3", ConfigSource::CommandLine);
+  CHECK(whyIneffective(findSetting("cores"), pipe.values(), kUseModel, "render") ==
+        "architecture is raypipe");
+  CHECK(whyIneffective(findSetting("width"), pipe.values(), kUseCamera, "render") ==
+        "raypipe.level is 3");
+  CHECK(whyIneffective(findSetting("raypipe.level"), pipe.values(), kUseCamera, "render").empty());
+  CHECK_THROWS_WITH(pipe.set("raypipe.level", "6", ConfigSource::CommandLine),
+                    Contains("raypipe.level"));
+  CHECK_THROWS_WITH(pipe.set("raypipe.camera.w", "1,2", ConfigSource::CommandLine),
+                    Contains("raypipe.camera.w"));
 }
 
 TEST_CASE("Settings a user gives that have no effect are reported", "[config]") {

@@ -125,3 +125,22 @@ TEST_CASE("Tray Racer scene: narrow limits refuse, capacities warn, corrupt file
 
 }  // namespace
 }  // namespace rtu
+
+namespace rtu {
+
+TEST_CASE("Tray Racer scene: a shading record's normal reads back", "[kd]") {
+  const std::vector<glm::dvec3> corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                           {0, 0, 1}, {1, 0, 1}, {0, 1, 2}};
+  const KdBuild build = buildPbrtKd(pbrtTriangleBoxes(corners), PbrtKdParameters{});
+  // -0.6 and 0.8 straddle the record's word boundaries (bits 72-143 of 160).
+  const std::vector<glm::dvec3> normals = {{0, 0, 1}, {-0.6, 0.8, 0.0}};
+  const TrayRacerScene scene = makeTrayRacerScene(build, corners, normals, {glm::dvec3(0.5), 1});
+  CHECK(trayRacerNormal(scene.shades[0]) == glm::dvec3(0, 0, 1));
+  // float24 keeps 15 fraction bits, truncated: -0.6f = 0xBF19999A reads as 0xBF199900.
+  const glm::dvec3 n = trayRacerNormal(scene.shades[1]);
+  CHECK(n.x == static_cast<double>(bitsToFloat(0xBF199900u)));
+  CHECK(n.y == static_cast<double>(bitsToFloat(0x3F4CCC00u)));  // 0.8f = 0x3F4CCCCD
+  CHECK(n.z == 0.0);
+}
+
+}  // namespace rtu

@@ -27,7 +27,7 @@ std::vector<ResultRow> svoRows(const std::vector<TraversalResult>& results,
   std::vector<ResultRow> rows;
   rows.reserve(results.size());
   for (const TraversalResult& r : results)
-    rows.push_back({r.id(), r.hit, r.hit ? SvoKind::hitDistance(r, config) : 0.0, {}, {}, {}});
+    rows.push_back({r.id(), r.hit, r.hit ? SvoKind::hitDistance(r, config) : 0.0, {}, {}, {}, {}});
   return rows;
 }
 
@@ -90,7 +90,7 @@ void goldenBvh(const RunConfig& settings, const GoldenOptions& options) {
   std::vector<ResultRow> rows;
   rows.reserve(run.results.size());
   for (const BvhResult& r : run.results)
-    rows.push_back({r.idWord, r.hit, r.t, r.primitive, r.u, r.v});
+    rows.push_back({r.idWord, r.hit, r.t, r.primitive, r.u, r.v, {}});
   writeResultsCsv(options.resultsCsv, rows);
   std::cout << bvhSummary(run);
 }

@@ -7,6 +7,7 @@
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
 #include "app/output_paths.h"
+#include "app/raypipe_render.h"
 #include "app/run_outputs.h"
 #include "app/schema_flags.h"
 #include "explore/frame_scene.h"
@@ -21,19 +22,21 @@ namespace {
 struct RenderOptions {
   RunOutputs outputs;
   std::string image, depthImage, costImage;
+  RaypipeRenderOptions raypipe;
 
   std::vector<NamedPath> imagePaths() const {
     return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
   }
   std::vector<NamedPath> outputPaths() const {
     std::vector<NamedPath> paths = outputs.paths();
-    const std::vector<NamedPath> images = imagePaths();
-    paths.insert(paths.end(), images.begin(), images.end());
+    for (const std::vector<NamedPath>& more : {imagePaths(), raypipe.paths()})
+      paths.insert(paths.end(), more.begin(), more.end());
     return paths;
   }
   void checkImageFormats() const {
     for (const NamedPath& file : imagePaths())
       if (!file.path.empty()) checkImageFormat(file.option, file.path);
+    if (!raypipe.shadedImage.empty()) checkImageFormat("--shaded-image", raypipe.shadedImage);
   }
 };
 
@@ -101,22 +104,39 @@ void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand(
       "render", "render one frame of primary rays on the cycle-accurate RTU model (or the "
-                "loosely-timed or golden model: --model) and report it");
+                "loosely-timed or golden model: --model; or seed 001's ray pipe: --architecture "
+                "raypipe --model golden) and report it");
   // The accel settings of the triangle cores' builds (--builder, --bih-format, --index, ...);
   // render builds the structure of its core, so not --accel.
   auto request = addConfigOptions(
       *command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
       {"--accel"});
   addRunOutputOptions(*command, options->outputs);
-  command->add_option("--image", options->image, "shaded image (PNG, EXR, ...)");
+  command->add_option("--image", options->image,
+                      "shaded image (PNG, EXR, ...); the ray pipe's: its simple shader's colours");
   command->add_option("--depth-image", options->depthImage,
                       "depth image: float t in EXR/TIFF, grey levels otherwise");
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
+  addRaypipeRenderOptions(*command, options->raypipe);
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
-    checkOutputsOfModel(*options, *request, configuration);
     const RunConfig& settings = configuration.values();
+    const bool raypipe = settings.architecture == Architecture::Raypipe;
+    if (raypipe)
+      checkRaypipeModel(settings.model);
+    else
+      checkRaypipeOnly(options->raypipe);
+    checkOutputsOfModel(*options, *request, configuration);
+    if (raypipe) {
+      std::vector<NamedPath> inputs = inputPaths(settings);
+      inputs.push_back({"--accel-file", options->raypipe.accelFile});
+      checkOutputPaths(options->outputPaths(), inputs);
+      options->checkImageFormats();
+      renderRaypipe(configuration, {options->image, options->depthImage, options->costImage},
+                    options->raypipe, std::cout);
+      return;
+    }
     settings.camera.validate();
     if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));

@@ -228,6 +228,8 @@ void addSweepCommand(CLI::App& app) {
     if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
     for (const std::string& grid : options->grid) spec.addGrid(grid);
     const std::vector<Configuration> configurations = spec.expand(request->resolveUnchecked());
+    for (const Configuration& configuration : configurations)
+      checkArchitectureRuns(configuration, request->command, request->uses);
     try {
       checkSettingsHaveEffect(configurations, request->uses, request->command);
     } catch (const std::invalid_argument& error) {

@@ -25,15 +25,23 @@ std::string row(const ResultRow& r) {
   if (r.hit && r.u) line += shortest(*r.u);
   line += ',';
   if (r.hit && r.v) line += shortest(*r.v);
+  for (uint64_t value : r.extra) line += ',' + std::to_string(value);
   return line;
 }
 
 }  // namespace
 
-void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows) {
+void writeResultsCsv(const std::string& path, const std::vector<ResultRow>& rows,
+                     const std::vector<std::string>& extraColumns) {
   OutputFile file(path);
-  file.stream() << "id,hit,t,primitive,u,v\n";
-  for (const ResultRow& r : rows) file.stream() << row(r) << '\n';
+  file.stream() << "id,hit,t,primitive,u,v";
+  for (const std::string& column : extraColumns) file.stream() << ',' << column;
+  file.stream() << '\n';
+  for (const ResultRow& r : rows) {
+    if (r.extra.size() != extraColumns.size())
+      throw std::logic_error("a result row's extra values do not match its columns");
+    file.stream() << row(r) << '\n';
+  }
   file.commit();
 }
 

@@ -46,7 +46,19 @@ Configuration ConfigRequest::resolveUnchecked() const {
   for (const auto& [key, text] : flags) configuration.set(key, text, ConfigSource::CommandLine);
   for (const std::string& assignment : assignments)
     configuration.setAssignment(assignment, ConfigSource::CommandLine);
+  checkArchitectureRuns(configuration, command, uses);
   return configuration;
+}
+
+void checkArchitectureRuns(const Configuration& configuration, const std::string& command,
+                           unsigned uses) {
+  // Only render runs the ray pipe so far; the others would run the RTU in its place.
+  const bool runsArchitecture = (uses & (kUseModel | kUseArithmetic)) != 0;
+  if (configuration.values().architecture == Architecture::Raypipe && runsArchitecture &&
+      command != "render" && command != "config")
+    throw std::invalid_argument("architecture = raypipe: rtusim " + command +
+                                " runs the RTU only; seed 001's ray pipe renders with rtusim "
+                                "render (docs/raypipe.md)");
 }
 
 std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses,

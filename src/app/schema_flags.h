@@ -29,9 +29,14 @@ struct ConfigRequest {
   // user gave has an effect (see Configuration::checkApplicable).
   Configuration resolve() const;
   // The same without the check, for a command that checks its configurations together (a sweep:
-  // checkSettingsHaveEffect).
+  // checkSettingsHaveEffect). Both refuse architecture = raypipe as checkArchitectureRuns does.
   Configuration resolveUnchecked() const;
 };
+
+// Throws std::invalid_argument for architecture = raypipe in a command (of settings `uses`) that
+// runs only the RTU: every one that runs a model but render (and config, which runs none).
+void checkArchitectureRuns(const Configuration& configuration, const std::string& command,
+                           unsigned uses);
 
 // Registers the options; `skipFlags` are flags the command spells itself (fps takes a list for
 // --cores). The request must outlive parsing.

@@ -6,14 +6,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "base/timing_limits.h"
 #include "kinds/bih/bih_config.h"
 #include "kinds/bvh/bvh_config.h"
 #include "kinds/registry.h"
 #include "kinds/svo/procedural_scenes.h"
+#include "raypipe/primary_rays.h"
 
 namespace rtu {
 namespace {
@@ -266,7 +269,7 @@ void addAccelSettings(std::vector<Setting>& schema) {
                         "drop degenerate and duplicate triangles instead of refusing the mesh",
                         [](C& c) -> bool& { return c.accel.dropBadTriangles; }));
   schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "svo" && c.rtu.core == "svo"
+    return c.accel.structure == "svo" && c.rtu.core == "svo" && c.architecture == Architecture::Rtu
                ? std::string("accel is svo and the core kind is svo")
                : std::string();
   };
@@ -283,7 +286,10 @@ void addAccelSettings(std::vector<Setting>& schema) {
       [](C& c) -> std::string& { return c.accel.index; }, sameText, sameText));
   schema.back().ignoredBecause = [](const C& c) {
     const std::string bih = ignoredUnlessBuilt("bih")(c);
-    return bih.empty() || c.accel.structure == "kdtree" ? std::string() : bih;
+    // The ray pipe's k-d tree takes it too (the scene file's narrow or wide form).
+    return bih.empty() || c.accel.structure == "kdtree" || c.architecture == Architecture::Raypipe
+               ? std::string()
+               : bih;
   };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
@@ -444,6 +450,169 @@ void addBihSettings(std::vector<Setting>& schema) {
   }
 }
 
+std::string architectureName(const Architecture& a) {
+  return a == Architecture::Raypipe ? "raypipe" : "rtu";
+}
+Architecture parseArchitecture(const std::string& name) {
+  return name == "raypipe" ? Architecture::Raypipe : Architecture::Rtu;
+}
+std::string raypipeCacheName(const RaypipeCacheKind& c) {
+  return c == RaypipeCacheKind::SetAssociative ? "set_associative" : "block_ram";
+}
+RaypipeCacheKind parseRaypipeCache(const std::string& name) {
+  return name == "set_associative" ? RaypipeCacheKind::SetAssociative : RaypipeCacheKind::BlockRam;
+}
+std::string divisionName(const Division& d) {
+  return d == Division::TowardZero ? "toward_zero" : "ieee";
+}
+Division parseDivision(const std::string& name) {
+  return name == "toward_zero" ? Division::TowardZero : Division::Ieee;
+}
+std::string tMaxClampName(const KdTMaxClamp& c) {
+  return c == KdTMaxClamp::Intended ? "intended" : "as_built";
+}
+KdTMaxClamp parseTMaxClamp(const std::string& name) {
+  return name == "intended" ? KdTMaxClamp::Intended : KdTMaxClamp::AsBuilt;
+}
+
+// A camera register of the ray pipe: three binary32 values in hardware space, or unset (empty
+// text), when rtusim's camera gives it.
+template <class F>
+Setting cameraRegister(std::string key, std::string doc, F field) {
+  Setting s = declare(std::move(key), "", SettingKind::Vector, "", kUseCamera, std::move(doc));
+  s.get = [field](const RunConfig& c) -> std::string {
+    const auto& value = read(field, c);
+    if (!value) return "";
+    return formatReal<float>((*value)[0]) + "," + formatReal<float>((*value)[1]) + "," +
+           formatReal<float>((*value)[2]);
+  };
+  s.assign = [field, key = s.key](RunConfig& c, const std::string& text) {
+    if (trim(text).empty()) {
+      field(c).reset();
+      return;
+    }
+    const glm::dvec3 v = parseVector(text, key);
+    const std::array<float, 3> value{static_cast<float>(v.x), static_cast<float>(v.y),
+                                     static_cast<float>(v.z)};
+    for (float x : value)
+      if (!std::isfinite(x)) fail(key, "'" + text + "' is beyond binary32's range");
+    field(c) = value;
+  };
+  return s;
+}
+
+// The ray pipe's settings (raypipe/raypipe_config.h, RunConfig::raypipe) and workload (its camera
+// registers and resolution level): with architecture rtu they have no effect. Their keys are the
+// ones RaypipeConfig::validate names.
+void addRaypipeSettings(std::vector<Setting>& schema) {
+  using C = RunConfig;
+  constexpr unsigned model = kUseModel, arith = kUseArithmetic, camera = kUseCamera;
+  constexpr double kMaxFifo = 1 << 20;
+  std::vector<Setting> added;
+  added.push_back(integer("raypipe.traversal_units", "", "units", 1, 64, model,
+                          "ray pipe: traversal units (seed 001's final build: 1)",
+                          [](C& c) -> int& { return c.raypipe.traversalUnits; }));
+  added.push_back(integer("raypipe.short_stack_depth", "--short-stack-depth", "entries", 1, 7,
+                          arith,
+                          "ray pipe: short-stack entries per ray (seed 001: 4; a push onto a full "
+                          "stack overwrites the oldest)",
+                          [](C& c) -> int& { return c.raypipe.shortStackDepth; }));
+  added.push_back(integer("raypipe.rays_in_flight", "", "rays", 1, 512, model,
+                          "ray pipe: ray ids the shader hands out (seed 001: 512, the 9-bit rayID)",
+                          [](C& c) -> int& { return c.raypipe.raysInFlight; }));
+  const std::pair<const char*, int& (*)(C&)> latencies[] = {
+      {"prg", [](C& c) -> int& { return c.raypipe.latency.prg; }},
+      {"prg_interval", [](C& c) -> int& { return c.raypipe.latency.prgInterval; }},
+      {"sint", [](C& c) -> int& { return c.raypipe.latency.sint; }},
+      {"sint_interval", [](C& c) -> int& { return c.raypipe.latency.sintInterval; }},
+      {"trav_math", [](C& c) -> int& { return c.raypipe.latency.travMath; }},
+      {"intersection", [](C& c) -> int& { return c.raypipe.latency.intersection; }},
+      {"memory_read", [](C& c) -> int& { return c.raypipe.latency.memoryRead; }},
+  };
+  for (const auto& [name, field] : latencies)
+    added.push_back(integer(
+        std::string("raypipe.latency.") + name, "", "cycles", 1, kMaxLatencyCycles, model,
+        std::string("ray pipe: ") + name + " cycles (an _interval: cycles between accepted items)",
+        field));
+  const std::pair<const char*, int& (*)(C&)> fifos[] = {
+      {"prg", [](C& c) -> int& { return c.raypipe.fifo.prg; }},
+      {"sint", [](C& c) -> int& { return c.raypipe.fifo.sint; }},
+      {"tarb", [](C& c) -> int& { return c.raypipe.fifo.tarb; }},
+      {"larb", [](C& c) -> int& { return c.raypipe.fifo.larb; }},
+      {"trav_leaf", [](C& c) -> int& { return c.raypipe.fifo.travLeaf; }},
+      {"trav_math", [](C& c) -> int& { return c.raypipe.fifo.travMath; }},
+      {"int_list", [](C& c) -> int& { return c.raypipe.fifo.intList; }},
+      {"int_larb", [](C& c) -> int& { return c.raypipe.fifo.intLarb; }},
+      {"int_shader", [](C& c) -> int& { return c.raypipe.fifo.intShader; }},
+      {"memory_out", [](C& c) -> int& { return c.raypipe.fifo.memoryOut; }},
+      {"pixel_buffer", [](C& c) -> int& { return c.raypipe.fifo.pixelBuffer; }},
+  };
+  for (const auto& [name, field] : fifos)
+    added.push_back(integer(std::string("raypipe.fifo.") + name, "", "entries", 1, kMaxFifo, model,
+                            std::string("ray pipe: depth of the ") + name + " FIFO", field));
+  added.push_back(choice(
+      "raypipe.cache", "", {"block_ram", "set_associative"}, model,
+      "ray pipe: block_ram (as built: full capacity, never a miss) or set_associative (the "
+      "designed "
+      "2-way caches in front of DRAM)",
+      [](C& c) -> RaypipeCacheKind& { return c.raypipe.cache; }, raypipeCacheName,
+      parseRaypipeCache));
+  added.push_back(choice(
+      "raypipe.division", "", {"ieee", "toward_zero"}, arith,
+      "ray pipe: the divider, ieee (correctly rounded) or toward_zero (bounds altfp_div's "
+      "one-ulp errors)",
+      [](C& c) -> Division& { return c.raypipe.division; }, divisionName, parseDivision));
+  added.push_back(choice(
+      "raypipe.tmax_clamp", "", {"as_built", "intended"}, arith,
+      "ray pipe: the scene box's t_max, as_built (the RTL's: at least 1) or intended (the box's "
+      "exit)",
+      [](C& c) -> KdTMaxClamp& { return c.raypipe.tMaxClamp; }, tMaxClampName, parseTMaxClamp));
+  added.push_back(real("raypipe.clock_mhz", "", "MHz", kMinClockMhz, kMaxClockMhz, model,
+                       "ray pipe: clock (seed 001: 50 MHz)",
+                       [](C& c) -> double& { return c.raypipe.clockMHz; }));
+  const std::pair<const char*, std::optional<std::array<float, 3>>& (*)(C&)> registers[] = {
+      {"eye",
+       [](C& c) -> std::optional<std::array<float, 3>>& { return c.raypipeView.camera.eye; }},
+      {"u", [](C& c) -> std::optional<std::array<float, 3>>& { return c.raypipeView.camera.u; }},
+      {"v", [](C& c) -> std::optional<std::array<float, 3>>& { return c.raypipeView.camera.v; }},
+      {"w", [](C& c) -> std::optional<std::array<float, 3>>& { return c.raypipeView.camera.w; }},
+  };
+  for (const auto& [name, field] : registers)
+    added.push_back(cameraRegister(std::string("raypipe.camera.") + name,
+                                   std::string("ray pipe: camera register ") + name +
+                                       " in hardware space (x and y swapped; empty: from camera.*)",
+                                   field));
+  added.push_back(integer("raypipe.level", "--level", "", -1, kPrgLevels - 1, camera,
+                          "ray pipe: the seed's resolution level, 0 (20x15) to 5 (640x480); -1: "
+                          "width x height",
+                          [](C& c) -> int& { return c.raypipeView.level; }));
+  for (Setting& setting : added) {
+    setting.ignoredBecause = [](const RunConfig& c) {
+      return c.architecture == Architecture::Raypipe ? std::string() : "architecture is rtu";
+    };
+    schema.push_back(std::move(setting));
+  }
+}
+
+std::string ignoredAtRaypipeLevel(const RunConfig& c) {
+  return c.architecture == Architecture::Raypipe && c.raypipeView.level >= 0
+             ? "raypipe.level is " + std::to_string(c.raypipeView.level)
+             : std::string();
+}
+
+// The RTU's own settings (its model's and its kinds' arithmetic) have no effect on the ray pipe.
+void markRtuOnly(std::vector<Setting>& schema) {
+  for (Setting& setting : schema) {
+    if (!(setting.uses & (kUseModel | kUseArithmetic)) || setting.key == "architecture" ||
+        setting.key.rfind("raypipe.", 0) == 0)
+      continue;
+    setting.ignoredBecause = [rtu = setting.ignoredBecause](const RunConfig& c) {
+      if (c.architecture == Architecture::Raypipe) return std::string("architecture is raypipe");
+      return rtu ? rtu(c) : std::string();
+    };
+  }
+}
+
 std::vector<Setting> makeSchema() {
   using C = RunConfig;
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, scene = kUseScene,
@@ -525,7 +694,13 @@ std::vector<Setting> makeSchema() {
   s.back().ignoredBecause = [](const C& c) {
     return c.rays.empty() ? std::string("no ray records (rays) are given") : std::string();
   };
-  // The kind of core, then each kind's own settings.
+  // The architecture, the ray pipe's settings, then the RTU's kind of core and each kind's own.
+  s.push_back(choice(
+      "architecture", "--architecture", {"rtu", "raypipe"}, model | arith,
+      "what is modelled: rtu (the thesis' RTU, cores of a kind) or raypipe (seed 001's ray pipe, "
+      "the Tray Racer)",
+      [](C& c) -> Architecture& { return c.architecture; }, architectureName, parseArchitecture));
+  addRaypipeSettings(s);
   s.push_back(choice(
       "core", "--core", CoreKinds::names(), model | arith,
       "the kind of traversal core (" + CoreKinds::described() + ")",
@@ -568,8 +743,10 @@ std::vector<Setting> makeSchema() {
                    [](C& c) -> std::string& { return c.rays; }));
   s.push_back(integer("width", "--width", "pixels", 1, 1 << 14, camera, "image width",
                       [](C& c) -> int& { return c.camera.width; }));
+  s.back().ignoredBecause = ignoredAtRaypipeLevel;
   s.push_back(integer("height", "--height", "pixels", 1, 1 << 14, camera, "image height",
                       [](C& c) -> int& { return c.camera.height; }));
+  s.back().ignoredBecause = ignoredAtRaypipeLevel;
   s.push_back(vector("camera.position", "--camera", camera, "camera position x,y,z",
                      [](C& c) -> glm::dvec3& { return c.camera.position; }));
   s.push_back(vector("camera.look_at", "--look-at", camera, "point the camera looks at x,y,z",
@@ -600,6 +777,7 @@ std::vector<Setting> makeSchema() {
                       "rays simulated before each block and not counted (0: 512, or 32 a core)",
                       [](C& c) -> uint64_t& { return c.sample.warmupRays; }));
   s.back().ignoredBecause = ignoredWithoutSampling;
+  markRtuOnly(s);
   return s;
 }
 

@@ -7,6 +7,8 @@
 
 #include "inputs/camera.h"
 #include "kinds/svo/scene_loader.h"
+#include "raypipe/raypipe_camera.h"
+#include "raypipe/raypipe_config.h"
 #include "run/model_run.h"
 #include "run/sampled_run.h"
 #include "sim/rtu_config.h"
@@ -23,7 +25,20 @@ struct AccelSpec {
   std::string file;                // a built triangle structure's image to trace (.bvh)
 };
 
+// What a run models: the thesis' RTU (cores of a kind behind a job manager) or seed 001's ray pipe
+// (the Tray Racer, issue 29: docs/raypipe.md).
+enum class Architecture : uint8_t { Rtu, Raypipe };
+
+// The ray pipe's workload: its camera registers and the seed's resolution level.
+struct RaypipeView {
+  RaypipeCameraSettings camera;  // unset registers converted from RunConfig::camera
+  int level = -1;                // 0-5, or -1: the camera's width and height
+};
+
 struct RunConfig {
+  Architecture architecture = Architecture::Rtu;
+  RaypipeConfig raypipe;
+  RaypipeView raypipeView;
   RtuConfig rtu;
   ModelKind model = ModelKind::CycleAccurate;  // which model answers (replay, render, fps, sweep)
   SceneSpec scene;

@@ -124,6 +124,18 @@ uint32_t shadeField(double value, int bits) {
 
 }  // namespace
 
+glm::dvec3 trayRacerNormal(const TrayRacerShade& shade) {
+  // The record's 160 bits run from word 0's most significant bit: ambient r, g, b at bits 0, 24
+  // and 48, the normal's x, y, z at 72, 96 and 120.
+  const auto field = [&shade](int first) {
+    uint32_t value = 0;
+    for (int bit = first; bit < first + kFloat24Bits; ++bit)
+      value = value << 1 | ((shade[bit / 32] >> (31 - bit % 32)) & 1);
+    return static_cast<double>(paddedFloat(value, kFloat24Bits));
+  };
+  return {field(72), field(96), field(120)};
+}
+
 bool TrayRacerNode::operator==(const TrayRacerNode& o) const {
   return leaf == o.leaf && axis == o.axis && splitBits == o.splitBits && high == o.high &&
          lowEmpty == o.lowEmpty && highEmpty == o.highEmpty && listIndex == o.listIndex &&

@@ -70,6 +70,10 @@ TrayRacerScene makeTrayRacerScene(const KdBuild& build, const std::vector<glm::d
                                   const std::vector<glm::dvec3>& normals,
                                   const TrayRacerMaterial& material);
 
+// The normal a triangle's shading record holds (vertex 0's, in world space), its float24 fields
+// padded to binary32 as the shader reads them.
+glm::dvec3 trayRacerNormal(const TrayRacerShade& shade);
+
 // Throws std::invalid_argument naming the field when a node, id or count does not fit `format`.
 std::vector<uint8_t> writeTrayRacerScene(const TrayRacerScene& scene, TrayRacerFormat format);
 // Throws std::runtime_error naming the section and word when the bytes are not a sound file.

@@ -1,0 +1,254 @@
+#include "app/raypipe_render.h"
+
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ostream>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "app/frame_images.h"
+#include "app/results_csv.h"
+#include "base/binary_file.h"
+#include "explore/accel_build.h"
+#include "kinds/kd/kd_image.h"
+#include "raypipe/raypipe_golden.h"
+#include "raypipe/simple_shader.h"
+
+namespace rtu {
+namespace {
+
+// The scene as the pipe reads it: the memory image of its Tray Racer scene file and, for the
+// shaded image, each triangle's normal in world space (none from a k-d image).
+struct RaypipeScene {
+  std::string name, description;
+  std::vector<uint32_t> image;
+  std::vector<glm::dvec3> normals;
+  std::vector<std::string> warnings;
+};
+
+RaypipeScene loadRaypipeScene(const RunConfig& settings) {
+  TriangleScene triangles = loadSceneTriangles(settings);
+  AccelSpec spec = settings.accel;
+  spec.structure = "kdtree";
+  const AccelBuild build = buildAccel(triangles.mesh, spec);
+  const TrayRacerFormat format = spec.index == "wide" ? TrayRacerFormat::Wide
+                                                      : TrayRacerFormat::Narrow;
+  RaypipeScene scene;
+  scene.name = triangles.name;
+  scene.description =
+      build.description + ", " + std::to_string(triangles.mesh.triangles.size()) + " triangles";
+  // Read back from the file, as the hardware loads it: a narrow file's splits keep 28 bits.
+  scene.image = layOutKd(readTrayRacerScene(build.sceneFile, format)).words;
+  for (const auto& triangle : triangles.mesh.triangles) {
+    const glm::dvec3& a = triangles.mesh.vertices[triangle[0]];
+    scene.normals.push_back(glm::cross(triangles.mesh.vertices[triangle[1]] - a,
+                                       triangles.mesh.vertices[triangle[2]] - a));
+  }
+  scene.warnings = build.warnings;
+  return scene;
+}
+
+void checkImage(const std::vector<uint32_t>& words, const std::string& path) {
+  const std::vector<ImageProblem> problems = validateKd(words);
+  if (!problems.empty())
+    throw std::runtime_error(
+        path + ": not a sound k-d scene: " + problems.front().what +
+        (problems.size() > 1 ? " (and more: rtusim validate lists them)" : ""));
+}
+
+// A k-d image (its magic first), which holds no normals, or the seed's scene file (big-endian
+// words), whose colour section does (vertex 0's).
+RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
+  std::vector<uint32_t> words = readWordFile(path, sizeof(uint32_t), "k-d image or scene file");
+  RaypipeScene scene;
+  scene.name = path;
+  if (!words.empty() && words[0] == kKdMagic) {
+    checkImage(words, path);
+    const KdHeader header = decodeKdHeader(words.data());
+    scene.description = "k-d image, " + std::to_string(header.uttmCount) + " triangles";
+    scene.image = std::move(words);
+    return scene;
+  }
+  const bool wide = settings.accel.index == "wide";
+  std::vector<uint8_t> bytes(words.size() * sizeof(uint32_t));
+  std::memcpy(bytes.data(), words.data(), bytes.size());
+  const TrayRacerScene file =
+      readTrayRacerScene(bytes, wide ? TrayRacerFormat::Wide : TrayRacerFormat::Narrow);
+  scene.description = std::string("the Tray Racer's scene file (") + (wide ? "wide" : "narrow") +
+                      "), " + std::to_string(file.uttms.size()) + " triangles";
+  scene.image = layOutKd(file).words;
+  checkImage(scene.image, path);  // a child or a list entry out of range
+  for (const TrayRacerShade& shade : file.shades) scene.normals.push_back(trayRacerNormal(shade));
+  scene.warnings = trayRacerCapacityWarnings(file);
+  return scene;
+}
+
+PrgFrameSize frameSize(const RunConfig& settings) {
+  const int level = settings.raypipeView.level;
+  return level >= 0 ? prgLevelSize(level)
+                    : PrgFrameSize{settings.camera.width, settings.camera.height};
+}
+
+// Each component in its shortest exact form.
+std::string registerText(const std::array<float, 3>& value) {
+  std::string text;
+  for (float component : value) {
+    char digits[32];
+    char* end = std::to_chars(digits, digits + sizeof digits, component).ptr;
+    text += (text.empty() ? "" : ",") + std::string(digits, static_cast<size_t>(end - digits));
+  }
+  return text;
+}
+
+// A setting's value as the configuration writes it.
+std::string settingText(const std::string& key, const RunConfig& settings) {
+  return findSetting(key).get(settings);
+}
+
+std::string perRay(uint64_t count, uint64_t rays) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", rays ? static_cast<double>(count) / rays : 0.0);
+  return text;
+}
+
+void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeCamera& registers,
+            const RaypipeGoldenFrame& frame, double seconds, std::ostream& out) {
+  const PrgFrameSize size = frameSize(settings);
+  const RaypipeConfig& pipe = settings.raypipe;  // its short stack
+  const RaypipeFrameTotals& t = frame.totals;
+  const std::string level = settings.raypipeView.level >= 0
+                                ? " (level " + std::to_string(settings.raypipeView.level) + ")"
+                                : "";
+  out << "scene       " << scene.name << ": " << scene.description << "\n"
+      << "model       golden, ray pipe (seed 001): short stack " << pipe.shortStackDepth
+      << ", divider " << settingText("raypipe.division", settings) << ", t_max "
+      << settingText("raypipe.tmax_clamp", settings) << "\n"
+      << "frame       " << size.width << "x" << size.height << level << "\n"
+      << "camera      E " << registerText(registers.eye) << "  U " << registerText(registers.u)
+      << "  V " << registerText(registers.v) << "  W " << registerText(registers.w) << "\n"
+      << "rays        " << t.rays << ": " << t.boxMisses << " box misses, " << t.hits << " hits, "
+      << t.rays - t.hits - t.boxMisses << " misses\n"
+      << "traversal   " << perRay(t.nodes, t.rays) << " nodes/ray, "
+      << perRay(t.triangleTests, t.rays) << " triangle tests/ray, " << t.pushes << " pushes, "
+      << t.restarts << " restarts, " << t.dropped << " stack entries dropped\n";
+  char host[96];
+  std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
+                t.rays / seconds / 1e6);
+  out << host;
+  for (const std::string& warning : scene.warnings) out << "warning     " << warning << "\n";
+}
+
+const std::vector<std::string> kExtraColumns = {
+    "x", "y", "box_miss", "nodes", "triangle_tests", "pushes", "restarts"};
+
+std::vector<ResultRow> resultRows(const RaypipeGoldenFrame& frame) {
+  std::vector<ResultRow> rows;
+  rows.reserve(frame.pixels.size());
+  for (const RaypipePixel& p : frame.pixels) {
+    ResultRow row{p.pixel.pixelId, p.hit, p.t, p.primitive, p.u, p.v, {}};
+    row.extra = {static_cast<uint64_t>(p.pixel.x),
+                 static_cast<uint64_t>(p.pixel.y),
+                 p.boxMiss,
+                 p.counts.nodes,
+                 p.counts.triangleTests,
+                 p.counts.pushes,
+                 p.counts.restarts};
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+void writePaletteImage(const RaypipeGoldenFrame& frame, PrgFrameSize size,
+                       const std::string& path) {
+  std::vector<float> rgb(static_cast<size_t>(size.width) * size.height * 3);
+  for (const RaypipePixel& p : frame.pixels) {
+    const std::array<uint8_t, 3> colour = rgb888(simpleShade(p.boxMiss, p.hit, p.primitive));
+    for (int c = 0; c < 3; ++c) rgb[p.pixel.pixelId * 3 + c] = colour[c] / 255.0f;
+  }
+  writeRgbImage(path, size.width, size.height, rgb);
+}
+
+// The frame as rtusim's images take it: t in world units (hardware space only swaps axes), the
+// hit triangle's normal (none without normals), the golden traversal's states as the cost.
+RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<PrimaryRay>& rays,
+                            const std::vector<glm::dvec3>& normals, const RaypipeCamera& registers,
+                            PrgFrameSize size) {
+  RenderedFrame rendered(cameraOfRegisters(registers, size.width, size.height));
+  for (size_t i = 0; i < frame.pixels.size(); ++i) {
+    const RaypipePixel& p = frame.pixels[i];
+    FramePixel pixel;
+    pixel.hit = p.hit;
+    pixel.cost = p.cost;
+    if (p.hit) {
+      const auto& d = rays[i].ray.direction;
+      pixel.t = p.t * glm::length(glm::dvec3(d[0], d[1], d[2]));
+      if (p.primitive < normals.size()) pixel.normal = normals[p.primitive];
+    }
+    rendered.place(p.pixel.pixelId, pixel);
+  }
+  return rendered;
+}
+
+}  // namespace
+
+void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options) {
+  command.add_option("--accel-file", options.accelFile,
+                     "ray pipe: the scene as a k-d image (.kd) or the seed's scene file (narrow "
+                     "unless --index wide) instead of building the scene's triangles");
+  command.add_option("--results-csv", options.resultsCsv,
+                     "ray pipe: one row per ray in issue order (id = the seed's pixel id, x, y, "
+                     "hit, box_miss, t, primitive, u, v and the ray's counts)");
+  command.add_option("--shaded-image", options.shadedImage,
+                     "ray pipe: Lambert-shaded image (--image is the simple shader's palette)");
+}
+
+void checkRaypipeOnly(const RaypipeRenderOptions& options) {
+  std::vector<NamedPath> given = options.paths();
+  given.push_back({"--accel-file", options.accelFile});
+  for (const NamedPath& file : given)
+    if (!file.path.empty())
+      throw std::invalid_argument(file.option + " is written for --architecture raypipe");
+}
+
+void checkRaypipeModel(ModelKind model) {
+  if (model != ModelKind::Golden)
+    throw std::invalid_argument(std::string("--model ") + toString(model) +
+                                ": the ray pipe's cycle model is not built yet; --architecture "
+                                "raypipe runs --model golden");
+}
+
+void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
+                   const RaypipeRenderOptions& options, std::ostream& out) {
+  const RunConfig& settings = configuration.values();
+  settings.raypipe.validate();
+  const PrgFrameSize size = frameSize(settings);
+  const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
+  const RaypipeScene scene = options.accelFile.empty() ? loadRaypipeScene(settings)
+                                                       : loadSceneFile(options.accelFile, settings);
+  const std::vector<PrimaryRay> rays = primaryRays(registers, size);
+  const auto start = std::chrono::steady_clock::now();
+  if (scene.normals.empty() && !options.shadedImage.empty())
+    throw std::invalid_argument("--shaded-image needs the triangles' normals: a k-d image holds "
+                                "none (give the mesh, or the seed's scene file)");
+  const RaypipeGoldenFrame frame = runGoldenFrame(scene.image, rays, settings.raypipe);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report(scene, settings, registers, frame, seconds, out);
+  if (!options.resultsCsv.empty())
+    writeResultsCsv(options.resultsCsv, resultRows(frame), kExtraColumns);
+  if (!images.image.empty()) writePaletteImage(frame, size, images.image);
+  if (!options.shadedImage.empty() || !images.depthImage.empty() || !images.costImage.empty()) {
+    const RenderedFrame rendered = renderedFrame(frame, rays, scene.normals, registers, size);
+    if (!options.shadedImage.empty()) writeShadedImage(rendered, options.shadedImage);
+    if (!images.depthImage.empty()) writeDepthImage(rendered, images.depthImage);
+    if (!images.costImage.empty()) writeCostImage(rendered, images.costImage);
+  }
+  for (const std::string* path : {&options.resultsCsv, &images.image, &options.shadedImage,
+                                  &images.depthImage, &images.costImage})
+    if (!path->empty()) out << "wrote       " << *path << "\n";
+}
+
+}  // namespace rtu

@@ -1,0 +1,54 @@
+#pragma once
+// `rtusim render --architecture raypipe` (issue 29): seed 001's ray pipe renders one frame. The
+// scene's triangles are built into the Tray Racer's k-d tree and scene file (explore/
+// accel_build.h, `accel.index` choosing the file's narrow or wide form) and traced as the
+// hardware reads that file; the primary ray generator's rays (raypipe/primary_rays.h) from the
+// camera registers (raypipe.camera.*, or rtusim's camera converted) at raypipe.level or
+// width x height run through the golden k-d traversal (raypipe/raypipe_golden.h). Or the scene is
+// a file built before (--accel-file): a k-d image (`build --accel kdtree --out x.kd`) or the
+// seed's scene file (`--trayracer-scene`, R1's SCENES/*.scene; narrow unless --index wide). Its
+// outputs:
+// the report, the simple shader's image (--image), a Lambert-shaded, depth or cost image, and
+// --results-csv in issue order. The pipe's cycle model is not built yet: --model ca or lt is
+// refused before any work.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/output_paths.h"
+#include "config/configuration.h"
+
+namespace rtu {
+
+// The options only the ray pipe takes: its scene as a built file, and the outputs it writes.
+struct RaypipeRenderOptions {
+  std::string accelFile;  // a k-d image (.kd) or the seed's scene file instead of a build
+  std::string resultsCsv, shadedImage;
+
+  std::vector<NamedPath> paths() const {
+    return {{"--results-csv", resultsCsv}, {"--shaded-image", shadedImage}};
+  }
+};
+
+void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options);
+
+// Throws std::invalid_argument naming an option given for the RTU, which only the pipe takes.
+void checkRaypipeOnly(const RaypipeRenderOptions& options);
+
+// Throws std::invalid_argument for a model other than golden: the pipe's cycle model is not built.
+void checkRaypipeModel(ModelKind model);
+
+// The images `render` writes of any architecture's frame.
+struct FrameImagePaths {
+  std::string image, depthImage, costImage;
+};
+
+// Renders the frame `configuration` describes on the ray pipe's golden model and writes the
+// outputs asked for; the report goes to `out`.
+void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
+                   const RaypipeRenderOptions& options, std::ostream& out);
+
+}  // namespace rtu

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# `rtusim render --architecture raypipe` end to end (issue 29): seed 001's ray pipe renders a voxel
+# scene's faces, built into the Tray Racer's k-d tree, on its golden model at the seed's level 1
+# (40x30): the report, the simple shader's image and the shaded one, --results-csv with the seed's
+# pixel ids in the primary ray generator's order; the same rays from the scene built before (a k-d
+# image, the seed's scene file: --accel-file); the trayracer preset; the pipe's cycle model
+# refused before any work, and by the commands that run only the RTU; a ray pipe setting under the RTU reported as having no effect.
+# Usage: cli_raypipe_render.sh path/to/rtusim
+set -euo pipefail
+rtusim=$1
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+source "$here/shell_test_helpers.sh"
+frame=(--scene sphere --depth 4 --index wide)
+
+"$rtusim" render --architecture raypipe --model golden "${frame[@]}" --level 1 --image palette.png \
+  --shaded-image shaded.png --cost-image cost.png --results-csv rays.csv >pipe.txt
+grep -q "^frame       40x30 (level 1)" pipe.txt || fail "frame line: $(cat pipe.txt)"
+hits=$(sed -n 's/^rays *1200: \([0-9]*\) box misses, \([0-9]*\) hits.*/\2/p' pipe.txt)
+[[ -n $hits && $hits -gt 50 ]] || fail "report: $(cat pipe.txt)"
+for image in palette.png shaded.png cost.png; do
+  [[ -s $image ]] || fail "$image not written"
+done
+
+python3 - rays.csv "$hits" <<'PY' || fail "results CSV"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 1200, len(rows)
+need = {"id", "x", "y", "hit", "box_miss", "t", "primitive", "u", "v", "nodes", "triangle_tests",
+        "pushes", "restarts"}
+assert need <= set(rows[0]), rows[0].keys()
+# Issue order: the top-left 20x15 block first, its top row first, then block 2 to its right.
+assert [(r["x"], r["y"]) for r in rows[:2]] == [("0", "0"), ("1", "0")], rows[:2]
+assert (rows[300]["x"], rows[300]["y"]) == ("20", "0"), rows[300]
+# The seed's pixel id is (rows - 1 - y_prg) cols + x: the row from the top times 40, plus x.
+assert all(int(r["id"]) == int(r["y"]) * 40 + int(r["x"]) for r in rows)
+assert sorted(int(r["id"]) for r in rows) == list(range(1200))
+assert sum(r["hit"] == "1" for r in rows) == int(sys.argv[2])
+for r in rows:
+    if r["hit"] == "1":
+        assert float(r["t"]) > 0 and r["primitive"] != "" and int(r["triangle_tests"]) > 0, r
+    if r["box_miss"] == "1":
+        assert r["hit"] == "0" and r["nodes"] == "0", r
+PY
+
+# The same scene built before, as a k-d image and as the seed's scene file: the same rays.
+"$rtusim" build --accel kdtree "${frame[@]}" --out sphere.kd --trayracer-scene sphere.scene >build.txt
+for file in sphere.kd sphere.scene; do
+  "$rtusim" render --architecture raypipe --model golden --index wide --level 1 --accel-file $file \
+    --results-csv $file.csv >$file.txt
+  cmp -s rays.csv $file.csv || fail "--accel-file $file traces other rays than the build"
+done
+grep -q "^scene       sphere.scene: the Tray Racer's scene file (wide), 1488 triangles" \
+  sphere.scene.txt || fail "scene file line: $(cat sphere.scene.txt)"
+"$rtusim" render --architecture raypipe --model golden --index wide --level 1 \
+  --accel-file sphere.scene --shaded-image file-shaded.png >/dev/null
+[[ -s file-shaded.png ]] || fail "no shaded image from the scene file's normals"
+expect_error "a k-d image holds none" "$rtusim" render --architecture raypipe --model golden \
+  --index wide --level 0 --accel-file sphere.kd --shaded-image no.png
+
+# The preset: the seed's camera registers at 640x480 (level 5) unless a level is given.
+"$rtusim" render --preset trayracer --model golden "${frame[@]}" --level 0 >preset.txt
+grep -q "^frame       20x15 (level 0)" preset.txt || fail "preset frame: $(cat preset.txt)"
+grep -q "^camera      E 1.125,1.125,-1.25  U 1,0,0  V 0,1,0  W 0,0,1" preset.txt ||
+  fail "preset camera: $(cat preset.txt)"
+
+# The pipe's cycle model is not built: refused before any work.
+expect_error "cycle model is not built yet" \
+  "$rtusim" render --architecture raypipe --model ca "${frame[@]}" --level 0 --image ca.png
+[[ ! -e ca.png ]] || fail "--model ca wrote an image"
+expect_error "written for --architecture raypipe" \
+  "$rtusim" render --model golden "${frame[@]}" --results-csv rtu.csv
+
+# The commands that run only the RTU refuse the pipe rather than run the RTU in its place.
+expect_error "rtusim fps runs the RTU only" "$rtusim" fps --preset trayracer --model golden \
+  "${frame[@]}"
+expect_error "rtusim sweep runs the RTU only" "$rtusim" sweep --model golden "${frame[@]}" \
+  --width 8 --height 8 --grid architecture=rtu,raypipe --out rows.csv
+
+# A ray pipe setting with the RTU has no effect, and says so.
+"$rtusim" render --model golden --scene sphere --depth 4 --width 16 --height 12 \
+  --set raypipe.tmax_clamp=intended >rtu.txt 2>rtu.err
+grep -q "raypipe.tmax_clamp (command line) has no effect: architecture is rtu" rtu.err ||
+  fail "no-effect warning: $(cat rtu.err)"
+echo "cli_raypipe_render: OK"
