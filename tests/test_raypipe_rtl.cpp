@@ -158,7 +158,8 @@ std::vector<RtlRun> bunnyRuns() {
           {"bunny_color_aabb_l3", 3, false, 60096, 153161, 60025},
           {"bunny_color_aabb_l0_close", 0, true, 6284, 153161, 898},
           {"bunny_color_aabb_l1_close", 1, true, 18039, 153161, 7867},
-          {"bunny_color_aabb_l2_close", 2, true, 68408, 153161, 58102}};
+          {"bunny_color_aabb_l2_close", 2, true, 68408, 153161, 58102},
+          {"bunny_color_aabb_l3_close", 3, true, 274766, 153161, 269200}};
 }
 
 std::string describe(const char* model, const RtlComparison& c) {
@@ -249,33 +250,76 @@ TEST_CASE("raypipe models against the RTL: t4s3 levels 0-3", "[raypipe_rtl]") {
   }
 }
 
-// 320x240 has no per-pixel CSV (README: too large); the README's table gives its frame: hits,
-// misses and box misses 8802 / 28447 / 39551, the PRG's last accept in frame cycle 278251, the last
-// exit in 278321, rendering_done in 278322 (the pixel buffer full for 4229 cycles).
-TEST_CASE("raypipe models against the RTL: t4s3 at 320x240\\, the frame figures", "[raypipe_rtl]") {
-  const KdImage image = t4s3Image();
-  const std::vector<RaypipeCycleRay> rays = rtlRays(RaypipeCamera{}, 4);
+// A run recorded as frame figures only (README's table: no per-pixel CSV at the larger sizes).
+struct RtlFrame {
+  int level = 0;
+  bool close = false;
+  size_t hits = 0, misses = 0, boxMisses = 0;
+  int64_t lastAccept = 0, lastExit = 0, renderingDone = 0, start = 0;  // the RTL's frame cycles
+};
+
+// `expectExact` false: the models must agree with each other; the RTL's figures are reported.
+void checkFrameFigures(const KdImage& image, const RtlFrame& f, bool expectExact = true) {
+  INFO("level " << f.level << (f.close ? ", the close camera" : ""));
+  const std::vector<RaypipeCycleRay> rays =
+      rtlRays(f.close ? closeCamera() : RaypipeCamera{}, f.level);
   RaypipeCycleOptions options;
   options.writer.vgaReadWindow = true;
-  options.writer.vgaPhase = 5207 + 1;
-  for (const RaypipeCycleRun& run : {runRaypipeCycles(RaypipeConfig{}, image, rays, options),
-                                     runRaypipeTimed(RaypipeConfig{}, image, rays, options)}) {
+  options.writer.vgaPhase = f.start + 1;
+  const RaypipeCycleRun ref = runRaypipeCycles(RaypipeConfig{}, image, rays, options);
+  const RaypipeCycleRun timed = runRaypipeTimed(RaypipeConfig{}, image, rays, options);
+  for (const RaypipeCycleRun& run : {ref, timed}) {
     size_t hits = 0, misses = 0, boxMisses = 0;
     for (const RaypipeCycleResult& r : run.results) {
       hits += r.hit;
       boxMisses += r.boxMiss;
       misses += !r.hit && !r.boxMiss;
     }
-    CHECK(hits == 8802);
-    CHECK(misses == 28447);
-    CHECK(boxMisses == 39551);
-    CHECK(run.results.back().issueCycle == 278251 - 1);
-    CHECK(run.lastExitCycle == 278321 - 1);
-    CHECK(run.lastWriteCycle == 278322 - 1);
+    if (!expectExact) {
+      CHECK(run.lastExitCycle == ref.lastExitCycle);
+      CHECK(run.lastWriteCycle == ref.lastWriteCycle);
+      WARN("level " << f.level << ": model hits / misses / box misses " << hits << " / " << misses
+                    << " / " << boxMisses << ", last accept " << run.results.back().issueCycle
+                    << ", last exit " << run.lastExitCycle << "; RTL " << f.hits << " / "
+                    << f.misses << " / " << f.boxMisses << ", " << f.lastAccept - 1 << ", "
+                    << f.lastExit - 1 << "; stale list hits in the model " << run.staleListHits);
+      continue;
+    }
+    CHECK(hits == f.hits);
+    CHECK(misses == f.misses);
+    CHECK(boxMisses == f.boxMisses);
+    CHECK(run.results.back().issueCycle == f.lastAccept - 1);
+    CHECK(run.lastExitCycle == f.lastExit - 1);
+    CHECK(run.lastWriteCycle == f.renderingDone - 1);
   }
 }
 
-TEST_CASE("raypipe models against the RTL: bunny levels 0-3 and the close camera",
+// t4s3 at 320x240 and 640x480: the pixel buffer full for 4229 and 14343 cycles.
+TEST_CASE("raypipe models against the RTL: t4s3 at 320x240 and 640x480\\, the frame figures",
+          "[raypipe_rtl]") {
+  const KdImage image = t4s3Image();
+  checkFrameFigures(image, {4, false, 8802, 28447, 39551, 278251, 278321, 278322, 5207});
+  checkFrameFigures(image, {5, false, 35059, 113166, 158975, 1149202, 1149272, 1149274, 5207});
+}
+
+TEST_CASE("raypipe models against the RTL: the bunny's frame figures", "[raypipe_rtl][kd_r1]") {
+  if (!trayRacerDir()) {
+    WARN(
+        "RTUSIM_TRAYRACER_DIR unset (scripts/extract_trayracer.sh): the bunny's runs not compared");
+    return;
+  }
+  const KdImage bunny = layOutKd(
+      readTrayRacerScene(readBytes(std::string(trayRacerDir()) + "/SCENES/bunny_color_aabb.scene"),
+                         TrayRacerFormat::Narrow));
+  checkFrameFigures(bunny, {4, false, 2023, 2947, 71830, 280654, 280724, 280726, 153161});
+  // 640x480: the RTL's classes differ from the models' (and the golden traversal's, which the
+  // models equal): docs/raypipe.md, "Against the RTL".
+  checkFrameFigures(bunny, {5, false, 5387, 15481, 286332, 1379386, 1379456, 1379458, 153161},
+                    false);
+  checkFrameFigures(bunny, {4, true, 11508, 34926, 30366, 1099528, 1099598, 1099600, 153161});
+}
+
+TEST_CASE("raypipe models against the RTL: bunny levels 0-3 and the close camera at 0-3",
           "[raypipe_rtl][kd_r1]") {
   if (!trayRacerDir()) {
     WARN(
