@@ -14,7 +14,9 @@
 #include "kd_hand_scene.h"
 #include "raypipe_scenes.h"
 #include "reference/raypipe_cycles.h"
+#include "reference/raypipe_vga.h"
 #include "sim/raypipe/raypipe_timed.h"
+#include "sim/raypipe/vga_window.h"
 
 namespace rtu {
 namespace {
@@ -64,6 +66,7 @@ RaypipeCycleRun checkSameCycles(const KdImage& image, const std::vector<RaypipeC
   CHECK(timed.lastExitCycle == ref.lastExitCycle);
   CHECK(timed.frameCycles == ref.frameCycles);
   CHECK(timed.lastWriteCycle == ref.lastWriteCycle);
+  CHECK(timed.writerWaits == ref.writerWaits);
   CHECK(timed.maxRaysInFlight == ref.maxRaysInFlight);
   CHECK(timed.staleListHits == ref.staleListHits);
   REQUIRE(timed.units.size() == ref.units.size());
@@ -228,7 +231,46 @@ TEST_CASE("raypipe timed model: refused settings", "[raypipe_timed]") {
   CHECK_THROWS_AS(runRaypipeTimed(two, image, rays), std::invalid_argument);
   RaypipeCycleOptions vga;
   vga.writer.vgaReadWindow = true;
+  vga.writer.vgaPhase = -1;
   CHECK_THROWS_AS(runRaypipeTimed(RaypipeConfig{}, image, rays, vga), std::invalid_argument);
+}
+
+// The closed form of the VGA reader's window (sim/raypipe/vga_window.h) against the reference's
+// stepped counters (reference/raypipe_vga.h) over a screen and a half, from two phases.
+TEST_CASE("raypipe timed model: the VGA window equals the reference's counters",
+          "[raypipe_timed]") {
+  for (const int64_t phase : {int64_t{0}, int64_t{49885}}) {
+    raypipe_ref::VgaReader stepped;
+    for (int64_t i = 0; i < phase; ++i) stepped.tick();
+    const raypipe_timed::VgaWindow window(phase);
+    int64_t differ = 0;
+    for (int64_t n = 0; n < 3 * raypipe_timed::VgaWindow::kScreen / 2; ++n) {
+      differ += stepped.reading() != window.reading(n);
+      stepped.tick();
+    }
+    CHECK(differ == 0);
+  }
+}
+
+// With the VGA reader's window: the writer waits, and with a small pixel buffer the buffer fills
+// and the shader stalls, in the same cycles as the reference.
+TEST_CASE("raypipe timed model: equivalence with the VGA reader's window", "[raypipe_timed]") {
+  const KdImage image = frameScene();
+  const std::vector<RaypipeCycleRay> rays = prgRays(1);
+  RaypipeCycleOptions options;
+  options.writer.vgaReadWindow = true;
+  for (const int64_t phase : {int64_t{49886}, int64_t{5208}, int64_t{833599}}) {
+    INFO("phase " << phase);
+    options.writer.vgaPhase = phase;
+    const RaypipeCycleRun run = checkSameCycles(image, rays, RaypipeConfig{}, options);
+    RaypipeConfig small;
+    small.fifo.pixelBuffer = 1;
+    const RaypipeCycleRun filled = checkSameCycles(image, rays, small, options);
+    if (phase == 49886) {
+      CHECK(run.writerWaits > 0);
+      CHECK(filled.writerWaits > 0);
+    }
+  }
 }
 
 }  // namespace rtu

@@ -18,7 +18,9 @@ namespace rtu {
 // is not empty; with the VGA read window (raypipe_vga.h) it waits out the cycles the VGA reader
 // holds the SRAM: every other cycle of each screen row's active part. vgaPhase: the 50 MHz
 // cycles from reset to cycle 0 (the VGA counters start at reset; R1 does not tie a frame's start
-// to the screen's).
+// to the screen's). In the RTL recordings (tests/data/raypipe_rtl/README.md) it is "start (abs)"
+// + 1, and with it both models give every recorded exit cycle (docs/raypipe.md, "Against the
+// RTL").
 struct RaypipePixelWriter {
   bool vgaReadWindow = false;
   int64_t vgaPhase = 0;

@@ -6,8 +6,9 @@
 // and registers are lazy in time, so nothing happens between a ray's entry into a pipe and its
 // exit. docs/raypipe.md, "The timed model", gives the design and why it is exact.
 //
-// Same inputs and results as the reference (raypipe/raypipe_run.h). Not modelled: the VGA
-// reader's window (RaypipePixelWriter::vgaReadWindow is refused).
+// Same inputs and results as the reference (raypipe/raypipe_run.h), the VGA reader's window
+// included (RaypipePixelWriter::vgaReadWindow; vga_window.h). Both equal the seed's RTL in every
+// recorded exit cycle (tests/test_raypipe_rtl.cpp; docs/raypipe.md, "Against the RTL").
 
 #include <vector>
 
@@ -18,7 +19,7 @@
 namespace rtu {
 
 // Runs one frame. Throws std::invalid_argument for a configuration the model does not take (more
-// than one traversal unit, the set-associative caches, the VGA read window), logic_error when the
+// than one traversal unit, the set-associative caches, a negative VGA phase), logic_error when the
 // pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, no progress for a
 // million cycles).
 RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,

@@ -30,6 +30,8 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
       busy_(static_cast<size_t>(Unit::kCount), 0),
       stall_(static_cast<size_t>(Unit::kCount), 0) {
   for (size_t i = 0; i < rays.size(); ++i) results_[i].pixelId = rays[i].pixelId;
+  vgaReadWindow_ = options.writer.vgaReadWindow;
+  vga_ = VgaWindow(options.writer.vgaPhase);
   // The shader's reset fill (is_init): ray id i written i cycles after reset, results blocked for
   // the fill's 512 cycles.
   const int64_t reset = -std::min<int64_t>(options.cyclesSinceReset, 1000000);
@@ -146,6 +148,7 @@ RaypipeCycleRun TimedPipe::run() {
   for (const auto& r : results_) run.lastExitCycle = std::max(run.lastExitCycle, r.exitCycle);
   run.frameCycles = run.lastExitCycle + 1;
   run.lastWriteCycle = lastWrite_;
+  run.writerWaits = writerWaits_;
   run.transfers = std::move(transfers_);
   for (size_t i = 0; i < static_cast<size_t>(Unit::kCount); ++i)
     run.units.push_back(RaypipeUnitActivity{unitName(static_cast<Unit>(i)), busy_[i], stall_[i]});
@@ -167,8 +170,8 @@ RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& imag
         "raypipe.traversal_units: the timed model models one traversal unit (t5.sv)");
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the timed model models the block RAMs");
-  if (options.writer.vgaReadWindow)
-    throw std::invalid_argument("the timed model does not model the VGA reader's window");
+  if (options.writer.vgaPhase < 0)
+    throw std::invalid_argument("the VGA phase must not be negative");
   if (options.cyclesSinceReset < 0)
     throw std::invalid_argument("the cycles since reset must not be negative");
   raypipe_timed::TimedPipe pipe(config, image, rays, options);

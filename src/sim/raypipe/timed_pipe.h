@@ -17,6 +17,7 @@
 #include "raypipe/raypipe_config.h"
 #include "raypipe/raypipe_run.h"
 #include "sim/raypipe/timed_units.h"
+#include "sim/raypipe/vga_window.h"
 #include "sim/raypipe/wake_calendar.h"
 
 namespace rtu {
@@ -84,6 +85,9 @@ class TimedPipe {
   std::vector<RaypipeTransfer> transfers_;
   std::vector<int64_t> busy_, stall_;
   int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
+  bool vgaReadWindow_ = false;  // the writer waits out the VGA reader (vga_window.h)
+  VgaWindow vga_{0};
+  int64_t writerWaits_ = 0;
   int64_t lastPrgCall_ = -1;  // the last cycle shaderIssueAndPrg ran
   bool prgBlocked_ = false;   // since then, the PRG stalls on every v0 (settle)
   size_t issued_ = 0, written_ = 0;

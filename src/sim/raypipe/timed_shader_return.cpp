@@ -4,7 +4,8 @@
 // rotating_arbiter.h ([0] list hit, [1] shadow hit, [2] SINT's box miss, [3] the shortstack's
 // miss); its head goes on unless the pipe stalls or the shader is still in is_init, writing the
 // ray id back; the ray-data FIFO's head leaves (the pixel's exit) when the pixel buffer is not
-// full; the writer takes a pixel every cycle the buffer holds one.
+// full; the writer takes a pixel every cycle the buffer holds one and the VGA reader does not hold
+// the SRAM (vga_window.h, when RaypipePixelWriter::vgaReadWindow is set).
 #include <stdexcept>
 #include <string>
 
@@ -61,8 +62,15 @@ void TimedPipe::shaderReturn() {
     result.exitCycle = now_;
     c_.pixelBuffer.push(now_, t);
   }
-  // the SRAM writer: one pixel a cycle while the buffer holds one
+  // the SRAM writer: one pixel a cycle while the buffer holds one, unless the VGA reader holds the
+  // SRAM (then the group looks again next cycle)
   if (!c_.pixelBuffer.shown(now_)) return;
+  if (vgaReadWindow_ && vga_.reading(now_)) {
+    ++writerWaits_;
+    stall(Unit::PixelWriter);
+    calendar_.book(kShader, now_ + 1, now_);
+    return;
+  }
   const RayToken t = c_.pixelBuffer.pop(now_);
   lastWrite_ = now_;
   ++written_;
