@@ -76,7 +76,8 @@ small=(--scene sphere --depth 3 --index wide --level 1)
 cmp -s g3.png ca.png || fail "--model ca's image differs from golden's"
 cycles=$(sed -n 's/^timing *\([0-9]*\) cycles at 50 MHz: .*/\1/p' ca.txt)
 [[ -n $cycles ]] || fail "no timing line: $(cat ca.txt)"
-grep -q "^busiest .* %;" ca.txt && grep -q "ray ids in flight at most" ca.txt || fail "ca report: $(cat ca.txt)"
+grep -q "^busiest .* %;" ca.txt && grep -q "ray ids in flight at most" ca.txt &&
+  grep -q "^writer  .* waited for the VGA reader (phase 0)" ca.txt || fail "ca report: $(cat ca.txt)"
 python3 - rays3.csv ca.csv "$cycles" <<'PY' || fail "ca results CSV"
 import csv, sys
 golden, timed = (list(csv.DictReader(open(path))) for path in sys.argv[1:3])

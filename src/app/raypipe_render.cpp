@@ -155,7 +155,9 @@ RaypipeCycleRun timedFrame(const RaypipeScene& scene, const std::vector<PrimaryR
   std::vector<RaypipeCycleRay> input;
   input.reserve(rays.size());
   for (const PrimaryRay& ray : rays) input.push_back({ray.ray, ray.pixel.pixelId});
-  RaypipeCycleRun run = runRaypipeTimed(config, KdImage{scene.image}, input);
+  RaypipeCycleOptions options;
+  options.writer = {config.vgaWindow, config.vgaPhase};
+  RaypipeCycleRun run = runRaypipeTimed(config, KdImage{scene.image}, input, options);
   for (size_t i = 0; i < run.results.size(); ++i) {
     const RaypipeCycleResult& timed = run.results[i];
     const RaypipePixel& expected = golden.pixels[i];
@@ -203,6 +205,13 @@ void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::
   if (full == 0) out << " none filled";
   out << "; " << run.maxRaysInFlight << " of " << config.raysInFlight
       << " ray ids in flight at most\n";
+  out << "writer      "
+      << (config.vgaWindow
+              ? std::to_string(run.writerWaits) +
+                    " cycles a pixel waited for the VGA reader (phase " +
+                    std::to_string(config.vgaPhase) + ")"
+              : std::string("the SRAM writer takes a pixel every cycle (no VGA window)"))
+      << "\n";
   std::snprintf(line, sizeof line, "host        %.3f s timed model, %.2f M rays/s\n",
                 run.hostSeconds, run.results.size() / run.hostSeconds / 1e6);
   out << line;

@@ -567,6 +567,14 @@ void addRaypipeSettings(std::vector<Setting>& schema) {
       "ray pipe: the scene box's t_max, as_built (the RTL's: at least 1) or intended (the box's "
       "exit)",
       [](C& c) -> KdTMaxClamp& { return c.raypipe.tMaxClamp; }, tMaxClampName, parseTMaxClamp));
+  added.push_back(flag("raypipe.vga_window", "", model,
+                       "ray pipe: the pixel buffer's SRAM writer waits out the VGA reader, as "
+                       "built (false: it takes a pixel every cycle)",
+                       [](C& c) -> bool& { return c.raypipe.vgaWindow; }));
+  added.push_back(integer("raypipe.vga_phase", "", "cycles", 0, 833599, model,
+                          "ray pipe: cycles from reset to the frame's start, which place the VGA "
+                          "reader's screen (a screen is 833,600 cycles)",
+                          [](C& c) -> int64_t& { return c.raypipe.vgaPhase; }));
   added.push_back(real("raypipe.clock_mhz", "", "MHz", kMinClockMhz, kMaxClockMhz, model,
                        "ray pipe: clock (seed 001: 50 MHz)",
                        [](C& c) -> double& { return c.raypipe.clockMHz; }));

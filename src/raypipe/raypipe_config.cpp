@@ -48,6 +48,8 @@ void RaypipeConfig::validate() const {
       {"raypipe.fifo.pixel_buffer", fifo.pixelBuffer},
   };
   for (const auto& [key, value] : positive) atLeast(key, value, 1);
+  if (vgaPhase < 0)
+    throw std::invalid_argument("raypipe.vga_phase: must not be negative (cycles from reset)");
   if (!(clockMHz > 0))
     throw std::invalid_argument("raypipe.clock_mhz: must be a positive frequency");
 }

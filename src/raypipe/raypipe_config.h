@@ -58,6 +58,11 @@ struct RaypipeConfig {
   Division division = Division::Ieee;
   KdTMaxClamp tMaxClamp = KdTMaxClamp::AsBuilt;
   double clockMHz = 50.0;  // R1 COMMON/defines.sv CLK_FREQ
+  // The pixel buffer's SRAM writer waits out the VGA reader's window, as built (docs/raypipe.md,
+  // "Against the RTL": with it the models give the RTL's exit cycles where the buffer fills);
+  // vgaPhase: the 50 MHz cycles from reset to the frame's cycle 0, which place the screen.
+  bool vgaWindow = true;
+  int64_t vgaPhase = 0;
 
   // Throws std::invalid_argument naming the setting for a value the pipe cannot take (counts and
   // depths below 1, ray ids beyond the 9-bit rayID's 512, a stack deeper than its 3-bit count).
