@@ -41,4 +41,12 @@ grep -q "warm_frames.*has no effect.*memory.kind is ideal" ideal.err || fail "no
 "$rtusim" fps "${run[@]:0:4}" --set jobs=one.bin --cores 8 --warm-frames 1 >fps.txt
 grep -q "cached memory (caches warm after 1 frame)" fps.txt || fail "fps heading: $(head -1 fps.txt)"
 grep -q "^one.bin *8 *6144 *$warm " fps.txt || fail "fps row differs from replay's warm frame: $(cat fps.txt)"
+# fidelity with warm frames: the loosely-timed modes (cold only) are skipped with a note, unless
+# asked for; the cycle-accurate rows start warm.
+"$rtusim" fidelity "${run[@]:0:4}" --set jobs=one.bin --cores 8 --warm-frames 1 \
+  >fidelity.txt 2>&1 || fail "fidelity with warm frames: $(cat fidelity.txt)"
+grep -q "^note: the loosely-timed modes are skipped" fidelity.txt || fail "no note: $(cat fidelity.txt)"
+grep -q "^systemc .* $warm " fidelity.txt || fail "fidelity's SystemC row is not the warm frame: $(cat fidelity.txt)"
+expect_error "the loosely-timed model does not apply" "$rtusim" fidelity "${run[@]:0:4}" \
+  --set jobs=one.bin --warm-frames 1 --quanta 100
 echo "warm frames: ok"

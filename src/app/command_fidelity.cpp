@@ -115,23 +115,25 @@ void addFidelityCommand(CLI::App& app) {
       "one frame answered by every mode (SystemC, recurrence, loosely-timed, sampled, golden), "
       "each measured "
       "against the cycle-accurate SystemC model: speed and error");
-  auto request = addConfigOptions(
-      *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseSampling | kUseAccel,
-      {"--sample", "--accel"});
+  auto request = addConfigOptions(*command,
+                                  kUseModel | kUseArithmetic | kUseScene | kUseCamera |
+                                      kUseSampling | kUseAccel | kUseBuffers,
+                                  {"--sample", "--accel"});
   // The sampled modes take the sampling settings at the fractions below, not at sample.fraction.
   request->commandSets = [](RunConfig& settings) { settings.sample.fraction = 0.1; };
   CLI::Option* fractionsOption =
       command->add_option("--fractions", options->fractions, "sampled fractions to measure")
           ->delimiter(',')
           ->capture_default_str();
-  command
-      ->add_option("--quanta", options->quanta,
-                   "global quanta (cycles) of the loosely-timed model to measure")
-      ->delimiter(',')
-      ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
-      ->capture_default_str();
+  CLI::Option* quantaOption =
+      command
+          ->add_option("--quanta", options->quanta,
+                       "global quanta (cycles) of the loosely-timed model to measure")
+          ->delimiter(',')
+          ->check(CLI::Range(uint64_t{1}, uint64_t{1000000000}))
+          ->capture_default_str();
   command->add_option("--csv", options->csv, "write one row per mode");
-  command->callback([options, request, fractionsOption] {
+  command->callback([options, request, fractionsOption, quantaOption] {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     settings.camera.validate();
@@ -139,16 +141,24 @@ void addFidelityCommand(CLI::App& app) {
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(settings));
     const FrameScene scene = loadFrameScene(settings);
     const std::vector<HostRecord> jobs = frameRecords(scene, settings);
-    if (const auto why = whyNotLooselyTimed(settings.rtu); why && !options->quanta.empty())
-      throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
+    // As the sampled fractions: asked-for quanta are refused, the default ones skipped with a note.
+    std::vector<uint64_t> quanta = options->quanta;
+    if (const auto why = whyNotLooselyTimed(settings.rtu); why && !quanta.empty()) {
+      if (quantaOption->count() > 0)
+        throw std::invalid_argument("--quanta: the loosely-timed model does not apply: " + *why);
+      std::cout << "note: the loosely-timed modes are skipped (default quanta; --quanta asks for "
+                   "them): "
+                << *why << "\n";
+      quanta.clear();
+    }
     const std::vector<double> fractions =
         plannedFractions(options->fractions, fractionsOption->count() > 0, jobs.size(), settings);
     std::cout << "scene " << scene.name << ", " << settings.camera.width << "x"
               << settings.camera.height << ", " << settings.rtu.cores << " cores, "
               << (settings.rtu.memory.ideal ? "ideal" : "cached") << " memory; errors against "
               << "the SystemC model\n";
-    const std::vector<ModeFidelity> modes = measureFidelity(
-        scene.memory(), jobs, settings.rtu, options->quanta, fractions, settings.sample);
+    const std::vector<ModeFidelity> modes =
+        measureFidelity(scene.memory(), jobs, settings.rtu, quanta, fractions, settings.sample);
     printTable(modes, std::cout);
     if (!options->csv.empty()) {
       writeCsv(modes, options->csv);
