@@ -3,9 +3,11 @@
 // per-cycle reference (reference/raypipe_cycles.h) and the timed model (sim/raypipe/) share these,
 // so a run of one compares with a run of the other field by field.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kinds/kd/kd_traversal.h"
@@ -118,6 +120,15 @@ struct RaypipeCycleRun {
   int64_t staleListHits = 0;  // rays that ended as a miss with a hit kept in the list record
   std::vector<RaypipeTransfer> transfers;  // in cycle order, when recorded
   double hostSeconds = 0;
+
+  // Takes the results and derives the frame's end from them: the last exit and the cycles up to
+  // it (the one definition both models give).
+  void setResults(std::vector<RaypipeCycleResult> frameResults) {
+    results = std::move(frameResults);
+    for (const RaypipeCycleResult& r : results)
+      lastExitCycle = std::max(lastExitCycle, r.exitCycle);
+    frameCycles = lastExitCycle + 1;
+  }
 };
 
 }  // namespace rtu

@@ -144,9 +144,7 @@ RaypipeCycleRun TimedPipe::run() {
     ++now_;
   }
   RaypipeCycleRun run;
-  run.results = results_;
-  for (const auto& r : results_) run.lastExitCycle = std::max(run.lastExitCycle, r.exitCycle);
-  run.frameCycles = run.lastExitCycle + 1;
+  run.setResults(results_);
   run.lastWriteCycle = lastWrite_;
   run.writerWaits = writerWaits_;
   run.transfers = std::move(transfers_);
