@@ -67,8 +67,8 @@ grep -q "^camera      E 1.125,1.125,-1.25  U 1,0,0  V 0,1,0  W 0,0,1" preset.txt
 # --model ca: the same frame on the pipe's timed model. The same pixels as golden's; the report's
 # frame cycles are the last exit + 1; the PRG takes at most one pixel every 3 cycles, in issue
 # order; the shader lets out at most one pixel a cycle.
-# (Depth 3: at depth 4 a ray reaches a leaf with no triangle, which the timed model refuses.)
-small=(--scene sphere --depth 3 --index wide --level 1)
+# (Depth 4: R1's build would leave nodes with two empty children there; rtusim's prunes them.)
+small=(--scene sphere --depth 4 --index wide --level 1)
 "$rtusim" render --architecture raypipe --model golden "${small[@]}" --image g3.png \
   --results-csv rays3.csv >/dev/null
 "$rtusim" render --architecture raypipe --model ca "${small[@]}" --image ca.png \

@@ -121,6 +121,48 @@ TEST_CASE("PBRT k-d: no candidate on any axis leaves a leaf", "[kd]") {
   CHECK(tree.lists == std::vector<uint32_t>{0, 1, 2});
 }
 
+// Three triangles flat in x = 1 (y, z in [0, 1]) and two spanning x [0, 2] at y [3, 4]. The root
+// (longest axis y, extent 4) splits at the flat ones' last END, y = 1 (cost 1 + 80 (3*10 + 2*22)/28
+// = 212.4, the cheapest): below the flat three, above the other two (a leaf). The below node
+// (x [0, 2], longest x) splits at x = 1 on the last END (cost 1: no triangle on either side, as
+// R1's END-before-START order gives a triangle flat in the plane to neither child), so as R1 builds
+// it both its children are empty leaves; pruned, it is an empty leaf its parent marks empty.
+TEST_CASE("PBRT k-d: a node whose triangles lie flat in its split plane, as built and pruned",
+          "[kd]") {
+  std::vector<Aabb<float>> boxes;
+  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
+  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  PbrtKdParameters asR1;
+  asR1.pruneEmptyPairs = false;
+  const KdBuild built = buildPbrtKd(boxes, asR1);
+  REQUIRE(built.nodes.size() == 5);
+  CHECK(built.nodes[0].axis == 1);
+  CHECK(built.nodes[0].split == 1.f);
+  CHECK(built.nodes[0].above == 4);
+  CHECK_FALSE(built.nodes[1].leaf);
+  CHECK(built.nodes[1].axis == 0);
+  CHECK(built.nodes[1].split == 1.f);
+  CHECK(built.nodes[1].belowEmpty);
+  CHECK(built.nodes[1].aboveEmpty);
+  CHECK(built.nodes[2].count == 0);
+  CHECK(built.nodes[3].count == 0);
+  CHECK(built.prunedNodes == 0);
+
+  const KdBuild pruned = buildPbrtKd(boxes, PbrtKdParameters{});
+  REQUIRE(pruned.nodes.size() == 3);
+  CHECK(pruned.prunedNodes == 1);
+  CHECK(pruned.nodes[0].above == 2);
+  CHECK(pruned.nodes[0].belowEmpty);
+  CHECK_FALSE(pruned.nodes[0].aboveEmpty);
+  CHECK(pruned.nodes[1].leaf);
+  CHECK(pruned.nodes[1].count == 0);
+  CHECK(pruned.nodes[2].leaf);
+  CHECK(pruned.nodes[2].listIndex == 0);
+  CHECK(pruned.nodes[2].count == 2);
+  CHECK(pruned.lists == built.lists);
+  CHECK(pruned.lists == std::vector<uint32_t>{3, 4});
+}
+
 TEST_CASE("strict OBJ: v, vn, f forms, quads split as (0,1,2), (2,3,0), errors by line", "[kd]") {
   const ObjMesh obj = parseObjExact(
       "# c\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.1\nvn 0 0 1\nvt 0 0\nf 1//1 2//1 3//1 4//1\n"

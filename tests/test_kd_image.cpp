@@ -45,6 +45,7 @@ TEST_CASE("k-d image: the validator passes a sound image and names each corrupt 
   CHECK(problemWord(4, 30) == 2);                  // lists moved
   CHECK(problemWord(17, 99u << 2) == 17);          // node 0's high child
   CHECK(problemWord(22, 3) == 22);                 // node 3's list runs past the lists
+  CHECK(problemWord(17, 4u << 2 | 3) == 16);       // node 0: both children empty
   CHECK(problemWord(29, 4) == 29);                 // a list entry naming no triangle
   CHECK(problemWord(32 + 10, 1) == 32 + 10);       // T0's padding
   CHECK(problemWord(13, floatBits(-1.0f)) == 10);  // x max below x min

@@ -136,6 +136,11 @@ void checkNode(const KdHeader& header, uint32_t index, const TrayRacerNode& node
   } else if ((!node.highEmpty && node.high >= header.nodeCount) ||
              (!node.lowEmpty && index + 1 >= header.nodeCount)) {
     problems.add(word + 1, name + "child outside the nodes");
+  } else if (node.lowEmpty && node.highEmpty) {
+    // R1's builder leaves such nodes (pbrt_kd_builder.h, pruneEmptyPairs); TRAV would take a ray
+    // into the empty far child, a leaf whose list count the RTL's list path wraps.
+    problems.add(word, name + "both children empty (a ray would enter an empty leaf); rebuild "
+                              "with rtusim build, which prunes such nodes");
   }
 }
 

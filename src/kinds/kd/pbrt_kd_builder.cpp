@@ -46,7 +46,8 @@ class Builder {
   }
 
  private:
-  void node(const Aabb<float>& bounds, const std::vector<uint32_t>& triangles, int depth,
+  // Returns whether the subtree lists no triangle (an empty leaf).
+  bool node(const Aabb<float>& bounds, const std::vector<uint32_t>& triangles, int depth,
             int badRefines) {
     const auto number = static_cast<uint32_t>(out_->nodes.size());
     out_->nodes.emplace_back();
@@ -72,17 +73,32 @@ class Builder {
     inner.aboveEmpty = above.empty();
     Aabb<float> belowBounds = bounds, aboveBounds = bounds;
     belowBounds.upper[best.axis] = aboveBounds.lower[best.axis] = split;
-    node(belowBounds, below, depth - 1, badRefines);
+    const bool belowNone = node(belowBounds, below, depth - 1, badRefines);
     out_->nodes[number].above = static_cast<uint32_t>(out_->nodes.size());
-    node(aboveBounds, above, depth - 1, badRefines);
+    const bool aboveNone = node(aboveBounds, above, depth - 1, badRefines);
+    if (!p_.pruneEmptyPairs) return false;
+    if (belowNone && aboveNone) return prune(number);
+    out_->nodes[number].belowEmpty = belowNone;
+    out_->nodes[number].aboveEmpty = aboveNone;
+    return false;
   }
 
-  void leaf(uint32_t number, const std::vector<uint32_t>& triangles) {
+  bool leaf(uint32_t number, const std::vector<uint32_t>& triangles) {
     KdBuildNode& leaf = out_->nodes[number];
     leaf.leaf = true;
     leaf.listIndex = static_cast<uint32_t>(out_->lists.size());
     leaf.count = static_cast<uint32_t>(triangles.size());
     out_->lists.insert(out_->lists.end(), triangles.begin(), triangles.end());
+    return triangles.empty();
+  }
+
+  // The subtree at `number` lists no triangle: it becomes one empty leaf (its descendants, all
+  // empty leaves or pruned, appended nothing to the lists).
+  bool prune(uint32_t number) {
+    out_->prunedNodes += 1;
+    out_->nodes.resize(number + 1);
+    out_->nodes[number] = KdBuildNode{};
+    return leaf(number, {});
   }
 
   // The longest axis's cheapest candidate, or the next axes' when it has none; leaves edges_

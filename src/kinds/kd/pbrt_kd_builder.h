@@ -30,6 +30,14 @@ struct PbrtKdParameters {
   float emptyBonus = 0.1f;  // R1: ebonus_percent / 100.0 = 10 / 100.0, passed as float
   int maxTriangles = 2;
   int maxDepth = -1;  // -1: round(8 + 1.3 log2 N), PBRT's default
+  // rtusim's correction, off to reproduce R1's files byte for byte. R1's edge order gives a
+  // triangle lying flat in its node's split plane to neither child, so a node whose triangles all
+  // lie so gets two empty children, and TRAV (which descends into the far child when the near one
+  // is empty) then walks into an empty leaf, whose count the RTL's list path wraps (6-bit
+  // lnum_left: 64 list entries tested). Pruned, such a node becomes an empty leaf itself (up the
+  // tree while a parent's children are both empty), and its parent marks it empty, so no ray
+  // reaches it.
+  bool pruneEmptyPairs = true;
 };
 
 // round(8 + 1.3f log2(float(N))) in float32: 18 for 200 triangles, 21 for 1023.
@@ -50,10 +58,11 @@ struct KdBuild {
   std::vector<uint32_t> lists;     // triangle ids, by leaf in node order
   Aabb<float> bounds;              // the union of the triangles' boxes
   int maxDepth = 0;
+  uint32_t prunedNodes = 0;
 };
 
 // Builds over triangle boxes (triangle i's box is boxes[i]). Throws std::invalid_argument on no
-// boxes.
+// boxes. KdBuild::prunedNodes counts the interior nodes pruneEmptyPairs turned into empty leaves.
 KdBuild buildPbrtKd(const std::vector<Aabb<float>>& boxes, const PbrtKdParameters& parameters);
 
 // Triangle boxes as R1 forms them: each vertex coordinate cast to float, then the box of the
