@@ -136,6 +136,10 @@ void addTriangleOptions(CLI::App& command, TrianglePrecisionOptions& o, CLI::Opt
                   "rays aimed at vertices and edge midpoints (holes: the shared ones)")
       ->capture_default_str()
       ->needs(triangles);
+  command
+      .add_flag("--drop-bad-triangles", o.dropBadTriangles,
+                "drop degenerate and duplicate triangles instead of refusing the mesh")
+      ->needs(triangles);
   command.add_option("--ray-seed", o.rays.seed, "the random and aimed rays' seed")
       ->capture_default_str()
       ->needs(triangles);

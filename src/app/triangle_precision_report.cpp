@@ -133,12 +133,13 @@ std::vector<TriangleFormatSpec> checkedRows(const TriangleSweep& sweep) {
 
 }  // namespace
 
-void runTrianglePrecision(const TrianglePrecisionOptions& options, const RunConfig& settings) {
+void runTrianglePrecision(const TrianglePrecisionOptions& options, RunConfig settings) {
   const TriangleRaySettings& r = options.rays;
   require(r.views >= 0 && r.viewSize >= 0, "--views and --view-size must not be negative");
   require(options.stressWidth >= 0, "--stress-size must not be negative");
   require(r.randomRays + r.aimedRays + size_t(r.views) * r.viewSize > 0, "no rays to trace");
   const std::vector<TriangleFormatSpec> rows = checkedRows(options.sweep);
+  settings.accel.dropBadTriangles = options.dropBadTriangles;
   const TriangleScene scene = loadSceneTriangles(settings);
   const TrianglePrecisionStudy study(scene.mesh, r);
   std::vector<StudyRow> all;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -29,11 +30,16 @@ std::vector<Ray> viewAndRandomRays(const TriangleMesh& mesh, const TriangleRaySe
   return rays;
 }
 
-std::vector<std::vector<uint32_t>> trianglesAtVertices(const TriangleMesh& mesh) {
-  std::vector<std::vector<uint32_t>> at(mesh.vertices.size());
-  for (uint32_t i = 0; i < mesh.triangles.size(); ++i)
-    for (uint32_t v : mesh.triangles[i]) at[v].push_back(i);
-  return at;
+// Each vertex's first vertex at the same position: a mesh's seams repeat a vertex under other
+// indices, and a ray through it meets the triangles of every copy.
+std::vector<uint32_t> weldedVertices(const TriangleMesh& mesh) {
+  std::map<std::array<double, 3>, uint32_t> first;
+  std::vector<uint32_t> welded;
+  for (uint32_t i = 0; i < mesh.vertices.size(); ++i) {
+    const glm::dvec3& v = mesh.vertices[i];
+    welded.push_back(first.emplace(std::array<double, 3>{v.x, v.y, v.z}, i).first->second);
+  }
+  return welded;
 }
 
 bool holds(const std::array<uint32_t, 3>& triangle, uint32_t vertex) {
@@ -216,11 +222,19 @@ TrianglePrecisionStudy::TrianglePrecisionStudy(const TriangleMesh& mesh, std::ve
                                                std::vector<AimedRay> aimed)
     : mesh_(mesh), rays_(std::move(traced)), aimed_(std::move(aimed)) {
   for (size_t i = 0; i < rays(); ++i) oracle_.push_back(closestHit(mesh_, ray(i), 0, INFINITY));
-  const auto at = trianglesAtVertices(mesh_);
+  // The triangles at each welded vertex, as welded corners.
+  const std::vector<uint32_t> welded = weldedVertices(mesh_);
+  std::vector<std::vector<uint32_t>> at(mesh_.vertices.size());
+  for (uint32_t i = 0; i < mesh_.triangles.size(); ++i) {
+    std::array<uint32_t, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = welded[mesh_.triangles[i][k]];
+    corners_.push_back(corners);
+    for (uint32_t v : corners) at[v].push_back(i);
+  }
   for (const AimedRay& target : aimed_) {
     std::vector<uint32_t> incident;
-    for (uint32_t t : at[target.a])
-      if (holds(mesh_.triangles[t], target.b)) incident.push_back(t);
+    for (uint32_t t : at[welded[target.a]])
+      if (holds(corners_[t], welded[target.b])) incident.push_back(t);
     incident_.push_back(incident.size() >= 2 && crosses(mesh_, incident, target.ray.direction)
                             ? incident
                             : std::vector<uint32_t>{});
@@ -235,8 +249,8 @@ TrianglePrecisionStudy::TrianglePrecisionStudy(const TriangleMesh& mesh,
 }
 
 bool TrianglePrecisionStudy::adjacent(uint32_t a, uint32_t b) const {
-  for (uint32_t v : mesh_.triangles[a])
-    if (holds(mesh_.triangles[b], v)) return true;
+  for (uint32_t v : corners_[a])
+    if (holds(corners_[b], v)) return true;
   return false;
 }
 

@@ -26,6 +26,7 @@
 // h ± 2 grid units per axis (`O[k] = h[k] + ((dt > 0) ^ (n[k] < 0) ? 2 : -2)`, dt = n . ω, n the
 // grid triangle's normal) and from h itself; a self-hit is a nearest hit on the same triangle.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -126,6 +127,7 @@ class TrianglePrecisionStudy {
   std::vector<Ray> rays_;
   std::vector<AimedRay> aimed_;
   std::vector<std::optional<OracleHit>> oracle_;  // rays_ then aimed_
+  std::vector<std::array<uint32_t, 3>> corners_;  // each triangle's corners, welded by position
   std::vector<std::vector<uint32_t>> incident_;   // per aimed ray: triangles at its feature
   uint64_t seed_ = 1;
 };
