@@ -27,7 +27,7 @@ void printTable(const std::string& title, const std::vector<TriangleFormatPrecis
                 std::ostream& out) {
   out << title << "\n";
   char line[320];
-  std::snprintf(line, sizeof line, "%-40s %5s %9s %9s %9s %9s %10s %10s %7s %6s %9s %9s\n",
+  std::snprintf(line, sizeof line, "%-46s %5s %9s %9s %9s %9s %10s %10s %7s %6s %9s %9s\n",
                 "format", "swept", "false hit", "missed", "other tri", "not adj.", "t rel mean",
                 "t rel max", "edge", "holes", "self ±2", "self 0");
   out << line;
@@ -36,7 +36,7 @@ void printTable(const std::string& title, const std::vector<TriangleFormatPrecis
     const std::string offset = p.self ? std::to_string(p.self->selfHitsOffset) : "-";
     const std::string none = p.self ? std::to_string(p.self->selfHitsNoOffset) : "-";
     std::snprintf(
-        line, sizeof line, "%-40s %5s %9llu %9llu %9llu %9llu %10.3g %10.3g %7llu %6llu %9s %9s\n",
+        line, sizeof line, "%-46s %5s %9llu %9llu %9llu %9llu %10.3g %10.3g %7llu %6llu %9s %9s\n",
         p.spec.name().c_str(), p.spec.swept.c_str(), (unsigned long long)c.falseHits,
         (unsigned long long)c.missedHits, (unsigned long long)c.otherTriangle,
         (unsigned long long)c.otherNotAdjacent, c.tErrorMean(), c.tErrorMax,
@@ -149,7 +149,9 @@ void runTrianglePrecision(const TrianglePrecisionOptions& options, RunConfig set
     all.push_back({"mesh", results.back()});
   }
   printTable(scene.name + ", " + std::to_string(scene.mesh.triangles.size()) + " triangles, " +
-                 std::to_string(study.rays()) + " rays against float64 watertight",
+                 std::to_string(study.rays() - study.aimedRays()) + " rays and " +
+                 std::to_string(study.aimedRays()) +
+                 " aimed at vertices and edges, against float64 watertight",
              results, std::cout);
   const int stressHeight = options.stressWidth * 3 / 4;
   if (stressHeight > 0) {

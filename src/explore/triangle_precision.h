@@ -102,6 +102,7 @@ class TrianglePrecisionStudy {
   TrianglePrecisionStudy(const TriangleMesh& mesh, const TriangleRaySettings& settings);
 
   size_t rays() const { return rays_.size() + aimed_.size(); }
+  size_t aimedRays() const { return aimed_.size(); }
   // Throws what SceneGrid and validateFixedTriangleFormat throw for a fixed format.
   TriangleFormatPrecision measure(const TriangleFormatSpec& spec) const;
 
