@@ -12,7 +12,7 @@ rtusim=${2:-build/rtusim}
 mkdir -p "$out"
 dragon=$(bench/cgal_meshes.sh ChineseDragon-10kv)
 "$rtusim" precision --triangles --mesh "$dragon" --csv "$out/dragon.csv" | tee "$out/dragon.txt"
-"$rtusim" precision --triangles --mesh /usr/share/assimp/models/OBJ/spider.obj \
+"$rtusim" precision --triangles --mesh /usr/share/assimp/models/OBJ/spider.obj --drop-bad-triangles \
   --stress-size 0 --csv "$out/spider.csv" | tee "$out/spider.txt"
 "$rtusim" precision --triangles --scene menger --depth 3 --stress-size 0 \
   --csv "$out/menger.csv" | tee "$out/menger.txt"
