@@ -1,5 +1,7 @@
 // rtusim precision: one frame in a list of fixed-point formats against the float64 reference
-// (src/kinds/svo/precision.h), as a table, a CSV and a difference image per format.
+// (src/kinds/svo/precision.h), as a table, a CSV and a difference image per format; with
+// --triangles the triangle formats against the float64 watertight oracle
+// (app/triangle_precision_report.h).
 
 #include <cstdio>
 #include <iostream>
@@ -9,6 +11,7 @@
 #include "app/frame_images.h"
 #include "app/output_paths.h"
 #include "app/schema_flags.h"
+#include "app/triangle_precision_report.h"
 #include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "kinds/svo/precision.h"
@@ -103,6 +106,50 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
   output.commit();
 }
 
+// The triangle study's flags, each only with --triangles; the parameters are named as seed 004
+// names them.
+void addTriangleOptions(CLI::App& command, TrianglePrecisionOptions& o, CLI::Option* triangles) {
+  TriangleSweep& s = o.sweep;
+  const std::pair<const char*, std::vector<int>*> lists[] = {
+      {"--n", &s.n}, {"--m", &s.m}, {"--E", &s.E}, {"--T", &s.T}, {"--C", &s.C}};
+  const char* const help[] = {"grid bits n to sweep (the prototype's 29 is always measured)",
+                              "vector bits m to sweep (prototype 32)",
+                              "edge shift E to sweep (prototype 10)",
+                              "dropped division bits T to sweep (prototype 0)",
+                              "inverse-direction fraction bits C to sweep (prototype 16)"};
+  for (int i = 0; i < 5; ++i)
+    command.add_option(lists[i].first, *lists[i].second, help[i])
+        ->delimiter(',')
+        ->capture_default_str()
+        ->needs(triangles);
+  command.add_option("--views", o.rays.views, "views around the mesh's box")
+      ->capture_default_str()
+      ->needs(triangles);
+  command.add_option("--view-size", o.rays.viewSize, "rays per view: this many squared")
+      ->capture_default_str()
+      ->needs(triangles);
+  command.add_option("--random-rays", o.rays.randomRays, "rays from inside the box")
+      ->capture_default_str()
+      ->needs(triangles);
+  command
+      .add_option("--aimed-rays", o.rays.aimedRays,
+                  "rays aimed at vertices and edge midpoints (holes: the shared ones)")
+      ->capture_default_str()
+      ->needs(triangles);
+  command
+      .add_flag("--drop-bad-triangles", o.dropBadTriangles,
+                "drop degenerate and duplicate triangles instead of refusing the mesh")
+      ->needs(triangles);
+  command.add_option("--ray-seed", o.rays.seed, "the random and aimed rays' seed")
+      ->capture_default_str()
+      ->needs(triangles);
+  command
+      .add_option("--stress-size", o.stressWidth,
+                  "the stress triangle's view width (height 3/4 of it; 0: no stress rows)")
+      ->capture_default_str()
+      ->needs(triangles);
+}
+
 }  // namespace
 
 void addPrecisionCommand(CLI::App& app) {
@@ -110,6 +157,8 @@ void addPrecisionCommand(CLI::App& app) {
     std::vector<std::string> formats = {"Q8.8",   "Q10.10", "Q12.12", "Q14.14", "Q16.16",
                                         "Q12.20", "Q20.20", "Q24.24", "Q16.32"};
     std::string csv, imageDirectory;
+    bool triangles = false;
+    TrianglePrecisionOptions triangle;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -131,9 +180,19 @@ void addPrecisionCommand(CLI::App& app) {
   command->add_option("--images", options->imageDirectory,
                       "write a difference image per format into this folder, created if "
                       "missing (precision_QI_F.png)");
+  CLI::Option* triangles = command->add_flag(
+      "--triangles", options->triangles,
+      "the triangle formats instead (seed 004's fixed point, seed 001's binary32, float32) on the "
+      "scene's triangles (docs/precision.md, \"Triangle formats\")");
+  triangles->excludes("--formats")->excludes("--images");
+  addTriangleOptions(*command, options->triangle, triangles);
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& frame = configuration.values();
+    if (options->triangles) {
+      options->triangle.csv = options->csv;
+      return runTrianglePrecision(options->triangle, frame);
+    }
     std::vector<FixedFormat> formats;
     for (const std::string& text : options->formats) formats.push_back(parseFixedFormat(text));
     frame.camera.validate();

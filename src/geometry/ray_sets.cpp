@@ -62,21 +62,29 @@ std::vector<Ray> viewRays(const Aabb<double>& box, int views, int width, int hei
   return rays;
 }
 
-std::vector<Ray> aimedRays(const TriangleMesh& mesh, size_t count, uint64_t seed) {
+std::vector<AimedRay> aimedFeatureRays(const TriangleMesh& mesh, size_t count, uint64_t seed) {
   if (mesh.triangles.empty()) throw std::invalid_argument("aimedRays: the mesh has no triangle");
   std::mt19937_64 random(seed);
   const double distance = diagonal(meshBounds(mesh));
-  std::vector<Ray> rays;
+  std::vector<AimedRay> rays;
   rays.reserve(count);
   for (size_t i = 0; i < count; ++i) {
     const auto& triangle = mesh.triangles[below(random, mesh.triangles.size())];
     const uint32_t corner = below(random, 3);
-    const glm::dvec3& a = mesh.vertices[triangle[corner]];
-    const glm::dvec3& b = mesh.vertices[triangle[(corner + 1) % 3]];
-    const glm::dvec3 target = i % 2 == 0 ? a : (a + b) * 0.5;
+    const uint32_t a = triangle[corner], b = triangle[(corner + 1) % 3];
+    const bool vertex = i % 2 == 0;
+    const glm::dvec3 target = vertex ? mesh.vertices[a]
+                                     : (mesh.vertices[a] + mesh.vertices[b]) * 0.5;
     const glm::dvec3 d = direction(random);
-    rays.push_back(Ray{target - distance * d, d});
+    rays.push_back(AimedRay{Ray{target - distance * d, d}, a, vertex ? a : b});
   }
+  return rays;
+}
+
+std::vector<Ray> aimedRays(const TriangleMesh& mesh, size_t count, uint64_t seed) {
+  std::vector<Ray> rays;
+  rays.reserve(count);
+  for (const AimedRay& aimed : aimedFeatureRays(mesh, count, seed)) rays.push_back(aimed.ray);
   return rays;
 }
 

@@ -25,6 +25,15 @@ std::vector<Ray> viewRays(const Aabb<double>& box, int views, int width, int hei
 // from a random direction, starting one box diagonal before it. Directions are unit length.
 std::vector<Ray> aimedRays(const TriangleMesh& mesh, size_t count, uint64_t seed);
 
+// The same rays with what each is aimed at: the vertex a (b == a) or the midpoint of the edge
+// (a, b), as indices into the mesh's vertices.
+struct AimedRay {
+  Ray ray;
+  uint32_t a = 0, b = 0;
+  bool atVertex() const { return a == b; }
+};
+std::vector<AimedRay> aimedFeatureRays(const TriangleMesh& mesh, size_t count, uint64_t seed);
+
 // `count` rays from points uniform in `box` in directions uniform on the sphere (unit length).
 std::vector<Ray> randomRays(const Aabb<double>& box, size_t count, uint64_t seed);
 
