@@ -279,10 +279,12 @@ void addFpsCommand(CLI::App& app) {
       "fps", "frame rate per resolution and core count on the cycle-accurate model: a table in "
              "the form of thesis Tables 8.4 and 8.5 (or per resolution on seed 001's ray pipe: "
              "--architecture raypipe)");
-  auto request = addConfigOptions(*command,
-                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
-                                      kUseCamera | kUseSampling | kUseAccel | kUseBuffers,
-                                  {"--cores", "--width", "--height", "--accel", "--jobs"});
+  auto request =
+      addConfigOptions(*command,
+                       kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera |
+                           kUseSampling | kUseAccel | kUseBuffers,
+                       // fps sets the ray pipe's level per resolution.
+                       {"--cores", "--width", "--height", "--level", "--accel", "--jobs"});
   CLI::Option* resolutionsOption =
       command
           ->add_option("--resolutions", options->resolutions,
