@@ -14,9 +14,9 @@
 #include "explore/frame_scene.h"
 #include "explore/raypipe_fidelity.h"
 #include "explore/raypipe_frame.h"
+#include "explore/raypipe_row.h"
 #include "run/fidelity_study.h"
 #include "run/lt_simulation.h"
-#include "sim/raypipe/raypipe_timed.h"
 
 namespace rtu {
 namespace {
@@ -108,11 +108,7 @@ std::vector<double> plannedFractions(const std::vector<double>& asked, bool give
 // timed model and the golden traversal on the frame; an error after the table when they differ.
 void raypipeFidelity(const Configuration& configuration, const std::string& csv) {
   const RunConfig& settings = configuration.values();
-  settings.camera.validate();
-  checkRaypipeTimedTakes(settings.raypipe);
-  if (recordedWorkload(settings))
-    throw std::invalid_argument("jobs, rays: the ray pipe traces its primary ray generator's "
-                                "frame, not a recorded workload");
+  checkRaypipeFrameRuns(settings);
   std::vector<NamedPath> inputs = inputPaths(settings);
   inputs.push_back({"--accel-file", settings.accel.file});
   checkOutputPaths({{"--csv", csv}}, inputs);

@@ -244,9 +244,6 @@ void runRaypipeFps(const Configuration& base, const FpsOptions& options, bool re
   if (simulateGiven)
     throw std::invalid_argument("--simulate: the ray pipe's rows always run its timed model, "
                                 "which is exact");
-  if (recordedWorkload(base.values()))
-    throw std::invalid_argument("jobs, rays: the ray pipe traces its primary ray generator's "
-                                "frame, not a recorded workload");
   const std::string jsonLines = options.csv.empty() ? "" : jsonLinesPath(options.csv);
   std::vector<NamedPath> inputs = inputPaths(base.values());
   inputs.push_back({"--accel-file", base.values().accel.file});

@@ -19,6 +19,7 @@
 #include "raypipe/raypipe_statistics.h"
 #include "raypipe/simple_shader.h"
 #include "run/statistics_output.h"
+#include "sim/raypipe/raypipe_timed.h"
 
 namespace rtu {
 namespace {
@@ -140,6 +141,13 @@ void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::
   out << line;
 }
 
+// The timed frame's statistics (raypipe/raypipe_statistics.h) as a run's JSON, as a row has them.
+void writeStats(const RaypipeCycleRun& run, const Configuration& configuration,
+                const std::string& path) {
+  const RaypipeStatistics statistics = RaypipeStatistics::of(run, configuration.values().raypipe);
+  writeTextFile(path, runJson(statisticsJson(statistics), configuration).dump(2) + "\n");
+}
+
 std::vector<std::string> extraColumns(bool timed) {
   std::vector<std::string> columns = {"x",      "y",       "box_miss", "nodes", "triangle_tests",
                                       "pushes", "restarts"};
@@ -241,6 +249,7 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
                    std::ostream& out) {
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
+  if (settings.model == ModelKind::CycleAccurate) checkRaypipeTimedTakes(settings.raypipe);
   const PrgFrameSize size = raypipeFrameSize(settings);
   const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
   const RaypipeScene scene = loadRaypipeScene(settings, options.accelFile);
@@ -257,12 +266,7 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
   if (settings.model == ModelKind::CycleAccurate) {
     timed = timedFrame(scene, rays, settings.raypipe, frame);
     reportTiming(*timed, settings.raypipe, out);
-    if (!statsPath.empty())
-      writeTextFile(statsPath,
-                    runJson(statisticsJson(RaypipeStatistics::of(*timed, settings.raypipe)),
-                            configuration)
-                            .dump(2) +
-                        "\n");
+    if (!statsPath.empty()) writeStats(*timed, configuration, statsPath);
   }
   if (!options.resultsCsv.empty())
     writeResultsCsv(options.resultsCsv, resultRows(frame, timed ? &*timed : nullptr),

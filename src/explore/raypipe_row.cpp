@@ -10,9 +10,16 @@
 
 namespace rtu {
 
-void validateRaypipeRow(const RunConfig& settings) {
+void checkRaypipeFrameRuns(const RunConfig& settings) {
   settings.camera.validate();
   checkRaypipeTimedTakes(settings.raypipe);
+  if (recordedWorkload(settings))
+    throw std::invalid_argument("jobs, rays: the ray pipe traces its primary ray generator's "
+                                "frame, not a recorded workload");
+}
+
+void validateRaypipeRow(const RunConfig& settings) {
+  checkRaypipeFrameRuns(settings);
   if (settings.model != ModelKind::CycleAccurate)
     throw std::invalid_argument(std::string("model = ") + toString(settings.model) +
                                 ": the ray pipe's rows run its timed model (model = ca); golden "
@@ -21,9 +28,6 @@ void validateRaypipeRow(const RunConfig& settings) {
     throw std::invalid_argument(
         "sample.fraction: the ray pipe's timed model is exact and costs per ray; it has no "
         "sampled mode");
-  if (recordedWorkload(settings))
-    throw std::invalid_argument("jobs, rays: the ray pipe traces its primary ray generator's "
-                                "frame, not a recorded workload");
 }
 
 nlohmann::ordered_json runRaypipeRow(const Configuration& configuration, const FrameScene& scene) {

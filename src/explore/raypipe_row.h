@@ -11,9 +11,13 @@
 
 namespace rtu {
 
-// Throws std::invalid_argument when a row of the pipe cannot run whatever the scene: settings the
-// pipe or its timed model refuse, the frame's camera, a model other than ca (golden has no cycles,
-// and the pipe has no loosely-timed form), a sample, a recorded workload.
+// Throws std::invalid_argument when the pipe's timed frame cannot run whatever the scene: settings
+// the pipe or its timed model refuse, the frame's camera, a recorded workload (jobs, rays).
+void checkRaypipeFrameRuns(const RunConfig& settings);
+
+// Throws std::invalid_argument when a row of the pipe cannot run whatever the scene: as
+// checkRaypipeFrameRuns, and a model other than ca (golden has no cycles, and the pipe has no
+// loosely-timed form) or a sample.
 void validateRaypipeRow(const RunConfig& settings);
 
 // The run JSON with "status": "ok" of the frame on `scene` (loadFrameScene's for the pipe).
