@@ -8,7 +8,6 @@ set -euo pipefail
 rtusim=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/shell_test_helpers.sh"
-# Depth 3: at depth 4 a ray reaches a leaf with no triangle, which the timed model refuses.
 scene=(--scene sphere --depth 3 --index wide)
 
 # render --stats: the timed frame's statistics, as the timing line says.

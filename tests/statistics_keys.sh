@@ -17,7 +17,6 @@ python3 "$here/statistics_keys.py" cached.json sampled.jsonl >keys.txt
 diff "$here/data/statistics_keys.txt" keys.txt >keys.diff \
   || { cat keys.diff >&2; fail "the statistics keys differ from tests/data/statistics_keys.txt"; }
 
-# Depth 3: at depth 4 a ray reaches a leaf with no triangle, which the pipe's timed model refuses.
 pipe=(--preset trayracer --scene sphere --depth 3 --index wide)
 "$rtusim" render "${pipe[@]}" --level 0 --stats pipe.json >/dev/null
 "$rtusim" fps "${pipe[@]}" --resolutions 20x15 --csv pipe.csv -j 1 >/dev/null 2>&1
