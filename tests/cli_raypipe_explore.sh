@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Seed 001's ray pipe explored (issue 29): `fps --architecture raypipe` (rows per resolution, the
 # seed's levels by default, on the pipe's timed model), `sweep` over raypipe.* keys through the
-# same workers, `render --stats` with the pipe's statistics, and `fidelity`: the timed model and
+# same workers (beside the RTU's rows), `render --stats` with the pipe's statistics, and `fidelity`: the timed model and
 # the golden traversal against the per-cycle reference. Small frames (20x15 to 60x45) of a voxel
 # sphere's faces, so that it runs in a few seconds. Usage: cli_raypipe_explore.sh path/to/rtusim
 set -euo pipefail
@@ -84,6 +84,15 @@ assert all(r["status"] == "ok" and r["rays"] == "300" for r in rows.values())
 assert int(rows[("512", "4")]["total_cycles"]) == int(sys.argv[2])
 for depth in ("1", "4"):
     assert int(rows[("4", depth)]["total_cycles"]) > int(rows[("512", depth)]["total_cycles"])
+PY
+# The pipe and the RTU in one sweep: each row answered by its own model.
+"$rtusim" sweep --scene sphere --depth 3 --width 40 --height 30 --grid architecture=rtu,raypipe \
+  --out mixed.csv -j 2 >mixed.txt 2>mixed.err
+python3 - mixed.csv <<'PY' || fail "mixed sweep"
+import csv, sys
+rows = {r["architecture"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert rows["rtu"]["answered_by"] == "systemc" and rows["raypipe"]["answered_by"] == "raypipe"
+assert all(r["status"] == "ok" and r["rays"] == "1200" for r in rows.values()), rows
 PY
 # A setting the timed model refuses is an invalid row, refused before it runs.
 expect_error "1 rows failed, the first: raypipe.traversal_units" "$rtusim" sweep \
