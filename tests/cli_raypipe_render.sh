@@ -5,7 +5,7 @@
 # pixel ids in the primary ray generator's order; the same rays from the scene built before (a k-d
 # image, the seed's scene file: --accel-file); the trayracer preset; the same frame on the pipe's
 # timed model (--model ca) with its cycles; --model lt refused before any work, and the pipe by
-# the commands that run only the RTU; a ray pipe setting under the RTU reported as having no effect.
+# a command that runs only the RTU; a ray pipe setting under the RTU reported as having no effect.
 # Usage: cli_raypipe_render.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -96,11 +96,9 @@ expect_error "no loosely-timed form" \
 expect_error "written for --architecture raypipe" \
   "$rtusim" render --model golden "${frame[@]}" --results-csv rtu.csv
 
-# The commands that run only the RTU refuse the pipe rather than run the RTU in its place.
-expect_error "rtusim fps runs the RTU only" "$rtusim" fps --preset trayracer --model golden \
-  "${frame[@]}"
-expect_error "rtusim sweep runs the RTU only" "$rtusim" sweep --model golden "${frame[@]}" \
-  --width 8 --height 8 --grid architecture=rtu,raypipe --out rows.csv
+# The commands that run only the RTU refuse the pipe rather than run the RTU in its place (fps,
+# sweep and fidelity run it: cli_raypipe_explore.sh).
+expect_error "rtusim accuracy runs the RTU only" "$rtusim" accuracy --preset trayracer
 
 # A ray pipe setting with the RTU has no effect, and says so.
 "$rtusim" render --model golden --scene sphere --depth 4 --width 16 --height 12 \

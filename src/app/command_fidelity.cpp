@@ -12,6 +12,9 @@
 #include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/frame_scene.h"
+#include "explore/raypipe_fidelity.h"
+#include "explore/raypipe_frame.h"
+#include "explore/raypipe_row.h"
 #include "run/fidelity_study.h"
 #include "run/lt_simulation.h"
 
@@ -101,6 +104,29 @@ std::vector<double> plannedFractions(const std::vector<double>& asked, bool give
   return planned;
 }
 
+// fidelity --architecture raypipe (explore/raypipe_fidelity.h): the per-cycle reference, the
+// timed model and the golden traversal on the frame; an error after the table when they differ.
+void raypipeFidelity(const Configuration& configuration, const std::string& csv) {
+  const RunConfig& settings = configuration.values();
+  checkRaypipeFrameRuns(settings);
+  std::vector<NamedPath> inputs = inputPaths(settings);
+  inputs.push_back({"--accel-file", settings.accel.file});
+  checkOutputPaths({{"--csv", csv}}, inputs);
+  const FrameScene scene = loadFrameScene(settings);
+  const PrgFrameSize size = raypipeFrameSize(settings);
+  std::cout << "scene " << scene.name << ", " << size.width << "x" << size.height
+            << ", ray pipe (seed 001); errors against its per-cycle reference\n";
+  const std::vector<ModeFidelity> modes = measureRaypipeFidelity(settings, scene);
+  printTable(modes, std::cout);
+  if (!csv.empty()) {
+    writeCsv(modes, csv);
+    std::cout << "wrote " << csv << "\n";
+  }
+  if (!raypipeModesAgree(modes))
+    throw std::logic_error("the ray pipe's timed model, its per-cycle reference and its golden "
+                           "traversal differ on this frame: a model defect (docs/raypipe.md)");
+}
+
 }  // namespace
 
 void addFidelityCommand(CLI::App& app) {
@@ -114,7 +140,8 @@ void addFidelityCommand(CLI::App& app) {
       "fidelity",
       "one frame answered by every mode (SystemC, recurrence, loosely-timed, sampled, golden), "
       "each measured "
-      "against the cycle-accurate SystemC model: speed and error");
+      "against the cycle-accurate SystemC model: speed and error (seed 001's ray pipe: its "
+      "timed model and golden traversal against its per-cycle reference)");
   auto request = addConfigOptions(*command,
                                   kUseModel | kUseArithmetic | kUseScene | kUseCamera |
                                       kUseSampling | kUseAccel | kUseBuffers,
@@ -136,6 +163,12 @@ void addFidelityCommand(CLI::App& app) {
   command->callback([options, request, fractionsOption, quantaOption] {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
+    if (settings.architecture == Architecture::Raypipe) {
+      if (quantaOption->count() > 0 || fractionsOption->count() > 0)
+        throw std::invalid_argument("--quanta, --fractions: the ray pipe has no loosely-timed or "
+                                    "sampled mode; its timed model is exact (docs/raypipe.md)");
+      return raypipeFidelity(configuration, options->csv);
+    }
     settings.camera.validate();
     validate(settings.rtu);
     checkOutputPaths({{"--csv", options->csv}}, inputPaths(settings));

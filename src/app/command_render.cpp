@@ -123,9 +123,10 @@ void addRenderCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     const bool raypipe = settings.architecture == Architecture::Raypipe;
-    if (raypipe)
+    if (raypipe) {
       checkRaypipeModel(settings.model);
-    else
+      checkRaypipeOutputs(options->outputs);
+    } else
       checkRaypipeOnly(options->raypipe);
     checkOutputsOfModel(*options, *request, configuration);
     if (raypipe) {
@@ -134,7 +135,7 @@ void addRenderCommand(CLI::App& app) {
       checkOutputPaths(options->outputPaths(), inputs);
       options->checkImageFormats();
       renderRaypipe(configuration, {options->image, options->depthImage, options->costImage},
-                    options->raypipe, std::cout);
+                    options->raypipe, options->outputs.statsPath, std::cout);
       return;
     }
     settings.camera.validate();

@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "explore/animation_run.h"
 #include "explore/exploration_run.h"
+#include "raypipe/raypipe_statistics.h"
 #include "run/rtu_statistics.h"
 #include "run/sampled_run.h"
 #include "run/statistics_output.h"
@@ -26,6 +27,9 @@ void listAllStatistics(std::ostream& out) {
   out << "\n";
   listStatistics(out, "# " + FrameStatistics::declaration().title(),
                  FrameStatistics::declaration().statistics());
+  out << "\n";
+  listStatistics(out, "# " + RaypipeStatistics::declaration().title(),
+                 RaypipeStatistics::declaration().statistics());
   out << "\n# the statistics columns of fps --csv and sweep --out (CSV)\n"
       << std::left << std::setw(28) << "column"
       << "key\n";

@@ -4,7 +4,6 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -13,87 +12,17 @@
 
 #include "app/frame_images.h"
 #include "app/results_csv.h"
-#include "base/binary_file.h"
-#include "explore/accel_build.h"
-#include "kinds/kd/kd_image.h"
+#include "base/output_file.h"
+#include "config/run_json.h"
+#include "explore/raypipe_frame.h"
 #include "raypipe/raypipe_golden.h"
+#include "raypipe/raypipe_statistics.h"
 #include "raypipe/simple_shader.h"
+#include "run/statistics_output.h"
 #include "sim/raypipe/raypipe_timed.h"
 
 namespace rtu {
 namespace {
-
-// The scene as the pipe reads it: the memory image of its Tray Racer scene file and, for the
-// shaded image, each triangle's normal in world space (none from a k-d image).
-struct RaypipeScene {
-  std::string name, description;
-  std::vector<uint32_t> image;
-  std::vector<glm::dvec3> normals;
-  std::vector<std::string> warnings;
-};
-
-RaypipeScene loadRaypipeScene(const RunConfig& settings) {
-  TriangleScene triangles = loadSceneTriangles(settings);
-  AccelSpec spec = settings.accel;
-  spec.structure = "kdtree";
-  const AccelBuild build = buildAccel(triangles.mesh, spec);
-  const TrayRacerFormat format = spec.index == "wide" ? TrayRacerFormat::Wide
-                                                      : TrayRacerFormat::Narrow;
-  RaypipeScene scene;
-  scene.name = triangles.name;
-  scene.description =
-      build.description + ", " + std::to_string(triangles.mesh.triangles.size()) + " triangles";
-  // Read back from the file, as the hardware loads it: a narrow file's splits keep 28 bits.
-  scene.image = layOutKd(readTrayRacerScene(build.sceneFile, format)).words;
-  for (const auto& triangle : triangles.mesh.triangles) {
-    const glm::dvec3& a = triangles.mesh.vertices[triangle[0]];
-    scene.normals.push_back(glm::cross(triangles.mesh.vertices[triangle[1]] - a,
-                                       triangles.mesh.vertices[triangle[2]] - a));
-  }
-  scene.warnings = build.warnings;
-  return scene;
-}
-
-void checkImage(const std::vector<uint32_t>& words, const std::string& path) {
-  const std::vector<ImageProblem> problems = validateKd(words);
-  if (!problems.empty())
-    throw std::runtime_error(
-        path + ": not a sound k-d scene: " + problems.front().what +
-        (problems.size() > 1 ? " (and more: rtusim validate lists them)" : ""));
-}
-
-// A k-d image (its magic first), which holds no normals, or the seed's scene file (big-endian
-// words), whose colour section does (vertex 0's).
-RaypipeScene loadSceneFile(const std::string& path, const RunConfig& settings) {
-  std::vector<uint32_t> words = readWordFile(path, sizeof(uint32_t), "k-d image or scene file");
-  RaypipeScene scene;
-  scene.name = path;
-  if (!words.empty() && words[0] == kKdMagic) {
-    checkImage(words, path);
-    const KdHeader header = decodeKdHeader(words.data());
-    scene.description = "k-d image, " + std::to_string(header.uttmCount) + " triangles";
-    scene.image = std::move(words);
-    return scene;
-  }
-  const bool wide = settings.accel.index == "wide";
-  std::vector<uint8_t> bytes(words.size() * sizeof(uint32_t));
-  std::memcpy(bytes.data(), words.data(), bytes.size());
-  const TrayRacerScene file =
-      readTrayRacerScene(bytes, wide ? TrayRacerFormat::Wide : TrayRacerFormat::Narrow);
-  scene.description = std::string("the Tray Racer's scene file (") + (wide ? "wide" : "narrow") +
-                      "), " + std::to_string(file.uttms.size()) + " triangles";
-  scene.image = layOutKd(file).words;
-  checkImage(scene.image, path);  // a child or a list entry out of range
-  for (const TrayRacerShade& shade : file.shades) scene.normals.push_back(trayRacerNormal(shade));
-  scene.warnings = trayRacerCapacityWarnings(file);
-  return scene;
-}
-
-PrgFrameSize frameSize(const RunConfig& settings) {
-  const int level = settings.raypipeView.level;
-  return level >= 0 ? prgLevelSize(level)
-                    : PrgFrameSize{settings.camera.width, settings.camera.height};
-}
 
 // Each component in its shortest exact form.
 std::string registerText(const std::array<float, 3>& value) {
@@ -119,7 +48,7 @@ std::string perRay(uint64_t count, uint64_t rays) {
 
 void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeCamera& registers,
             const RaypipeGoldenFrame& frame, double seconds, std::ostream& out) {
-  const PrgFrameSize size = frameSize(settings);
+  const PrgFrameSize size = raypipeFrameSize(settings);
   const RaypipeConfig& pipe = settings.raypipe;  // its short stack
   const RaypipeFrameTotals& t = frame.totals;
   const std::string level = settings.raypipeView.level >= 0
@@ -152,12 +81,7 @@ void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeC
 // must be the golden frame's, pixel by pixel: anything else is a model defect, never a number.
 RaypipeCycleRun timedFrame(const RaypipeScene& scene, const std::vector<PrimaryRay>& rays,
                            const RaypipeConfig& config, const RaypipeGoldenFrame& golden) {
-  std::vector<RaypipeCycleRay> input;
-  input.reserve(rays.size());
-  for (const PrimaryRay& ray : rays) input.push_back({ray.ray, ray.pixel.pixelId});
-  RaypipeCycleOptions options;
-  options.writer = {config.vgaWindow, config.vgaPhase};
-  RaypipeCycleRun run = runRaypipeTimed(config, KdImage{scene.image}, input, options);
+  RaypipeCycleRun run = runRaypipeFrame(config, scene.image, rays);
   for (size_t i = 0; i < run.results.size(); ++i) {
     const RaypipeCycleResult& timed = run.results[i];
     const RaypipePixel& expected = golden.pixels[i];
@@ -215,6 +139,13 @@ void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::
   std::snprintf(line, sizeof line, "host        %.3f s timed model, %.2f M rays/s\n",
                 run.hostSeconds, run.results.size() / run.hostSeconds / 1e6);
   out << line;
+}
+
+// The timed frame's statistics (raypipe/raypipe_statistics.h) as a run's JSON, as a row has them.
+void writeStats(const RaypipeCycleRun& run, const Configuration& configuration,
+                const std::string& path) {
+  const RaypipeStatistics statistics = RaypipeStatistics::of(run, configuration.values().raypipe);
+  writeTextFile(path, runJson(statisticsJson(statistics), configuration).dump(2) + "\n");
 }
 
 std::vector<std::string> extraColumns(bool timed) {
@@ -303,14 +234,25 @@ void checkRaypipeModel(ModelKind model) {
                                 "model (--model ca) is exact and costs per ray already");
 }
 
+void checkRaypipeOutputs(const RunOutputs& outputs) {
+  if (!outputs.vcdPath.empty() || !outputs.timelinePath.empty() || !outputs.needingOutput.empty())
+    throw std::invalid_argument(
+        (outputs.needingOutput.empty()
+             ? std::string(outputs.vcdPath.empty() ? "--timeline" : "--trace")
+             : outputs.needingOutput) +
+        ": the ray pipe has no trace or timeline yet (docs/raypipe.md); --stats and "
+        "--results-csv give its timing");
+}
+
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
-                   const RaypipeRenderOptions& options, std::ostream& out) {
+                   const RaypipeRenderOptions& options, const std::string& statsPath,
+                   std::ostream& out) {
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
-  const PrgFrameSize size = frameSize(settings);
+  if (settings.model == ModelKind::CycleAccurate) checkRaypipeTimedTakes(settings.raypipe);
+  const PrgFrameSize size = raypipeFrameSize(settings);
   const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
-  const RaypipeScene scene = options.accelFile.empty() ? loadRaypipeScene(settings)
-                                                       : loadSceneFile(options.accelFile, settings);
+  const RaypipeScene scene = loadRaypipeScene(settings, options.accelFile);
   const std::vector<PrimaryRay> rays = primaryRays(registers, size);
   const auto start = std::chrono::steady_clock::now();
   if (scene.normals.empty() && !options.shadedImage.empty())
@@ -324,6 +266,7 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
   if (settings.model == ModelKind::CycleAccurate) {
     timed = timedFrame(scene, rays, settings.raypipe, frame);
     reportTiming(*timed, settings.raypipe, out);
+    if (!statsPath.empty()) writeStats(*timed, configuration, statsPath);
   }
   if (!options.resultsCsv.empty())
     writeResultsCsv(options.resultsCsv, resultRows(frame, timed ? &*timed : nullptr),
@@ -335,8 +278,8 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
     if (!images.depthImage.empty()) writeDepthImage(rendered, images.depthImage);
     if (!images.costImage.empty()) writeCostImage(rendered, images.costImage);
   }
-  for (const std::string* path : {&options.resultsCsv, &images.image, &options.shadedImage,
-                                  &images.depthImage, &images.costImage})
+  for (const std::string* path : {&statsPath, &options.resultsCsv, &images.image,
+                                  &options.shadedImage, &images.depthImage, &images.costImage})
     if (!path->empty()) out << "wrote       " << *path << "\n";
 }
 

@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/output_paths.h"
+#include "app/run_outputs.h"
 #include "config/configuration.h"
 
 namespace rtu {
@@ -48,9 +49,15 @@ struct FrameImagePaths {
   std::string image, depthImage, costImage;
 };
 
-// Renders the frame `configuration` describes on the ray pipe's golden model and writes the
-// outputs asked for; the report goes to `out`.
+// Renders the frame `configuration` describes on the ray pipe's golden model (and, with --model
+// ca, its timed model) and writes the outputs asked for: with `statsPath`, the timed frame's
+// statistics (raypipe/raypipe_statistics.h) as a run's JSON; the report goes to `out`.
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
-                   const RaypipeRenderOptions& options, std::ostream& out);
+                   const RaypipeRenderOptions& options, const std::string& statsPath,
+                   std::ostream& out);
+
+// Throws std::invalid_argument for an output of the RTU's timed models the pipe has no form of
+// (--trace, --timeline and the options that shape them).
+void checkRaypipeOutputs(const RunOutputs& outputs);
 
 }  // namespace rtu

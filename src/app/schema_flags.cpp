@@ -52,13 +52,15 @@ Configuration ConfigRequest::resolveUnchecked() const {
 
 void checkArchitectureRuns(const Configuration& configuration, const std::string& command,
                            unsigned uses) {
-  // Only render runs the ray pipe so far; the others would run the RTU in its place.
+  // The commands that run the ray pipe (docs/raypipe.md); the others would run the RTU in its
+  // place.
+  static const std::set<std::string> runPipe = {"render", "fps", "sweep", "fidelity", "config"};
   const bool runsArchitecture = (uses & (kUseModel | kUseArithmetic)) != 0;
   if (configuration.values().architecture == Architecture::Raypipe && runsArchitecture &&
-      command != "render" && command != "config")
+      !runPipe.count(command))
     throw std::invalid_argument("architecture = raypipe: rtusim " + command +
-                                " runs the RTU only; seed 001's ray pipe renders with rtusim "
-                                "render (docs/raypipe.md)");
+                                " runs the RTU only; seed 001's ray pipe runs in rtusim render, "
+                                "fps, sweep and fidelity (docs/raypipe.md)");
 }
 
 std::shared_ptr<ConfigRequest> addConfigOptions(CLI::App& command, unsigned uses,

@@ -34,7 +34,8 @@ struct ConfigRequest {
 };
 
 // Throws std::invalid_argument for architecture = raypipe in a command (of settings `uses`) that
-// runs only the RTU: every one that runs a model but render (and config, which runs none).
+// runs only the RTU: every one that runs a model but render, fps, sweep and fidelity (and config,
+// which runs none).
 void checkArchitectureRuns(const Configuration& configuration, const std::string& command,
                            unsigned uses);
 

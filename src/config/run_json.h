@@ -11,5 +11,9 @@ namespace rtu {
 
 // {"rtusim": {"version"}, "preset": name or "", "config": {every key}, "statistics": {...}}.
 nlohmann::ordered_json runJson(const RtuStatistics& statistics, const Configuration& configuration);
+// The same around statistics written as JSON already (the ray pipe's:
+// raypipe/raypipe_statistics.h).
+nlohmann::ordered_json runJson(nlohmann::ordered_json statistics,
+                               const Configuration& configuration);
 
 }  // namespace rtu

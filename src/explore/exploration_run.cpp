@@ -9,6 +9,8 @@
 #include "base/binary_file.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
+#include "explore/raypipe_frame.h"
+#include "explore/raypipe_row.h"
 #include "explore/sweep_workers.h"
 #include "run/analytic_run.h"
 #include "run/rtu_simulation.h"
@@ -19,8 +21,12 @@ namespace {
 
 // A row's work for the progress line's ETA: the rays of its frame.
 double rowRays(const Configuration& configuration) {
-  const Camera& camera = configuration.values().camera;
-  return static_cast<double>(camera.width) * static_cast<double>(camera.height);
+  const RunConfig& settings = configuration.values();
+  if (settings.architecture == Architecture::Raypipe) {
+    const PrgFrameSize size = raypipeFrameSize(settings);
+    return static_cast<double>(size.width) * static_cast<double>(size.height);
+  }
+  return static_cast<double>(settings.camera.width) * static_cast<double>(settings.camera.height);
 }
 
 }  // namespace
@@ -94,6 +100,7 @@ void SceneCache::load(const std::string& directory) {
 
 void validateRow(const Configuration& configuration) {
   const RunConfig& settings = configuration.values();
+  if (settings.architecture == Architecture::Raypipe) return validateRaypipeRow(settings);
   settings.camera.validate();
   validate(settings.rtu);
   if (settings.model != ModelKind::CycleAccurate && settings.sample.enabled())
@@ -120,6 +127,7 @@ std::vector<size_t> validRows(
 nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
                                    RowModel model) {
   const RunConfig& settings = configuration.values();
+  if (settings.architecture == Architecture::Raypipe) return runRaypipeRow(configuration, scene);
   validateRow(configuration);
   const std::vector<HostRecord> records = frameRecords(scene, settings);
   const WordMemory memory = scene.memory();

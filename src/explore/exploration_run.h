@@ -1,7 +1,8 @@
 #pragma once
 // One row of an exploration (fps, sweep): the configured camera's frame of primary rays on a
-// scene built for the row's core kind (frame_scene.h), simulated on the cycle-accurate model; the
-// row is the run's JSON (version, effective configuration, statistics), the same a single `render
+// scene built for the row's core kind (frame_scene.h), simulated on the cycle-accurate model, or,
+// with architecture = raypipe, the ray pipe's frame on its timed model (raypipe_row.h); the row is
+// the run's JSON (version, effective configuration, statistics), the same a single `render
 // --stats` writes.
 
 #include <functional>
@@ -48,7 +49,8 @@ nlohmann::ordered_json runRowSafely(const Configuration& configuration, const Sc
                                     RowModel model = RowModel::Simulation);
 
 // Throws std::invalid_argument when the configuration cannot run whatever the scene: its camera,
-// its RTU (rtu/validate) or a sample on a model other than the cycle-accurate one.
+// its RTU (rtu/validate) or a sample on a model other than the cycle-accurate one; for the ray
+// pipe, validateRaypipeRow.
 void validateRow(const Configuration& configuration);
 // The rows of `rows` whose configuration is valid; each other one goes to `invalid` at once as an
 // "invalid" row with its error.

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "explore/accel_build.h"
+#include "explore/raypipe_frame.h"
 #include "geometry/ray_sets.h"
 #include "inputs/camera.h"
 #include "inputs/host_buffers.h"
@@ -98,9 +99,22 @@ struct FrameSceneOf<SvoKind> {
   }
 };
 
+// The ray pipe's (raypipe_frame.h): its k-d image, built from the scene's triangles or read from
+// accel_file (a k-d image or the seed's scene file). Its rays are the PRG's, made by its rows.
+FrameScene raypipeFrameScene(const RunConfig& settings) {
+  RaypipeScene pipe = loadRaypipeScene(settings, settings.accel.file);
+  FrameScene scene;
+  scene.core = kRaypipeSceneCore;
+  scene.words = std::move(pipe.image);
+  scene.name = std::move(pipe.name);
+  scene.description = std::move(pipe.description);
+  return scene;
+}
+
 }  // namespace
 
 FrameScene loadFrameScene(const RunConfig& settings) {
+  if (settings.architecture == Architecture::Raypipe) return raypipeFrameScene(settings);
   FrameScene scene = withCoreKind(settings.rtu.core, [&settings](auto kind) {
     return FrameSceneOf<decltype(kind)>::load(settings);
   });
@@ -138,8 +152,11 @@ std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& s
 std::string frameSceneKey(const RunConfig& settings) {
   const SceneSpec& spec = settings.scene;
   const AccelSpec& accel = settings.accel;
-  return settings.rtu.core + "|" + spec.procedural + "|" + spec.svoFile + "|" + spec.meshFile +
-         "|" + spec.binvoxFile + "|" + std::to_string(spec.depth) + "|" +
+  const std::string pipe = settings.architecture == Architecture::Raypipe
+                               ? std::string(kRaypipeSceneCore) + "|" + accel.file + "|"
+                               : std::string();
+  return pipe + settings.rtu.core + "|" + spec.procedural + "|" + spec.svoFile + "|" +
+         spec.meshFile + "|" + spec.binvoxFile + "|" + std::to_string(spec.depth) + "|" +
          std::to_string(spec.seed) + "|" + std::to_string(spec.root) + "|" +
          std::to_string(spec.maxDepth) + "|" + accel.builder + "|" +
          std::to_string(accel.dropBadTriangles) + "|" +

@@ -24,8 +24,11 @@
 
 namespace rtu {
 
+// FrameScene::core of the ray pipe's scene (architecture = raypipe): its k-d image.
+inline constexpr const char* kRaypipeSceneCore = "raypipe";
+
 struct FrameScene {
-  std::string core;             // the kind it is built for
+  std::string core;             // the kind it is built for, or kRaypipeSceneCore
   std::vector<uint32_t> words;  // the memory image
   uint32_t entry = 0;           // where a frame's records point: the octree's root, a model header
   std::string name;             // "menger (depth 8)", "bunny.ply"
@@ -37,9 +40,11 @@ struct FrameScene {
   WordMemory memory() const { return WordMemory(words); }
 };
 
-// The scene `settings` name for the kind settings.rtu.core. Throws std::invalid_argument for a
-// scene the kind cannot take (an .svo file for a triangle kind) and what the loaders and builders
-// throw (a mesh with degenerate or duplicate triangles names --drop-bad-triangles).
+// The scene `settings` name for the kind settings.rtu.core, or for the ray pipe
+// (explore/raypipe_frame.h: the Tray Racer's k-d image, built or read from accel_file). Throws
+// std::invalid_argument for a scene the kind cannot take (an .svo file for a triangle kind) and
+// what the loaders and builders throw (a mesh with degenerate or duplicate triangles names
+// --drop-bad-triangles).
 FrameScene loadFrameScene(const RunConfig& settings);
 
 // Whether `settings` name a recorded workload (a job buffer, `jobs`, or a ray buffer, `rays`)

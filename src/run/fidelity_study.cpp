@@ -25,21 +25,6 @@ std::vector<double> rayCycles(const RtuRun& run) {
   return cycles;
 }
 
-// Mean and 99th percentile of |mode - reference| / reference over the rays.
-std::pair<double, double> relativeErrors(const std::vector<double>& mode,
-                                         const std::vector<double>& reference) {
-  std::vector<double> errors(mode.size());
-  double sum = 0;
-  for (size_t i = 0; i < mode.size(); ++i) {
-    errors[i] = reference[i] > 0 ? std::abs(mode[i] - reference[i]) / reference[i] : 0.0;
-    sum += errors[i];
-  }
-  if (errors.empty()) return {0, 0};
-  const size_t p99 = std::min(errors.size() - 1, errors.size() * 99 / 100);
-  std::nth_element(errors.begin(), errors.begin() + static_cast<ptrdiff_t>(p99), errors.end());
-  return {sum / static_cast<double>(errors.size()), errors[p99]};
-}
-
 class Study {
  public:
   Study(const WordMemory& memory, const std::vector<HostRecord>& jobs, const RtuConfig& config)
@@ -51,7 +36,7 @@ class Study {
 
   ModeFidelity exact(const std::string& mode, const RtuRun& run, double seconds) {
     ModeFidelity m = timed(mode, seconds, static_cast<double>(run.totalCycles), run.statistics);
-    const auto [mean, p99] = relativeErrors(rayCycles(run), referenceCycles_);
+    const auto [mean, p99] = perRayErrors(rayCycles(run), referenceCycles_);
     m.perRayErrorMean = mean;
     m.perRayErrorP99 = p99;
     m.resultsEqualGolden = resultsInJobOrder(run) == golden_;
@@ -97,7 +82,7 @@ class Study {
     ModeFidelity m = base("golden", goldenSeconds_);
     std::vector<double> costs(golden_.size());
     for (size_t i = 0; i < golden_.size(); ++i) costs[i] = resultCost(golden_[i]);
-    const auto [mean, p99] = relativeErrors(costs, referenceCycles_);
+    const auto [mean, p99] = perRayErrors(costs, referenceCycles_);
     m.perRayErrorMean = mean;
     m.perRayErrorP99 = p99;
     m.resultsEqualGolden = true;
@@ -141,6 +126,20 @@ class Study {
 };
 
 }  // namespace
+
+std::pair<double, double> perRayErrors(const std::vector<double>& mode,
+                                       const std::vector<double>& reference) {
+  std::vector<double> errors(mode.size());
+  double sum = 0;
+  for (size_t i = 0; i < mode.size(); ++i) {
+    errors[i] = reference[i] > 0 ? std::abs(mode[i] - reference[i]) / reference[i] : 0.0;
+    sum += errors[i];
+  }
+  if (errors.empty()) return {0, 0};
+  const size_t p99 = std::min(errors.size() - 1, errors.size() * 99 / 100);
+  std::nth_element(errors.begin(), errors.begin() + static_cast<ptrdiff_t>(p99), errors.end());
+  return {sum / static_cast<double>(errors.size()), errors[p99]};
+}
 
 std::vector<ModeFidelity> measureFidelity(const WordMemory& memory,
                                           const std::vector<HostRecord>& jobs,

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run/rtu_simulation.h"
@@ -30,6 +31,11 @@ struct ModeFidelity {
   // Per-ray results (hit, t, normal, flags, cost) equal the golden model's; absent: not known.
   std::optional<bool> resultsEqualGolden;
 };
+
+// Mean and 99th percentile of |mode - reference| / reference over the rays (0 where the
+// reference is 0).
+std::pair<double, double> perRayErrors(const std::vector<double>& mode,
+                                       const std::vector<double>& reference);
 
 // The modes in order: systemc, recurrence (where it applies), lt per quantum, sampled per
 // fraction (with `sample` for seed and block sizes), golden: of the kind config.core, whose

@@ -18,6 +18,10 @@
 
 namespace rtu {
 
+// Throws std::invalid_argument for a configuration the model does not take (as runRaypipeTimed),
+// so that a run can refuse it before any work.
+void checkRaypipeTimedTakes(const RaypipeConfig& config);
+
 // Runs one frame. Throws std::invalid_argument for a configuration the model does not take (more
 // than one traversal unit, the set-associative caches, a negative VGA phase), logic_error when the
 // pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, no progress for a

@@ -159,15 +159,19 @@ RaypipeCycleRun TimedPipe::run() {
 
 }  // namespace raypipe_timed
 
-RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
-                                const std::vector<RaypipeCycleRay>& rays,
-                                const RaypipeCycleOptions& options) {
+void checkRaypipeTimedTakes(const RaypipeConfig& config) {
   config.validate();
   if (config.traversalUnits != 1)
     throw std::invalid_argument(
         "raypipe.traversal_units: the timed model models one traversal unit (t5.sv)");
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the timed model models the block RAMs");
+}
+
+RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
+                                const std::vector<RaypipeCycleRay>& rays,
+                                const RaypipeCycleOptions& options) {
+  checkRaypipeTimedTakes(config);
   if (options.writer.vgaPhase < 0)
     throw std::invalid_argument("the VGA phase must not be negative");
   if (options.cyclesSinceReset < 0)

@@ -1,0 +1,185 @@
+#include "raypipe/raypipe_statistics.h"
+
+#include <algorithm>
+
+namespace rtu {
+namespace {
+
+double ratio(uint64_t part, uint64_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+uint64_t counted(int64_t value) { return value < 0 ? 0 : static_cast<uint64_t>(value); }
+
+// The cycles between two items at a unit's full rate: the PRG takes a pixel on v0 and SINT a ray
+// on v2 of the shared phase; every other unit can take one a cycle.
+uint64_t fullRateInterval(const std::string& unit, const RaypipeConfig& config) {
+  if (unit == raypipeUnitName(RaypipeUnit::Prg)) return counted(config.latency.prgInterval);
+  if (unit == raypipeUnitName(RaypipeUnit::Sint)) return counted(config.latency.sintInterval);
+  return 1;
+}
+
+// The first unit of the highest utilisation, in the pipe's order.
+const RaypipeUnitStatistics* busiest(const RaypipeStatistics& s) {
+  const RaypipeUnitStatistics* best = nullptr;
+  for (const RaypipeUnitStatistics& unit : s.units)
+    if (!best || s.utilisation(unit) > s.utilisation(*best)) best = &unit;
+  return best;
+}
+
+}  // namespace
+
+RaypipeStatistics RaypipeStatistics::of(const RaypipeCycleRun& run, const RaypipeConfig& config) {
+  RaypipeStatistics s;
+  s.rays = run.results.size();
+  s.totalCycles = counted(run.frameCycles);
+  s.clockMhz = config.clockMHz;
+  for (const RaypipeCycleResult& r : run.results) {
+    s.hits += r.hit;
+    s.boxMisses += r.boxMiss;
+    s.nodes += r.counts.nodes;
+    s.leaves += r.counts.leaves;
+    s.triangleTests += r.counts.triangleTests;
+    s.pushes += r.counts.pushes;
+    s.dropped += r.counts.dropped;
+    s.restarts += r.counts.restarts;
+  }
+  s.rayIds = counted(config.raysInFlight);
+  s.mostRayIdsHeld = counted(run.maxRaysInFlight);
+  s.lastWriteCycle = counted(run.lastWriteCycle);
+  s.writerWaits = counted(run.writerWaits);
+  s.staleListHits = counted(run.staleListHits);
+  for (const RaypipeUnitActivity& unit : run.units)
+    s.units.push_back(
+        {unit.unit, counted(unit.busy), counted(unit.stall), fullRateInterval(unit.unit, config)});
+  for (const RaypipeFifoPeak& fifo : run.fifos)
+    s.fifos.push_back({fifo.fifo, counted(fifo.depth), counted(fifo.peak)});
+  s.hostSeconds = run.hostSeconds;
+  return s;
+}
+
+double RaypipeStatistics::cyclesPerRay() const { return ratio(totalCycles, rays); }
+double RaypipeStatistics::frameMilliseconds() const {
+  return static_cast<double>(totalCycles) / (clockMhz * 1e3);
+}
+double RaypipeStatistics::framesPerSecond() const {
+  return totalCycles == 0 ? 0.0 : clockMhz * 1e6 / static_cast<double>(totalCycles);
+}
+double RaypipeStatistics::raysPerSecond() const {
+  return static_cast<double>(rays) * framesPerSecond();
+}
+
+double RaypipeStatistics::utilisation(const RaypipeUnitStatistics& unit) const {
+  return ratio(unit.busy * unit.interval, totalCycles);
+}
+
+std::string RaypipeStatistics::limit() const {
+  const RaypipeUnitStatistics* unit = busiest(*this);
+  return unit && utilisation(*unit) >= kSaturated ? unit->unit : "none";
+}
+
+double RaypipeStatistics::limitUtilisation() const {
+  const RaypipeUnitStatistics* unit = busiest(*this);
+  return unit ? utilisation(*unit) : 0.0;
+}
+
+const StatisticGroup<RaypipeUnitStatistics>& RaypipeUnitStatistics::declaration() {
+  using U = RaypipeUnitStatistics;
+  static const StatisticGroup<U> group =
+      StatisticGroup<U>("a unit of the ray pipe")
+          .setting(Statistic("unit", "", "its name (docs/raypipe.md, the units' table)"), &U::unit)
+          .count(Statistic("busy", "cycles", "cycles the unit took an item"), &U::busy)
+          .count(Statistic("stall", "cycles",
+                           "cycles an item was offered to it and not taken (SINT's include the "
+                           "wait for its phase and for a ray id)"),
+                 &U::stall)
+          .setting(Statistic("interval", "cycles",
+                             "cycles between two items at its full rate: latency.prg_interval, "
+                             "latency.sint_interval, 1 for the others"),
+                   &U::interval);
+  return group;
+}
+
+const StatisticGroup<RaypipeFifoStatistics>& RaypipeFifoStatistics::declaration() {
+  using F = RaypipeFifoStatistics;
+  static const StatisticGroup<F> group =
+      StatisticGroup<F>("a FIFO of the ray pipe")
+          .setting(Statistic("fifo", "", "its name"), &F::fifo)
+          .setting(Statistic("depth", "entries", "its depth (raypipe.fifo.*)"), &F::depth)
+          .maximum(Statistic("peak", "entries", "the most entries it held"), &F::peak);
+  return group;
+}
+
+const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
+  using S = RaypipeStatistics;
+  using Unit = PartOf<S, RaypipeUnitStatistics>;
+  static const StatisticGroup<Unit> unitLayout =
+      StatisticGroup<Unit>("a unit of the ray pipe")
+          .own<S, RaypipeUnitStatistics>()
+          .derived(Statistic("utilisation", "", "busy · interval / total_cycles"),
+                   [](const Unit& u) { return u.whole.utilisation(u.values); });
+  static const StatisticGroup<S> group =
+      StatisticGroup<S>(
+          "a frame of the ray pipe (architecture = raypipe): --stats files, \"statistics\" of "
+          "its fps and sweep rows")
+          .count(Statistic("rays", "rays", "the primary ray generator's rays (pixels)"), &S::rays)
+          .count(Statistic("total_cycles", "cycles",
+                           "the frame's cycles: from the PRG's first to the last pixel leaving "
+                           "the shader"),
+                 &S::totalCycles)
+          .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"), &S::cyclesPerRay)
+          .setting(Statistic("clock_mhz", "MHz", "raypipe.clock_mhz"), &S::clockMhz)
+          .derived(Statistic("frame_ms", "ms", "total_cycles at the clock"), &S::frameMilliseconds)
+          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
+                   &S::framesPerSecond)
+          .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
+                   &S::raysPerSecond)
+          .derived(Statistic("limit", "",
+                             "the unit of the highest utilisation, when it reaches 0.8; none "
+                             "below"),
+                   &S::limit)
+          .derived(Statistic("limit_utilisation", "", "the highest utilisation, saturated or not"),
+                   &S::limitUtilisation)
+          .count(Statistic("hits", "rays", "rays that hit a triangle"), &S::hits)
+          .derived(Statistic("misses", "rays", "rays that entered the scene box and hit nothing"),
+                   [](const S& s) { return s.rays - s.hits - s.boxMisses; })
+          .count(Statistic("box_misses", "rays", "rays that missed the scene box (SINT)"),
+                 &S::boxMisses)
+          .count(Statistic("traversal/nodes", "nodes", "node records read, interior and leaf"),
+                 &S::nodes)
+          .count(Statistic("traversal/leaves", "nodes", "of which leaves"), &S::leaves)
+          .count(Statistic("traversal/triangle_tests", "tests", "triangles through INT"),
+                 &S::triangleTests)
+          .count(Statistic("traversal/pushes", "entries", "short-stack pushes"), &S::pushes)
+          .count(Statistic("traversal/dropped", "entries",
+                           "stack entries overwritten by a push onto a full short stack"),
+                 &S::dropped)
+          .count(Statistic("traversal/restarts", "restarts", "restarts from the restart node"),
+                 &S::restarts)
+          .setting(Statistic("ray_ids/available", "ids", "raypipe.rays_in_flight"), &S::rayIds)
+          .maximum(Statistic("ray_ids/most_held", "ids", "the most ray ids held at once"),
+                   &S::mostRayIdsHeld)
+          .count(Statistic("writer/waits", "cycles",
+                           "cycles a pixel waited for the VGA reader (raypipe.vga_window)"),
+                 &S::writerWaits)
+          .maximum(Statistic("writer/last_write_cycle", "cycle",
+                             "the cycle the SRAM writer took the last pixel"),
+                   &S::lastWriteCycle)
+          .count(Statistic("stale_list_hits", "rays",
+                           "rays that ended as a miss with a hit kept in the list record (the "
+                           "RTL would leave it to the id's next ray)"),
+                 &S::staleListHits)
+          .list(Statistic("units", "", "per unit, in the pipe's order"), &S::units, &unitLayout)
+          .list(Statistic("fifos", "", "per FIFO"), &S::fifos)
+          .setting(Statistic("simulation/model", "",
+                             "what answered: raypipe, the pipe's timed model"),
+                   &S::model)
+          .real(Statistic("simulation/host_seconds", "s",
+                          "host time of the run (differs run to run)"),
+                &S::hostSeconds)
+          .derived(Statistic("simulation/rays_per_host_second", "rays/s", "rays per host second"),
+                   [](const S& s) { return s.hostSeconds > 0 ? s.rays / s.hostSeconds : 0.0; });
+  return group;
+}
+
+}  // namespace rtu
