@@ -6,7 +6,9 @@
 // behind the kind's job set-up, and as its oracle the float64 brute force of
 // geometry/triangle_oracle.h by kd_oracle_check.h's rule (test_kd_kind.cpp).
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "inputs/camera.h"
@@ -44,9 +46,8 @@ struct KindFixture<KdKind> {
   // a singular unit-triangle matrix (its N - C lies in the plane), which the voxel scenes' outer
   // faces at +-1 would all have (docs/triangles.md, "The k-d core").
   static Frame frame(const std::string& scene, int detail, int width, int height) {
-    Frame frame{scene, turned(voxelFaces(*makeProceduralScene(scene, detail - 2))), {}, {}, {}};
-    frame.built = build(frame.mesh);
-    frame.words = layOutKd(frame.built).words;
+    const Built& built = builtScene(scene, detail);
+    Frame frame{scene, built.mesh, built.scene, layOutKd(built.scene).words, {}};
     const uint32_t header = appendModelHeader(frame.words, ModelPlacement{}, 0);
     const std::vector<RayRecord> rays = makeFrameRayRecords(fixtureCamera(width, height), header);
     frame.jobs.assign(rays.begin(), rays.end());
@@ -103,6 +104,23 @@ struct KindFixture<KdKind> {
   static void checkOracle();
 
  private:
+  struct Built {
+    TriangleMesh mesh;
+    TrayRacerScene scene;
+  };
+  // Each scene built once per process: the equivalence tests ask for the same frame in hundreds
+  // of sections, and the PBRT build takes far longer than the BVH's.
+  static const Built& builtScene(const std::string& scene, int detail) {
+    static std::map<std::pair<std::string, int>, Built> cache;
+    auto found = cache.find({scene, detail});
+    if (found == cache.end()) {
+      TriangleMesh mesh = turned(voxelFaces(*makeProceduralScene(scene, detail - 2)));
+      TrayRacerScene built = build(mesh);
+      found = cache.emplace(std::make_pair(scene, detail), Built{std::move(mesh), std::move(built)})
+                  .first;
+    }
+    return found->second;
+  }
   static TriangleMesh turned(TriangleMesh mesh) {
     const glm::dmat3 rotation = rotationFromEulerDegrees({20, 30, 10});
     for (glm::dvec3& v : mesh.vertices) v = 0.9 * (rotation * v) + glm::dvec3(0.05, -0.03, 0.02);
