@@ -93,4 +93,5 @@ void checkEqualsRtl(const Run& run, const RtlTopRun& rtl) {
 
 #include "kinds/bih_fixture.h"
 #include "kinds/bvh_fixture.h"
+#include "kinds/kd_fixture.h"
 #include "kinds/svo_fixture.h"

@@ -62,6 +62,22 @@ struct FrameOutputsOf<BihKind<>> {
   }
 };
 
+template <>
+struct FrameOutputsOf<KdKind> {
+  static std::string core(const RunConfig& settings) {
+    const KdTraversalConfig& core = settings.rtu.coreConfig<KdKind>();
+    return "kd core, " + std::to_string(core.stackDepth) + "-entry short stack, triangle unit " +
+           std::to_string(core.cycles.triangleLatency) + " cycles";
+  }
+  static std::string results(const RunConfig&, const std::vector<CoreKindResult>& results) {
+    return describeKdResults(kdResults(results));
+  }
+  static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
+                              const std::vector<CoreKindResult>& results) {
+    return triangleFrame(settings.camera, scene, kdResults(results));
+  }
+};
+
 }  // namespace
 
 std::string describeCore(const RunConfig& settings) {

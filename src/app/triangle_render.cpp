@@ -6,6 +6,7 @@
 
 #include "kinds/bih/bih_counters.h"
 #include "kinds/bvh/bvh_counters.h"
+#include "kinds/kd/kd_counters.h"
 
 namespace rtu {
 namespace {
@@ -75,6 +76,19 @@ std::string describeBihResults(const std::vector<BihResult>& results, uint32_t u
                 static_cast<unsigned long long>(counters.bihStackOverflows),
                 static_cast<unsigned long long>(counters.bihDividerErrors),
                 100.0 * perRay(counters.bihTriangleTests * unitInterval, cycles));
+  return describeTriangleHits(results) + text;
+}
+
+std::string describeKdResults(const std::vector<KdResult>& results) {
+  const auto counters = countersOf<KdCounters>(results);
+  const size_t rays = results.size();
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "kd          %.2f nodes, %.2f triangle tests, %.3f restarts, %.3f short-stack "
+                "drops, %.1f bytes per ray\n",
+                perRay(counters.kdNodesVisited, rays), perRay(counters.kdTriangleTests, rays),
+                perRay(counters.kdRestarts, rays), perRay(counters.kdShortStackDrops, rays),
+                perRay(counters.kdBytesFetched, rays));
   return describeTriangleHits(results) + text;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // The triangle kinds' own outputs of a rendered frame (issue 28): their pixels and report lines,
 // from the results of a frame on the scene frame_scene.h built for the kind (`render --core bvh`,
-// `--core bih`). A pixel takes the hit's distance along the world ray (a BIH result's `distance`,
-// its t being in grid units) and the normal of the hit triangle of the scene's mesh (every kind's
-// `primitive` is the mesh's triangle index).
+// `--core bih`, `--core kd`). A pixel takes the hit's distance along the world ray (a BIH result's
+// `distance`, its t being in grid units) and the normal of the hit triangle of the scene's mesh
+// (every kind's `primitive` is the mesh's triangle index).
 
 #include <algorithm>
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include "explore/frame_scene.h"
 #include "kinds/bih/bih_kind.h"
 #include "kinds/bvh/bvh_kind.h"
+#include "kinds/kd/kd_kind.h"
 
 namespace rtu {
 
@@ -23,6 +24,7 @@ FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uin
 
 inline double worldDistance(const BvhResult& result) { return result.t; }
 inline double worldDistance(const BihResult& result) { return result.distance; }
+inline double worldDistance(const KdResult& result) { return result.t; }
 
 // The frame's pixels from results whose id words are pixel indices.
 template <class Result>
@@ -54,5 +56,6 @@ std::string describeTriangleHits(const std::vector<Result>& results) {
 // fill rate, its tests' issue cycles (`unitInterval` each) over the rays' cycles (their costs).
 std::string describeBvhResults(const std::vector<BvhResult>& results);
 std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval);
+std::string describeKdResults(const std::vector<KdResult>& results);
 
 }  // namespace rtu

@@ -370,10 +370,41 @@ void addSvoSettings(std::vector<Setting>& schema) {
 std::string triangleTestName(const TriangleTest& test) { return toString(test); }
 std::string childOrderName(const ChildOrder& order) { return toString(order); }
 
+// Why a setting of the kinds named `kinds` has no effect in `c`, or empty when it has one.
+std::function<std::string(const RunConfig&)> ignoredUnlessCore(std::vector<std::string> kinds) {
+  return [kinds](const RunConfig& c) {
+    return std::find(kinds.begin(), kinds.end(), c.rtu.core) != kinds.end()
+               ? std::string()
+               : "the core kind is " + c.rtu.core;
+  };
+}
+
+// A unit's cycles that the BVH and k-d cores share (kinds/bvh/bvh_timing.h, kinds/kd/kd_timing.h):
+// one key writes both kinds' settings, and reads the chosen kind's.
+Setting sharedUnitCycles(std::string key, std::string flag, std::string doc,
+                         uint32_t BvhCycles::*bvh, uint32_t KdCycles::*kd) {
+  using C = RunConfig;
+  Setting s =
+      integer(key, flag, "cycles", 1, kMaxBvhUnitCycles, kUseArithmetic, doc,
+              [bvh](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.*bvh; });
+  const Setting kdView =
+      integer(key, flag, "cycles", 1, kMaxKdUnitCycles, kUseArithmetic, doc,
+              [kd](C& c) -> uint32_t& { return c.rtu.coreConfig<KdKind>().cycles.*kd; });
+  s.get = [bvhGet = s.get, kdGet = kdView.get](const C& c) {
+    return c.rtu.core == KdKind::kName ? kdGet(c) : bvhGet(c);
+  };
+  s.assign = [bvhAssign = s.assign, kdAssign = kdView.assign](C& c, const std::string& text) {
+    bvhAssign(c, text);
+    kdAssign(c, text);
+  };
+  s.ignoredBecause = ignoredUnlessCore({BvhKind<>::kName, KdKind::kName});
+  return s;
+}
+
 // The BVH kind's settings (kinds/bvh, RtuConfig::coreConfig<BvhKind<>>()): its stack, child
-// order, triangle test and units' cycles (kinds/bvh/bvh_timing.h), all arithmetic: the cycles are
-// in the golden traversal's costs too. With another kind of core they have no effect; the
-// triangle test also chooses the golden run's over an accel_file.
+// order, triangle test and units' cycles (kinds/bvh/bvh_timing.h; shared with the k-d core), all
+// arithmetic: the cycles are in the golden traversal's costs too. With another kind of core they
+// have no effect; the triangle test also chooses the golden run's over an accel_file.
 void addBvhSettings(std::vector<Setting>& schema) {
   using C = RunConfig;
   constexpr unsigned arith = kUseArithmetic;
@@ -389,24 +420,24 @@ void addBvhSettings(std::vector<Setting>& schema) {
       "sign on the axis separating them)",
       [](C& c) -> ChildOrder& { return c.rtu.coreConfig<BvhKind<>>().childOrder; }, childOrderName,
       parseChildOrder));
-  added.push_back(
-      integer("core.box.latency", "--box-latency", "cycles", 1, kMaxBvhUnitCycles, arith,
-              "BVH: cycles of a node's box tests (both children at once)",
-              [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.boxLatency; }));
-  added.push_back(integer(
-      "core.triangle.latency", "--triangle-latency", "cycles", 1, kMaxBvhUnitCycles, arith,
-      "BVH: cycles from a ray/triangle test's issue to its result (a leaf's last test waits them)",
-      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.triangleLatency; }));
-  added.push_back(integer(
-      "core.triangle.interval", "--triangle-interval", "cycles", 1, kMaxBvhUnitCycles, arith,
-      "BVH: the triangle unit's initiation interval, cycles between two tests' issues",
-      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.triangleInterval; }));
   for (Setting& s : added) {
-    s.ignoredBecause = [](const RunConfig& c) {
-      return c.rtu.core == BvhKind<>::kName ? std::string() : "the core kind is " + c.rtu.core;
-    };
+    s.ignoredBecause = ignoredUnlessCore({BvhKind<>::kName});
     schema.push_back(std::move(s));
   }
+  schema.push_back(sharedUnitCycles(
+      "core.box.latency", "--box-latency",
+      "BVH: cycles of a node's box tests (both children at once); k-d: SINT's scene box test and "
+      "TRAV's plane test",
+      &BvhCycles::boxLatency, &KdCycles::boxLatency));
+  schema.push_back(sharedUnitCycles(
+      "core.triangle.latency", "--triangle-latency",
+      "BVH and k-d: cycles from a ray/triangle test's issue to its result (a leaf's last test "
+      "waits them)",
+      &BvhCycles::triangleLatency, &KdCycles::triangleLatency));
+  schema.push_back(sharedUnitCycles(
+      "core.triangle.interval", "--triangle-interval",
+      "BVH and k-d: the triangle unit's initiation interval, cycles between two tests' issues",
+      &BvhCycles::triangleInterval, &KdCycles::triangleInterval));
   schema.push_back(choice(
       "accel.triangle_test", "--triangle-test", {"watertight", "moller-trumbore"}, arith,
       "the BVH core's ray/triangle test in float32 (and the golden run's over an accel_file)",
@@ -448,6 +479,18 @@ void addBihSettings(std::vector<Setting>& schema) {
     };
     schema.push_back(std::move(s));
   }
+}
+
+// The k-d kind's own setting (kinds/kd, RtuConfig::coreConfig<KdKind>()): its short stack, as
+// seed 001's, with the restart; its units' cycles are the BVH's keys (sharedUnitCycles). With
+// another kind of core it has no effect.
+void addKdSettings(std::vector<Setting>& schema) {
+  schema.push_back(integer(
+      "core.short_stack", "--short-stack", "entries", 1, kMaxKdShortStack, kUseArithmetic,
+      "k-d: short-stack entries (seed 001: 4); a push onto a full stack drops the oldest and a "
+      "ray restarts at its restart node when the stack runs empty",
+      [](RunConfig& c) -> int& { return c.rtu.coreConfig<KdKind>().stackDepth; }));
+  schema.back().ignoredBecause = ignoredUnlessCore({KdKind::kName});
 }
 
 std::string architectureName(const Architecture& a) {
@@ -716,6 +759,7 @@ std::vector<Setting> makeSchema() {
   addSvoSettings(s);
   addBvhSettings(s);
   addBihSettings(s);
+  addKdSettings(s);
   // The workload.
   s.push_back(choice(
       "scene", "--scene", proceduralSceneNames(), scene,

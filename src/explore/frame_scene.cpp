@@ -45,16 +45,32 @@ uint32_t appendFrameModelHeader<BihKind<>>(std::vector<uint32_t>& words, const T
   return appendBihModelHeader(words, grid, placement);
 }
 
-// A triangle kind's scene: buildAccel's structure of the kind's name, a model header after it, the
+// What buildAccel builds for a triangle kind: the structure of the kind's name, with the run's
+// accel settings. The k-d core's is `build --accel kdtree`'s, whose Tray Racer scene file the
+// frame does not read: its wide form takes any tree (the narrow one refuses past 2^16 nodes).
+template <class Kind>
+AccelSpec frameAccelSpec(const RunConfig& settings) {
+  AccelSpec spec = settings.accel;
+  spec.structure = Kind::kName;
+  return spec;
+}
+
+template <>
+AccelSpec frameAccelSpec<KdKind>(const RunConfig& settings) {
+  AccelSpec spec = settings.accel;
+  spec.structure = "kdtree";
+  spec.index = "wide";
+  return spec;
+}
+
+// A triangle kind's scene: buildAccel's structure of the kind, a model header after it, the
 // frame's world-space ray records against the header.
 template <class Kind>
 struct FrameSceneOf {
   static FrameScene load(const RunConfig& settings) {
     TriangleScene triangles = loadSceneTriangles(settings);
-    AccelSpec spec = settings.accel;
-    spec.structure = Kind::kName;
-    AccelBuild build =
-        buildAccel(triangles.mesh, spec, settings.rtu.coreConfig<BihKind<>>().format);
+    AccelBuild build = buildAccel(triangles.mesh, frameAccelSpec<Kind>(settings),
+                                  settings.rtu.coreConfig<BihKind<>>().format);
     FrameScene scene;
     scene.placement = placementOf(settings.scene, triangles.mesh);
     scene.words = std::move(build.words);

@@ -6,10 +6,10 @@
 //              its stack checked against the tree for the timed models;
 //   triangles  any other kind: the scene's triangles (loadTriangleScene: a mesh file's, or a voxel
 //              scene's faces) built by `accel.builder` into the structure the kind names
-//              (buildAccel: `bvh`, `bih`), then a model header placing them where the SVO frame
-//              places the same scene (a voxel scene's faces lie in the octree's cube [-1,1]^3; a
-//              mesh file is fitted into it as the voxelizer fits it at `scene.depth`), and the
-//              frame's world-space ray records against that header.
+//              (buildAccel: `bvh`, `bih`, `kdtree` for the kd kind), then a model header placing
+//              them where the SVO frame places the same scene (a voxel scene's faces lie in the
+//              octree's cube [-1,1]^3; a mesh file is fitted into it as the voxelizer fits it at
+//              `scene.depth`), and the frame's world-space ray records against that header.
 // A kind whose image is not buildAccel's structure of its name plugs in by specialising
 // FrameSceneOf<Kind> (frame_scene.cpp): `load` and `records`.
 

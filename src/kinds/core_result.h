@@ -172,5 +172,8 @@ inline std::vector<BvhResult> bvhResults(const std::vector<CoreKindResult>& resu
 inline std::vector<BihResult> bihResults(const std::vector<CoreKindResult>& results) {
   return resultsOfKind<BihKind<>>(results);
 }
+inline std::vector<KdResult> kdResults(const std::vector<CoreKindResult>& results) {
+  return resultsOfKind<KdKind>(results);
+}
 
 }  // namespace rtu

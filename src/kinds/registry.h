@@ -19,6 +19,7 @@
 #include "kinds/bih/bih_kind.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "kinds/host_record.h"
+#include "kinds/kd/kd_kind.h"
 #include "kinds/svo/svo_kind.h"
 #include "rtu/job_manager_timing.h"
 
@@ -102,7 +103,8 @@ struct CoreKindList {
   }
 };
 
-using CoreKinds = CoreKindList<SvoKind, BvhKind<>, BihKind<>>;  // a new kind: one more name here
+using CoreKinds =
+    CoreKindList<SvoKind, BvhKind<>, BihKind<>, KdKind>;  // a new kind: one more name here
 
 using HostRecord = CoreKinds::HostRecord;
 using CoreKindConfigs = CoreKinds::Configs;

@@ -1,9 +1,11 @@
 #pragma once
 // The golden traversal of seed 001's k-d tree (the Tray Racer's ray pipe: S1 §2.6.1 p.9 L155-167,
 // §2.6.7 L226-234, §2.6.9 L252-262, §2.6.10 L264-272; the rules exactly as R1's RTL has them,
-// specs/001 §2.2 and §3.2) for one ray, as the behaviour of a future k-d core: a state machine
-// advanced by step(readWord), one state per step, each reading state one word or one aligned
-// 4-word access (kWordsPerRead) of the memory image (kd_image.h). The arithmetic is kd_units.h's.
+// specs/001 §2.2 and §3.2) for one ray, as the behaviour of the k-d core (kd_kind.h) and of the
+// ray pipe's golden frame: a state machine advanced by step(readWord), one state per step, each
+// reading state one word or one aligned 4-word access (kWordsPerRead) of the memory image
+// (kd_image.h). The arithmetic is kd_units.h's; the states' cycles kd_timing.h's (cost() sums
+// them: with the default cycles, one a state).
 //
 // States, one step each:
 //   SINT   the ray against the scene box (the core's registers): a miss -> OUT
@@ -39,6 +41,7 @@
 
 #include "base/float_bits.h"
 #include "kinds/kd/kd_image.h"
+#include "kinds/kd/kd_timing.h"
 #include "kinds/kd/kd_units.h"
 #include "rtu/traversal_stack.h"
 
@@ -69,13 +72,33 @@ struct KdRayCounts {
   uint32_t restarts = 0;
   uint32_t boxMisses = 0;  // 1 when SINT missed the scene box
   uint32_t pushes = 0;
-  uint32_t dropped = 0;  // stack entries overwritten by a push onto a full stack
+  uint32_t dropped = 0;   // stack entries overwritten by a push onto a full stack
+  uint32_t accesses = 0;  // memory accesses, kWordsPerRead words each
+
+  bool operator==(const KdRayCounts& o) const {
+    return nodes == o.nodes && leaves == o.leaves && triangleTests == o.triangleTests &&
+           restarts == o.restarts && boxMisses == o.boxMisses && pushes == o.pushes &&
+           dropped == o.dropped && accesses == o.accesses;
+  }
 };
+
+// The k-d core's settings (the kind's Config, RtuConfig::coreConfig<KdKind>(); the schema's keys
+// core.short_stack and the shared units' core.box.latency, core.triangle.latency and
+// core.triangle.interval, src/config/config_schema.cpp "addKdSettings").
+constexpr int kMaxKdShortStack = 1024;
+constexpr uint32_t kMaxKdUnitCycles = 1024;
 
 struct KdTraversalConfig {
   int stackDepth = 4;  // S1 §2.6.9: "the 4-deep stack"
   Division division = Division::Ieee;
   KdTMaxClamp tMaxClamp = KdTMaxClamp::AsBuilt;
+  KdCycles cycles;
+
+  // Throws std::invalid_argument naming the setting (core.short_stack, core.box.latency,
+  // core.triangle.latency, core.triangle.interval) for a short stack of other than 1 to
+  // kMaxKdShortStack entries, units of other than 1 to kMaxKdUnitCycles cycles, or an interval
+  // longer than the latency.
+  void validate() const;
 };
 
 class KdTraversal {
@@ -84,6 +107,18 @@ class KdTraversal {
 
   explicit KdTraversal(const KdTraversalConfig& config)
       : stack_(config.stackDepth), config_(config) {}
+
+  // The current state's cycles (kd_timing.h), asked before it is stepped.
+  uint32_t stateCycles() const {
+    switch (state_) {
+      case KdState::Sint:
+      case KdState::Trav: return config_.cycles.boxLatency;
+      case KdState::Int:
+        return left_ > 1 ? config_.cycles.triangleInterval : config_.cycles.triangleLatency;
+      default: return 1;
+    }
+  }
+  int stackSize() const { return stack_.size(); }  // the trace's stack signal
 
   void start(const KdJob& job) {
     ray_ = job.ray;
@@ -120,9 +155,11 @@ class KdTraversal {
     }
   }
 
+  // Forced inline: a state does little, so the call would cost a good part of it.
   template <class ReadWord>
   [[gnu::always_inline]] inline void step(ReadWord&& readWord) {
-    ++cost_;
+    const uint32_t cycles = stateCycles();
+    if (readsMemory()) ++counts_.accesses;
     switch (state_) {
       case KdState::Sint: sceneBox(); break;
       case KdState::Node: readNode(readWord); break;
@@ -136,8 +173,14 @@ class KdTraversal {
       case KdState::Uttm2: readUttm(readWord, 8, KdState::Int); break;
       case KdState::Int: intersect(); break;
       case KdState::Pop: pop(); break;
-      default: --cost_; throw std::logic_error("k-d traversal stepped while idle or done");
+      default: throw std::logic_error("k-d traversal stepped while idle or done");
     }
+    cost_ += cycles;
+  }
+  // The timed cores' name for step (as the SVO core's).
+  template <class ReadWord>
+  [[gnu::always_inline]] inline void stepInline(ReadWord&& readWord) {
+    step(readWord);
   }
   void finish() { state_ = KdState::Idle; }
 
@@ -146,7 +189,7 @@ class KdTraversal {
   float u() const { return uCur_; }  // the seed's: u weighs the triangle's A, v its B
   float v() const { return vCur_; }
   uint32_t primitive() const { return triCur_; }  // the hit triangle's id
-  uint32_t cost() const { return cost_; }
+  uint32_t cost() const { return cost_; }         // its states' cycles (stateCycles each)
   KdRayCounts counts() const {
     KdRayCounts counts = counts_;
     counts.dropped = static_cast<uint32_t>(stack_.dropped());
