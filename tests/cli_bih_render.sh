@@ -48,7 +48,8 @@ nodes, tests = stats["bih_nodes_visited"], stats["bih_triangle_tests"]
 assert nodes > 0 and tests > 0 and stats["bih_stack_overflows"] == 0, stats
 # 16 bytes an access; a node triple or a triangle record is at least one
 assert stats["bih_bytes_fetched"] >= 16 * (nodes + tests), stats
-assert stats["bvh_nodes_visited"] == 0, stats
+# its own kind's counters only
+assert not [key for key in stats if key.startswith("bvh_") or key == "stack_overflows"], stats
 report = open(sys.argv[2]).read()
 line = re.search(r"^bih +([0-9.]+) nodes, ([0-9.]+) triangle tests", report, re.M)
 assert abs(float(line.group(1)) - nodes / jobs) < 0.01, (line.group(0), nodes)
@@ -95,7 +96,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 bih = {r["bih.triangle.latency"]: r for r in rows if r["core"] == "bih"}
 bvh = [r for r in rows if r["core"] == "bvh"]
 assert len(bih) == 2 and len(bvh) == 2, rows
-assert int(bih["1"]["bih_nodes_visited"]) > 0 and bih["1"]["bvh_nodes_visited"] == "0", rows
+assert int(bih["1"]["bih_nodes_visited"]) > 0 and bih["1"]["bvh_nodes_visited"] == "", rows
 assert int(bih["1"]["total_cycles"]) < int(bih["41"]["total_cycles"]), rows
 assert bvh[0]["total_cycles"] == bvh[1]["total_cycles"], rows
 PY

@@ -47,6 +47,9 @@ total["jobs"] = sum(core["jobs"] for core in cores)
 assert total["jobs"] == 48 * 32, total
 assert total["bvh_box_tests"] >= total["bvh_nodes_visited"] > 0, total
 assert total["bvh_triangle_tests"] > 0 and total["bvh_stack_overflows"] == 0, total
+# Its own kind's counters only: none of the SVO's or the BIH's.
+assert not [key for key in stats if key in ("stack_overflows", "t_overflows")
+            or key.startswith("bih_")], list(stats)
 # 16 bytes an access: two a node, four a triangle (its reference and its record).
 assert total["bvh_bytes_fetched"] == 32 * total["bvh_nodes_visited"] + 64 * total["bvh_triangle_tests"], total
 report = open(sys.argv[2]).read()

@@ -26,7 +26,8 @@ for r in rows:
     assert r["rays"] == "1536" and float(r["fps"]) > 0 and r["error"] == "", r
     # the BVH counters of the row, per ray as the golden traversal counts them
     assert abs(int(r["bvh_nodes_visited"]) / 1536 - float(sys.argv[2])) < 0.01, r
-    assert int(r["bvh_triangle_tests"]) > 0 and r["stack_overflows"] == "0", r
+    # the SVO's counters are not the BVH row's: empty, not 0
+    assert int(r["bvh_triangle_tests"]) > 0 and r["stack_overflows"] == "", r
 # four cores finish the frame sooner
 assert float(rows[1]["fps"]) > 2 * float(rows[0]["fps"]), rows
 PY
@@ -45,7 +46,7 @@ svo = [r for r in rows if r["core"] == "svo"]
 bvh = [r for r in rows if r["core"] == "bvh"]
 assert len(svo) == 2 and len(bvh) == 2, rows
 for r in svo:
-    assert r["bvh_nodes_visited"] == "0" and int(r["total_cycles"]) > 0, r
+    assert r["bvh_nodes_visited"] == "" and int(r["total_cycles"]) > 0, r
 deep = [r for r in bvh if r["core.stack_depth"] == "32"][0]
 assert abs(int(deep["bvh_nodes_visited"]) / 1536 - float(sys.argv[2])) < 0.01, deep
 assert deep["bvh_stack_overflows"] == "0", deep

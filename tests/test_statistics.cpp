@@ -72,7 +72,15 @@ RtuStatistics everything() {
 
 TEST_CASE("Every key of a run's statistics JSON is declared, once", "[statistics]") {
   const std::set<std::string> declared = declaredKeys(RtuStatistics::declaration().statistics());
-  CHECK(writtenKeys(everything().toJson(), declared) == declared);
+  // Each kind's run writes its own counters: over the runs of every kind, every key.
+  std::set<std::string> overKinds;
+  for (const std::string& core : CoreKinds::names()) {
+    RtuStatistics run = everything();
+    run.core = core;
+    const std::set<std::string> keys = writtenKeys(run.toJson(), declared);
+    overKinds.insert(keys.begin(), keys.end());
+  }
+  CHECK(overKinds == declared);
   // Without the optional parts their keys are not written.
   RtuStatistics ideal;
   ideal.coreTimes.resize(1);
@@ -342,6 +350,86 @@ TEST_CASE("A kind declares its own counters, they are written and combined gener
   subtractStatisticsOf(run, before);
   CHECK(run.cores[1].kind.nodes == 5);
   CHECK(run.cores[1].jobs == 0);
+}
+
+}  // namespace
+}  // namespace rtu
+
+namespace rtu {
+namespace {
+
+// The top-level keys of a run's statistics JSON whose names start with `prefix`, in order.
+std::vector<std::string> topKeys(const Json& json, const std::string& prefix) {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : json.items())
+    if (key.rfind(prefix, 0) == 0) keys.push_back(key);
+  return keys;
+}
+
+// Two cores of a run of `core` with some of every kind's counters counted (a run counts only
+// its own kind's; the others are set here to see that they are not written).
+RtuStatistics twoCoresOf(const std::string& core) {
+  RtuConfig config;
+  config.core = core;
+  RtuStatistics s = RtuStatistics::of(config);
+  s.rays = 5;
+  s.coreTimes = {coreStatistics(2, 10, 0, 1, 1, 0), coreStatistics(3, 20, 0, 1, 0, 2)};
+  s.coreTimes[0].bvhNodesVisited = 30, s.coreTimes[1].bvhNodesVisited = 45;
+  s.coreTimes[1].bihTriangleTests = 7;
+  return s;
+}
+
+TEST_CASE("A run's statistics hold the counters of its cores' kind and no other kind's",
+          "[statistics]") {
+  const Json svo = twoCoresOf("svo").toJson();
+  CHECK(topKeys(svo, "bvh_").empty());
+  CHECK(topKeys(svo, "bih_").empty());
+  CHECK(svo["stack_overflows"] == 1);
+  CHECK(svo["t_overflows"] == 2);
+  // As before the other kinds were registered: right after the cores, before below_resolution.
+  const std::vector<std::string> all = topKeys(svo, "");
+  const auto cores = std::find(all.begin(), all.end(), "cores");
+  REQUIRE(cores + 3 < all.end());
+  CHECK(std::vector<std::string>(cores + 1, cores + 4) ==
+        std::vector<std::string>{"stack_overflows", "t_overflows", "below_resolution"});
+
+  const Json bvh = twoCoresOf("bvh").toJson();
+  CHECK(topKeys(bvh, "bvh_") ==
+        std::vector<std::string>{"bvh_nodes_visited", "bvh_box_tests", "bvh_triangle_tests",
+                                 "bvh_stack_overflows", "bvh_bytes_fetched"});
+  CHECK(bvh["bvh_nodes_visited"] == 75);
+  CHECK_FALSE(bvh.contains("stack_overflows"));
+  CHECK_FALSE(bvh.contains("t_overflows"));
+  CHECK(topKeys(bvh, "bih_").empty());
+
+  const Json bih = twoCoresOf("bih").toJson();
+  CHECK(topKeys(bih, "bih_") ==
+        std::vector<std::string>{"bih_nodes_visited", "bih_triangle_tests", "bih_stack_overflows",
+                                 "bih_divider_errors", "bih_bytes_fetched"});
+  CHECK(bih["bih_triangle_tests"] == 7);
+  CHECK(topKeys(bih, "bvh_").empty());
+  CHECK_FALSE(bih.contains("stack_overflows"));
+
+  // A window keeps the run's kind and subtracts its counters.
+  RtuStatistics prefix = twoCoresOf("bvh");
+  prefix.coreTimes[1].bvhNodesVisited = 40;
+  const Json window = statisticsAfter(twoCoresOf("bvh"), prefix, 2, 10).toJson();
+  CHECK(window["bvh_nodes_visited"] == 5);
+  CHECK_FALSE(window.contains("stack_overflows"));
+
+  // The fps and sweep CSV keep a column for every kind's counters (rows of several kinds share
+  // one header); another kind's are empty in a row, not 0.
+  const std::vector<std::string>& columns = statisticsColumns();
+  const auto field = [&columns](const Json& statistics, const std::string& column) {
+    const std::vector<std::string> values = statisticsValues(Json{{"statistics", statistics}});
+    const auto at = std::find(columns.begin(), columns.end(), column);
+    REQUIRE(at != columns.end());
+    return values[static_cast<size_t>(at - columns.begin())];
+  };
+  CHECK(field(svo, "stack_overflows") == "1");
+  CHECK(field(svo, "bvh_nodes_visited").empty());
+  CHECK(field(bvh, "bvh_nodes_visited") == "75");
+  CHECK(field(bvh, "stack_overflows").empty());
 }
 
 }  // namespace

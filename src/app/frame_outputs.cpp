@@ -36,11 +36,11 @@ struct FrameOutputsOf<BvhKind<>> {
            std::to_string(core.stackDepth) + " stack entries";
   }
   static std::string results(const RunConfig&, const std::vector<CoreKindResult>& results) {
-    return describeBvhResults(bvhResults(results));
+    return describeBvhResults(resultsOfKind<BvhKind<>>(results));
   }
   static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
                               const std::vector<CoreKindResult>& results) {
-    return triangleFrame(settings.camera, scene, bvhResults(results));
+    return triangleFrame(settings.camera, scene, resultsOfKind<BvhKind<>>(results));
   }
 };
 
@@ -53,12 +53,12 @@ struct FrameOutputsOf<BihKind<>> {
   }
   static std::string results(const RunConfig& settings,
                              const std::vector<CoreKindResult>& results) {
-    return describeBihResults(bihResults(results),
+    return describeBihResults(resultsOfKind<BihKind<>>(results),
                               settings.rtu.coreConfig<BihKind<>>().cycles.triangleInterval);
   }
   static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
                               const std::vector<CoreKindResult>& results) {
-    return triangleFrame(settings.camera, scene, bihResults(results));
+    return triangleFrame(settings.camera, scene, resultsOfKind<BihKind<>>(results));
   }
 };
 
@@ -70,11 +70,11 @@ struct FrameOutputsOf<KdKind> {
            std::to_string(core.cycles.triangleLatency) + " cycles";
   }
   static std::string results(const RunConfig&, const std::vector<CoreKindResult>& results) {
-    return describeKdResults(kdResults(results));
+    return describeKdResults(resultsOfKind<KdKind>(results));
   }
   static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
                               const std::vector<CoreKindResult>& results) {
-    return triangleFrame(settings.camera, scene, kdResults(results));
+    return triangleFrame(settings.camera, scene, resultsOfKind<KdKind>(results));
   }
 };
 

@@ -18,6 +18,7 @@
 //   group      a member struct (or an optional one) with its own declaration, at its key (an
 //              empty key: its statistics among the holder's)
 //   base       a base class with its own declaration, its statistics among the holder's
+//   combinedBase  a base class combined with the holder but written by another entry
 //   computed   a struct of another declaration computed for writing (the L1s summed)
 //   list       one struct per part (per core) as an array; its statistics marked runTotal() are
 //              written once beside the array, summed over the parts (a kind's counters of rays)
@@ -222,6 +223,24 @@ class StatisticGroup {
     entry.subtract = [](V& a, const V& b) { B::declaration().subtract(a, b); };
     entry.read = [](V& values, StatisticReader& reader) { B::declaration().read(values, reader); };
     entries_.push_back(std::move(entry));
+    return *this;
+  }
+  // The statistics of V's base class B combined (summed, subtracted, read back) with V's but
+  // written by another entry: a core's kind counters, which the run writes for its own kind only.
+  template <class B>
+  StatisticGroup& combinedBase() {
+    static_assert(std::is_base_of_v<B, V>, "combinedBase() declares a base class of the values");
+    Entry entry{Statistic("", "", ""), Kind::Group};
+    entry.add = [](V& a, const V& b) { B::declaration().add(a, b); };
+    entry.subtract = [](V& a, const V& b) { B::declaration().subtract(a, b); };
+    entry.read = [](V& values, StatisticReader& reader) { B::declaration().read(values, reader); };
+    entries_.push_back(std::move(entry));
+    return *this;
+  }
+  // The entries `declare(group)` adds, at this place (a fold over a list of types).
+  template <class F>
+  StatisticGroup& extend(F declare) {
+    declare(*this);
     return *this;
   }
   // A struct of G's declaration computed from the values for writing (the L1s summed); it is not

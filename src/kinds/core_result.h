@@ -157,23 +157,14 @@ std::vector<typename Kind::Result> resultsOfKind(
 // The SVO kind's own outputs take a run's results here: the thesis' result buffers
 // (inputs/host_buffers.h, replay), the frame images and scene shading (app/frame_images.h,
 // app/scene_shading.cpp); the golden, accuracy and precision commands run the SVO golden model
-// itself. A kind's folder cannot name CoreKindResult (the registry lies above it, layers.txt):
-// a new kind adds its own function beside these.
+// itself. Another kind's outputs (a kind's folder cannot name CoreKindResult: the registry lies
+// above it, layers.txt) take them as resultsOfKind<Kind>(results), as the triangle kinds' frame
+// outputs do (app/frame_outputs.cpp), with nothing added here.
 inline const TraversalResult& svoResult(const CoreKindResult& result) {
   return resultOfKind<SvoKind>(result);
 }
 inline std::vector<TraversalResult> svoResults(const std::vector<CoreKindResult>& results) {
   return resultsOfKind<SvoKind>(results);
-}
-// The triangle kinds': their frame images (app/triangle_render.h).
-inline std::vector<BvhResult> bvhResults(const std::vector<CoreKindResult>& results) {
-  return resultsOfKind<BvhKind<>>(results);
-}
-inline std::vector<BihResult> bihResults(const std::vector<CoreKindResult>& results) {
-  return resultsOfKind<BihKind<>>(results);
-}
-inline std::vector<KdResult> kdResults(const std::vector<CoreKindResult>& results) {
-  return resultsOfKind<KdKind>(results);
 }
 
 }  // namespace rtu

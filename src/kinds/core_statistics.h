@@ -3,7 +3,9 @@
 // cores), and the declaration of it (base/statistics.h): per core its jobs and the cycles it spent
 // busy, blocked on memory and handing over its result, and the counters of the registry's kinds
 // (CoreKinds::Counters: for SVO, the rays whose traversal overflowed, counted by
-// SvoKind::count). A job's cost is its cycles outside IDLE, OUT and BLOCKED.
+// SvoKind::count). The counters are summed with the rest but written by the run, once, for the
+// kind its cores are of (RtuStatistics, CoreKinds::runCounters). A job's cost is its cycles
+// outside IDLE, OUT and BLOCKED.
 
 #include <cstdint>
 
@@ -31,7 +33,7 @@ struct CoreStatistics : CoreKinds::Counters {
             .count(Statistic("handover", "cycles",
                              "cycles in OUT: a result waiting for the result manager"),
                    &C::outCycles)
-            .base<CoreKinds::Counters>();
+            .combinedBase<CoreKinds::Counters>();
     return group;
   }
 };

@@ -70,6 +70,20 @@ struct CoreKindList {
       return group;
     }
   };
+  // For a run's statistics V (StatisticGroup<V>::extend): the counters of the kind its cores
+  // are of and no other's, each kind's Counters computed by `counters(values)` (the cores' counters
+  // summed) and written only when `kind(values)` is its name.
+  template <class V, class KindOf, class CountersOf>
+  static auto runCounters(KindOf kind, CountersOf counters) {
+    return [kind, counters](StatisticGroup<V>& group) {
+      (group
+           .template computed<typename Kinds::Counters>(
+               Statistic("", "", ""),
+               [counters](const V& values) -> typename Kinds::Counters { return counters(values); })
+           .writtenWhen([kind](const V& values) { return kind(values) == Kinds::kName; }),
+       ...);
+    };
+  }
   static std::vector<std::string> names() { return {Kinds::kName...}; }
   // "name: description" of each kind, separated by "; " (the schema's text for `core`).
   static std::string described() {

@@ -12,10 +12,11 @@
 // runRtlTop is the thesis' host: cycle 0 is the first cycle after reset. It offers job 0 from
 // cycle 0 and job i + 1 from the cycle after job i's handshake, and it is ready for a result in
 // every cycle. Another host (the scene manager's reference, src/reference/scene_manager_cycles.h)
-// steps RtlTop itself. Memory is ideal (data in the cycle of the address), as in the thesis.
+// steps the registers itself (RtlTop<Kind>, src/reference/rtl_top.h: a template over the cores'
+// kind, chosen once by the host with withCoreKind). Memory is ideal (data in the cycle of the
+// address), as in the thesis.
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -79,31 +80,6 @@ struct RtlCycle {
     uint64_t tag = 0;
   };
   std::optional<Delivery> delivered;  // the result the host took
-};
-
-// The cores are of the kind `config.core`, chosen once when the top is made: the registers of
-// every module are a template over the kind (KindRegisters, in rtl_cycle_model.cpp).
-class RtlTop {
- public:
-  // Throws std::invalid_argument for an invalid configuration or an unknown kind.
-  RtlTop(const WordMemory& memory, const RtlTopConfig& config);
-  ~RtlTop();
-  RtlTop(const RtlTop&) = delete;
-  RtlTop& operator=(const RtlTop&) = delete;
-
-  // One cycle: the combinational signals with the host offering `offer` (null: in_valid low),
-  // then the clock edge. Throws std::runtime_error for a model header that is not valid.
-  RtlCycle step(const RtlOffer* offer);
-  uint64_t cycle() const;
-  // By tag: the cycle each job was taken by the job manager, and handed to a core.
-  const std::vector<uint64_t>& acceptCycles() const;
-  const std::vector<uint64_t>& dispatchCycles() const;
-
- private:
-  class Registers;
-  template <class Kind>
-  class KindRegisters;
-  std::unique_ptr<Registers> registers_;
 };
 
 }  // namespace rtu

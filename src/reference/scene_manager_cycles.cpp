@@ -4,6 +4,8 @@
 #include <optional>
 
 #include "kinds/core_result.h"
+#include "kinds/registry.h"
+#include "reference/rtl_top.h"
 
 namespace rtu {
 namespace {
@@ -20,6 +22,8 @@ struct HeldRay {
   int nearest = -1;
 };
 
+// Over the cores' kind, chosen once in runSceneCycles: the RTU below is RtlTop<Kind>.
+template <class Kind>
 class SceneCycles {
  public:
   SceneCycles(const WordMemory& memory, const std::vector<RayRecord>& rays,
@@ -149,7 +153,7 @@ class SceneCycles {
   SceneManagerConfig scene_;
   CoreKindConfigs coreConfigs_;  // how the cores' kind set their jobs up: the hits' distances
   CoreKindMiss miss_;            // the cores' kind's
-  RtlTop top_;
+  RtlTop<Kind> top_;
   // Registers.
   size_t nextRay_ = 0;         // the ray the host offers
   std::vector<HeldRay> held_;  // oldest first
@@ -166,7 +170,9 @@ class SceneCycles {
 SceneCyclesRun runSceneCycles(const WordMemory& memory, const std::vector<RayRecord>& rays,
                               const std::vector<SceneInstance>& instances,
                               const SceneManagerConfig& scene, const RtlTopConfig& rtu) {
-  return SceneCycles(memory, rays, instances, scene, rtu).run();
+  return withCoreKind(rtu.core, [&](auto kind) {
+    return SceneCycles<decltype(kind)>(memory, rays, instances, scene, rtu).run();
+  });
 }
 
 }  // namespace rtu

@@ -35,6 +35,7 @@ RtuStatistics RtuStatistics::of(const RtuConfig& config) {
   stats.hostOutBytesPerCycle = config.hostOutput.bytesPerCycle;
   stats.hostOutRecordBytes = config.outputLink().recordBytes;
   stats.warmFrames = config.warmFrames;
+  stats.core = config.core;
   return stats;
 }
 
@@ -239,6 +240,8 @@ const StatisticGroup<RtuStatistics>& RtuStatistics::declaration() {
                  &S::totalBlocked)
           .computed<CoreTimeShares>(Statistic("core_time", "", ""), &S::coreTimeShares)
           .list(Statistic("cores", "", "per core"), &S::coreTimes, &coreLayout)
+          .extend(CoreKinds::runCounters<S>([](const S& s) { return s.core; },
+                                            [](const S& s) { return s.allCores(); }))
           .combinedOnly(&S::l1)
           .count(Statistic(
                      "below_resolution", "rays",

@@ -47,6 +47,9 @@ struct RtuStatistics {
   uint64_t hostOutRecordBytes = kHostRecordBytes;                // 48 for formats over 32 bits
   double hostSeconds = 0.0;
   std::string model = "systemc";  // what answered: the SystemC simulation or the "recurrence"
+  // The cores' kind (RtuConfig::core): its counters, and no other kind's, are written. Not a
+  // statistic of its own: the configuration beside the statistics names it.
+  std::string core = SvoKind::kName;
 
   // The settings of a run of `config` (clock, cores, policy, host links), nothing counted yet.
   static RtuStatistics of(const RtuConfig& config);
