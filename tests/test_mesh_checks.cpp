@@ -50,7 +50,8 @@ TEST_CASE("Mesh checks: degenerate triangles, repeated or collinear vertices", "
   TriangleMesh copy = mesh;
   CHECK_THROWS_AS(checkTriangleMesh(copy, "square.obj", MeshDefectPolicy::Refuse),
                   DroppableMeshDefects);
-  CHECK(checkTriangleMesh(mesh, "square.obj", MeshDefectPolicy::Drop) == std::vector<uint32_t>{2, 3});
+  CHECK(checkTriangleMesh(mesh, "square.obj", MeshDefectPolicy::Drop) ==
+        std::vector<uint32_t>{2, 3});
   CHECK(mesh.triangles == square().triangles);
 }
 

@@ -113,18 +113,19 @@ void goldenTriangles(const RunConfig& settings, const GoldenOptions& options) {
   const std::vector<uint32_t> words =
       readWordFile(settings.accel.file, sizeof(uint32_t), "triangle image");
   if (!words.empty() && words[0] == kKdMagic)
-    throw std::invalid_argument("--accel-file '" + settings.accel.file +
-                                "' is a k-d image: golden traces BVH and BIH images (a k-d tree "
-                                "image or scene file is traced by the ray pipe: render --architecture raypipe "
-                                "--model golden --accel-file FILE)");
+    throw std::invalid_argument(
+        "--accel-file '" + settings.accel.file +
+        "' is a k-d image: golden traces BVH and BIH images (a k-d tree "
+        "image or scene file is traced by the ray pipe: render --architecture raypipe "
+        "--model golden --accel-file FILE)");
   const bool bih = looksLikeBihImage(words);
   std::vector<SkippedRecord> skipped;
   const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
   warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
   std::vector<ResultRow> rows;
   rows.reserve(rays.size());
-  const std::string summary =
-      bih ? goldenBih(settings, rays, rows) : goldenBvh(settings, rays, rows);
+  const std::string summary = bih ? goldenBih(settings, rays, rows)
+                                  : goldenBvh(settings, rays, rows);
   writeResultsCsv(options.resultsCsv, rows);
   std::cout << summary;
 }

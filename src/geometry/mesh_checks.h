@@ -45,6 +45,7 @@ class DroppableMeshDefects : public std::runtime_error {
 // Returns the dropped triangles' indices in the mesh as given, ascending: the kept triangle k is
 // the input's k-th index not among them, which maps a built structure's triangle ids back to the
 // file's.
-std::vector<uint32_t> checkTriangleMesh(TriangleMesh& mesh, const std::string& source, MeshDefectPolicy policy);
+std::vector<uint32_t> checkTriangleMesh(TriangleMesh& mesh, const std::string& source,
+                                        MeshDefectPolicy policy);
 
 }  // namespace rtu

@@ -39,7 +39,7 @@ std::string sceneSource(const SceneSpec& scene);
 
 struct TriangleScene {
   TriangleMesh mesh;
-  std::string name;    // e.g. "menger (depth 5, voxel faces)" or the file name
+  std::string name;  // e.g. "menger (depth 5, voxel faces)" or the file name
   // The file's ids of the degenerate and duplicate triangles dropped (MeshDefectPolicy::Drop),
   // ascending: mesh triangle k is the file's k-th id not among them (checkTriangleMesh).
   std::vector<uint32_t> dropped;
