@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
               kRepetitions, RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
   for (const std::string& path : paths) {
     TriangleMesh mesh = loadTriangleMesh(path);
-    const size_t dropped = checkTriangleMesh(mesh, path, MeshDefectPolicy::Drop);
+    const size_t dropped = checkTriangleMesh(mesh, path, MeshDefectPolicy::Drop).size();
     std::printf("%s: %zu triangles (%zu degenerate or duplicate dropped)\n", path.c_str(),
                 mesh.triangles.size(), dropped);
     benchBuilds(mesh, embree);

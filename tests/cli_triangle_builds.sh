@@ -27,6 +27,8 @@ for key in ["triangles", "nodes", "leaves", "empty_leaves", "depth", "triangles_
             "builder", "scene", "dropped_triangles"]:
     assert key in stats, key
 assert stats["triangles"] == 1312 and stats["dropped_triangles"] == 56
+ids = stats["dropped_triangle_ids"]  # the file's ids, as the refusal above named the first five
+assert len(ids) == 56 and ids[:5] == [924, 927, 930, 932, 936] and ids == sorted(set(ids))
 assert stats["accel"] == "bvh" and stats["builder"] == "langr"
 assert stats["nodes"] == 2 * stats["leaves"] - 1          # a binary tree
 assert stats["triangles_per_leaf_max"] <= 10              # langr's leaves
@@ -88,6 +90,60 @@ PY
 "$rtusim" validate s.bih | grep -q "^s.bih: valid BIH image, .* nodes, 1312 list entries" ||
   fail "validate the BIH"
 
+# The golden model on the BIH, in the image's own space (its grid): the BVH's camera rays moved
+# onto the grid (the spider's float32 box from the BVH's triangle records, scale (2^n - 1) / its
+# longest side) hit the same triangles as on the BVH, at t scaled by the grid's scale, up to
+# float32 origins on a 2^29 grid (a grid coordinate carries 24 bits: within 2^-20 of the grid's
+# side) and the grid's rounding (rays near edges may differ: at most 5 %).
+python3 - s.bvh s.bih rays.bin grid_rays.bin grid_scale.txt bad_rays.bin <<'PY'
+import struct, sys
+def words(path):
+    raw = open(path, "rb").read()
+    return struct.unpack("<%dI" % (len(raw) // 4), raw), struct.unpack("<%df" % (len(raw) // 4), raw)
+bvh, bvhf = words(sys.argv[1])
+bih, _ = words(sys.argv[2])
+base, count = bvh[8], bvh[9]
+points = [bvhf[base + 12 * t + k: base + 12 * t + k + 3] for t in range(count) for k in (0, 3, 6)]
+lower = [min(p[a] for p in points) for a in range(3)]
+upper = [max(p[a] for p in points) for a in range(3)]
+n = bih[14] & 63  # header word 14: the format, n in bits 5:0
+scale = (2 ** n - 1) / max(u - l for u, l in zip(upper, lower))
+raw = open(sys.argv[3], "rb").read()
+out = b""
+for i in range(len(raw) // 32):
+    r = struct.unpack("<I6fI", raw[32 * i:32 * i + 32])
+    origin = [(r[1 + a] - lower[a]) * scale for a in range(3)]
+    out += struct.pack("<I6fI", r[0], *origin, *r[4:7], 0)
+open(sys.argv[4], "wb").write(out)
+open(sys.argv[5], "w").write("%r %d" % (scale, n))
+open(sys.argv[6], "wb").write(out[:28] + struct.pack("<I", 7))
+PY
+"$rtusim" golden --accel-file s.bih --rays grid_rays.bin --results-csv rb.csv >golden_bih.txt \
+  2>/dev/null
+grep -q "^rays        384$" golden_bih.txt || fail "BIH golden report: $(cat golden_bih.txt)"
+python3 - r.csv rb.csv grid_scale.txt <<'PY' || fail "BIH results CSV against the BVH's"
+import csv, sys
+bvh = list(csv.DictReader(open(sys.argv[1])))
+bih = list(csv.DictReader(open(sys.argv[2])))
+scale, n = open(sys.argv[3]).read().split()
+scale, n = float(scale), int(n)
+assert len(bvh) == len(bih) == 384
+differ = 0
+for a, b in zip(bvh, bih):
+    assert a["id"] == b["id"]
+    if a["hit"] != b["hit"] or a["primitive"] != b["primitive"]:
+        differ += 1
+        continue
+    if a["hit"] == "1":
+        assert abs(float(a["t"]) * scale - float(b["t"])) <= 2 ** (n - 20), (a, b)
+        assert 0 <= float(b["u"]) and 0 <= float(b["v"]) and float(b["u"]) + float(b["v"]) <= 1, b
+assert sum(r["hit"] == "1" for r in bih) > 30
+print("BIH against BVH: %d of %d rays differ" % (differ, len(bvh)))
+assert differ <= 0.05 * len(bvh), differ
+PY
+expect_error "names model address 7; a .bih file has no model headers: give 0" \
+  "$rtusim" golden --accel-file s.bih --rays bad_rays.bin --results-csv x.csv
+
 # Seed 001's k-d tree: the core's image, the Tray Racer's own file, and its capacities as warnings.
 "$rtusim" build --accel kdtree --mesh "$spider" --drop-bad-triangles --out s.kd --stats k.json \
   --trayracer-scene s.scene >kd.txt 2>kd_warnings.txt
@@ -102,6 +158,8 @@ assert stats["triangles"] == 1312 and stats["list_entries"] >= stats["triangles"
 assert stats["sah_seed"] > stats["sah"]  # PBRT's intersection cost is 80
 PY
 "$rtusim" validate s.kd | grep -q "^s.kd: valid k-d image, .* nodes" || fail "validate the k-d image"
+expect_error "is a k-d image: golden traces BVH and BIH images" \
+  "$rtusim" golden --accel-file s.kd --rays rays.bin --results-csv x.csv
 expect_error "the Tray Racer's file holds a k-d tree" \
   "$rtusim" build --accel bvh --scene sphere --depth 3 --out x.bvh --trayracer-scene x.scene
 
@@ -131,4 +189,19 @@ expect_error "give one image: --svo or --accel-file" \
   "$rtusim" golden --accel-file s.bvh --svo sphere.bvh --rays rays.bin --results-csv x.csv
 expect_error "is not a sound BVH image" "$rtusim" golden --accel-file bad.bvh --rays rays.bin \
   --results-csv x.csv
+
+# Bad meshes are refused before any build, naming the file, for every structure: a vertex that is
+# not a number (the OBJ reader refuses it by line; a NaN read from another format is refused by the
+# mesh checks, tests/test_mesh_checks.cpp), a mesh without a triangle, a duplicate triangle (the
+# later one named).
+printf 'v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n' >nan.obj
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' >empty.obj
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\nf 3 1 2\n' >twice.obj
+for accel in bvh bih kdtree; do
+  expect_error "mesh 'nan.obj', line 3: 'nan' is not a decimal number" "$rtusim" build --accel $accel --mesh nan.obj --out x.img
+  expect_error "empty.obj" "$rtusim" build --accel $accel --mesh empty.obj --out x.img
+  expect_error "twice.obj'*: 1 duplicate triangles (the same vertices as an earlier one): triangle (2)" \
+    "$rtusim" build --accel $accel --mesh twice.obj --out x.img
+  [[ ! -e x.img ]] || fail "a refused $accel build wrote its image"
+done
 echo "triangle builds: all checks passed"

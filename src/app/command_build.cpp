@@ -60,7 +60,8 @@ void writeStats(const std::string& path, const RunConfig& config, const Triangle
   if (config.accel.structure == "bvh") stats["builder"] = config.accel.builder;
   if (config.accel.structure == "kdtree") stats["builder"] = "pbrt";
   stats["scene"] = scene.name;
-  stats["dropped_triangles"] = scene.dropped;
+  stats["dropped_triangles"] = scene.dropped.size();
+  stats["dropped_triangle_ids"] = scene.dropped;
   writeTextFile(path, stats.dump(2) + "\n");
 }
 
@@ -76,7 +77,8 @@ void buildTriangleStructure(const RunConfig& config, const BuildOptions& options
   if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);
   if (!options.stats.empty()) writeStats(options.stats, config, scene, build);
   std::cout << scene.name << ": " << scene.mesh.triangles.size() << " triangles";
-  if (scene.dropped) std::cout << " (" << scene.dropped << " degenerate or duplicate dropped)";
+  if (!scene.dropped.empty())
+    std::cout << " (" << scene.dropped.size() << " degenerate or duplicate dropped)";
   std::cout << "\n" << build.description << ": " << describe(build.quality) << "\n";
   for (const std::string& warning : build.warnings) std::cerr << "warning: " << warning << "\n";
   std::cout << "wrote " << options.out << "\n";

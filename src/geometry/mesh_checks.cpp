@@ -88,7 +88,7 @@ void refuseFatal(const std::string& source, const MeshDefects& defects) {
   throw DroppableMeshDefects(source + ": " + problem);
 }
 
-size_t dropTriangles(TriangleMesh& mesh, const MeshDefects& defects) {
+std::vector<uint32_t> dropTriangles(TriangleMesh& mesh, const MeshDefects& defects) {
   std::vector<uint32_t> dropped = defects.degenerate;
   dropped.insert(dropped.end(), defects.duplicate.begin(), defects.duplicate.end());
   std::sort(dropped.begin(), dropped.end());
@@ -97,7 +97,7 @@ size_t dropTriangles(TriangleMesh& mesh, const MeshDefects& defects) {
   for (uint32_t t = 0; t < mesh.triangles.size(); ++t)
     if (!std::binary_search(dropped.begin(), dropped.end(), t)) kept.push_back(mesh.triangles[t]);
   mesh.triangles = std::move(kept);
-  return dropped.size();
+  return dropped;
 }
 
 }  // namespace
@@ -126,13 +126,14 @@ MeshDefects findMeshDefects(const TriangleMesh& mesh) {
   return defects;
 }
 
-size_t checkTriangleMesh(TriangleMesh& mesh, const std::string& source, MeshDefectPolicy policy) {
+std::vector<uint32_t> checkTriangleMesh(TriangleMesh& mesh, const std::string& source,
+                                        MeshDefectPolicy policy) {
   if (mesh.triangles.empty()) refuse(source, "the mesh has no triangle");
   const MeshDefects defects = findMeshDefects(mesh);
   refuseFatal(source, defects);
-  if (!defects.droppable()) return 0;
+  if (!defects.droppable()) return {};
   if (policy == MeshDefectPolicy::Refuse) refuseDroppable(source, defects);
-  const size_t dropped = dropTriangles(mesh, defects);
+  std::vector<uint32_t> dropped = dropTriangles(mesh, defects);
   if (mesh.triangles.empty()) refuse(source, "no triangle is left after dropping bad ones");
   return dropped;
 }

@@ -42,7 +42,10 @@ class DroppableMeshDefects : public std::runtime_error {
 // Throws std::runtime_error naming `source`, the kind of defect, how many and the first indices
 // when `mesh` is empty or has a fatal defect, or (policy Refuse: DroppableMeshDefects) a
 // degenerate or duplicate triangle; with Drop those are removed and `mesh` keeps the rest in order.
-// Returns the number of triangles dropped.
-size_t checkTriangleMesh(TriangleMesh& mesh, const std::string& source, MeshDefectPolicy policy);
+// Returns the dropped triangles' indices in the mesh as given, ascending: the kept triangle k is
+// the input's k-th index not among them, which maps a built structure's triangle ids back to the
+// file's.
+std::vector<uint32_t> checkTriangleMesh(TriangleMesh& mesh, const std::string& source,
+                                        MeshDefectPolicy policy);
 
 }  // namespace rtu

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "geometry/mesh_checks.h"
 #include "geometry/triangle_mesh.h"
@@ -38,8 +39,10 @@ std::string sceneSource(const SceneSpec& scene);
 
 struct TriangleScene {
   TriangleMesh mesh;
-  std::string name;    // e.g. "menger (depth 5, voxel faces)" or the file name
-  size_t dropped = 0;  // degenerate and duplicate triangles dropped (MeshDefectPolicy::Drop)
+  std::string name;  // e.g. "menger (depth 5, voxel faces)" or the file name
+  // The file's ids of the degenerate and duplicate triangles dropped (MeshDefectPolicy::Drop),
+  // ascending: mesh triangle k is the file's k-th id not among them (checkTriangleMesh).
+  std::vector<uint32_t> dropped;
 };
 
 // The scene's triangles: a mesh file's, checked (geometry/mesh_checks.h) under `policy`, or a
