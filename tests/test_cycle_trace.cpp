@@ -106,6 +106,32 @@ TEST_CASE("Trace window: records before it set the initial values when it starts
   CHECK(text.substr(text.find("#4")) == "#4\n$dumpvars\n0!\n$end\n#5\n1!\n");
 }
 
+// Before the window nothing is queued (so its cycles cost little): each signal keeps its latest
+// record, by cycle, the last to arrive within a cycle.
+TEST_CASE("Trace window: records before it are held in place, the latest cycle winning",
+          "[trace]") {
+  TraceOptions options;
+  options.path = tracePath("held.vcd");
+  options.fromCycle = 10;
+  options.periodPs = 1;
+  CycleTrace trace(options);
+  const int a = trace.declare("top", "a", 1);
+  const int b = trace.declare("top", "b", 1);
+  const int c = trace.declare("top", "c", 1);
+  trace.record(a, 7, 1);
+  trace.record(a, 5, 0);  // an earlier cycle arriving later: not the value at the window
+  trace.record(b, 8, 0);
+  trace.record(b, 8, 1);  // the same cycle: the last record wins
+  CHECK(trace.pendingRecords() == 0);
+  trace.record(c, 10, 1);  // in the window: queued
+  CHECK(trace.pendingRecords() == 1);
+  trace.finish(0);
+  const std::string text = contents(options.path);
+  fs::remove(options.path);
+  fs::remove(saveFilePath(options.path));
+  CHECK(text.substr(text.find("#10")) == "#10\n$dumpvars\n1!\n1\"\n1#\n$end\n");
+}
+
 // What a listener is told.
 struct Heard : TraceListener {
   std::vector<std::string> scopes;

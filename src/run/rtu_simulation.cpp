@@ -1,6 +1,7 @@
 #include "run/rtu_simulation.h"
 
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -21,6 +22,8 @@ namespace {
 // Stopping and resuming does not change what happens in any cycle.
 class RunLoop {
  public:
+  enum class End { Finished, LastSnapshot, CountedWindow };
+
   RunLoop(RtuTop& top, const RtuConfig& config, CycleTrace* trace, const RunProgress& progress,
           const BlockRun& plan, std::vector<RunSnapshot>& snapshots)
       : top_(top),
@@ -29,13 +32,13 @@ class RunLoop {
         trace_(trace),
         progress_(progress),
         plan_(plan),
-        snapshots_(snapshots) {}
+        snapshots_(snapshots),
+        countedUntil_(countedUntil(config)) {}
 
-  // False when the run stopped at its last snapshot.
-  bool run() {
+  End run() {
     if (!progress_ && !trace_ && plan_.afterResults.empty()) {
       simulate();
-      return true;
+      return End::Finished;
     }
     uint64_t nextProgress = kProgressCycles;
     do {
@@ -43,14 +46,15 @@ class RunLoop {
       const uint64_t now = clock_.now();
       // Modules record no cycle before the current one any more (src/trace/cycle_trace.h).
       if (trace_) trace_->flush(now);
+      if (now >= countedUntil_) return End::CountedWindow;
       if (progress_ && now >= nextProgress) {
         progress_(top_.sink().arrivedBefore(now), top_.sink().expected());
         nextProgress = (now / kProgressCycles + 1) * kProgressCycles;
       }
-      if (takeSnapshots(now) && plan_.stopAtLast) return false;
+      if (takeSnapshots(now) && plan_.stopAtLast) return End::LastSnapshot;
       // The modules decide ahead of simulated time: go on until it has passed the last result.
     } while (sc_core::sc_pending_activity() || clock_.now() <= top_.sink().lastArrival());
-    return true;
+    return End::Finished;
   }
 
  private:
@@ -61,6 +65,14 @@ class RunLoop {
       return std::max<uint64_t>(1, plan_.everyCycles);
     if (!trace_) return kProgressCycles;
     return config_.trace ? config_.trace->flushCycles : TraceOptions{}.flushCycles;
+  }
+
+  // A run that only counts a windowed trace's bytes has counted them all once the window has
+  // passed: no record after it reaches the file. (A timeline keeps a ray that starts in its
+  // window to its end, so a run with one goes on.)
+  static uint64_t countedUntil(const RtuConfig& config) {
+    const bool onlyCounting = config.trace && config.trace->countOnly && !config.timeline.wanted();
+    return onlyCounting ? config.trace->toCycle : std::numeric_limits<uint64_t>::max();
   }
 
   // True once the last snapshot is taken.
@@ -80,6 +92,7 @@ class RunLoop {
   const RunProgress& progress_;
   const BlockRun& plan_;
   std::vector<RunSnapshot>& snapshots_;
+  const uint64_t countedUntil_;
 };
 
 // A trace when the run writes or counts one, a timeline, or has listeners: the file is optional.
@@ -119,10 +132,15 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
 
   RtuRun run;
   const auto start = std::chrono::steady_clock::now();
-  const bool finished = RunLoop(*top, config, trace.get(), progress, plan, run.snapshots).run();
+  const RunLoop::End end = RunLoop(*top, config, trace.get(), progress, plan, run.snapshots).run();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!finished) return run;
+  if (end == RunLoop::End::LastSnapshot) return run;
+  if (end == RunLoop::End::CountedWindow) {
+    trace->finish(0);
+    run.traceBytes = trace->countedBytes();
+    return run;
+  }
 
   HostSink& sink = top->sink();
   sink.arrange();

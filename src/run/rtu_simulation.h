@@ -48,6 +48,7 @@ struct RtuRun {
   RtuStatistics statistics;
   std::vector<RunSnapshot> snapshots;
   // Bytes of the trace's VCD and of the timeline, of a run that only counts them (countOnly).
+  // A run counting a windowed trace alone stops once the window has passed, with no results.
   uint64_t traceBytes = 0, timelineBytes = 0;
 };
 

@@ -106,9 +106,23 @@ void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
                            " arrived after the cycles before " + std::to_string(written_) +
                            " were written");
   if (signal == kNoSignal) return;
-  const bool forFile =
-      fileIndex_[static_cast<size_t>(signal)] != kNoSignal && cycle < options_.toCycle;
+  const int index = fileIndex_[static_cast<size_t>(signal)];
+  if (listeners_.empty() && cycle < options_.fromCycle) {
+    // Before the window only the value it starts from matters: kept in place, not queued, so
+    // the cycles before a window cost little more than untraced ones.
+    if (index != kNoSignal) holdInitial(signals_[static_cast<size_t>(index)], cycle, value);
+    return;
+  }
+  const bool forFile = index != kNoSignal && cycle < options_.toCycle;
   if (forFile || !listeners_.empty()) changes_.push_back(Change{cycle, signal, value});
+}
+
+// The latest record before the window wins; within a cycle the last to arrive.
+void CycleTrace::holdInitial(Signal& signal, uint64_t cycle, uint64_t value) {
+  if (signal.hasInitial && cycle < signal.initialCycle) return;
+  signal.hasInitial = true;
+  signal.initialCycle = cycle;
+  signal.initialValue = value;
 }
 
 void CycleTrace::flush(uint64_t cycle) {
@@ -226,9 +240,8 @@ void CycleTrace::fileCycle(uint64_t cycle, const Settled& settled) {
   if (cycle < options_.fromCycle) {
     for (const TraceChange& change : settled) {
       const int index = fileIndex_[change.signal];
-      if (index == kNoSignal) continue;
-      signals_[static_cast<size_t>(index)].hasInitial = true;
-      signals_[static_cast<size_t>(index)].initialValue = change.value;
+      if (index != kNoSignal)
+        holdInitial(signals_[static_cast<size_t>(index)], cycle, change.value);
     }
     return;
   }

@@ -92,6 +92,7 @@ class CycleTrace {
   static Settled settle(std::vector<Change>::const_iterator begin,
                         std::vector<Change>::const_iterator end);
   void notifyListeners(uint64_t cycle, const Settled& settled);
+  static void holdInitial(Signal& signal, uint64_t cycle, uint64_t value);
   void fileCycle(uint64_t cycle, const Settled& settled);
   void initialValues();
   void writeInitialValues();
