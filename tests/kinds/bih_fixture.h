@@ -19,6 +19,7 @@
 #include "kinds/bih/projected_triangle.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/voxel_faces.h"
+#include "placed_apart.h"
 #include "rtu/golden_shell.h"
 
 namespace rtu {
@@ -58,30 +59,12 @@ struct KindFixture<BihKind<>> {
   // The frame's own records are ray records already.
   static std::vector<HostRecord> rayRecords(Frame& frame, int, int) { return frame.jobs; }
 
-  // One image, three model headers placing it apart (the first at the origin, the others moved
-  // and scaled, or turned); 40 rays against each of the first two, the rest against the third.
-  struct InstancedRays {
-    Frame frame;
-    std::vector<HostRecord> records;
-    WordMemory memory() const { return frame.memory(); }
-  };
+  // One image, three model headers placing it apart (tests/placed_apart.h).
+  using InstancedRays = PlacedApart<Frame>;
   static InstancedRays instancedRays() {
-    InstancedRays rays{frame("sphere", 5, 16, 10), {}};
-    ModelPlacement moved;
-    moved.translation = {0.5, -0.25, 0.5};
-    moved.scale = glm::dvec3(0.75);
-    ModelPlacement turned;
-    turned.rotation = rotationFromEulerDegrees({0, 30, 0});
-    const SceneGrid& grid = rays.frame.grid;
-    const uint32_t headers[3] = {std::get<RayRecord>(rays.frame.jobs[0]).modelAddress,
-                                 appendBihModelHeader(rays.frame.words, grid, moved),
-                                 appendBihModelHeader(rays.frame.words, grid, turned)};
-    for (size_t i = 0; i < rays.frame.jobs.size(); ++i) {
-      RayRecord record = std::get<RayRecord>(rays.frame.jobs[i]);
-      record.modelAddress = headers[std::min<size_t>(i / 40, 2)];
-      rays.records.push_back(record);
-    }
-    return rays;
+    return placedApart(frame("sphere", 5, 16, 10), [](Frame& f, const ModelPlacement& placement) {
+      return appendBihModelHeader(f.words, f.grid, placement);
+    });
   }
 
   static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,

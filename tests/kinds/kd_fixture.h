@@ -18,6 +18,7 @@
 #include "kinds/kd/trayracer_scene.h"
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/voxel_faces.h"
+#include "placed_apart.h"
 #include "rtu/golden_shell.h"
 #include "rtu/model_header.h"
 #include "rtu/model_transform.h"
@@ -57,29 +58,12 @@ struct KindFixture<KdKind> {
   // The frame's own records are ray records already.
   static std::vector<HostRecord> rayRecords(Frame& frame, int, int) { return frame.jobs; }
 
-  // One image, three model headers placing it apart (the first at the origin, the others moved
-  // and scaled, or turned); 40 rays against each of the first two, the rest against the third.
-  struct InstancedRays {
-    Frame frame;
-    std::vector<HostRecord> records;
-    WordMemory memory() const { return frame.memory(); }
-  };
+  // One image, three model headers placing it apart (tests/placed_apart.h).
+  using InstancedRays = PlacedApart<Frame>;
   static InstancedRays instancedRays() {
-    InstancedRays rays{frame("sphere", 5, 16, 10), {}};
-    ModelPlacement moved;
-    moved.translation = {0.5, -0.25, 0.5};
-    moved.scale = glm::dvec3(0.75);
-    ModelPlacement turned;
-    turned.rotation = rotationFromEulerDegrees({0, 30, 0});
-    const uint32_t headers[3] = {std::get<RayRecord>(rays.frame.jobs[0]).modelAddress,
-                                 appendModelHeader(rays.frame.words, moved, 0),
-                                 appendModelHeader(rays.frame.words, turned, 0)};
-    for (size_t i = 0; i < rays.frame.jobs.size(); ++i) {
-      RayRecord record = std::get<RayRecord>(rays.frame.jobs[i]);
-      record.modelAddress = headers[std::min<size_t>(i / 40, 2)];
-      rays.records.push_back(record);
-    }
-    return rays;
+    return placedApart(frame("sphere", 5, 16, 10), [](Frame& f, const ModelPlacement& placement) {
+      return appendModelHeader(f.words, placement, 0);
+    });
   }
 
   static std::vector<CoreKindResult> golden(const WordMemory& memory, const RtuConfig& config,
