@@ -47,7 +47,8 @@ nodes, tests = stats["kd_nodes_visited"], stats["kd_triangle_tests"]
 assert nodes > 0 and tests > 0, stats
 # 16 bytes an access: a node is one, a triangle four (LIST, UTTM0-2)
 assert stats["kd_bytes_fetched"] == 16 * (nodes + 4 * tests), stats
-assert stats["bvh_nodes_visited"] == 0 and stats["bih_nodes_visited"] == 0, stats
+# a run writes its own kind's counters only
+assert not [k for k in stats if k.startswith(("bvh_", "bih_"))], stats
 report = open(sys.argv[2]).read()
 line = re.search(r"^kd +([0-9.]+) nodes, ([0-9.]+) triangle tests", report, re.M)
 assert abs(float(line.group(1)) - nodes / jobs) < 0.01, (line.group(0), nodes)
@@ -76,7 +77,9 @@ kd = {r["core.short_stack"]: r for r in rows if r["core"] == "kd"}
 bvh = [r for r in rows if r["core"] == "bvh"]
 assert len(kd) == 2 and len(bvh) == 2, rows
 assert int(kd["1"]["kd_restarts"]) > int(kd["4"]["kd_restarts"]), rows
-assert kd["4"]["bvh_nodes_visited"] == "0" and int(kd["4"]["kd_nodes_visited"]) > 0, rows
+# another kind's columns are empty in a row
+assert kd["4"]["bvh_nodes_visited"] == "" and int(kd["4"]["kd_nodes_visited"]) > 0, rows
+assert all(r["kd_nodes_visited"] == "" for r in bvh), rows
 assert bvh[0]["total_cycles"] == bvh[1]["total_cycles"], rows
 PY
 echo "kd render: ok"
