@@ -19,12 +19,6 @@
 namespace rtu {
 namespace {
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 void printTable(const std::vector<FormatPrecision>& results, std::ostream& out) {
   char line[256];
   std::snprintf(line, sizeof line, "%-16s %10s %10s %10s %10s %9s %9s %11s %9s %8s %9s %9s\n",
@@ -89,16 +83,16 @@ void writeCsv(const std::vector<FormatPrecision>& results, const RunConfig& fram
                      std::to_string(p.falseHits),
                      std::to_string(p.missedHits),
                      std::to_string(p.differentVoxels),
-                     number(p.falseHitRate()),
-                     number(p.missedHitRate()),
-                     number(p.wrongHitMissRate()),
-                     number(p.differentVoxelRate()),
-                     number(p.tErrorMeanSteps),
-                     number(p.tErrorP99Steps),
-                     number(p.tErrorMaxSteps),
-                     number(p.meanCost),
-                     number(p.referenceMeanCost),
-                     number(p.costChange()),
+                     precisionFigure(p.falseHitRate()),
+                     precisionFigure(p.missedHitRate()),
+                     precisionFigure(p.wrongHitMissRate()),
+                     precisionFigure(p.differentVoxelRate()),
+                     precisionFigure(p.tErrorMeanSteps),
+                     precisionFigure(p.tErrorP99Steps),
+                     precisionFigure(p.tErrorMaxSteps),
+                     precisionFigure(p.meanCost),
+                     precisionFigure(p.referenceMeanCost),
+                     precisionFigure(p.costChange()),
                      std::to_string(p.overflowRays),
                      std::to_string(p.tOverflowRays),
                      std::to_string(p.wrongUnflagged),

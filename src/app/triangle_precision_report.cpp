@@ -12,12 +12,6 @@
 namespace rtu {
 namespace {
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 struct StudyRow {
   std::string study;  // "mesh" or "stress"
   TriangleFormatPrecision result;
@@ -104,8 +98,8 @@ void writeCsv(const std::vector<StudyRow>& rows, const std::string& meshName,
                      std::to_string(c.missedHits),
                      std::to_string(c.otherTriangle),
                      std::to_string(c.otherNotAdjacent),
-                     number(c.tErrorMean()),
-                     number(c.tErrorMax),
+                     precisionFigure(c.tErrorMean()),
+                     precisionFigure(c.tErrorMax),
                      std::to_string(c.edgeRays),
                      std::to_string(c.holes),
                      fixed ? std::to_string(p.degenerate) : "",
@@ -173,6 +167,12 @@ void runTrianglePrecision(const TrianglePrecisionOptions& options, RunConfig set
     writeCsv(all, scene.name, options.csv);
     std::cout << "wrote " << options.csv << "\n";
   }
+}
+
+std::string precisionFigure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
 }
 
 }  // namespace rtu

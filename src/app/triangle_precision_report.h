@@ -23,4 +23,7 @@ struct TrianglePrecisionOptions {
 // The scene's triangles come from `settings` (--mesh or a voxel scene's faces).
 void runTrianglePrecision(const TrianglePrecisionOptions& options, RunConfig settings);
 
+// A figure as both precision reports print it: four significant digits (%.4g).
+std::string precisionFigure(double value);
+
 }  // namespace rtu
