@@ -84,8 +84,7 @@ void JobManager::accept(const HostPayload& host, uint64_t cycle) {
   // acceptance (after a header fetch that outlasted a stall, the next ray is accepted late).
   if (!pipeline_.empty()) outputCycle = std::max(outputCycle, outputOf(pipeline_.back()) + 1);
   if (lastDispatch_) outputCycle = std::max(outputCycle, *lastDispatch_ + 1);
-  CoreJob job{host.ids, set.idWord, set.job};
-  pipeline_.push_back(InFlight{std::move(job), outputCycle - stallShift_});
+  pipeline_.push_back(InFlight{CoreJob{host.ids, set.idWord, set.job}, outputCycle - stallShift_});
   traceReadyAt(cycle + 1);
   if (set.headerFetch > 0) traceReadyAt(cycle + 1 + set.headerFetch);
   // The new job may be the one at the output now.

@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/ring_queue.h"
 #include "kinds/registry.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/cycle_clock.h"
@@ -74,7 +75,7 @@ class JobManager final : public Agent {
   CoreJobSetup setup_;  // what it computes (the kind's Setup); this module adds when
   TransferChannel<HostPayload>* in_ = nullptr;
   TransferChannel<CoreJob>* out_ = nullptr;
-  std::deque<InFlight> pipeline_;
+  RingQueue<InFlight> pipeline_;
   uint64_t stallShift_ = 0;  // the stalls so far (modulo 2^64: only outputOf() is a cycle)
   bool frontOffered_ = false;
   std::optional<uint64_t> lastDispatch_;  // of the job that left the output last
