@@ -129,20 +129,19 @@ void CycleTrace::flush(uint64_t cycle) {
   if (cycle <= written_) return;
   written_ = cycle;
   if (!declared_) writeDeclarations();
-  // Stable: within a cycle the records stay in arrival order, so the last one still wins.
-  std::stable_sort(changes_.begin(), changes_.end(),
-                   [](const Change& a, const Change& b) { return a.cycle < b.cycle; });
+  sortPending();
   const auto byCycle = [](const Change& change, uint64_t c) { return change.cycle < c; };
   const auto end = std::lower_bound(changes_.begin(), changes_.end(), cycle, byCycle);
   for (auto begin = changes_.cbegin(); begin != end;) {
     auto next = begin;
     while (next != end && next->cycle == begin->cycle) ++next;
-    const Settled settled = settle(begin, next);
-    notifyListeners(begin->cycle, settled);
-    if (writer_) fileCycle(begin->cycle, settled);
+    settle(begin, next);
+    notifyListeners(begin->cycle, settled_);
+    if (writer_) fileCycle(begin->cycle, settled_);
     begin = next;
   }
   changes_.erase(changes_.begin(), end);
+  sorted_ = changes_.size();
   if (writer_ && !dumped_ && cycle > options_.fromCycle) {
     initialValues();
     writeInitialValues();
@@ -209,28 +208,73 @@ void CycleTrace::fallingEdge(uint64_t cycle) {
   current_[clockIndex_] = 0;
 }
 
-CycleTrace::Settled CycleTrace::settle(std::vector<Change>::const_iterator begin,
-                                       std::vector<Change>::const_iterator end) {
-  std::map<int, uint64_t> last;
-  for (auto change = begin; change != end; ++change) last[change->signal] = change->value;
-  Settled settled;
-  for (const auto& [signal, value] : last) settled.push_back({static_cast<size_t>(signal), value});
-  return settled;
+// Stable: within a cycle the records stay in arrival order, so the last one still wins. The
+// records left from the last flush are in order already (modules record ahead of simulated time,
+// so they can be many): only those that came since are sorted, then merged behind them.
+void CycleTrace::sortPending() {
+  const auto byCycle = [](const Change& a, const Change& b) { return a.cycle < b.cycle; };
+  const auto middle = changes_.begin() + static_cast<std::ptrdiff_t>(sorted_);
+  if (!countingSort(middle, changes_.end())) std::stable_sort(middle, changes_.end(), byCycle);
+  std::inplace_merge(changes_.begin(), middle, changes_.end(), byCycle);
+  sorted_ = changes_.size();
+}
+
+// A stable counting sort by cycle when the records span few cycles against their number (those
+// of one flush interval do): two linear passes instead of a merge sort. False when it does not
+// apply.
+bool CycleTrace::countingSort(std::vector<Change>::iterator begin,
+                              std::vector<Change>::iterator end) {
+  const size_t count = static_cast<size_t>(end - begin);
+  if (count < 2) return true;
+  const auto [low, high] = std::minmax_element(begin, end, [](const Change& a, const Change& b) {
+    return a.cycle < b.cycle;
+  });
+  const uint64_t first = low->cycle, span = high->cycle - first + 1;
+  if (span > 2 * count + options_.flushCycles) return false;
+  cycleStarts_.assign(span + 1, 0);
+  for (auto change = begin; change != end; ++change) ++cycleStarts_[change->cycle - first + 1];
+  for (size_t i = 1; i <= span; ++i) cycleStarts_[i] += cycleStarts_[i - 1];
+  scratch_.resize(count);
+  for (auto change = begin; change != end; ++change)
+    scratch_[cycleStarts_[change->cycle - first]++] = *change;
+  std::copy(scratch_.begin(), scratch_.end(), begin);
+  return true;
+}
+
+// Without a map per cycle: each signal's last record is marked by its index in this round, and
+// the signals found are sorted (a cycle has few).
+void CycleTrace::settle(std::vector<Change>::const_iterator begin,
+                        std::vector<Change>::const_iterator end) {
+  lastRecord_.resize(fileIndex_.size());
+  lastRecordRound_.resize(fileIndex_.size());
+  ++settleRound_;
+  settled_.clear();
+  for (auto change = begin; change != end; ++change) {
+    const auto signal = static_cast<size_t>(change->signal);
+    if (lastRecordRound_[signal] != settleRound_) {
+      lastRecordRound_[signal] = settleRound_;
+      settled_.push_back({signal, 0});
+    }
+    lastRecord_[signal] = static_cast<size_t>(change - begin);
+  }
+  std::sort(settled_.begin(), settled_.end(),
+            [](const TraceChange& a, const TraceChange& b) { return a.signal < b.signal; });
+  for (TraceChange& change : settled_) change.value = begin[lastRecord_[change.signal]].value;
 }
 
 void CycleTrace::notifyListeners(uint64_t cycle, const Settled& settled) {
   if (listeners_.empty()) return;
   heard_.resize(fileIndex_.size());
   heardValue_.resize(fileIndex_.size());
-  Settled changed;
+  changed_.clear();
   for (const TraceChange& change : settled) {
     if (heard_[change.signal] && heardValue_[change.signal] == change.value) continue;
     heard_[change.signal] = true;
     heardValue_[change.signal] = change.value;
-    changed.push_back(change);
+    changed_.push_back(change);
   }
-  if (changed.empty()) return;
-  for (TraceListener* listener : listeners_) listener->changed(cycle, changed);
+  if (changed_.empty()) return;
+  for (TraceListener* listener : listeners_) listener->changed(cycle, changed_);
 }
 
 // Before the window a cycle only sets the values the window starts from; the window's first

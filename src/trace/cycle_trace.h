@@ -89,8 +89,11 @@ class CycleTrace {
   bool scopeKept(const std::string& scope);
   bool classKept(const std::string& name) const;
   void writeDeclarations();
-  static Settled settle(std::vector<Change>::const_iterator begin,
-                        std::vector<Change>::const_iterator end);
+  // The records in arrival order, ordered by cycle (stably) up to the end.
+  void sortPending();
+  bool countingSort(std::vector<Change>::iterator begin, std::vector<Change>::iterator end);
+  // settled_: the last record of each signal among [begin, end) (one cycle's), by signal.
+  void settle(std::vector<Change>::const_iterator begin, std::vector<Change>::const_iterator end);
   void notifyListeners(uint64_t cycle, const Settled& settled);
   static void holdInitial(Signal& signal, uint64_t cycle, uint64_t value);
   void fileCycle(uint64_t cycle, const Settled& settled);
@@ -110,8 +113,17 @@ class CycleTrace {
   std::vector<Signal> signals_;           // the signals the file keeps
   std::set<std::string> declaredScopes_;  // kept or not
   std::vector<bool> scopeMatched_;        // per scope of the filter
-  std::vector<Change> changes_;           // records of cycles not yet written, in arrival order
-  uint64_t written_ = 0;                  // every cycle before it is written
+  // Records of cycles not yet written: [0, sorted_) ordered by cycle (stably), the rest as they
+  // arrived since the last flush.
+  std::vector<Change> changes_;
+  size_t sorted_ = 0;
+  std::vector<size_t> cycleStarts_;  // countingSort's
+  std::vector<Change> scratch_;
+  Settled settled_, changed_;              // one cycle's, reused from cycle to cycle
+  std::vector<size_t> lastRecord_;         // per signal id: settle()'s last record of it
+  std::vector<uint64_t> lastRecordRound_;  // per signal id: the settle() that set lastRecord_
+  uint64_t settleRound_ = 0;
+  uint64_t written_ = 0;  // every cycle before it is written
   bool declared_ = false, dumped_ = false;
   std::vector<bool> known_;  // per signal of the file
   std::vector<uint64_t> current_;
