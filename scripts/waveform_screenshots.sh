@@ -23,13 +23,12 @@ Xvfb "$display" -screen 0 1600x900x24 -nolisten tcp &
 xvfb=$!
 sleep 1
 
-# shot NAME ZOOM REPLAY-OPTIONS...: a trace of the first cycles, opened with its save file
-# (window size and zoom added), grabbed once GTKWave has drawn it.
+# shot NAME REPLAY-OPTIONS...: a trace of the first cycles, opened with its save file as rtusim
+# writes it (its window size, view and zoom), grabbed once GTKWave has drawn it.
 shot() {
-  local name=$1 zoom=$2; shift 2
+  local name=$1; shift
   "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin "$@" --trace "$name.fst" >/dev/null
-  { echo "[size] 1600 900"; sed "s/^\*-20.000000 /*$zoom /" "$name.fst.gtkw"; } >"$name.view.gtkw"
-  DISPLAY=$display gtkwave "$name.fst" "$name.view.gtkw" >/dev/null 2>&1 &
+  DISPLAY=$display gtkwave "$name.fst" "$name.fst.gtkw" >/dev/null 2>&1 &
   local viewer=$!
   sleep 4
   DISPLAY=$display import -window root "$out/$name.png"
@@ -39,8 +38,8 @@ shot() {
 }
 
 # The pipeline at the start of a frame: host in, scheduler, two of four cores, result manager.
-shot waveform_pipeline -18.5 --cores 4 --trace-to 200 --trace-clock \
+shot waveform_pipeline --cores 4 --trace-to 200 --trace-clock \
   --trace-scope rtu.job_manager rtu.scheduler rtu.core_0 rtu.core_1 rtu.result_manager
 # Cached memory: cores BLOCKED on their reads, the L1 counters.
-shot waveform_cached -19.5 --cores 2 --memory cached --trace-to 400 \
+shot waveform_cached --cores 2 --memory cached --trace-to 400 \
   --trace-scope rtu.core_0 rtu.core_1 rtu.memory

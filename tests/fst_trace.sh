@@ -52,8 +52,8 @@ for line in open(sys.argv[1]):
 expected = [(cycle * 10000 + half * 5000, 1 - half) for cycle in range(100, 140) for half in (0, 1)]
 assert edges == expected[:len(edges)] and len(edges) >= 70, edges[:6]
 PY
-grep -A1 -x '\[signals_width\] 240' clk.fst.gtkw | tail -1 | grep -qx '@28' &&
-  sed -n 6p clk.fst.gtkw | grep -qx '+{clk} rtu.clk' || fail "clk.fst.gtkw does not show the clock first"
+grep -A2 -x '\[signals_width\] 240' clk.fst.gtkw | tail -2 | tr '\n' ' ' |
+  grep -qx '@28 +{clk} rtu.clk ' || fail "clk.fst.gtkw does not show the clock first"
 ! grep -q 'clk' t.fst.gtkw || fail "a trace without --trace-clock has a clock"
 "$rtusim" replay --svo sphere.svo --jobs jobs.bin --out out.bin --cores 2 --trace c.vcd \
   --trace-clock >report.txt
@@ -96,8 +96,23 @@ for cycle in sorted(changes):
         break
 PY
 )
-[[ $(awk '/^\*/ { print $2 }' t.fst.gtkw) == $((first_result * 10000)) ]] ||
+# In cycles (the default at 100 MHz, 10 ns, which GTKWave keeps in ns): the marker at the first
+# result's cycle, the view from the first cycle.
+[[ $(awk '/^\*/ { print $2 }' t.fst.gtkw) == $((first_result * 10)) ]] ||
   fail "the marker is not at the first result (cycle $first_result)"
+grep -qx '\[timestart\] 0' t.fst.gtkw || fail "the save file's view does not start at cycle 0"
+
+# --trace-time: cycles by default at 100 MHz, picoseconds on demand (the same changes); cycles
+# refused where a cycle is no timescale (150 MHz) or cannot hold a clock's edges.
+grep -qx '\$timescale 10ns \$end' v.vcd || fail "the trace at 100 MHz is not in cycles (10 ns)"
+"${replay[@]}" --vcd ps.vcd --trace-time ps >/dev/null
+grep -qx '\$timescale 1ps \$end' ps.vcd || fail "--trace-time ps did not trace in picoseconds"
+normalise ps.vcd >ps.txt
+cmp -s ps.txt vcd.txt || fail "the trace in picoseconds holds other changes than the one in cycles"
+expect_error "cannot show a traced clock" "${replay[@]}" --vcd c.vcd --trace-clock --trace-time cycles
+expect_error "this clock's is 6667 ps" "${replay[@]}" --vcd c.vcd --clock-mhz 150 --trace-time cycles
+"${replay[@]}" --vcd mhz150.vcd --clock-mhz 150 >/dev/null
+grep -qx '\$timescale 1ps \$end' mhz150.vcd || fail "auto did not fall back to picoseconds at 150 MHz"
 
 # rtusim wave: GTKWave (here a stand-in that prints its arguments) gets the trace and its save file.
 expect_error "no such trace file: missing.fst" "$rtusim" wave missing.fst

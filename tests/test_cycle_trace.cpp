@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,7 @@
 #include "trace/cycle_trace.h"
 #include "trace/gtkw_save_file.h"
 #include "trace/instance_names.h"
+#include "trace/trace_writer.h"
 
 namespace rtu {
 namespace {
@@ -41,6 +43,7 @@ std::string recorded(const std::string& name, bool flushInBetween) {
   TraceOptions options;
   options.path = tracePath(name);
   options.periodPs = 10;
+  options.time = TraceTime::Picoseconds;
   CycleTrace trace(options);
   const int state = trace.declare("top.core_0", "state", 3);
   const int valid = trace.declare("top.in", "valid", 1);
@@ -113,6 +116,53 @@ TEST_CASE("Trace streaming: records over many cycles or few give the trace held 
   CHECK(randomRecords("random_counted.vcd", 1u << 20, true) == whole);  // counting sort always
   CHECK(randomRecords("random_merged.vcd", 1, true) == whole);  // the merge sort on sparse flushes
   CHECK(whole.find("#4") != std::string::npos);
+}
+
+TEST_CASE("Trace time units: a period of a power of ten picoseconds is a timescale", "[trace]") {
+  const std::vector<std::tuple<uint64_t, int, std::string>> units{
+      {1, -12, "1ps"},     {10, -11, "10ps"},     {1000, -9, "1ns"},
+      {10000, -8, "10ns"}, {100000, -7, "100ns"}, {1000000, -6, "1us"}};
+  for (const auto& [ps, exponent, text] : units) {
+    const std::optional<TraceTimeUnit> unit = TraceTimeUnit::ofPicoseconds(ps);
+    REQUIRE(unit);
+    CHECK(unit->exponent == exponent);
+    CHECK(unit->vcdTimescale() == text);
+    CHECK(unit->picoseconds() == ps);
+    CHECK(unit->viewerFactor() == (text[1] == '0' ? (text[2] == '0' ? 100u : 10u) : 1u));
+  }
+  for (uint64_t ps : {0, 4000, 6667, 20000}) CHECK_FALSE(TraceTimeUnit::ofPicoseconds(ps));
+}
+
+// One signal at 100 MHz (10 ns), changing in cycles 0, 2 and 7.
+std::string timedTrace(const std::string& name, TraceTime time, uint64_t periodPs = 10000) {
+  TraceOptions options;
+  options.path = tracePath(name);
+  options.periodPs = periodPs;
+  options.time = time;
+  CycleTrace trace(options);
+  const int level = trace.declare("top", "level", 1);
+  trace.record(level, 0, 0);
+  trace.record(level, 2, 1);
+  trace.record(level, 7, 0);
+  trace.finish(2);
+  const std::string text = contents(options.path);
+  fs::remove(options.path);
+  fs::remove(saveFilePath(options.path));
+  return text;
+}
+
+TEST_CASE("Trace time: cycle numbers in a timescale of the clock period\\, or picoseconds",
+          "[trace]") {
+  const std::string cycles = timedTrace("cycles.vcd", TraceTime::Auto);
+  CHECK(cycles.find("$timescale 10ns $end") == 0);
+  CHECK(cycles.substr(cycles.find("$dumpvars")) == "$dumpvars\n0!\n$end\n#2\n1!\n#7\n0!\n");
+  const std::string ps = timedTrace("ps.vcd", TraceTime::Picoseconds);
+  CHECK(ps.find("$timescale 1ps $end") == 0);
+  CHECK(ps.substr(ps.find("$dumpvars")) == "$dumpvars\n0!\n$end\n#20000\n1!\n#70000\n0!\n");
+  // 4 ns is no timescale: auto traces in picoseconds, cycles are refused.
+  CHECK(timedTrace("auto4ns.vcd", TraceTime::Auto, 4000).find("$timescale 1ps $end") == 0);
+  CHECK_THROWS_WITH(timedTrace("cycles4ns.vcd", TraceTime::Cycles, 4000),
+                    Catch::Contains("this clock's is 4000 ps"));
 }
 
 TEST_CASE("Trace refuses a record behind the written cycles and a late declaration", "[trace]") {

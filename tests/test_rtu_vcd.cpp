@@ -47,6 +47,16 @@ namespace fs = std::filesystem;
 
 class Vcd {
  public:
+  // Picoseconds of a timescale rtusim writes ("1ps", "10ns", ...): times are read in ps.
+  static uint64_t unitPs(const std::string& timescale) {
+    const size_t digits = timescale.find_first_not_of("0123456789");
+    const std::string unit = timescale.substr(digits);
+    const uint64_t factor = std::stoull(timescale.substr(0, digits));
+    const uint64_t scale = unit == "ps" ? 1 : unit == "ns" ? 1000 : unit == "us" ? 1000000 : 0;
+    if (scale == 0) throw std::runtime_error("unexpected timescale " + timescale);
+    return factor * scale;
+  }
+
   static Vcd read(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot open " + path);
@@ -88,7 +98,7 @@ class Vcd {
       }
       switch (line[0]) {
         case '#':
-          time = std::stoull(line.substr(1));
+          time = std::stoull(line.substr(1)) * unitPs(vcd.timescale);
           // (The writer repeats the first stamp after $dumpvars when values change in the
           // first cycle, so equal stamps are accepted; going back in time is not.)
           if (!vcd.times.empty() && time < vcd.times.back())
@@ -265,7 +275,8 @@ std::vector<Dispatch> dispatches(const Traced& t, int cores) {
 void checkTrace(const Traced& t, int cores) {
   const RtuRun& run = t.run;
   const size_t rays = run.results.size();
-  CHECK(t.vcd.timescale == "1ps");
+  // In cycles where a cycle is a timescale (100 MHz: 10 ns), else in picoseconds.
+  CHECK(t.vcd.timescale == (t.periodPs == 10000 ? "10ns" : "1ps"));
   for (uint64_t time : t.vcd.times) CHECK(time % t.periodPs == 0);
 
   // Host side: one job manager handshake per job, one result handshake per ray, in exactly the

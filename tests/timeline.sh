@@ -82,6 +82,21 @@ took = [n for n in range(4) if any(level("rtu.core_%d.in.ray" % n, c) == 100 for
 assert took == [core], (took, core)
 PY
 [[ $(grep -m1 '^-' ray.vcd.gtkw) == "-core_$core" ]] || fail "the save file does not show core $core first"
+# The save file opens on the window (a trace in cycles at 100 MHz, which GTKWave keeps in ns: ten
+# units a cycle): from its first cycle, zoomed so GTKWave's window of the save file's size
+# (4.3 * 2^-zoom units wide, measured) holds the window with at most 10 % to spare, the marker at
+# the ray's result.
+python3 - ray.vcd.gtkw "$from" "$to" <<'PY' || fail "--trace-ray save file view"
+import sys
+lines, first, last = open(sys.argv[1]).read().split("\n"), int(sys.argv[2]), int(sys.argv[3])
+assert "[size] 1400 900" in lines
+assert "[timestart] %d" % (10 * first) in lines, lines[:4]
+zoom, marker = [l.split()[:2] for l in lines if l.startswith("*")][0]
+shown = 4.3 * 2 ** -float(zoom[1:])
+assert 10 * (last + 1 - first) <= shown <= 11 * (last + 1 - first), (shown, first, last)
+assert int(marker) == 10 * last, (marker, last)
+PY
+grep -qx '\$timescale 10ns \$end' ray.vcd || fail "a trace at 100 MHz is not in cycles"
 python3 - ray.json "$from" "$to" <<'PY' || fail "--trace-ray timeline"
 import json, sys
 events, first, last = json.load(open(sys.argv[1]))["traceEvents"], int(sys.argv[2]), int(sys.argv[3])

@@ -2,17 +2,35 @@
 """Prints a VCD file as its value changes, one "cycle signal value" line each, in cycle and
 signal order: the form in which two traces of the same run must be equal whatever order or
 redundancy their writers chose. A change to the value a signal already holds is dropped, and
-'x' is written as x. Usage: vcd_normalise.py trace.vcd period_ps"""
+'x' is written as x. Times are read in the file's $timescale (cycles or picoseconds: rtusim's
+--trace-time). Usage: vcd_normalise.py trace.vcd period_ps"""
+import re
 import sys
+
+UNIT_PS = {"ps": 1, "ns": 10**3, "us": 10**6, "ms": 10**9, "s": 10**12}
+
+
+def timescale_ps(text):
+    """Picoseconds of a $timescale such as "10ns" or "1 ps"."""
+    match = re.fullmatch(r"(1|10|100)\s*(ps|ns|us|ms|s)", text.strip())
+    if not match:
+        raise SystemExit(f"unsupported $timescale {text!r}")
+    return int(match.group(1)) * UNIT_PS[match.group(2)]
 
 
 def changes(path):
-    codes, scopes, time = {}, [], 0
-    definitions = True
+    """(time in ps, signal, bits) of each value change."""
+    codes, scopes, time, unit = {}, [], 0, 1
+    definitions, timescale = True, None
     with open(path) as vcd:
         for line in vcd:
             words = line.split()
             if not words:
+                continue
+            if timescale is not None or words[0] == "$timescale":
+                timescale = (timescale or []) + [w for w in words if w not in ("$timescale", "$end")]
+                if "$end" in words:
+                    unit, timescale = timescale_ps("".join(timescale)), None
                 continue
             if definitions:
                 if words[0] == "$scope":
@@ -26,7 +44,7 @@ def changes(path):
                 continue
             head = words[0]
             if head[0] == "#":
-                time = int(head[1:])
+                time = int(head[1:]) * unit
             elif head[0] == "b":
                 yield time, codes[words[1]], head[1:]
             elif head[0] in "01xz":

@@ -18,6 +18,9 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
   if (!vcdPath.empty()) {
     resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
     resolved.trace->clock = traceClock;
+    resolved.trace->time = traceTime == "cycles" ? TraceTime::Cycles
+                           : traceTime == "ps"   ? TraceTime::Picoseconds
+                                                 : TraceTime::Auto;
   }
   resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
@@ -67,6 +70,13 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
       .add_flag("--trace-clock", outputs.traceClock,
                 "trace a clock (rtu.clk, high in the first half of every cycle): two changes "
                 "per cycle")
+      ->needs(vcd);
+  command
+      .add_option("--trace-time", outputs.traceTime,
+                  "the trace's time unit: cycles (GTKWave shows cycle numbers; the clock period "
+                  "must be a power of ten picoseconds, as 10 ns at 100 MHz), ps, or auto (cycles "
+                  "where they can be, ps with --trace-clock), default auto")
+      ->check(CLI::IsMember({"auto", "cycles", "ps"}))
       ->needs(vcd);
   CLI::Option* maxMb = command
                            .add_option("--trace-max-mb", outputs.traceMaxMb,

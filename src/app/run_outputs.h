@@ -28,6 +28,7 @@ struct RunOutputs {
   std::vector<std::string> vcdScopes;
   std::vector<std::string> signalClasses;
   bool traceClock = false;
+  std::string traceTime = "auto";  // --trace-time: auto, cycles or ps (TraceTime)
   std::string timelinePath;
   int64_t traceRay = -1;  // -1: no --trace-ray
   uint64_t traceMaxMb = 300;

@@ -146,6 +146,7 @@ RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& rec
       config.trace->fromCycle = window.from;
       config.trace->toCycle = window.to;
       if (window.core >= 0) config.trace->firstModule = "core_" + std::to_string(window.core);
+      config.trace->markerCycle = window.to - 1;  // the ray's result at the host
     }
     config.timeline.fromCycle = window.from;
     config.timeline.toCycle = window.to;

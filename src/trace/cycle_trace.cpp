@@ -39,10 +39,28 @@ CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listene
     throw std::invalid_argument("a traced clock needs a clock period of at least 2 ps (at most "
                                 "500,000 MHz)");
   checkTraceSignalClasses(options_.signalClasses);
+  chooseTimeUnit();
   if (options_.countOnly)
-    writer_ = openVcdCounter(counter_);
+    writer_ = openVcdCounter(counter_, unit_);
   else if (!options_.path.empty())
-    writer_ = openTraceWriter(options_.path);
+    writer_ = openTraceWriter(options_.path, unit_);
+}
+
+void CycleTrace::chooseTimeUnit() {
+  const std::optional<TraceTimeUnit> period = TraceTimeUnit::ofPicoseconds(options_.periodPs);
+  if (options_.time == TraceTime::Cycles && options_.clock)
+    throw std::invalid_argument("a trace in cycles (--trace-time cycles) cannot show a traced "
+                                "clock (--trace-clock), whose falling edges are in mid-cycle: "
+                                "trace in picoseconds (--trace-time ps)");
+  if (options_.time == TraceTime::Cycles && !period)
+    throw std::invalid_argument(
+        "a trace in cycles (--trace-time cycles) needs a clock period of a power of ten "
+        "picoseconds, as VCD and FST timescales are (10 ns at 100 MHz); this clock's is " +
+        std::to_string(options_.periodPs) + " ps: trace in picoseconds (--trace-time ps)");
+  const bool cycles = options_.time == TraceTime::Cycles ||
+                      (options_.time == TraceTime::Auto && period && !options_.clock);
+  unit_ = cycles ? *period : TraceTimeUnit{};
+  ticksPerCycle_ = cycles ? 1 : options_.periodPs;
 }
 
 bool CycleTrace::scopeKept(const std::string& scope) {
@@ -148,7 +166,7 @@ void CycleTrace::flush(uint64_t cycle) {
   }
 }
 
-void CycleTrace::finish(uint64_t markerCycle) {
+void CycleTrace::finish(uint64_t firstResult) {
   flush(std::numeric_limits<uint64_t>::max());
   for (TraceListener* listener : listeners_) listener->finished();
   if (!writer_) return;
@@ -157,7 +175,14 @@ void CycleTrace::finish(uint64_t markerCycle) {
   std::vector<SaveFileSignal> shown;
   for (const Signal& s : signals_)
     shown.push_back({s.scope, s.variable.name, s.variable.width, s.variable.valueNames});
-  writeSaveFile(options_.path, shown, markerCycle * options_.periodPs, options_.firstModule);
+  const uint64_t first = options_.fromCycle;
+  const uint64_t last = std::max(first, std::min(lastFiled_, options_.toCycle - 1));
+  uint64_t marker = options_.markerCycle.value_or(firstResult);
+  if (marker < first || marker > last) marker = first;
+  const uint64_t factor = unit_.viewerFactor();
+  writeSaveFile(options_.path, shown,
+                {timeOf(marker) * factor, timeOf(first) * factor, timeOf(last + 1) * factor},
+                options_.firstModule);
 }
 
 void CycleTrace::writeDeclarations() {
@@ -196,14 +221,14 @@ void CycleTrace::declareClock() {
 
 void CycleTrace::clockUpTo(uint64_t end) {
   for (; clockNext_ < end; ++clockNext_) {
-    writer_->time(clockNext_ * options_.periodPs);
+    writer_->time(timeOf(clockNext_));
     writer_->value(clockIndex_, true, 1);
     fallingEdge(clockNext_);
   }
 }
 
 void CycleTrace::fallingEdge(uint64_t cycle) {
-  writer_->time(cycle * options_.periodPs + options_.periodPs / 2);
+  writer_->time(timeOf(cycle) + ticksPerCycle_ / 2);
   writer_->value(clockIndex_, true, 0);
   current_[clockIndex_] = 0;
 }
@@ -322,7 +347,7 @@ void CycleTrace::writeInitialValues() {
     known_[clockIndex_] = true;
     current_[clockIndex_] = 1;
   }
-  writer_->beginInitial(options_.fromCycle * options_.periodPs);
+  writer_->beginInitial(timeOf(options_.fromCycle));
   for (size_t i = 0; i < signals_.size(); ++i) writer_->value(i, known_[i], current_[i]);
   writer_->endInitial();
   if (!options_.clock) return;
@@ -332,10 +357,11 @@ void CycleTrace::writeInitialValues() {
 
 // A signal is written when its value changed; with a clock, every cycle up to this one is.
 void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
+  lastFiled_ = cycle;
   bool stamped = false;
   if (options_.clock) {
     clockUpTo(cycle);
-    writer_->time(cycle * options_.periodPs);
+    writer_->time(timeOf(cycle));
     writer_->value(clockIndex_, true, 1);
     stamped = true;
   }
@@ -344,7 +370,7 @@ void CycleTrace::writeCycle(uint64_t cycle, const Settled& settled) {
     if (signal == kNoSignal) continue;
     const auto index = static_cast<size_t>(signal);
     if (known_[index] && current_[index] == change.value) continue;
-    if (!stamped) writer_->time(cycle * options_.periodPs);
+    if (!stamped) writer_->time(timeOf(cycle));
     stamped = true;
     known_[index] = true;
     current_[index] = change.value;

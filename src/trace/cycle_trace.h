@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@
 #include "trace/trace_writer.h"
 
 namespace rtu {
+
+// The trace's time axis: cycles (a unit a clock period, so GTKWave shows cycle numbers) or
+// picoseconds. Auto: cycles when the period is a power of ten of picoseconds (100 MHz: 10 ns) and
+// no clock is traced (its falling edges are in mid-cycle), else picoseconds.
+enum class TraceTime { Auto, Cycles, Picoseconds };
 
 struct TraceOptions {
   std::string path;  // empty: no file, only the listeners
@@ -38,6 +44,10 @@ struct TraceOptions {
   // The module whose group the save file shows first ("core_3": the core of --trace-ray's ray);
   // empty: pipeline order only.
   std::string firstModule = {};
+  TraceTime time = TraceTime::Auto;
+  // The save file's marker (--trace-ray: the ray's result at the host); none: the first result.
+  // A marker outside the window moves to its first cycle.
+  std::optional<uint64_t> markerCycle = {};
 };
 
 class CycleTrace {
@@ -64,9 +74,12 @@ class CycleTrace {
 
   // Writes every cycle before `cycle`: no record for them can arrive any more.
   void flush(uint64_t cycle);
-  // Writes the rest, and a GTKWave save file next to the trace (src/trace/gtkw_save_file.h) with a
-  // marker at `markerCycle`; throws std::runtime_error when a file could not be written.
-  void finish(uint64_t markerCycle);
+  // Writes the rest, and a GTKWave save file next to the trace (src/trace/gtkw_save_file.h) shown
+  // from the window's first cycle to its last, with a marker at TraceOptions::markerCycle or else
+  // `firstResult`; throws std::runtime_error when a file could not be written.
+  void finish(uint64_t firstResult);
+  // The file's time of a cycle, in its unit (TraceTime).
+  uint64_t timeOf(uint64_t cycle) const { return cycle * ticksPerCycle_; }
 
   // Records held in memory, waiting for their cycle to become final.
   size_t pendingRecords() const { return changes_.size(); }
@@ -89,6 +102,7 @@ class CycleTrace {
   bool scopeKept(const std::string& scope);
   bool classKept(const std::string& name) const;
   void writeDeclarations();
+  void chooseTimeUnit();
   // The records in arrival order, ordered by cycle (stably) up to the end.
   void sortPending();
   bool countingSort(std::vector<Change>::iterator begin, std::vector<Change>::iterator end);
@@ -106,6 +120,9 @@ class CycleTrace {
   void fallingEdge(uint64_t cycle);
 
   TraceOptions options_;
+  TraceTimeUnit unit_;          // the file's
+  uint64_t ticksPerCycle_ = 1;  // the file's time units a cycle
+  uint64_t lastFiled_ = 0;      // the last cycle written to the file
   std::vector<TraceListener*> listeners_;
   CountingStream counter_;
   std::unique_ptr<TraceWriter> writer_;

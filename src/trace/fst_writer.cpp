@@ -22,10 +22,10 @@ class FstWriter : public TraceWriter {
   // The writer writes a scratch file in the temporary folder, copied into the output when
   // complete: it maps a file of its own beside the trace (NAME.hier), which on a full disk
   // killed the process with SIGBUS, and it checks none of its writes.
-  explicit FstWriter(const std::string& path) : file_(path), scratch_(scratchPath()) {
+  FstWriter(const std::string& path, TraceTimeUnit unit) : file_(path), scratch_(scratchPath()) {
     fst_ = fstWriterCreate(scratch_.c_str(), 1);
     if (!fst_) file_.fail("the FST writer cannot open '" + scratch_ + "'");
-    fstWriterSetTimescale(fst_, -12);  // 1 ps
+    fstWriterSetTimescale(fst_, unit.exponent);
     fstWriterSetPackType(fst_, FST_WR_PT_LZ4);
   }
   ~FstWriter() override {
@@ -45,11 +45,11 @@ class FstWriter : public TraceWriter {
     variables_[index] = {variable.width, handle};
   }
   void endDeclarations() override {}
-  void beginInitial(uint64_t timePs) override { time(timePs); }
+  void beginInitial(uint64_t time) override { this->time(time); }
   void endInitial() override {}
-  void time(uint64_t timePs) override {
-    fstWriterEmitTimeChange(fst_, timePs);
-    endTime_ = timePs;
+  void time(uint64_t time) override {
+    fstWriterEmitTimeChange(fst_, time);
+    endTime_ = time;
   }
   void value(size_t index, bool known, uint64_t value) override {
     const auto [width, handle] = variables_[index];
@@ -126,8 +126,8 @@ class FstWriter : public TraceWriter {
 
 }  // namespace
 
-std::unique_ptr<TraceWriter> openFstWriter(const std::string& path) {
-  return std::make_unique<FstWriter>(path);
+std::unique_ptr<TraceWriter> openFstWriter(const std::string& path, TraceTimeUnit unit) {
+  return std::make_unique<FstWriter>(path, unit);
 }
 
 }  // namespace rtu

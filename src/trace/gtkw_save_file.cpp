@@ -1,6 +1,8 @@
 #include "trace/gtkw_save_file.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -88,13 +90,26 @@ std::string writeTranslateFilter(const std::string& tracePath, const SaveFileSig
 
 std::string saveFilePath(const std::string& tracePath) { return tracePath + ".gtkw"; }
 
+// GTKWave (3.3.x) shows 2^-zoom times this many time units across the waves of a window of the
+// save file's [size], measured: gtkwave -S with getWindowStartTime/getWindowEndTime under xvfb
+// (docs/waveforms.md).
+constexpr double kUnitsAtZoomZero = 4.3;
+
+double zoomToFit(uint64_t span) {
+  const double shown = static_cast<double>(std::max<uint64_t>(span, 1)) * 1.05;
+  return std::log2(kUnitsAtZoomZero / shown);
+}
+
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
-                   uint64_t markerPs, const std::string& firstModule) {
+                   const SaveFileView& view, const std::string& firstModule) {
   const std::string path = saveFilePath(tracePath);
   OutputFile file(path);
   std::ostream& out = file.stream();
   out << "[dumpfile] \"" << std::filesystem::absolute(tracePath).string() << "\"\n";
-  out << "*-20.000000 " << markerPs;
+  out << "[size] 1400 900\n[timestart] " << view.start << '\n';
+  char zoom[32];
+  std::snprintf(zoom, sizeof zoom, "*%.6f ", zoomToFit(view.end - view.start));
+  out << zoom << view.marker;
   for (int i = 0; i < 26; ++i) out << " -1";           // no named markers
   out << "\n[sst_expanded] 1\n[signals_width] 240\n";  // room for "stack_depth =BLOCKED"
 

@@ -21,9 +21,19 @@ struct SaveFileSignal {
 // FST of one name keep their own).
 std::string saveFilePath(const std::string& tracePath);
 
+// What the save file shows first, in GTKWave's time unit (TraceTimeUnit::viewerFactor): the
+// marker, and the view from `start` to before `end` (the window), zoomed to fit a window of the
+// size the save file sets.
+struct SaveFileView {
+  uint64_t marker = 0, start = 0, end = 1;
+};
+
 // Writes saveFilePath(tracePath), the group of `firstModule` (e.g. "core_3") first when it is
 // not empty; throws std::runtime_error when it cannot be written.
 void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSignal>& signals,
-                   uint64_t markerPs, const std::string& firstModule = {});
+                   const SaveFileView& view, const std::string& firstModule = {});
+// GTKWave's zoom (the save file's "*" line) that shows `span` time units in its window of the
+// save file's size, a little to spare.
+double zoomToFit(uint64_t span);
 
 }  // namespace rtu

@@ -24,9 +24,10 @@ std::string identifierCode(size_t index) {
 class VcdWriter : public TraceWriter {
  public:
   // `counter` non-null: writes into it instead of the file at `path`, to count the bytes.
-  VcdWriter(const std::string& path, CountingStream* counter) : counter_(counter) {
+  VcdWriter(const std::string& path, CountingStream* counter, TraceTimeUnit unit)
+      : counter_(counter) {
     if (!counter_) file_.emplace(path);
-    out() << "$timescale 1ps $end\n";
+    out() << "$timescale " << unit.vcdTimescale() << " $end\n";
   }
   uint64_t bytes() const override { return counter_ ? counter_->count() : 0; }
   void enterScope(const std::string& name) override {
@@ -40,9 +41,9 @@ class VcdWriter : public TraceWriter {
           << " $end\n";
   }
   void endDeclarations() override { out() << "$enddefinitions $end\n"; }
-  void beginInitial(uint64_t timePs) override { out() << '#' << timePs << "\n$dumpvars\n"; }
+  void beginInitial(uint64_t time) override { out() << '#' << time << "\n$dumpvars\n"; }
   void endInitial() override { out() << "$end\n"; }
-  void time(uint64_t timePs) override { out() << '#' << timePs << '\n'; }
+  void time(uint64_t time) override { out() << '#' << time << '\n'; }
   void value(size_t index, bool known, uint64_t value) override {
     const auto& [width, code] = variables_[index];
     if (width == 1)
@@ -68,12 +69,12 @@ class VcdWriter : public TraceWriter {
 
 }  // namespace
 
-std::unique_ptr<TraceWriter> openVcdWriter(const std::string& path) {
-  return std::make_unique<VcdWriter>(path, nullptr);
+std::unique_ptr<TraceWriter> openVcdWriter(const std::string& path, TraceTimeUnit unit) {
+  return std::make_unique<VcdWriter>(path, nullptr, unit);
 }
 
-std::unique_ptr<TraceWriter> openVcdCounter(CountingStream& counter) {
-  return std::make_unique<VcdWriter>("(counted)", &counter);
+std::unique_ptr<TraceWriter> openVcdCounter(CountingStream& counter, TraceTimeUnit unit) {
+  return std::make_unique<VcdWriter>("(counted)", &counter, unit);
 }
 
 }  // namespace rtu
