@@ -16,6 +16,7 @@ CSV_CONFIG = ["width", "height", "cores"]
 CSV_NAMES = {"memory.l1.hit_rate": "l1_hit_rate", "memory.l2.hit_rate": "l2_hit_rate",
              "core_time.busy": "core_busy", "core_time.blocked": "core_blocked",
              "core_time.handover": "core_handover", "core_time.idle": "core_idle",
+             "core_time.triangle_unit_stall": "core_unit_stall",
              "memory.dram.bytes": "dram_bytes", "cost.mean": "cost_mean",
              "blocked_cycles.mean": "blocked_mean", "scheduler.max_wait": "max_wait"}
 TIME_PARTS = [("busy", "busy", "#2b8a3e"), ("blocked", "blocked", "#e8590c"),

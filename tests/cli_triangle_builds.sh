@@ -95,29 +95,9 @@ PY
 # longest side) hit the same triangles as on the BVH, at t scaled by the grid's scale, up to
 # float32 origins on a 2^29 grid (a grid coordinate carries 24 bits: within 2^-20 of the grid's
 # side) and the grid's rounding (rays near edges may differ: at most 5 %).
-python3 - s.bvh s.bih rays.bin grid_rays.bin grid_scale.txt bad_rays.bin <<'PY'
-import struct, sys
-def words(path):
-    raw = open(path, "rb").read()
-    return struct.unpack("<%dI" % (len(raw) // 4), raw), struct.unpack("<%df" % (len(raw) // 4), raw)
-bvh, bvhf = words(sys.argv[1])
-bih, _ = words(sys.argv[2])
-base, count = bvh[8], bvh[9]
-points = [bvhf[base + 12 * t + k: base + 12 * t + k + 3] for t in range(count) for k in (0, 3, 6)]
-lower = [min(p[a] for p in points) for a in range(3)]
-upper = [max(p[a] for p in points) for a in range(3)]
-n = bih[14] & 63  # header word 14: the format, n in bits 5:0
-scale = (2 ** n - 1) / max(u - l for u, l in zip(upper, lower))
-raw = open(sys.argv[3], "rb").read()
-out = b""
-for i in range(len(raw) // 32):
-    r = struct.unpack("<I6fI", raw[32 * i:32 * i + 32])
-    origin = [(r[1 + a] - lower[a]) * scale for a in range(3)]
-    out += struct.pack("<I6fI", r[0], *origin, *r[4:7], 0)
-open(sys.argv[4], "wb").write(out)
-open(sys.argv[5], "w").write("%r %d" % (scale, n))
-open(sys.argv[6], "wb").write(out[:28] + struct.pack("<I", 7))
-PY
+python3 "$here/bih_grid_rays.py" s.bvh s.bih rays.bin grid_rays.bin grid_scale.txt
+python3 -c "
+raw = open('grid_rays.bin', 'rb').read(); open('bad_rays.bin', 'wb').write(raw[:28] + bytes([7, 0, 0, 0]))"
 "$rtusim" golden --accel-file s.bih --rays grid_rays.bin --results-csv rb.csv >golden_bih.txt \
   2>/dev/null
 grep -q "^rays        384$" golden_bih.txt || fail "BIH golden report: $(cat golden_bih.txt)"

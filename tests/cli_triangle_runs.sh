@@ -4,7 +4,8 @@
 # over `core` gives each kind's row its own counters, and a kind's settings in it are reported as
 # without effect in the other kind's rows; a sampled BVH row estimates the full run's cycles;
 # fidelity measures the BVH's modes against its SystemC run (exact modes equal golden); animate
-# and replay refuse a triangle core by name.
+# refuses a triangle core by name, and replay an SVO image on one (cli_triangle_replay.sh runs
+# its triangle records).
 # Usage: cli_triangle_runs.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -89,6 +90,6 @@ PY
 touch anim.toml
 expect_error "animate --core bvh: animated scenes run on the svo core only" \
   "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim
-expect_error "replay --core bvh: replay runs the thesis' SVO buffers only" \
+expect_error "replay --core bvh: --svo is the SVO core's image" \
   "$rtusim" replay --core bvh --svo missing.svo --rays missing.bin --out out.bin
 echo "triangle runs: ok"

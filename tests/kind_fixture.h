@@ -77,8 +77,12 @@ inline uint64_t rayRecordFirstDispatch(const JobManagerTiming& timing) {
 
 // The per-cycle RTL reference of the RTU `config` describes.
 inline RtlTopConfig rtlTopConfig(const RtuConfig& config) {
-  return RtlTopConfig{config.cores, config.coreConfigs, config.jobManager.rayStages,
-                      config.jobManager.headerFetchCycles, config.core};
+  return RtlTopConfig{config.cores,
+                      config.coreConfigs,
+                      config.jobManager.rayStages,
+                      config.jobManager.headerFetchCycles,
+                      config.core,
+                      config.triangleSharedBy};
 }
 
 // A run's results and every cycle against the RTL transcription's (run: RtuRun, the SystemC

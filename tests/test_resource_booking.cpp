@@ -35,14 +35,30 @@ TEST_CASE("Booking out of order: a request fills the first gap it fits in", "[bo
   CHECK(bus.firstFree(26, 1) == 29);
 }
 
+TEST_CASE("Booking spread out of order: a request takes the first free cycles\, gaps or not",
+          "[booking]") {
+  ResourceBooking bus(RequestOrder::Any);
+  CHECK(bus.bookSpread(20, 4) == 24);  // [20, 24)
+  CHECK(bus.bookSpread(26, 2) == 28);  // [26, 28)
+  // From 17: 17, 18, 19, then past [20, 24): 24, 25, then past [26, 28): 28, 29, 30. Ends at 31.
+  CHECK(bus.bookSpread(17, 8) == 31);
+  CHECK(bus.firstFree(10, 1) == 10);
+  CHECK(bus.firstFree(17, 1) == 31);       // 17 .. 30 all taken now
+  CHECK(bus.bookSpread(40, 3) == 43);      // beyond every booking: consecutive
+  CHECK(bus.bookSpread(5000, 2) == 5002);  // far ahead: the ring grows
+  CHECK(bus.firstFree(41, 1) == 43);
+}
+
 TEST_CASE("Booking: both orders agree on requests that come in cycle order", "[booking]") {
   std::mt19937_64 random(5);
   ResourceBooking inOrder(RequestOrder::Cycle), anyOrder(RequestOrder::Any);
+  ResourceBooking spreadInOrder(RequestOrder::Cycle), spreadAnyOrder(RequestOrder::Any);
   uint64_t from = 0;
   for (int i = 0; i < 2000; ++i) {
     from += random() % 7;
     const uint64_t cycles = 1 + random() % 5;
     REQUIRE(inOrder.book(from, cycles) == anyOrder.book(from, cycles));
+    REQUIRE(spreadInOrder.bookSpread(from, cycles) == spreadAnyOrder.bookSpread(from, cycles));
   }
 }
 
@@ -73,5 +89,8 @@ TEST_CASE("L2 out of order: an earlier request after a later one, cycles by hand
   // Line B at cycle 50, after it: port free at 50, tag check to 58, DRAM bus free from 98 to
   // 106 (before A's transfer at 148), there at 106.
   CHECK(loose.read(64, 50) == 106);
+  // Line C at cycle 95: tag check to 103, DRAM from 143: 143 .. 147 free, then past A's [148,
+  // 156): 156, 157, 158. There at 159, not after A at 164 (the bus loses no cycle).
+  CHECK(loose.read(128, 95) == 159);
   CHECK_THROWS_AS(strict.read(0, 100) + strict.read(64, 50), std::logic_error);
 }

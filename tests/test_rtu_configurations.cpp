@@ -442,6 +442,37 @@ TEMPLATE_LIST_TEST_CASE("Every configuration returns the golden model's results"
   }
 }
 
+TEMPLATE_LIST_TEST_CASE("Shared triangle units return the golden model's results", "[rtu]",
+                        TestedKinds) {
+  // core.triangle.shared_by 1, 2 and 4 over every memory and policy: a test's wait for its unit
+  // is timing only, and with a unit a core no test waits.
+  if constexpr (HasTriangleUnit<TestType>::value) {
+    const auto& scene = frameScenes<TestType>().front();
+    const RtuConfig base = kindConfig<TestType>();
+    const std::vector<CoreKindResult> expected =
+        KindFixture<TestType>::golden(scene.memory(), base, scene.jobs);
+    const uint64_t reads = wordsRead<TestType>(scene.memory(), scene.jobs, base);
+    for (const NamedMemory& memory : memories()) {
+      for (int cores : {4, 16}) {
+        for (int sharedBy : {1, 2, 4}) {
+          for (SchedulerPolicy policy : kPolicies) {
+            RtuConfig config = base;
+            config.cores = cores;
+            config.scheduler = policy;
+            config.memory = memory.config;
+            config.triangleSharedBy = sharedBy;
+            INFO(scene.scene << ", " << memory.name << ": " << describe(config) << ", shared by "
+                             << sharedBy);
+            const RtuRun run = simulateRtu(scene.memory(), scene.jobs, config);
+            checkRun(run, expected, config, reads);
+            if (sharedBy == 1) CHECK(run.statistics.allCores().unitStallCycles == 0);
+          }
+        }
+      }
+    }
+  }
+}
+
 TEMPLATE_LIST_TEST_CASE("Other arithmetic, stack depths and job manager depths", "[rtu]",
                         TestedKinds) {
   // The golden model with the same configuration is the reference.

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "app/triangle_replay.h"
 #include "kinds/bih/bih_kind.h"
 #include "rtu/golden_shell.h"
 #include "rtu/model_header.h"
 
 namespace rtu {
-namespace {
 
-ResultRow rowOf(const BihResult& result, const FixedTriangleFormat& format) {
+ResultRow bihResultRow(const BihResult& result, const FixedTriangleFormat& format) {
   if (!result.hit) return {result.idWord, false, 0, {}, {}, {}, {}};
   // The seed's u weighs x2 and its v x1 (fixed_kernels.h rtusimBarycentrics), at 2^(m-1+E).
   const int scale = format.m - 1 + format.E;
@@ -24,8 +24,6 @@ ResultRow rowOf(const BihResult& result, const FixedTriangleFormat& format) {
           {}};
 }
 
-}  // namespace
-
 BihGoldenRun traceBihGolden(const std::vector<uint32_t>& image, const std::vector<RayRecord>& rays,
                             const std::string& raysPath) {
   // The identity model header after the image: world space is the grid.
@@ -36,21 +34,16 @@ BihGoldenRun traceBihGolden(const std::vector<uint32_t>& image, const std::vecto
   GoldenShell<BihKind<>> shell(WordMemory(words), BihConfig{});
   BihGoldenRun run;
   run.rows.reserve(rays.size());
+  const std::vector<RayRecord> aimed = recordsAtModel(rays, model, raysPath, "a .bih file");
   const auto start = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < rays.size(); ++i) {
-    RayRecord record = rays[i];
-    if (record.modelAddress != 0)
-      throw std::runtime_error("ray buffer '" + raysPath + "': record " + std::to_string(i) +
-                               " names model address " + std::to_string(record.modelAddress) +
-                               "; a .bih file has no model headers: give 0");
-    record.modelAddress = model;
+  for (const RayRecord& record : aimed) {
     const JobSetUp<BihJob> set = setup.setUp(record);
     BihResult result;
     shell.run(record.id, set.job, result);  // a ray that misses the box ends in AABB
     run.nodes += result.counts.nodes;
     run.triangleTests += result.counts.triangleTests;
     run.cost += result.cost;
-    run.rows.push_back(rowOf(result, format));
+    run.rows.push_back(bihResultRow(result, format));
   }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

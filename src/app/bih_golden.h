@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/results_csv.h"
+#include "kinds/bih/bih_kind.h"
 #include "rtu/ray_record.h"
 
 namespace rtu {
@@ -20,6 +21,10 @@ struct BihGoldenRun {
   uint64_t nodes = 0, triangleTests = 0, cost = 0;  // totals over the rays
   double seconds = 0;                               // host time of the traversals
 };
+
+// A BIH result's row: t its distance along the record's direction, the seed's (v, u) as rtusim's
+// barycentrics at the image's `format` (2^(m-1+E)).
+ResultRow bihResultRow(const BihResult& result, const FixedTriangleFormat& format);
 
 // Throws std::runtime_error naming `raysPath` and the record for a model address other than 0,
 // and as readBihFile for `image`'s words.

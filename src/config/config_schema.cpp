@@ -438,6 +438,13 @@ void addBvhSettings(std::vector<Setting>& schema) {
       "core.triangle.interval", "--triangle-interval",
       "BVH and k-d: the triangle unit's initiation interval, cycles between two tests' issues",
       &BvhCycles::triangleInterval, &KdCycles::triangleInterval));
+  schema.push_back(integer(
+      "core.triangle.shared_by", "--triangle-shared-by", "cores", 1, kMaxCores, kUseModel,
+      "BVH, BIH and k-d: cores sharing one ray/triangle unit, round-robin (1: a unit per core; "
+      "at most the core count)",
+      [](C& c) -> int& { return c.rtu.triangleSharedBy; }));
+  schema.back().ignoredBecause =
+      ignoredUnlessCore({BvhKind<>::kName, BihKind<>::kName, KdKind::kName});
   schema.push_back(choice(
       "accel.triangle_test", "--triangle-test", {"watertight", "moller-trumbore"}, arith,
       "the BVH core's ray/triangle test in float32 (and the golden run's over an accel_file)",

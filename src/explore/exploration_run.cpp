@@ -258,6 +258,7 @@ std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
           {"core_blocked", "core_time/blocked"},
           {"core_handover", "core_time/handover"},
           {"core_idle", "core_time/idle"},
+          {"core_unit_stall", "core_time/triangle_unit_stall"},
           {"max_wait", "scheduler/max_wait"},
           {"l1_hit_rate", "memory/l1/hit_rate"},
           {"l2_hit_rate", "memory/l2/hit_rate"},

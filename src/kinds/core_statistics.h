@@ -16,9 +16,10 @@ namespace rtu {
 
 struct CoreStatistics : CoreKinds::Counters {
   uint64_t jobs = 0;
-  uint64_t busyCycles = 0;     // the kind's working states (the jobs' cost)
-  uint64_t blockedCycles = 0;  // BLOCKED
-  uint64_t outCycles = 0;      // OUT: result waiting for the result manager
+  uint64_t busyCycles = 0;       // the kind's working states (the jobs' cost)
+  uint64_t blockedCycles = 0;    // BLOCKED
+  uint64_t outCycles = 0;        // OUT: result waiting for the result manager
+  uint64_t unitStallCycles = 0;  // a test waiting for its shared triangle unit
 
   static const StatisticGroup<CoreStatistics>& declaration() {
     using C = CoreStatistics;
@@ -33,6 +34,10 @@ struct CoreStatistics : CoreKinds::Counters {
             .count(Statistic("handover", "cycles",
                              "cycles in OUT: a result waiting for the result manager"),
                    &C::outCycles)
+            .count(Statistic("triangle_unit_stall", "cycles",
+                             "cycles a test waited for its shared ray/triangle unit "
+                             "(core.triangle.shared_by; not in busy or blocked)"),
+                   &C::unitStallCycles)
             .combinedBase<CoreKinds::Counters>();
     return group;
   }

@@ -19,6 +19,10 @@ void RtlTopConfig::validate() const {
                                 "got " +
                                 std::to_string(rayStages) + " and " +
                                 std::to_string(headerFetchCycles));
+  if (triangleSharedBy < 1 || triangleSharedBy > cores)
+    throw std::invalid_argument("core.triangle.shared_by must be 1 to the core count (" +
+                                std::to_string(cores) + "), got " +
+                                std::to_string(triangleSharedBy));
 }
 
 namespace {

@@ -36,9 +36,11 @@ struct RtlTopConfig {
   int rayStages = 6;                  // beyond P_STAGES, for ray records
   int headerFetchCycles = 16;         // a model's first ray
   std::string core = SvoKind::kName;  // the cores' kind (kinds/registry.h)
+  // Cores per ray/triangle unit (core.triangle.shared_by), for a kind with one; round-robin.
+  int triangleSharedBy = 1;
 
   // Throws std::invalid_argument unless 1 <= cores <= kMaxRtlCores, every kind's settings are
-  // valid, 0 <= rayStages <= 64 and headerFetchCycles >= 0.
+  // valid, 0 <= rayStages <= 64, headerFetchCycles >= 0 and 1 <= triangleSharedBy <= cores.
   void validate() const;
   // The settings of a core of `Kind`, as RtuConfig's.
   template <class Kind>

@@ -48,6 +48,8 @@ struct Wires {
   std::vector<bool> coreOutValid;
   std::vector<bool> coreOutReady;
   std::vector<RtlCycle::Delivery> coreOutResult;
+  // cores -> triangle units: the unit takes core i's test this cycle
+  std::vector<bool> unitGrant;
   bool outValid = false;
   bool outReady = true;
   RtlCycle::Delivery outResult;
@@ -78,8 +80,23 @@ struct Core {
   uint32_t idWord = 0;  // out_result.job_id
   uint64_t tag = 0;
   uint32_t stateCycle = 0;  // cycles of the current state done (Kind::stateCycles, SVO: 1)
+  bool testTaken = false;   // the current state's test went to the triangle unit
 
   uint64_t state() const { return static_cast<uint64_t>(behaviour.state()); }
+  // Its state asks the triangle unit this cycle: it issues a test the unit has not taken yet.
+  bool asksUnit() const {
+    return state() != Kind::kIdleState && state() != Kind::kOutState && !testTaken &&
+           issuesTriangleTest<Kind>(behaviour);
+  }
+};
+
+// A ray/triangle unit shared by the cores [first, first + count): it takes one test in a cycle, no
+// earlier than `interval` cycles after the last, from the first asking core at or after `turn`,
+// counting on cyclically through the group.
+struct TriangleUnit {
+  int first = 0, count = 1;
+  uint64_t freeFrom = 0;
+  int turn = 0;
 };
 
 struct ResultManager {
@@ -126,7 +143,10 @@ class RtlTop {
   void clockJobManager(const Wires& wires);
   void clockScheduler();
   void clockCores(const Wires& wires);
+  void clockUnits(const Wires& wires);
   void clockResultManager(const Wires& wires);
+  // Which core, if any, `unit` takes a test from this cycle.
+  int unitGrant(const rtl_top::TriangleUnit& unit) const;
   // The conversion is a pure function of the input, so converting on entry and carrying the
   // result down the stages gives what float_to_fixed delivers at the end of them.
   void accept(const RtlOffer& offer);
@@ -137,6 +157,8 @@ class RtlTop {
   rtl_top::JobManager<Kind> jobManager_;
   int coreSelect_ = 0;
   std::vector<Core> cores_;
+  std::vector<rtl_top::TriangleUnit> units_;  // every kind has them; only a kind with tests asks
+  uint32_t unitInterval_ = 1;
   rtl_top::ResultManager resultManager_;
   uint64_t cycle_ = 0;
   std::vector<uint64_t> acceptCycles_;
@@ -155,6 +177,9 @@ RtlTop<Kind>::RtlTop(const WordMemory& memory, const RtlTopConfig& config)
   const size_t cores = static_cast<size_t>(config_.cores);
   const Core idle{Kind::behaviour(config_.coreConfig<Kind>())};
   cores_.assign(cores, idle);
+  for (int first = 0; first < config_.cores; first += config_.triangleSharedBy)
+    units_.push_back({first, std::min(config_.triangleSharedBy, config_.cores - first), 0, first});
+  unitInterval_ = triangleIntervalOf<Kind>(config_.coreConfig<Kind>());
   resultManager_.resultValid.assign(cores, false);
   resultManager_.resultBuffer.assign(cores, RtlCycle::Delivery{});
 }
@@ -168,6 +193,7 @@ RtlCycle RtlTop<Kind>::step(const RtlOffer* offer) {
   clockJobManager(wires);
   clockScheduler();
   clockCores(wires);
+  clockUnits(wires);
   clockResultManager(wires);
   ++cycle_;
   return handshakes;
@@ -195,6 +221,13 @@ typename RtlTop<Kind>::Wires RtlTop<Kind>::evaluate(const RtlOffer* offer) const
     }
   }
 
+  // triangle units
+  w.unitGrant.assign(cores, false);
+  for (const rtl_top::TriangleUnit& unit : units_) {
+    const int granted = unitGrant(unit);
+    if (granted >= 0) w.unitGrant[static_cast<size_t>(granted)] = true;
+  }
+
   // result_manager
   const rtl_top::ResultManager& rm = resultManager_;
   for (size_t i = 0; i < cores; ++i) w.coreOutReady[i] = !rm.resultValid[i];
@@ -218,6 +251,16 @@ typename RtlTop<Kind>::Wires RtlTop<Kind>::evaluate(const RtlOffer* offer) const
   w.inRay = offer;
   w.outReady = true;
   return w;
+}
+
+template <class Kind>
+int RtlTop<Kind>::unitGrant(const rtl_top::TriangleUnit& unit) const {
+  if (cycle_ < unit.freeFrom) return -1;
+  for (int k = 0; k < unit.count; ++k) {
+    const int core = unit.first + (unit.turn - unit.first + k) % unit.count;
+    if (cores_[static_cast<size_t>(core)].asksUnit()) return core;
+  }
+  return -1;
 }
 
 template <class Kind>
@@ -262,9 +305,26 @@ void RtlTop<Kind>::clockCores(const Wires& w) {
       }
     } else if (core.state() == Kind::kOutState) {
       if (w.coreOutReady[i]) core.behaviour.finish();
-    } else if (++core.stateCycle == Kind::stateCycles(core.behaviour)) {
-      core.behaviour.step(read);  // in the state's last cycle
-      core.stateCycle = 0;
+    } else if (core.asksUnit() && !w.unitGrant[i]) {
+      // waits for its triangle unit: the state's cycles start with the grant
+    } else {
+      if (w.unitGrant[i]) core.testTaken = true;
+      if (++core.stateCycle == Kind::stateCycles(core.behaviour)) {
+        core.behaviour.step(read);  // in the state's last cycle
+        core.stateCycle = 0;
+        core.testTaken = false;
+      }
+    }
+  }
+}
+
+template <class Kind>
+void RtlTop<Kind>::clockUnits(const Wires& w) {
+  for (rtl_top::TriangleUnit& unit : units_) {
+    for (int core = unit.first; core < unit.first + unit.count; ++core) {
+      if (!w.unitGrant[static_cast<size_t>(core)]) continue;
+      unit.freeFrom = cycle_ + unitInterval_;
+      unit.turn = core + 1 < unit.first + unit.count ? core + 1 : unit.first;
     }
   }
 }

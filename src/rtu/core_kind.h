@@ -24,6 +24,11 @@
 //                        the cache warmer's (run/cache_warmer.h);
 //   Record               the kind's own record, if any (naming itself by kName);
 //   resultRecordBytes(config)  a result's record on the host output link.
+// A kind with a pipelined ray/triangle unit (the triangle kinds) also declares, so that the shells
+// can share one unit among a group of cores (RtuConfig::triangleSharedBy, HasTriangleUnit below):
+//   issuesTriangleTest(b)  whether b's current state issues a test to the unit (its first cycle
+//                          then waits for the unit's grant);
+//   triangleInterval(config)   the unit's initiation interval: cycles from one issue to the next.
 // What the kind-agnostic machinery asks of a Result (the payloads, the host sink and the runs carry
 // it as a CoreKindResult, kinds/registry.h; kinds/core_result.h asks through these):
 //   resultIdWord(r)      the id word the job's set-up gave it, carried back unchanged;
@@ -43,6 +48,7 @@
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rtu {
@@ -68,5 +74,27 @@ struct JobSetUp {
   uint64_t latency = 0;
   uint64_t headerFetch = 0;
 };
+
+// Whether `Kind` has a ray/triangle unit (declares issuesTriangleTest).
+template <class Kind, class = void>
+struct HasTriangleUnit : std::false_type {};
+template <class Kind>
+struct HasTriangleUnit<Kind, std::void_t<decltype(&Kind::issuesTriangleTest)>> : std::true_type {};
+
+// Whether `behaviour`'s current state issues a test to its unit; the unit's interval (1 without).
+template <class Kind>
+bool issuesTriangleTest(const typename Kind::Behaviour& behaviour) {
+  if constexpr (HasTriangleUnit<Kind>::value)
+    return Kind::issuesTriangleTest(behaviour);
+  else
+    return false;
+}
+template <class Kind>
+uint32_t triangleIntervalOf(const typename Kind::Config& config) {
+  if constexpr (HasTriangleUnit<Kind>::value)
+    return Kind::triangleInterval(config);
+  else
+    return 1;
+}
 
 }  // namespace rtu

@@ -66,6 +66,9 @@ std::vector<CoreKindResult> traceGolden(const WordMemory& memory,
 std::optional<std::string> whyNotAnalytic(const RtuConfig& config) {
   if (!config.memory.ideal) return "the memory is cached";
   if (config.reorderCapacity > 0) return "results pass a reorder buffer";
+  if (config.trianglesShared())
+    return "cores share triangle units (core.triangle.shared_by): a test may wait for another "
+           "core's";
   if (config.trace) return "a trace is recorded";
   if (config.timeline.wanted()) return "a timeline is recorded";
   if (config.hostInput.activeProbability < 1.0 || config.hostOutput.activeProbability < 1.0)

@@ -62,7 +62,9 @@ double RtuStatistics::simulatedRaysPerHostSecond() const {
   return hostSeconds > 0.0 ? static_cast<double>(rays) / hostSeconds : 0.0;
 }
 uint64_t RtuStatistics::idleCycles(const CoreStatistics& core) const {
-  return totalCycles - std::min(totalCycles, core.busyCycles + core.blockedCycles + core.outCycles);
+  const uint64_t used =
+      core.busyCycles + core.blockedCycles + core.outCycles + core.unitStallCycles;
+  return totalCycles - std::min(totalCycles, used);
 }
 
 CacheStats RtuStatistics::allL1() const { return sumOf(l1); }
@@ -77,9 +79,11 @@ int64_t RtuStatistics::waitBound() const {
 RtuStatistics::CoreTimeShares RtuStatistics::coreTimeShares() const {
   const CoreStatistics total = allCores();
   const uint64_t all = totalCycles * coreTimes.size();
-  const uint64_t used = total.busyCycles + total.blockedCycles + total.outCycles;
+  const uint64_t used =
+      total.busyCycles + total.blockedCycles + total.outCycles + total.unitStallCycles;
   return {ratio(total.busyCycles, all), ratio(total.blockedCycles, all),
-          ratio(total.outCycles, all), ratio(all - std::min(all, used), all)};
+          ratio(total.outCycles, all), ratio(all - std::min(all, used), all),
+          ratio(total.unitStallCycles, all)};
 }
 
 double RtuStatistics::frameMilliseconds() const {
@@ -153,7 +157,10 @@ const StatisticGroup<RtuStatistics::CoreTimeShares>& RtuStatistics::CoreTimeShar
           .derived(Statistic("busy", "", "share of the cores' cycles busy"), &CoreTimeShares::busy)
           .derived(Statistic("blocked", "", "share BLOCKED on memory"), &CoreTimeShares::blocked)
           .derived(Statistic("handover", "", "share in OUT"), &CoreTimeShares::handover)
-          .derived(Statistic("idle", "", "share in IDLE"), &CoreTimeShares::idle);
+          .derived(Statistic("idle", "", "share in IDLE"), &CoreTimeShares::idle)
+          .derived(Statistic("triangle_unit_stall", "",
+                             "share waiting for a shared ray/triangle unit"),
+                   &CoreTimeShares::unitStall);
   return group;
 }
 
@@ -331,6 +338,9 @@ void RtuStatistics::writeReport(std::ostream& out) const {
   out << "core time (" << cores << " cores): busy " << 100 * shares.busy << " %, blocked "
       << 100 * shares.blocked << " %, handover " << 100 * shares.handover << " %, idle "
       << 100 * shares.idle << " %\n";
+  if (const uint64_t stalls = allCores().unitStallCycles; stalls > 0)
+    out << "triangle units shared: tests waited " << stalls << " cycles (" << ratio(stalls, rays)
+        << " per ray)\n";
   out << "scheduler " << scheduler << ": max wait " << maxWait << " cycles, "
       << maxWaitWithReadyCore << " with a core ready (eq. 6.7 bound: "
       << (waitBound() < 0 ? std::string("W_J") : std::to_string(waitBound())) << ")\n";

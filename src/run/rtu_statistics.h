@@ -58,7 +58,7 @@ struct RtuStatistics {
 
   // Shares of the cores' time (cores x total cycles); they add up to 1.
   struct CoreTimeShares {
-    double busy = 0, blocked = 0, handover = 0, idle = 0;
+    double busy = 0, blocked = 0, handover = 0, idle = 0, unitStall = 0;
     static const StatisticGroup<CoreTimeShares>& declaration();
   };
   CoreTimeShares coreTimeShares() const;

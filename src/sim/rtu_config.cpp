@@ -48,7 +48,23 @@ void checkAccessFitsLines(const RtuConfig& config) {
                                   "-byte line: raise its line size");
 }
 
+// core.triangle.shared_by: 1 to the core count, for a kind with a triangle unit (with another it
+// has no effect and is not checked).
+void checkTriangleSharing(const RtuConfig& config) {
+  const bool unit =
+      withCoreKind(config.core, [](auto kind) { return HasTriangleUnit<decltype(kind)>::value; });
+  if (!unit || (config.triangleSharedBy >= 1 && config.triangleSharedBy <= config.cores)) return;
+  throw std::invalid_argument(
+      "core.triangle.shared_by must be 1 to the core count (" + std::to_string(config.cores) +
+      "): cores per ray/triangle unit, got " + std::to_string(config.triangleSharedBy));
+}
+
 }  // namespace
+
+bool RtuConfig::trianglesShared() const {
+  return triangleSharedBy > 1 &&
+         withCoreKind(core, [](auto kind) { return HasTriangleUnit<decltype(kind)>::value; });
+}
 
 HostLinkConfig RtuConfig::outputLink() const {
   HostLinkConfig link = hostOutput;
@@ -64,6 +80,7 @@ void validate(const RtuConfig& config) {
     throw std::invalid_argument("the RTU needs 1 to " + std::to_string(kMaxCores) + " cores, got " +
                                 std::to_string(config.cores));
   CoreKinds::validateConfigs(config.coreConfigs);
+  checkTriangleSharing(config);
   if (!(config.clockMhz >= kMinClockMhz && config.clockMhz <= kMaxClockMhz))  // NaN fails too
     throw std::invalid_argument("clock must be 1 MHz to 1 THz (1 .. 1e6 MHz), got " +
                                 std::to_string(config.clockMhz) + " MHz");

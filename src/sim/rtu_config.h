@@ -24,6 +24,10 @@ struct RtuConfig {
   MemoryConfig memory = idealMemory();
   JobManagerTiming jobManager;
   CoreKindConfigs coreConfigs;  // every kind's own settings (SVO's: format, stack, ...)
+  // core.triangle.shared_by: cores per ray/triangle unit, a kind with one (rtu/core_kind.h); cores
+  // i*N .. i*N+N-1 share unit i, round-robin (the last group smaller when N does not divide the
+  // cores). 1: a unit per core.
+  int triangleSharedBy = 1;
   HostLinkConfig hostInput, hostOutput;
   int reorderCapacity = 0;  // 0: no reorder buffer
   // warm_frames: frames of the same records run through the caches before the measured one
@@ -49,6 +53,9 @@ struct RtuConfig {
   typename Kind::Config& coreConfig() {
     return CoreKinds::configOf<Kind>(coreConfigs);
   }
+  // Whether cores of the chosen kind share a triangle unit (triangleSharedBy > 1 with a kind that
+  // has one).
+  bool trianglesShared() const;
   // The output link as results of the chosen kind cross it (SVO: 48-byte records over 32 bits).
   HostLinkConfig outputLink() const;
 };

@@ -54,6 +54,11 @@ struct BihKind : TriangleResultQueries<BihResult, BihCounters> {
 
   static constexpr int kWordsPerRead = Behaviour::kWordsPerRead;
   static uint32_t stateCycles(const Behaviour& traversal) { return traversal.stateCycles(); }
+  // Its ray/triangle unit (rtu/core_kind.h): the state that issues a test, the unit's interval.
+  static bool issuesTriangleTest(const Behaviour& traversal) {
+    return traversal.state() == BihState::Test;
+  }
+  static uint32_t triangleInterval(const Config& config) { return config.cycles.triangleInterval; }
   // Dispatched in D, AABB in D + 1 (no read), the root's NODE reads in D + 2.
   static constexpr uint64_t kFirstReadAfterDispatch = 2;
 

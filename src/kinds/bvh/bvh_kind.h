@@ -46,6 +46,11 @@ struct BvhKind : TriangleResultQueries<BvhResult, BvhCounters> {
 
   static constexpr int kWordsPerRead = Behaviour::kWordsPerRead;
   static uint32_t stateCycles(const Behaviour& traversal) { return traversal.stateCycles(); }
+  // Its ray/triangle unit (rtu/core_kind.h): the state that issues a test, the unit's interval.
+  static bool issuesTriangleTest(const Behaviour& traversal) {
+    return traversal.state() == BvhState::Test;
+  }
+  static uint32_t triangleInterval(const Config& config) { return config.cycles.triangleInterval; }
   // Dispatched in D, ROOT0 reads in D + 1.
   static constexpr uint64_t kFirstReadAfterDispatch = 1;
 

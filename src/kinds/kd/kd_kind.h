@@ -45,6 +45,11 @@ struct KdKind : TriangleResultQueries<KdResult, KdCounters> {
 
   static constexpr int kWordsPerRead = Behaviour::kWordsPerRead;
   static uint32_t stateCycles(const Behaviour& traversal) { return traversal.stateCycles(); }
+  // Its ray/triangle unit (rtu/core_kind.h): the state that issues a test, the unit's interval.
+  static bool issuesTriangleTest(const Behaviour& traversal) {
+    return traversal.state() == KdState::Int;
+  }
+  static uint32_t triangleInterval(const Config& config) { return config.cycles.triangleInterval; }
   // Dispatched in D, SINT in D + 1 (no read, core.box.latency cycles), the root's NODE reads in
   // D + 2 at the earliest.
   static constexpr uint64_t kFirstReadAfterDispatch = 2;

@@ -1,8 +1,9 @@
 #pragma once
-// How a traversal core reads SVO words. A core's private level (ideal ROM or its L1) answers at
-// once with the cycle the word is there, so the core can run ahead through cycles nobody else
-// sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores: the
-// core registers its request for its cycle and stops; the memory serves the requests of a cycle
+// How a traversal core reads its words (and asks for a shared triangle unit, which is arbitrated
+// by the same cycle-ordered rule as the shared level). A core's private level (ideal ROM or its L1)
+// answers at once with the cycle the word is there, so the core can run ahead through cycles nobody
+// else sees. A shared level (the L2 behind the L1s) must see requests in cycle order across cores:
+// the core registers its request for its cycle and stops; the memory serves the requests of a cycle
 // once no core can still make one for it, and tells each core the cycle its word is there. To
 // know that, the memory hears from each core the earliest cycle it can ask again (coreOffering; a
 // core waiting for its word asks again only after it) and from the scheduler the earliest cycle
@@ -40,11 +41,17 @@ class DispatchFloor {
   Agent* watcher_ = nullptr;
 };
 
+// A core waiting for a shared resource: the shared memory level, or its group's triangle unit.
 class SharedReadListener {
  public:
   virtual ~SharedReadListener() = default;
   // The word of the core's shared request is there in `dataCycle`.
   virtual void sharedReplied(uint64_t dataCycle) = 0;
+  // The core's shared triangle unit took its test in `cycle` (triangle_unit_arbiter.h).
+  virtual void unitGranted(uint64_t cycle) = 0;
+  // Its unit did not take the test in the cycle asked, but may in `cycle`: the core raises the
+  // bounds it declared on its channels, as the grant's cycle is not known before then.
+  virtual void unitDeferred(uint64_t cycle) = 0;
 };
 
 class CoreMemoryIf : public virtual sc_core::sc_interface {
@@ -63,8 +70,14 @@ class CoreMemoryIf : public virtual sc_core::sc_interface {
   // the cycle the word is there once every request of `cycle` is known.
   virtual void requestShared(int core, uint32_t address, uint64_t cycle,
                              SharedReadListener& reader) = 0;
-  // The core offers its result from `outCycle`.
+  // The core offers its result from `outCycle`. Called by a core that reads the shared level or
+  // shares a triangle unit.
   virtual void coreOffering(int core, uint64_t outCycle) = 0;
+  // Whether the cores share triangle units (core.triangle.shared_by > 1 with a kind that has one).
+  virtual bool trianglesShared() const = 0;
+  // The core's state of `cycle` issues a test to its shared triangle unit (ahead of simulated
+  // time); `reader` hears the cycle the unit takes it, once every request of that cycle is known.
+  virtual void requestTriangleUnit(int core, uint64_t cycle, SharedReadListener& reader) = 0;
 };
 
 }  // namespace rtu

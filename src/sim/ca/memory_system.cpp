@@ -8,8 +8,8 @@ namespace rtu {
 
 MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock,
                            DecisionPump& pump, WordMemory backing, MemoryConfig config, int cores,
-                           uint64_t firstReadAfterDispatch, CycleTrace* trace,
-                           const CacheContents* start)
+                           uint64_t firstReadAfterDispatch, TriangleUnitArbiter units,
+                           CycleTrace* trace, const CacheContents* start)
     : sc_core::sc_module(name),
       Agent(pump),
       clock_(clock),
@@ -17,13 +17,14 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
       config_(config),
       cores_(static_cast<size_t>(cores)),
       calendar_(static_cast<size_t>(cores), kNoBound),
+      units_(std::move(units)),
       firstRead_(firstReadAfterDispatch),
       published_(static_cast<size_t>(cores), firstRead_),  // ready from cycle 0
       wake_(clock),
       trace_(trace) {
+  while ((1 << coreBits_) < cores) ++coreBits_;
   if (config_.ideal) return;
   validate(config_);
-  while ((1 << coreBits_) < cores) ++coreBits_;
   l2_ = std::make_unique<L2CacheTiming>(config_.l2, config_.dram);
   if (start && !start->l2.empty()) l2_->startFrom(start->l2.front());
   for (size_t i = 0; i < cores_.size(); ++i) {
@@ -44,13 +45,13 @@ MemorySystem::MemorySystem(sc_core::sc_module_name name, const CycleClock& clock
 }
 
 void MemorySystem::followDispatches(DispatchFloor& scheduler) {
-  if (config_.ideal) return;
+  if (!serves()) return;
   dispatches_ = &scheduler;
   scheduler.watchDispatchFloor(*this);
 }
 
 void MemorySystem::end_of_elaboration() {
-  if (config_.ideal) return;
+  if (!serves()) return;
   spawnReaction("serve_shared", [this] { pump().runWith(*this); }, {&wake_.event()});
 }
 
@@ -63,9 +64,19 @@ void MemorySystem::tracePrivateLookup(int core, uint64_t cycle) {
 
 void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
                                  SharedReadListener& reader) {
+  cores_[static_cast<size_t>(core)].pendingAddress = address;
+  cores_[static_cast<size_t>(core)].unit = false;
+  enterCalendar(core, cycle, reader);
+}
+
+void MemorySystem::requestTriangleUnit(int core, uint64_t cycle, SharedReadListener& reader) {
+  cores_[static_cast<size_t>(core)].unit = true;
+  enterCalendar(core, cycle, reader);
+}
+
+void MemorySystem::enterCalendar(int core, uint64_t cycle, SharedReadListener& reader) {
   if (cycle <= std::max(clock_.now(), servedThrough_)) failBehind(core, cycle);
   CorePort& port = cores_[static_cast<size_t>(core)];
-  port.pendingAddress = address;
   port.reader = &reader;
   // A core publishes no bound while it runs: its first request after its offer drops it.
   if (published_.value(static_cast<size_t>(core)) != kNoBound)
@@ -75,7 +86,7 @@ void MemorySystem::requestShared(int core, uint32_t address, uint64_t cycle,
 }
 
 void MemorySystem::failBehind(int core, uint64_t cycle) const {
-  throw std::logic_error("shared memory request of core " + std::to_string(core) + " for cycle " +
+  throw std::logic_error("shared request of core " + std::to_string(core) + " for cycle " +
                          std::to_string(cycle) +
                          ", not after simulated time and the cycles served");
 }
@@ -131,28 +142,52 @@ uint64_t MemorySystem::dispatchFloor() const {
 void MemorySystem::serveCycle(uint64_t cycle) {
   servedThrough_ = cycle;
   const int first = takeEarliest();
-  if (requestsWait() && earliestRequestCycle() == cycle) {
+  if ((requestsWait() && earliestRequestCycle() == cycle) ||
+      cores_[static_cast<size_t>(first)].unit) {
     serveArbitrated(first, cycle);
-  } else {
-    servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
-    serve(first, cycle);
+    return;
   }
+  servedLast(first);  // the only request of its cycle, as most are: nothing to arbitrate
+  serve(first, cycle);
   if (trace_) traceShared(cycle);
 }
 
-// Several requests of one cycle: `first` and those left in the calendar for it. Round-robin:
-// from the core after the one served last on (a core has one request at most).
+// The requests of one cycle: `first` and those left in the calendar for it, the shared level's
+// round-robin from the core after the one served last on (a core has one request at most), and
+// the triangle units' requests apart.
 void MemorySystem::serveArbitrated(int first, uint64_t cycle) {
   served_.clear();
-  served_.push_back(first);
-  while (requestsWait() && earliestRequestCycle() == cycle)
-    served_.push_back(takeEarliest());  // in increasing core numbers
+  unitRequests_.clear();
+  for (int core = first;;) {  // in increasing core numbers
+    (cores_[static_cast<size_t>(core)].unit ? unitRequests_ : served_).push_back(core);
+    if (!requestsWait() || earliestRequestCycle() != cycle) break;
+    core = takeEarliest();
+  }
+  if (!unitRequests_.empty()) serveUnits(cycle);
   const size_t count = served_.size();
+  if (count == 0) return;
   size_t start = 0;  // the first at or after the core whose turn it is
   while (start < count && served_[start] < nextPriority_) ++start;
   servedLast(served_[start == 0 ? count - 1 : start - 1]);  // the last in this cycle's turn
   for (size_t i = start; i < count; ++i) serve(served_[i], cycle);
   for (size_t i = 0; i < start; ++i) serve(served_[i], cycle);
+  if (trace_) traceShared(cycle);
+}
+
+// The waiting requests go back into the calendar before a granted core goes on (and perhaps asks
+// again, for a later cycle).
+void MemorySystem::serveUnits(uint64_t cycle) {
+  units_.arbitrate(cycle, unitRequests_, unitsGranted_, unitsDeferred_);
+  for (const auto& [core, next] : unitsDeferred_) {
+    calendar_.set(static_cast<size_t>(core), requestKey(next, core));
+    cores_[static_cast<size_t>(core)].reader->unitDeferred(next);
+  }
+  for (int core : unitsGranted_) {
+    CorePort& port = cores_[static_cast<size_t>(core)];
+    SharedReadListener& reader = *port.reader;
+    port.reader = nullptr;
+    reader.unitGranted(cycle);
+  }
 }
 
 void MemorySystem::traceShared(uint64_t cycle) {

@@ -21,6 +21,12 @@
 // dispatch (2 for SVO: INIT in D + 1, EVAL reads in D + 2): so no earlier than O + 1 + R nor
 // F + R (a core not yet used, no earlier than R). A dispatch not yet decided is
 // at or after simulated time, so F is at least that.
+//
+// Cores that share triangle units (core.triangle.shared_by) ask their unit through the same
+// calendar, with ideal memory too: a request of a cycle is arbitrated once every request of that
+// cycle is known (triangle_unit_arbiter.h), a request not granted goes back into the calendar for
+// its unit's next free cycle. A core has one request at most, of either kind, and its first test
+// follows its first read, so the bounds above hold for both.
 
 #include <cstdint>
 #include <functional>
@@ -32,6 +38,7 @@
 #include "base/lowest_of.h"
 #include "rtu/word_memory.h"
 #include "sim/ca/core_memory_if.h"
+#include "sim/ca/triangle_unit_arbiter.h"
 #include "sim/kernel/cycle_clock.h"
 #include "sim/kernel/module_process.h"
 #include "sim/memory/cache_contents.h"
@@ -44,10 +51,11 @@ namespace rtu {
 
 class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, public Agent {
  public:
-  // `start`: lines resident from cycle 0 (functional warming), or null for empty caches.
+  // `start`: lines resident from cycle 0 (functional warming), or null for empty caches. `units`:
+  // the cores' triangle units (shared or not).
   MemorySystem(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
                WordMemory backing, MemoryConfig config, int cores, uint64_t firstReadAfterDispatch,
-               CycleTrace* trace, const CacheContents* start = nullptr);
+               TriangleUnitArbiter units, CycleTrace* trace, const CacheContents* start = nullptr);
 
   // The scheduler whose dispatches bound the idle cores' next requests.
   void followDispatches(DispatchFloor& scheduler);
@@ -61,6 +69,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   void requestShared(int core, uint32_t address, uint64_t cycle,
                      SharedReadListener& reader) override;
   void coreOffering(int core, uint64_t outCycle) override;
+  bool trianglesShared() const override { return units_.shared(); }
+  void requestTriangleUnit(int core, uint64_t cycle, SharedReadListener& reader) override;
   // Serves the earliest cycle's requests while all are known, cycle after cycle.
   void decide() override;
   void heard(int port) override;
@@ -75,6 +85,7 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
     std::unique_ptr<L1CacheTiming> l1;
     uint32_t pendingAddress = 0;
     SharedReadListener* reader = nullptr;  // null unless a request waits in the calendar
+    bool unit = false;                     // the request asks for the triangle unit
     int hitSignal = CycleTrace::kNoSignal, missSignal = CycleTrace::kNoSignal;
   };
   // A request in the calendar: its cycle above the core's number, so that the calendar's order
@@ -88,6 +99,9 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   }
 
   void end_of_elaboration() override;
+  // Whether it serves requests: of the shared level (cached memory) or of shared triangle units.
+  bool serves() const { return !config_.ideal || units_.shared(); }
+  void enterCalendar(int core, uint64_t cycle, SharedReadListener& reader);
   // Out of line, so that requestShared() needs no stack frame for the message.
   [[noreturn, gnu::noinline, gnu::cold]] void failBehind(int core, uint64_t cycle) const;
   // Whether no core can still make a request for `cycle`.
@@ -99,6 +113,8 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   // Out of line, as most cycles have a single request and no trace: serveCycle() then needs no
   // stack frame for the list of cores or the statistics.
   [[gnu::noinline]] void serveArbitrated(int first, uint64_t cycle);
+  // The unit requests of `cycle` (in unitRequests_): the granted cores go on, the others wait.
+  [[gnu::noinline]] void serveUnits(uint64_t cycle);
   [[gnu::noinline]] void traceShared(uint64_t cycle);
   int takeEarliest();
   void serve(int core, uint64_t cycle);
@@ -113,6 +129,9 @@ class MemorySystem final : public sc_core::sc_module, public CoreMemoryIf, publi
   int coreBits_ = 0;  // bits of the largest core number
   LowestOf calendar_;
   std::vector<int> served_;  // the cores whose requests are of the cycle being served
+  TriangleUnitArbiter units_;
+  std::vector<int> unitRequests_, unitsGranted_;  // of the cycle being served
+  std::vector<std::pair<int, uint64_t>> unitsDeferred_;
   int nextPriority_ = 0;
   uint64_t servedThrough_ = 0;  // the last cycle served (0 also before the first)
   uint64_t firstRead_;          // the cores' kind's first read after dispatch (rtu/core_kind.h)

@@ -15,6 +15,15 @@ std::unique_ptr<TransferChannel<Payload>> channel(const std::string& name, const
   return made;
 }
 
+// The cores' triangle units: shared by groups of core.triangle.shared_by, or one a core.
+TriangleUnitArbiter triangleUnits(const RtuConfig& config) {
+  if (!config.trianglesShared()) return TriangleUnitArbiter(config.cores, 1, 1);
+  const uint32_t interval = withCoreKind(config.core, [&config](auto kind) {
+    return triangleIntervalOf<decltype(kind)>(config.coreConfig<decltype(kind)>());
+  });
+  return TriangleUnitArbiter(config.cores, config.triangleSharedBy, interval);
+}
+
 }  // namespace
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
@@ -40,8 +49,9 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   // The cores' kind decides when an idle core reads first; the cores are made by makeTimedCore.
   const uint64_t firstRead =
       withCoreKind(config.core, [](auto kind) { return decltype(kind)::kFirstReadAfterDispatch; });
-  memory_ = std::make_unique<MemorySystem>("memory", clock_, pump_, memory, config.memory,
-                                           config.cores, firstRead, trace, caches);
+  memory_ =
+      std::make_unique<MemorySystem>("memory", clock_, pump_, memory, config.memory, config.cores,
+                                     firstRead, triangleUnits(config), trace, caches);
   memory_->followDispatches(*scheduler_);
   resultManager_ = std::make_unique<ResultManager>("result_manager", clock_, pump_);
   if (scene) {

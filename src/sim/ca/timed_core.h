@@ -20,6 +20,12 @@
 // (docs/cycle-semantics.md, "Access width and multi-cycle states"). The cost in the result
 // counts every cycle from the first state to the last before OUT, blocked ones included. The core
 // is ready for a job from cycle 0 and from the cycle after its result was taken.
+//
+// With a shared triangle unit (core.triangle.shared_by), a state that issues a test asks the unit
+// in its first cycle s through the memory system, which arbitrates the cycle's requests once all
+// are known (triangle_unit_arbiter.h), and stops like a shared read; granted in g >= s, the state
+// takes its cycles from g (g - s stall cycles, counted apart from its cost; the trace shows the
+// state from s).
 
 #include <algorithm>
 #include <cstdint>
@@ -106,6 +112,7 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   void end_of_elaboration() override {
     words_ = &memory->backingStore();
     combinational_ = memory->combinational();
+    unitShared_ = HasTriangleUnit<Kind>::value && memory->trianglesShared();
     l1_ = memory->privateCache(index_);
   }
 
@@ -114,6 +121,17 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   void sharedReplied(uint64_t dataCycle) override {
     waitForWord(dataCycle);
     run(true);
+  }
+  // The shared triangle unit took the test of the state waiting since localCycle_ in `cycle`: the
+  // state's cycles run from there.
+  void unitGranted(uint64_t cycle) override {
+    statistics_.unitStallCycles += cycle - localCycle_;
+    localCycle_ = cycle;
+    run(true);
+  }
+  // Not granted before `cycle`: the state ends no earlier than its cycles from there.
+  void unitDeferred(uint64_t cycle) override {
+    declareStateEnd(cycle + Kind::stateCycles(core_) - 1);
   }
 
   void start(uint64_t dispatch, const CoreJob& job) {
@@ -141,6 +159,10 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
     if (wordThere) stepState<kTraced>();
     while (core_.busy()) {
       if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
+      if (unitShared_ && issuesTriangleTest<Kind>(core_)) {
+        awaitUnit();
+        return;
+      }
       if (!combinational_ && core_.readsMemory()) {
         const uint32_t address = core_.memoryAddress();
         const PrivateRead reply = lookUp<kTraced>(address);
@@ -152,9 +174,7 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
           phase_ = Phase::AwaitingShared;
           memory->requestShared(index_, address, reply.cycle, *this);
           // The word comes in reply.cycle at the earliest; OUT follows the state after it.
-          const uint64_t stateEnd = std::max(reply.cycle, lastStateCycle());
-          out_->noOfferBefore(stateEnd + 1);
-          in_->notReadyBefore(stateEnd + 2);
+          declareStateEnd(std::max(reply.cycle, lastStateCycle()));
           return;
         }
         consumeWordIn<kTraced>(reply.cycle);
@@ -162,6 +182,21 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
       stepState<kTraced>();
     }
     offerResult();
+  }
+
+  // The state of localCycle_ asks its group's triangle unit and waits in it until granted; OUT
+  // follows the state's own cycles after the grant.
+  void awaitUnit() {
+    phase_ = Phase::AwaitingShared;
+    memory->requestTriangleUnit(index_, localCycle_, *this);
+    declareStateEnd(lastStateCycle());
+  }
+
+  // The current state, waiting for a shared resource, ends in `stateEnd` at the earliest: OUT
+  // follows no earlier, and a job no earlier than the cycle after.
+  void declareStateEnd(uint64_t stateEnd) {
+    out_->noOfferBefore(stateEnd + 1);
+    in_->notReadyBefore(stateEnd + 2);
   }
 
   // The current state's cycle: the word it reads, if any, is there by now. Forced inline, with
@@ -216,7 +251,7 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
     statistics_.blockedCycles += blocked_;
     Kind::count(core_, statistics_);
     phase_ = Phase::Out;
-    if (!combinational_) memory->coreOffering(index_, outCycle_);
+    if (!combinational_ || unitShared_) memory->coreOffering(index_, outCycle_);
     in_->notReadyBefore(outCycle_ + 1);
     out_->offer(result, outCycle_);
   }
@@ -247,6 +282,7 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   uint64_t blocked_ = 0;  // blocked cycles of the current job
   const typename Kind::Memory* words_ = nullptr;
   bool combinational_ = false;
+  bool unitShared_ = false;      // its triangle unit is shared: a test waits for its grant
   L1CacheTiming* l1_ = nullptr;  // null for the combinational ROM
   CycleTrace* trace_;
   int stateSignal_ = CycleTrace::kNoSignal, stackSignal_ = CycleTrace::kNoSignal;

@@ -27,16 +27,28 @@
 #include <tlm>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "rtu/core_kind.h"
 #include "rtu/word_memory.h"
 #include "sim/lt/lt_time.h"
+#include "sim/memory/resource_booking.h"
 
 namespace rtu {
 
-// A job's time on its core: the cycles from its first state to OUT, and how many of them were
-// blocked on memory.
+// A job's time on its core: the cycles from its first state to OUT, how many of them were
+// blocked on memory, and how many its tests waited for a shared triangle unit.
 struct LtTraversal {
   uint64_t cycles = 0;
   uint32_t blocked = 0;
+  uint64_t stalled = 0;
+};
+
+// A triangle unit shared by a group of cores (core.triangle.shared_by): its issues booked one
+// interval each, in any order, since one traversal runs after another (resource_booking.h).
+// Approximate: a test takes the first free slot at or after its state's first cycle, as if the
+// traversals booked in cycle order, not the cycle-accurate model's round-robin.
+struct LtTriangleUnit {
+  ResourceBooking issues{RequestOrder::Any};
+  uint32_t interval = 1;
 };
 
 template <class Kind>
@@ -49,13 +61,16 @@ class LtCore : public sc_core::sc_module {
 
   tlm_utils::simple_initiator_socket<LtCore> memory;
 
-  // `behaviour` must outlive this and be idle between traverse() calls.
-  LtCore(sc_core::sc_module_name name, Behaviour& behaviour, const LtTime& time)
+  // `behaviour` must outlive this and be idle between traverse() calls; so must `unit`, its shared
+  // triangle unit (null: a unit of its own, which never keeps a test waiting).
+  LtCore(sc_core::sc_module_name name, Behaviour& behaviour, const LtTime& time,
+         LtTriangleUnit* unit = nullptr)
       : sc_core::sc_module(name),
         memory("memory"),
         time_(time),
         period_(time.period()),
-        core_(behaviour) {
+        core_(behaviour),
+        unit_(unit) {
     read_.set_read();
     read_.set_data_ptr(reinterpret_cast<unsigned char*>(data_.data()));
     read_.set_data_length(sizeof data_);
@@ -68,7 +83,7 @@ class LtCore : public sc_core::sc_module {
                        typename Kind::Result& result) {
     if (!dmiAsked_) acquireDmi();
     Kind::start(core_, job);
-    const LtTraversal timing = dmi_ ? stepDirect() : stepThroughSocket(initCycle);
+    const LtTraversal timing = dmi_ && !unit_ ? stepDirect() : stepThroughSocket(initCycle);
     Kind::writeResult(idWord, core_, result);
     core_.finish();
     return timing;
@@ -99,7 +114,9 @@ class LtCore : public sc_core::sc_module {
   LtTraversal stepThroughSocket(uint64_t initCycle) {
     Behaviour& core = core_;  // in a register: the member is reloaded after a read
     sc_core::sc_time delay = time_.delayTo(initCycle);
+    uint64_t stalled = 0;
     while (core.busy()) {
+      if (unit_ && issuesTriangleTest<Kind>(core)) delay = awaitUnit(delay, stalled);
       const uint32_t cycles = Kind::stateCycles(core);
       const sc_core::sc_time first = delay;
       stepState(core, delay);
@@ -107,7 +124,16 @@ class LtCore : public sc_core::sc_module {
       delay += period_;
     }
     const uint64_t total = time_.cycleAt(delay) - initCycle;
-    return {total, static_cast<uint32_t>(total - core.cost())};
+    return {total, static_cast<uint32_t>(total - core.cost() - stalled), stalled};
+  }
+
+  // The test of the state beginning at `delay` issues in the unit's first free slot from then:
+  // the delay to it, the wait added to `stalled`.
+  sc_core::sc_time awaitUnit(const sc_core::sc_time& delay, uint64_t& stalled) {
+    const uint64_t asked = time_.cycleAt(delay);
+    const uint64_t granted = unit_->issues.book(asked, unit_->interval);
+    stalled += granted - asked;
+    return time_.delayTo(granted);
   }
 
   // Steps the current state. Its first read issues the state's access at `delay`, its first cycle
@@ -161,6 +187,7 @@ class LtCore : public sc_core::sc_module {
   LtTime time_;
   sc_core::sc_time period_;
   Behaviour& core_;
+  LtTriangleUnit* unit_;
   tlm::tlm_generic_payload read_;
   std::array<uint32_t, kWords> data_{};  // the access's words
   WordMemory direct_;                    // the image through DMI, when granted

@@ -20,6 +20,15 @@ LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, Word
   prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
                                                    static_cast<double>(config.ltQuantum));
+  stalls_.assign(static_cast<size_t>(config.cores), 0);
+  if (config.trianglesShared()) {
+    const uint32_t interval = withCoreKind(config.core, [&config](auto kind) {
+      return triangleIntervalOf<decltype(kind)>(config.coreConfig<decltype(kind)>());
+    });
+    units_.resize(static_cast<size_t>((config.cores + config.triangleSharedBy - 1) /
+                                      config.triangleSharedBy));
+    for (LtTriangleUnit& unit : units_) unit.interval = interval;
+  }
   if (config.memory.ideal) {
     rom_ = std::make_unique<LtRom>("rom", memory, accessBytes);
   } else {
@@ -67,8 +76,11 @@ uint64_t LtTopBase::traverse(size_t job, int core, uint64_t initCycle) {
   if (job != blocked_.size()) throw std::logic_error("LtTop: jobs must be dispatched in order");
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
+  // Later jobs are dispatched no earlier: their tests come after this one's first state.
+  if (LtTriangleUnit* unit = triangleUnitOf(core)) unit->issues.forgetBefore(initCycle);
   const LtTraversal traversal = traverseOn(core, current_, initCycle);
   blocked_.push_back(traversal.blocked);
+  stalls_[static_cast<size_t>(core)] += traversal.stalled;
   return traversal.cycles;
 }
 

@@ -44,6 +44,8 @@ class LtTopBase : public sc_core::sc_module {
   RecurrenceRun takeTiming() { return std::move(timing_); }
   std::vector<CoreKindResult> takeResults() { return std::move(results_); }
   std::vector<uint32_t> takeBlocked() { return std::move(blocked_); }
+  // Per core, the cycles its tests waited for a shared triangle unit.
+  const std::vector<uint64_t>& unitStalls() const { return stalls_; }
   bool idealMemory() const { return rom_ != nullptr; }
   std::vector<CacheStats> l1Statistics() const;
   L2Stats l2Statistics() const;  // the L2's counts with the DRAM target's
@@ -57,6 +59,10 @@ class LtTopBase : public sc_core::sc_module {
   // Binds a core's socket to its memory: the ROM, or an L1 of its own in front of the L2.
   void bindCore(tlm::tlm_initiator_socket<>& socket);
   const LtTime& time() const { return time_; }
+  // Core `core`'s shared triangle unit, or null when the cores do not share them.
+  LtTriangleUnit* triangleUnitOf(int core) {
+    return units_.empty() ? nullptr : &units_[static_cast<size_t>(core / config_.triangleSharedBy)];
+  }
   // The next job's result, of `Kind`, for its core to write.
   template <class Kind>
   typename Kind::Result& nextResult() {
@@ -86,6 +92,8 @@ class LtTopBase : public sc_core::sc_module {
   RecurrenceRun timing_;
   std::vector<CoreKindResult> results_;
   std::vector<uint32_t> blocked_;
+  std::vector<LtTriangleUnit> units_;  // shared triangle units, by group (none: a unit a core)
+  std::vector<uint64_t> stalls_;       // per core
 };
 
 template <class Kind>
@@ -98,7 +106,7 @@ class LtTop final : public LtTopBase {
         behaviour_(Kind::behaviour(config.coreConfig<Kind>())) {
     for (int i = 0; i < config.cores; ++i) {
       cores_.push_back(std::make_unique<LtCore<Kind>>(("core_" + std::to_string(i)).c_str(),
-                                                      behaviour_, time()));
+                                                      behaviour_, time(), triangleUnitOf(i)));
       bindCore(cores_.back()->memory);
     }
   }

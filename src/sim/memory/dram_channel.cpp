@@ -20,11 +20,11 @@ uint64_t DramChannel::transferCycles(uint32_t bytes) const {
 
 uint64_t DramChannel::read(uint32_t bytes, uint64_t issueCycle) {
   const uint64_t transfer = transferCycles(bytes);
-  const uint64_t start = bus_.book(issueCycle + config_.latency, transfer);
+  const uint64_t end = bus_.bookSpread(issueCycle + config_.latency, transfer);
   ++stats_.reads;
   stats_.bytes += bytes;
   stats_.busyCycles += transfer;
-  return start + transfer;
+  return end;
 }
 
 }  // namespace rtu

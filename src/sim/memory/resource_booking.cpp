@@ -7,10 +7,25 @@ namespace rtu {
 uint64_t ResourceBooking::bookAnyOrder(uint64_t from, uint64_t cycles) {
   const uint64_t start = firstFree(from, cycles);
   if (start + cycles - base_ > ringCycles()) grow(start + cycles - base_);
-  for (uint64_t cycle = start; cycle < start + cycles; ++cycle)
-    word(cycle) |= uint64_t{1} << (cycle % 64);
+  for (uint64_t cycle = start; cycle < start + cycles; ++cycle) mark(cycle);
   end_ = std::max(end_, start + cycles);
   return start;
+}
+
+uint64_t ResourceBooking::bookSpreadAnyOrder(uint64_t from, uint64_t cycles) {
+  uint64_t cycle = std::max(from, base_), left = cycles;
+  for (; left > 0 && cycle < end_; ++cycle) {
+    if (booked(cycle)) continue;
+    mark(cycle);
+    --left;
+  }
+  // Beyond the last booking every cycle is free.
+  if (left > 0) {
+    if (cycle + left - base_ > ringCycles()) grow(cycle + left - base_);
+    for (const uint64_t stop = cycle + left; cycle < stop; ++cycle) mark(cycle);
+  }
+  end_ = std::max(end_, cycle);
+  return cycle;
 }
 
 uint64_t ResourceBooking::firstFree(uint64_t from, uint64_t cycles) const {

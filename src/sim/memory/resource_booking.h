@@ -32,6 +32,16 @@ class ResourceBooking {
     free_ = start + cycles;
     return start;
   }
+  // Books the first `cycles` free cycles at or after `from`, consecutive or not; returns the cycle
+  // after the last. In cycle order the same cycles as book(). In any order a request that comes
+  // after later ones fills the gaps they left, however short: a transfer the resource would have
+  // served first (it asked earlier) then takes the free cycles around them rather than waiting for
+  // a gap as long as itself, so the resource loses no cycle to the order in which it heard its
+  // requests (the DRAM data bus of the loosely-timed model, dram_channel.h).
+  uint64_t bookSpread(uint64_t from, uint64_t cycles) {
+    if (order_ == RequestOrder::Cycle) return book(from, cycles) + cycles;
+    return bookSpreadAnyOrder(from, cycles);
+  }
   // The first cycle that book() would return, without booking.
   uint64_t firstFree(uint64_t from, uint64_t cycles) const;
   // No later request starts before `cycle` (Any: drops the runs that end by then).
@@ -39,6 +49,8 @@ class ResourceBooking {
 
  private:
   uint64_t bookAnyOrder(uint64_t from, uint64_t cycles);
+  uint64_t bookSpreadAnyOrder(uint64_t from, uint64_t cycles);
+  void mark(uint64_t cycle) { word(cycle) |= uint64_t{1} << (cycle % 64); }
   bool booked(uint64_t cycle) const;
   uint64_t& word(uint64_t cycle) { return bits_[(cycle & (ringCycles() - 1)) / 64]; }
   uint64_t ringCycles() const { return bits_.size() * 64; }
