@@ -1,3 +1,4 @@
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -5,6 +6,8 @@
 #include "app/placement_flags.h"
 #include "app/schema_flags.h"
 #include "inputs/host_buffers.h"
+#include "inputs/ray_workload.h"
+#include "kinds/svo/svo_image.h"
 
 namespace rtu {
 
@@ -15,20 +18,57 @@ void reportWritten(size_t records, const std::string& kind, const std::string& p
             << path << "\n";
 }
 
+struct JobsOptions {
+  uint32_t root = 0;
+  std::string out;
+  std::string rays;
+  uint32_t modelAddress = 0;
+  std::string rayType = "primary";
+  std::string svo;
+  std::vector<std::string> lights;
+  std::string order = "pixel";
+  RayWorkloadSpec spec;
+};
+
+// The ray records of `--ray-type`: a secondary type traces the camera's frame on the golden model
+// over the image of --svo first.
+std::vector<RayRecord> workloadRays(JobsOptions& options, const RunConfig& settings) {
+  RayWorkloadSpec& spec = options.spec;
+  spec.secondary.type = parseRayType(options.rayType);
+  spec.order = parseRayOrder(options.order);
+  if (!options.lights.empty()) spec.secondary.lights.clear();
+  for (const std::string& light : options.lights)
+    spec.secondary.lights.push_back(parseVector(light, "--light"));
+  const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();
+  golden.validate();
+  // The golden hit's t is within a few steps of the format: 16 steps off the surface.
+  spec.secondary.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
+  if (options.svo.empty()) {
+    if (spec.secondary.type != RayType::Primary)
+      throw std::invalid_argument("--ray-type " + options.rayType +
+                                  " traces the frame first: give --svo (an image with the model "
+                                  "header at --model-address, build --model-header)");
+    std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, options.modelAddress);
+    orderRays(rays, spec.order, spec.secondary.seed);
+    return rays;
+  }
+  const SvoImage image = readSvoFile(options.svo);
+  const RayWorkload workload =
+      makeRayWorkload(image.memory(), options.modelAddress, settings.camera, golden, spec);
+  if (spec.secondary.type != RayType::Primary && spec.secondary.type != RayType::Random)
+    std::cout << workload.primaryHits << " primary hits of " << settings.camera.pixelCount()
+              << " pixels spawn " << workload.rays.size() << " " << options.rayType << " rays\n";
+  return workload.rays;
+}
+
 }  // namespace
 
 void addJobsCommand(CLI::App& app) {
-  struct Options {
-    uint32_t root = 0;
-    std::string out;
-    std::string rays;
-    uint32_t modelAddress = 0;
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<JobsOptions>();
   CLI::App* command = app.add_subcommand(
       "jobs", "write one frame's primary rays as host job records (thesis driver format) or as "
-              "ray records for an animated model");
-  auto request = addConfigOptions(*command, kUseCamera);
+              "ray records for an animated model, or its secondary rays (--ray-type)");
+  auto request = addConfigOptions(*command, kUseCamera | kUseArithmetic);
   command->add_option("--root", options->root, "root descriptor address written into each job")
       ->capture_default_str()
       ->check(kNotNegative);
@@ -41,6 +81,38 @@ void addJobsCommand(CLI::App& app) {
   modelAddress->check(kNotNegative);
   rays->needs(modelAddress);
   modelAddress->needs(rays);
+  CLI::Option* rayType =
+      command
+          ->add_option("--ray-type", options->rayType,
+                       "rays to write: primary, shadow, ao, reflection, diffuse or random "
+                       "(docs/workloads.md)")
+          ->capture_default_str();
+  rayType->needs(rays);
+  command->add_option("--svo", options->svo,
+                      "SVO image with the model header at --model-address: the frame traced for "
+                      "secondary rays, and the box of random rays");
+  command->add_option("--light", options->lights,
+                      "shadow rays: a point light x,y,z in world space (repeat for more; default "
+                      "2,4,-3)");
+  command
+      ->add_option("--samples", options->spec.secondary.samples,
+                   "ao and diffuse: rays per primary hit")
+      ->capture_default_str();
+  command
+      ->add_option("--ao-distance", options->spec.secondary.aoDistance,
+                   "ao: the occlusion rays' length, world units")
+      ->capture_default_str();
+  command->add_option("--random-rays", options->spec.randomRays,
+                      "random: how many rays (default: one per pixel)");
+  command
+      ->add_option("--seed", options->spec.secondary.seed,
+                   "seed of the sampled directions, random rays and the shuffled order")
+      ->capture_default_str();
+  command
+      ->add_option("--order", options->order,
+                   "record order: pixel (as generated), shuffled, or sorted (direction octant, "
+                   "then origin on a Morton curve)")
+      ->capture_default_str();
   command->callback([options, request, out, rays] {
     const Configuration configuration = request->resolve();
     const Camera& camera = configuration.values().camera;
@@ -54,7 +126,7 @@ void addJobsCommand(CLI::App& app) {
       reportWritten(jobs.size(), "jobs", options->out);
     }
     if (*rays) {
-      const std::vector<RayRecord> records = makeFrameRayRecords(camera, options->modelAddress);
+      const std::vector<RayRecord> records = workloadRays(*options, configuration.values());
       writeRayBuffer(options->rays, records);
       reportWritten(records.size(), "ray records", options->rays);
     }

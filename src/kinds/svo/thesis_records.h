@@ -23,11 +23,17 @@ struct TValueRecord {
   std::array<uint32_t, 3> t0Bits{};  // float32 bit patterns of t0x, t0y, t0z
   std::array<uint32_t, 3> t1Bits{};
   uint32_t root = 0;  // word address of the root descriptor
+  // A ray record's span (rtu/ray_span.h), which its set-up keeps; the thesis driver's records have
+  // none (RaySpan::Line).
+  RaySpan span = RaySpan::Line;
 
   static constexpr uint32_t kMaxId = kMaxRayId;
   static constexpr const char* kName = "t-value record";
-  // The first word of the host record; the RTL carries it unchanged into the result.
-  uint32_t idWord() const { return id | static_cast<uint32_t>(a) << 28; }
+  // The first word of the host record; the RTL carries it unchanged into the result. Bit 31 marks
+  // an any-hit ray (rtu/ray_span.h).
+  uint32_t idWord() const {
+    return id | static_cast<uint32_t>(a) << 28 | (span == RaySpan::AnyHit ? kAnyHitBit : 0u);
+  }
 };
 
 // Result records of formats over 32 bits: 12 words, t and the normal 64 bits each
