@@ -1,12 +1,11 @@
-#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "app/commands.h"
 #include "app/placement_flags.h"
+#include "app/ray_workload_options.h"
 #include "app/schema_flags.h"
 #include "inputs/host_buffers.h"
-#include "inputs/ray_workload.h"
 #include "kinds/svo/svo_image.h"
 
 namespace rtu {
@@ -25,26 +24,17 @@ struct JobsOptions {
   uint32_t modelAddress = 0;
   std::string rayType = "primary";
   std::string svo;
-  std::vector<std::string> lights;
-  std::string order = "pixel";
-  RayWorkloadSpec spec;
+  RayWorkloadOptions workload;
 };
 
 // The ray records of `--ray-type`: a secondary type traces the camera's frame on the golden model
 // over the image of --svo first.
-std::vector<RayRecord> workloadRays(JobsOptions& options, const RunConfig& settings) {
-  RayWorkloadSpec& spec = options.spec;
-  spec.secondary.type = parseRayType(options.rayType);
-  spec.order = parseRayOrder(options.order);
-  if (!options.lights.empty()) spec.secondary.lights.clear();
-  for (const std::string& light : options.lights)
-    spec.secondary.lights.push_back(parseVector(light, "--light"));
+std::vector<RayRecord> workloadRays(const JobsOptions& options, const RunConfig& settings) {
   const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();
-  golden.validate();
-  // The golden hit's t is within a few steps of the format: 16 steps off the surface.
-  spec.secondary.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
+  const RayType type = parseRayType(options.rayType);
+  const RayWorkloadSpec spec = options.workload.resolve(type, golden);
   if (options.svo.empty()) {
-    if (spec.secondary.type != RayType::Primary)
+    if (type != RayType::Primary)
       throw std::invalid_argument("--ray-type " + options.rayType +
                                   " traces the frame first: give --svo (an image with the model "
                                   "header at --model-address, build --model-header)");
@@ -55,7 +45,7 @@ std::vector<RayRecord> workloadRays(JobsOptions& options, const RunConfig& setti
   const SvoImage image = readSvoFile(options.svo);
   const RayWorkload workload =
       makeRayWorkload(image.memory(), options.modelAddress, settings.camera, golden, spec);
-  if (spec.secondary.type != RayType::Primary && spec.secondary.type != RayType::Random)
+  if (type != RayType::Primary && type != RayType::Random)
     std::cout << workload.primaryHits << " primary hits of " << settings.camera.pixelCount()
               << " pixels spawn " << workload.rays.size() << " " << options.rayType << " rays\n";
   return workload.rays;
@@ -81,38 +71,16 @@ void addJobsCommand(CLI::App& app) {
   modelAddress->check(kNotNegative);
   rays->needs(modelAddress);
   modelAddress->needs(rays);
-  CLI::Option* rayType =
-      command
-          ->add_option("--ray-type", options->rayType,
-                       "rays to write: primary, shadow, ao, reflection, diffuse or random "
-                       "(docs/workloads.md)")
-          ->capture_default_str();
-  rayType->needs(rays);
+  command
+      ->add_option("--ray-type", options->rayType,
+                   "rays to write: primary, shadow, ao, reflection, diffuse or random "
+                   "(docs/workloads.md)")
+      ->capture_default_str()
+      ->needs(rays);
   command->add_option("--svo", options->svo,
                       "SVO image with the model header at --model-address: the frame traced for "
                       "secondary rays, and the box of random rays");
-  command->add_option("--light", options->lights,
-                      "shadow rays: a point light x,y,z in world space (repeat for more; default "
-                      "2,4,-3)");
-  command
-      ->add_option("--samples", options->spec.secondary.samples,
-                   "ao and diffuse: rays per primary hit")
-      ->capture_default_str();
-  command
-      ->add_option("--ao-distance", options->spec.secondary.aoDistance,
-                   "ao: the occlusion rays' length, world units")
-      ->capture_default_str();
-  command->add_option("--random-rays", options->spec.randomRays,
-                      "random: how many rays (default: one per pixel)");
-  command
-      ->add_option("--seed", options->spec.secondary.seed,
-                   "seed of the sampled directions, random rays and the shuffled order")
-      ->capture_default_str();
-  command
-      ->add_option("--order", options->order,
-                   "record order: pixel (as generated), shuffled, or sorted (direction octant, "
-                   "then origin on a Morton curve)")
-      ->capture_default_str();
+  addRayWorkloadOptions(*command, options->workload, "--seed");
   command->callback([options, request, out, rays] {
     const Configuration configuration = request->resolve();
     const Camera& camera = configuration.values().camera;

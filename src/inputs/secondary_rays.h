@@ -44,9 +44,11 @@ std::vector<SurfaceHit> surfaceHits(const std::vector<RayRecord>& primaries,
 
 struct SecondarySettings {
   RayType type = RayType::Shadow;
-  std::vector<glm::dvec3> lights{{2.0, 4.0, -3.0}};  // shadow: point lights, world space
-  int samples = 1;                                   // ao and diffuse: rays per hit
-  double aoDistance = 0.25;                          // ao: the rays' length, world units
+  // shadow: point lights, world space; the default lies along the shaded image's light direction
+  // (app/frame_images.cpp), five units out
+  std::vector<glm::dvec3> lights{{2.25, 4.0, -2.0}};
+  int samples = 1;              // ao and diffuse: rays per hit
+  double aoDistance = 0.25;     // ao: the rays' length, world units
   double selfOffset = 0x1p-12;  // off the surface along the normal, world units
   uint64_t seed = 1;
 
