@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include <glm/geometric.hpp>
 
+#include "explore/ray_passes.h"
 #include "inputs/host_buffers.h"
 #include "inputs/ray_order.h"
 #include "inputs/ray_workload.h"
@@ -322,4 +322,28 @@ TEST_CASE("Ray orders keep every ray: shuffled is seeded\\, sorted groups octant
   CHECK(octants > 1);
   CHECK_THROWS_WITH(parseRayOrder("random"), Catch::Contains("pixel, shuffled or sorted"));
   CHECK_THROWS_WITH(parseRayType("glossy"), Catch::Contains("--ray-type glossy"));
+}
+
+TEST_CASE("Render passes: primary first\\, each once\\, and each pixel's open share",
+          "[secondary]") {
+  CHECK(parseRayPasses("primary,shadow,ao", "--passes") ==
+        std::vector<RayType>{RayType::Primary, RayType::Shadow, RayType::Ao});
+  CHECK_THROWS_WITH(parseRayPasses("shadow", "--passes"), Catch::Contains("first pass is primary"));
+  CHECK_THROWS_WITH(parseRayPasses("primary,ao,ao", "--passes"), Catch::Contains("ao twice"));
+  CHECK_THROWS_WITH(parseRayPasses("primary,,ao", "--passes"), Catch::Contains("'' is not one of"));
+  // Two lights a pixel: pixel 0 sees one of two, pixel 1 one (its second light was behind the
+  // face: no ray), pixel 2 has no ray (no hit, or both lights behind): 0.
+  PassRun shadow;
+  shadow.type = RayType::Shadow;
+  shadow.raysPerHit = 2;
+  for (uint32_t id : {0u, 1u, 2u}) {
+    shadow.rays.emplace_back();
+    shadow.rays.back().id = id;
+  }
+  shadow.results.resize(3);
+  shadow.results[1].hit = true;
+  CHECK(openShare(shadow, 3) == std::vector<double>{0.5, 0.5, 0.0});
+  PassRun ao = shadow;
+  ao.type = RayType::Ao;
+  CHECK(openShare(ao, 3) == std::vector<double>{0.5, 0.5, 1.0});
 }

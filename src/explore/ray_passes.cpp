@@ -13,7 +13,15 @@ std::vector<RayType> parseRayPasses(const std::string& text, const std::string& 
   size_t start = 0;
   while (start <= text.size()) {
     const size_t comma = std::min(text.find(',', start), text.size());
-    const RayType type = parseRayType(text.substr(start, comma - start));
+    const std::string name = text.substr(start, comma - start);
+    RayType type;
+    try {
+      type = parseRayType(name);
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument(
+          option + " " + text + ": '" + name +
+          "' is not one of primary, shadow, ao, reflection, diffuse, random");
+    }
     for (RayType seen : passes)
       if (seen == type)
         throw std::invalid_argument(option + " " + text + ": " + toString(type) + " twice");
