@@ -29,8 +29,8 @@ constexpr double kStep = 0x1p-16;  // Q16.16
 struct Model {
   SvoImage image;
   uint32_t header = 0;
-  explicit Model(const std::string& scene)
-      : image(buildSvo(*makeProceduralScene(scene, 6)).image),
+  explicit Model(const std::string& scene, int depth = 6)
+      : image(buildSvo(*makeProceduralScene(scene, depth)).image),
         header(appendModelHeader(image, ModelPlacement{})) {}
 };
 
@@ -211,8 +211,9 @@ TEST_CASE("Secondary rays equal a float64 reference spawn within the format's pr
 
 TEST_CASE("Spawned rays start beyond the hit voxel and never hit it\\, which a line would",
           "[secondary]") {
-  const Model model("menger");
-  const Camera view = camera(40, 24);
+  const auto [scene, depth] = GENERATE(std::make_pair("menger", 6), std::make_pair("terrain", 8));
+  const Model model(scene, depth);
+  const Camera view = camera(160, 90);
   const std::vector<RayRecord> primaries = makeFrameRayRecords(view, model.header);
   GoldenModel golden(model.image.memory(), GoldenConfig{});
   std::vector<uint64_t> primaryVoxel(primaries.size());
@@ -232,9 +233,9 @@ TEST_CASE("Spawned rays start beyond the hit voxel and never hit it\\, which a l
           golden.traceRays(withSpan({ray}, RaySpan::Line), GoldenConfig{}.epsilon)[0].hit &&
           golden.lastHitVoxel() == own;
     }
-    INFO(toString(type) << ": " << rays.rays.size() << " rays");
+    INFO(scene << " " << toString(type) << ": " << rays.rays.size() << " rays");
     CHECK(selfHits == 0);
-    CHECK(selfHitsAsLines > 0);  // what the span avoids: 31 to 41 of them
+    CHECK(selfHitsAsLines > 0);  // what the span avoids: 6 to 13 % of the rays (workloads.md)
   }
 }
 
