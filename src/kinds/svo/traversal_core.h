@@ -226,7 +226,8 @@ class TraversalCore {
   }
   static int nextChild(const Frame& f) { return nextChildIndex(f.child, childT1(f)); }
 
-  void evaluate(uint32_t descriptorWord) {
+  // Forced inline, as push below: the stepping loop's hot path.
+  [[gnu::always_inline]] inline void evaluate(uint32_t descriptorWord) {
     if (!rayValid_) {
       hit_ = false;
       state_ = CoreState::Out;
@@ -253,7 +254,8 @@ class TraversalCore {
   // any-hit ray ends as a miss at the first child that begins beyond its end (t > 1): children
   // come front to back, so every later one lies beyond too, and the first leaf the traversal
   // meets within [0, 1] ends it as a hit.
-  bool outsideSpan() {
+  // Out of line: the thesis' rays (RaySpan::Line) never call it.
+  [[gnu::noinline]] bool outsideSpan() {
     if (span_ == RaySpan::AnyHit && maxComponent(childT0(frame_)).value > arith_.one()) {
       hit_ = false;
       state_ = CoreState::Out;
