@@ -27,7 +27,6 @@ struct RenderOptions {
   RunOutputs outputs;
   std::string image, depthImage, costImage;
   RaypipeRenderOptions raypipe;
-  std::string passes = "primary";
   RayWorkloadOptions workload;
 
   std::vector<NamedPath> imagePaths() const {
@@ -148,10 +147,10 @@ void renderPasses(const FrameScene& scene, const Configuration& configuration,
 // The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes.
 RenderedFrame renderFrame(const Configuration& configuration, const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
-  const std::vector<RayType> passes = parseRayPasses(options.passes, "--passes");
+  const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
   if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
-    throw std::invalid_argument("--passes " + options.passes +
+    throw std::invalid_argument("--passes " + settings.rayPasses +
                                 ": secondary passes need the svo core and the camera's frame");
   const std::vector<HostRecord> records = frameRecords(scene, settings);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
@@ -174,9 +173,10 @@ void addRenderCommand(CLI::App& app) {
                 "raypipe) and report it");
   // The accel settings of the triangle cores' builds (--builder, --bih-format, --index, ...);
   // render builds the structure of its core, so not --accel.
-  auto request = addConfigOptions(
-      *command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
-      {"--accel"});
+  auto request = addConfigOptions(*command,
+                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
+                                      kUseCamera | kUseAccel | kUseWorkload,
+                                  {"--accel"});
   addRunOutputOptions(*command, options->outputs);
   command->add_option("--image", options->image,
                       "shaded image (PNG, EXR, ...); the ray pipe's: its simple shader's colours");
@@ -185,12 +185,6 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
   addRaypipeRenderOptions(*command, options->raypipe);
-  command
-      ->add_option("--passes", options->passes,
-                   "passes of the frame: primary, then any of shadow, ao, reflection, diffuse, "
-                   "random spawned from its hits, each run after the one before with its own "
-                   "statistics; shadow and ao shade the image (docs/workloads.md)")
-      ->capture_default_str();
   addRayWorkloadOptions(*command, options->workload, "--ray-seed");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
