@@ -70,6 +70,14 @@ assert rays == sum(p["rays"] for p in passes)
 assert cycles == sum(p["total_cycles"] for p in passes)
 PY
 
+# The key workload.rays in a configuration file; fps does not use it and says so.
+printf '[workload]\nrays = "primary,shadow"\n' >w.toml
+"$rtusim" render --model golden --config w.toml "${frame[@]}" | grep -q "^pass        shadow" ||
+  fail "workload.rays from a file"
+"$rtusim" fps --config w.toml --resolutions 24x16 2>err.txt >/dev/null
+grep -q "workload.rays (configuration file) has no effect: rtusim fps does not use it" err.txt ||
+  fail "fps should name workload.rays as unused"
+
 expect_error "--ray-type glossy" "$rtusim" jobs --svo m.svo --model-address "$header" \
   --ray-type glossy --rays x.bin
 expect_error "give --svo" "$rtusim" jobs --model-address "$header" --ray-type ao --rays x.bin
