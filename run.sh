@@ -5,7 +5,11 @@ set -euo pipefail
 cd "$(dirname "$0")"
 source scripts/setup.sh
 mkdir -p out
-./build/rtusim render --image out/default.png --cost-image out/default_cost.png "$@"
+# Without arguments, the frame with its shadow and ambient-occlusion passes (docs/workloads.md).
+passes=()
+(($# == 0)) && passes=(--passes primary,shadow,ao --samples 4)
+./build/rtusim render --image out/default.png --cost-image out/default_cost.png \
+  ${passes[@]+"${passes[@]}"} "$@"
 # The default scene on a triangle core (issue 28): its voxel faces at depth 7 (1.7 M triangles;
 # depth 8's 14 M take a minute to build) in a BVH, traced by the BVH core.
 echo

@@ -389,9 +389,10 @@ TEST_CASE("A run's statistics hold the counters of its cores' kind and no other 
   // As before the other kinds were registered: right after the cores, before below_resolution.
   const std::vector<std::string> all = topKeys(svo, "");
   const auto cores = std::find(all.begin(), all.end(), "cores");
-  REQUIRE(cores + 3 < all.end());
-  CHECK(std::vector<std::string>(cores + 1, cores + 4) ==
-        std::vector<std::string>{"stack_overflows", "t_overflows", "below_resolution"});
+  REQUIRE(cores + 5 < all.end());
+  CHECK(std::vector<std::string>(cores + 1, cores + 6) ==
+        std::vector<std::string>{"stack_overflows", "t_overflows", "any_hit_rays", "any_hit_hits",
+                                 "below_resolution"});
 
   const Json bvh = twoCoresOf("bvh").toJson();
   CHECK(topKeys(bvh, "bvh_") ==

@@ -7,10 +7,14 @@
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
 #include "app/output_paths.h"
+#include "app/ray_workload_options.h"
 #include "app/raypipe_render.h"
 #include "app/run_outputs.h"
 #include "app/schema_flags.h"
+#include "base/output_file.h"
+#include "config/run_json.h"
 #include "explore/frame_scene.h"
+#include "explore/ray_passes.h"
 #include "explore/sweep_workers.h"
 #include "run/analytic_run.h"
 #include "run/model_run.h"
@@ -23,6 +27,7 @@ struct RenderOptions {
   RunOutputs outputs;
   std::string image, depthImage, costImage;
   RaypipeRenderOptions raypipe;
+  RayWorkloadOptions workload;
 
   std::vector<NamedPath> imagePaths() const {
     return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
@@ -61,7 +66,7 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
 std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
                                        const std::vector<HostRecord>& records,
                                        const Configuration& configuration,
-                                       const RenderOptions& options) {
+                                       const RenderOptions& options, uint64_t& cycles) {
   const RunConfig& settings = configuration.values();
   const WordMemory memory = scene.memory();
   if (settings.model == ModelKind::Golden) {
@@ -80,6 +85,7 @@ std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
   RunProgressLine progress("render", "rays");
   const RtuRun run = runModel(settings.model, memory, records, planned, progress.callback());
   std::vector<CoreKindResult> results = resultsInJobOrder(run);
+  cycles = run.statistics.totalCycles;
   std::cout << describeResults(settings, results);
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
@@ -87,15 +93,74 @@ std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
   return results;
 }
 
-// The frame of the run's kind (explore/frame_scene.h) on the chosen model.
+// One line of a pass: its rays and hits, and on a timed model its cycles and what limits it.
+void reportPass(const PassRun& pass, std::ostream& out) {
+  size_t hits = 0;
+  for (const TraversalResult& result : pass.results) hits += result.hit;
+  char line[256];
+  std::snprintf(line, sizeof line, "pass        %-10s %zu rays, %zu hits", toString(pass.type),
+                pass.rays.size(), hits);
+  out << line;
+  if (pass.run) {
+    const RtuStatistics& s = pass.run->statistics;
+    std::snprintf(line, sizeof line, ", %llu cycles (%.2f per ray), DRAM %.3f, limit %s",
+                  static_cast<unsigned long long>(s.totalCycles), s.cyclesPerRay(),
+                  s.utilisation().dramBandwidth, s.limit().empty() ? "none" : s.limit().c_str());
+    out << line;
+  }
+  out << "\n";
+}
+
+// The passes after the primary one: run, reported (and their statistics written beside --stats,
+// s.json -> s.shadow.json), and their open shares shading the frame.
+void renderPasses(const FrameScene& scene, const Configuration& configuration,
+                  const RenderOptions& options, const std::vector<RayType>& passes,
+                  uint64_t primaryCycles, RenderedFrame& frame) {
+  const RunConfig& settings = configuration.values();
+  const std::vector<PassRun> runs = runSecondaryPasses(
+      scene, settings, passes,
+      options.workload.resolve(RayType::Primary, settings.rtu.coreConfig<SvoKind>()));
+  uint64_t cycles = primaryCycles;
+  size_t rays = frame.pixels.size();
+  for (const PassRun& pass : runs) {
+    reportPass(pass, std::cout);
+    rays += pass.rays.size();
+    if (pass.run) cycles += pass.run->statistics.totalCycles;
+    const std::vector<double> open = openShare(pass, frame.pixels.size());
+    for (size_t p = 0; p < open.size(); ++p) {
+      if (pass.type == RayType::Shadow) frame.pixels[p].lightOpen = static_cast<float>(open[p]);
+      if (pass.type == RayType::Ao) frame.pixels[p].ambientOpen = static_cast<float>(open[p]);
+    }
+    if (!pass.run || options.outputs.statsPath.empty()) continue;
+    const std::string& stats = options.outputs.statsPath;
+    const size_t dot = stats.find_last_of('.');
+    const std::string path = (dot == std::string::npos ? stats : stats.substr(0, dot)) + "." +
+                             toString(pass.type) + ".json";
+    writeTextFile(path, runJson(pass.run->statistics, configuration).dump(2) + "\n");
+    std::cout << "wrote       " << path << "\n";
+  }
+  if (settings.model != ModelKind::Golden)
+    std::cout << "frame       " << rays << " rays in " << passes.size() << " passes, " << cycles
+              << " cycles\n";
+}
+
+// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes.
 RenderedFrame renderFrame(const Configuration& configuration, const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
+  const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
+  if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
+    throw std::invalid_argument("--passes " + settings.rayPasses +
+                                ": secondary passes need the svo core and the camera's frame");
   const std::vector<HostRecord> records = frameRecords(scene, settings);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
             << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
-  return framePixels(settings, scene, traceFrame(scene, records, configuration, options));
+  uint64_t cycles = 0;
+  RenderedFrame frame =
+      framePixels(settings, scene, traceFrame(scene, records, configuration, options, cycles));
+  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, frame);
+  return frame;
 }
 
 }  // namespace
@@ -108,9 +173,10 @@ void addRenderCommand(CLI::App& app) {
                 "raypipe) and report it");
   // The accel settings of the triangle cores' builds (--builder, --bih-format, --index, ...);
   // render builds the structure of its core, so not --accel.
-  auto request = addConfigOptions(
-      *command, kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
-      {"--accel"});
+  auto request = addConfigOptions(*command,
+                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
+                                      kUseCamera | kUseAccel | kUseWorkload,
+                                  {"--accel"});
   addRunOutputOptions(*command, options->outputs);
   command->add_option("--image", options->image,
                       "shaded image (PNG, EXR, ...); the ray pipe's: its simple shader's colours");
@@ -119,6 +185,7 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
   addRaypipeRenderOptions(*command, options->raypipe);
+  addRayWorkloadOptions(*command, options->workload, "--ray-seed");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();

@@ -180,7 +180,8 @@ Pixel shadeLambert(const RenderedFrame& frame, size_t index) {
   if (glm::dot(normal, direction) > 0) normal = -normal;  // the face the ray met looks back at it
   const glm::dvec3 light = glm::normalize(glm::dvec3(0.45, 0.8, -0.4));
   const float lambert = static_cast<float>(std::max(0.0, glm::dot(normal, light)));
-  return Pixel(0.86f, 0.80f, 0.68f) * (0.22f + 0.78f * lambert);
+  return Pixel(0.86f, 0.80f, 0.68f) *
+         (0.22f * result.ambientOpen + 0.78f * lambert * result.lightOpen);
 }
 
 // Matplotlib's viridis (perceptually uniform, readable in grey and by colour-blind viewers),

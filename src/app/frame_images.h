@@ -22,6 +22,10 @@ struct FramePixel {
   double t = 0;  // the hit's distance along the ray (0 on a miss)
   uint32_t cost = 0;
   glm::dvec3 normal{0.0};  // the surface's at the hit, either way round, any length but 0
+  // Secondary passes (explore/ray_passes.h): the share of the hit's shadow rays that reached the
+  // light, and of its ambient-occlusion rays that met nothing; 1 without such a pass.
+  float lightOpen = 1.0f;
+  float ambientOpen = 1.0f;
 };
 
 // Pixels indexed by job id (= pixel x + y * width); missing pixels are misses.
@@ -44,7 +48,8 @@ void checkImageFormat(const std::string& option, const std::string& path);
 // Any RGB picture: `rgb` holds width x height pixels of three floats in [0, 1], rows from the top.
 void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb);
 
-// Lambert-shaded hits over a dark background; the face normal is turned toward the viewer.
+// Lambert-shaded hits over a dark background; the face normal is turned toward the viewer. The
+// light term is scaled by the pixel's lightOpen (shadows), the ambient term by ambientOpen (AO).
 void writeShadedImage(const RenderedFrame& frame, const std::string& path);
 // t_hit per pixel: float t with misses 0 for EXR/TIFF/HDR files, otherwise grey levels from
 // near (white) to far (dark) over the frame's hit range, misses black.

@@ -800,6 +800,11 @@ std::vector<Setting> makeSchema() {
   s.push_back(text(SettingKind::Path, "rays", "--rays", buffers,
                    "ray buffer (8 u32 per world-space ray record)",
                    [](C& c) -> std::string& { return c.rays; }));
+  s.push_back(text(SettingKind::Text, "workload.rays", "--passes", kUseWorkload,
+                   "the frame's passes: primary, then any of shadow, ao, reflection, diffuse, "
+                   "random spawned from its hits, each run after the one before with its own "
+                   "statistics; shadow and ao shade the image (docs/workloads.md)",
+                   [](C& c) -> std::string& { return c.rayPasses; }));
   s.push_back(integer("width", "--width", "pixels", 1, 1 << 14, camera, "image width",
                       [](C& c) -> int& { return c.camera.width; }));
   s.back().ignoredBecause = ignoredAtRaypipeLevel;
@@ -872,6 +877,7 @@ std::string Setting::range() const {
       return (zeroAllowed ? "0 or " : "") + formatReal(min) + " .. " + formatReal(max);
     case SettingKind::Flag: return "true|false";
     case SettingKind::Vector: return "x,y,z";
+    case SettingKind::Text: return "text";
     default: return "file";
   }
 }

@@ -46,6 +46,8 @@ struct RunConfig {
   Camera camera;
   double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
   std::string jobs, rays;                     // host input buffers of `replay` and `golden`
+  // workload.rays: a frame's passes, "primary,shadow,ao" (render; explore/ray_passes.h)
+  std::string rayPasses = "primary";
   bool allowStackOverflow = false;
   SampleSpec sample;  // fps and sweep rows
 };

@@ -80,6 +80,9 @@ struct JobCodec {
     if (job.id > TValueRecord::kMaxId || job.a > 7)
       throw std::invalid_argument("job id " + std::to_string(job.id) +
                                   " or a does not fit the job word");
+    if (job.span != RaySpan::Line)
+      throw std::invalid_argument("job " + std::to_string(job.id) +
+                                  ": a t-value record has no span bits; write ray records");
     words[0] = job.idWord();
     for (int k = 0; k < 3; ++k) {
       words[1 + k] = job.t0Bits[k];
@@ -167,7 +170,11 @@ struct RayCodec {
 
   static RayRecord decode(const uint32_t* word, size_t i) {
     RayRecord record;
-    record.id = word[0];
+    try {
+      record = recordOfWord0(word[0]);
+    } catch (const std::runtime_error& error) {
+      throw recordError(i, error.what());
+    }
     for (int k = 0; k < 3; ++k) {
       record.origin[k] = bitsToFloat(word[1 + k]);
       record.direction[k] = bitsToFloat(word[4 + k]);
@@ -188,7 +195,7 @@ struct RayCodec {
     } catch (const std::runtime_error& error) {
       throw std::invalid_argument("ray record " + std::to_string(i) + ": " + error.what());
     }
-    words[0] = record.id;
+    words[0] = record.idWord();
     for (int k = 0; k < 3; ++k) {
       words[1 + k] = floatBits(record.origin[k]);
       words[4 + k] = floatBits(record.direction[k]);

@@ -27,12 +27,29 @@ void RayRecord::validate() const {
     char word[16];
     std::snprintf(word, sizeof word, "0x%08x", id);
     throw std::runtime_error(std::string("job word ") + word +
-                             " has bits 31:28 set (ids have 28 bits)");
+                             ": bits 31:28 are the span (31:30) and zero (29:28), "
+                             "and bits 29:28 are set (ids have 28 bits)");
   }
   checkComponents(origin, "origin");
   checkComponents(direction, "direction");
   if (direction[0] == 0.0f && direction[1] == 0.0f && direction[2] == 0.0f)
     throw std::runtime_error("direction is zero");
+}
+
+uint32_t RayRecord::idWord() const {
+  return id | (span == RaySpan::AnyHit ? kAnyHitBit : 0u) |
+         (span == RaySpan::Ahead ? kAheadBit : 0u);
+}
+
+RayRecord recordOfWord0(uint32_t word) {
+  if ((word & kAnyHitBit) && (word & kAheadBit))
+    throw std::runtime_error("bits 31 (any-hit) and 30 (ahead) of the first word are both set");
+  RayRecord record;
+  record.span = word & kAnyHitBit  ? RaySpan::AnyHit
+                : word & kAheadBit ? RaySpan::Ahead
+                                   : RaySpan::Line;
+  record.id = word & ~(kAnyHitBit | kAheadBit);
+  return record;
 }
 
 RayRecord makeRayRecord(uint32_t id, const Ray& ray, uint32_t modelAddress) {

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "geometry/ray.h"
+#include "rtu/ray_span.h"
 
 namespace rtu {
 
@@ -21,9 +22,13 @@ struct RayRecord {
   uint32_t id = 0;  // 28 bits
   std::array<float, 3> origin{0.0f, 0.0f, 0.0f};
   std::array<float, 3> direction{0.0f, 0.0f, 1.0f};
-  uint32_t modelAddress = 0;  // word address of the model header
+  uint32_t modelAddress = 0;     // word address of the model header
+  RaySpan span = RaySpan::Line;  // word 0, bits 31:30 (rtu/ray_span.h)
 
   static constexpr const char* kName = "ray record";
+
+  // Word 0: the id and the span's bits.
+  uint32_t idWord() const;
 
   // Throws std::runtime_error for an id over 28 bits, a NaN or infinite component, a component
   // beyond kMaxModelCoordinate, or a zero direction.
@@ -32,5 +37,9 @@ struct RayRecord {
 
 // The record for a double-precision ray: direction normalised in double, then rounded to float32.
 RayRecord makeRayRecord(uint32_t id, const Ray& ray, uint32_t modelAddress);
+
+// Word 0 of a record read back: the id (bits 27:0, the rest checked by validate()) and the span
+// (bits 31:30). Throws std::runtime_error when both span bits are set.
+RayRecord recordOfWord0(uint32_t word);
 
 }  // namespace rtu

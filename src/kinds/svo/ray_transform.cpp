@@ -30,6 +30,7 @@ TValueRecord rayRecordToJob(const RayRecord& record, const ModelHeader& header, 
   TValueRecord job;
   job.id = record.id;
   job.root = header.root;
+  job.span = record.span;
   for (int k = 0; k < 3; ++k) {
     if (std::abs(direction[k]) < threshold) {
       direction[k] = threshold;

@@ -12,6 +12,8 @@ namespace rtu {
 struct SvoCounters {
   uint64_t stackOverflows = 0;
   uint64_t tOverflows = 0;
+  uint64_t anyHitRays = 0;  // rays traced as any-hit (rtu/ray_span.h), among the run's rays
+  uint64_t anyHitHits = 0;  // of them, the ones that hit
 
   static const StatisticGroup<SvoCounters>& declaration();
 };

@@ -19,11 +19,12 @@
 namespace rtu {
 
 // What the job manager hands an SVO core (the RTL's job_t less the id word): the t-values in
-// fixed point, the direction coefficient and the root's address.
+// fixed point, the direction coefficient, the root's address and the ray's span.
 struct SvoJob {
   uint8_t a = 0;
   std::array<int64_t, 3> t0{}, t1{};
   uint32_t root = 0;
+  RaySpan span = RaySpan::Line;
 };
 
 struct SvoKind {
@@ -84,10 +85,11 @@ struct SvoKind {
   // for a shell that sets its jobs up itself (the cache warmer).
   static Job setUp(const Record& record, const Config& config) {
     return Job{record.a, convertToFixed(record.t0Bits, config.format, config.conversion),
-               convertToFixed(record.t1Bits, config.format, config.conversion), record.root};
+               convertToFixed(record.t1Bits, config.format, config.conversion), record.root,
+               record.span};
   }
   static void start(Behaviour& core, const Job& job) {
-    core.start(job.t0, job.t1, job.a, job.root);
+    core.start(job.t0, job.t1, job.a, job.root, job.span);
   }
   static void writeResult(uint32_t idWord, const Behaviour& core, Result& result) {
     rtu::writeResult(idWord, core, result);
@@ -98,6 +100,8 @@ struct SvoKind {
   static void count(const Behaviour& core, Counters& counters) {
     counters.stackOverflows += core.stackOverflow();
     counters.tOverflows += core.tOverflow();
+    counters.anyHitRays += core.span() == RaySpan::AnyHit;
+    counters.anyHitHits += core.span() == RaySpan::AnyHit && core.hit();
   }
 
   // What the RTU's kind-agnostic machinery asks of a result (rtu/core_kind.h lists them;
@@ -111,6 +115,9 @@ struct SvoKind {
   static void countResult(const Result& result, Counters& counters) {
     counters.stackOverflows += result.stackOverflow;
     counters.tOverflows += result.tOverflow;
+    const bool anyHit = (result.idWord & kAnyHitBit) != 0;
+    counters.anyHitRays += anyHit;
+    counters.anyHitHits += anyHit && result.hit;
   }
   // The scene manager's: a ray's miss before any job returned, whether a hit lies ahead of the
   // ray's origin (t >= 0), which of two hits is nearer (t in fixed point, exactly) and how far

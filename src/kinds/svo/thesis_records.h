@@ -20,14 +20,20 @@ namespace rtu {
 struct TValueRecord {
   uint32_t id = 0;  // 28 bits: the driver packs `a` into bits 30:28 beside it
   uint8_t a = 0;    // direction coefficient: bit k set when direction k was negative
+  // A ray record's span (rtu/ray_span.h), which its set-up keeps; the thesis driver's records have
+  // none (RaySpan::Line). Beside `a`, in what would be padding.
+  RaySpan span = RaySpan::Line;
   std::array<uint32_t, 3> t0Bits{};  // float32 bit patterns of t0x, t0y, t0z
   std::array<uint32_t, 3> t1Bits{};
   uint32_t root = 0;  // word address of the root descriptor
 
   static constexpr uint32_t kMaxId = kMaxRayId;
   static constexpr const char* kName = "t-value record";
-  // The first word of the host record; the RTL carries it unchanged into the result.
-  uint32_t idWord() const { return id | static_cast<uint32_t>(a) << 28; }
+  // The first word of the host record; the RTL carries it unchanged into the result. Bit 31 marks
+  // an any-hit ray (rtu/ray_span.h).
+  uint32_t idWord() const {
+    return id | static_cast<uint32_t>(a) << 28 | (span == RaySpan::AnyHit ? kAnyHitBit : 0u);
+  }
 };
 
 // Result records of formats over 32 bits: 12 words, t and the normal 64 bits each

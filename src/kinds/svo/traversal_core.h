@@ -14,6 +14,7 @@
 
 #include "kinds/svo/fixed_point.h"
 #include "kinds/svo/svo_memory.h"
+#include "rtu/ray_span.h"
 
 namespace rtu {
 
@@ -106,9 +107,12 @@ class TraversalCore {
                                   " frames, got " + std::to_string(stackFrames));
   }
 
-  // The job handshake in IDLE: latches the job, the next cycle is INIT.
-  void start(const Vec3& t0, const Vec3& t1, uint8_t a, uint32_t root) {
+  // The job handshake in IDLE: latches the job, the next cycle is INIT. `span`: which part of
+  // the ray's line it traces (rtu/ray_span.h; t = 0 at its origin, t = one() at its end).
+  void start(const Vec3& t0, const Vec3& t1, uint8_t a, uint32_t root,
+             RaySpan span = RaySpan::Line) {
     a_ = a & 7;
+    span_ = span;
     stackSize_ = 0;
     cost_ = 0;
     hit_ = false;
@@ -172,6 +176,7 @@ class TraversalCore {
   void finish() { state_ = CoreState::Idle; }
 
   bool hit() const { return hit_; }
+  RaySpan span() const { return span_; }
   Value tHit() const { return tHit_; }
   int normalAxis() const { return normalAxis_; }
   uint32_t cost() const { return cost_; }
@@ -221,12 +226,14 @@ class TraversalCore {
   }
   static int nextChild(const Frame& f) { return nextChildIndex(f.child, childT1(f)); }
 
-  void evaluate(uint32_t descriptorWord) {
+  // Forced inline, as push below: the stepping loop's hot path.
+  [[gnu::always_inline]] inline void evaluate(uint32_t descriptorWord) {
     if (!rayValid_) {
       hit_ = false;
       state_ = CoreState::Out;
       return;
     }
+    if (span_ != RaySpan::Line && outsideSpan()) return;
     const Descriptor descriptor{descriptorWord};
     const int slot = frame_.child ^ a_;
     if (!(descriptor.validMask() >> slot & 1)) {
@@ -241,6 +248,24 @@ class TraversalCore {
       descriptor_ = descriptorWord;  // latched for PUSH (see defect 3 in docs/thesis-defects.md)
       state_ = CoreState::Push;
     }
+  }
+
+  // A ray with a span skips a child that ends before its origin (t < 0), as an empty one; an
+  // any-hit ray ends as a miss at the first child that begins beyond its end (t > 1): children
+  // come front to back, so every later one lies beyond too, and the first leaf the traversal
+  // meets within [0, 1] ends it as a hit.
+  // Out of line: the thesis' rays (RaySpan::Line) never call it.
+  [[gnu::noinline]] bool outsideSpan() {
+    if (span_ == RaySpan::AnyHit && maxComponent(childT0(frame_)).value > arith_.one()) {
+      hit_ = false;
+      state_ = CoreState::Out;
+      return true;
+    }
+    if (minComponent(childT1(frame_)).value < Value{0}) {
+      state_ = CoreState::Next;
+      return true;
+    }
+    return false;
   }
 
   // Forced inline: with three kinds sharing the timed core GCC stopped inlining it into the
@@ -286,6 +311,7 @@ class TraversalCore {
   std::array<Frame, kMaxStackFrames> stack_{};
   int stackSize_ = 0;
   uint8_t a_ = 0;
+  RaySpan span_ = RaySpan::Line;
   bool rayValid_ = false;
   uint32_t descriptor_ = 0;
   uint32_t cost_ = 0;

@@ -1,0 +1,94 @@
+#include "explore/ray_passes.h"
+
+#include <stdexcept>
+
+#include "kinds/core_result.h"
+#include "run/analytic_run.h"
+#include "run/model_run.h"
+
+namespace rtu {
+
+std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option) {
+  std::vector<RayType> passes;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string name = text.substr(start, comma - start);
+    RayType type;
+    try {
+      type = parseRayType(name);
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument(
+          option + " " + text + ": '" + name +
+          "' is not one of primary, shadow, ao, reflection, diffuse, random");
+    }
+    for (RayType seen : passes)
+      if (seen == type)
+        throw std::invalid_argument(option + " " + text + ": " + toString(type) + " twice");
+    passes.push_back(type);
+    start = comma + 1;
+  }
+  if (passes.front() != RayType::Primary)
+    throw std::invalid_argument(option + " " + text +
+                                ": the first pass is primary (the others spawn from its hits)");
+  return passes;
+}
+
+namespace {
+
+PassRun runPass(const WordMemory& memory, const RunConfig& settings, PassRun pass) {
+  const std::vector<HostRecord> records(pass.rays.begin(), pass.rays.end());
+  if (settings.model == ModelKind::Golden) {
+    pass.results = svoResults(traceGolden(memory, records, settings.rtu));
+    return pass;
+  }
+  pass.run = runModel(settings.model, memory, records, settings.rtu);
+  pass.results = svoResults(resultsInJobOrder(*pass.run));
+  return pass;
+}
+
+}  // namespace
+
+std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
+                                        const std::vector<RayType>& passes,
+                                        const RayWorkloadSpec& spec) {
+  if (scene.core != SvoKind::kName)
+    throw std::invalid_argument("secondary passes run on the svo core only, not " + scene.core);
+  std::vector<uint32_t> words = scene.words;
+  const ModelHeader header = makeModelHeader(ModelPlacement{}, scene.entry);
+  const ModelHeaderWords headerWords = encodeModelHeader(header);
+  const uint32_t address = static_cast<uint32_t>(words.size());
+  words.insert(words.end(), headerWords.begin(), headerWords.end());
+  const WordMemory memory(words);
+  std::vector<PassRun> runs;
+  for (size_t i = 1; i < passes.size(); ++i) {
+    RayWorkloadSpec passSpec = spec;
+    passSpec.secondary.type = passes[i];
+    PassRun pass;
+    pass.type = passes[i];
+    pass.raysPerHit = passSpec.secondary.raysPerHit();
+    pass.rays = makeRayWorkload(memory, address, settings.camera,
+                                settings.rtu.coreConfig<SvoKind>(), passSpec)
+                    .rays;
+    runs.push_back(runPass(memory, settings, std::move(pass)));
+  }
+  return runs;
+}
+
+std::vector<double> openShare(const PassRun& pass, size_t pixels) {
+  std::vector<double> open(pixels, 1.0);
+  if (pass.type == RayType::Random) return open;
+  std::vector<uint32_t> rays(pixels, 0), misses(pixels, 0);
+  for (size_t i = 0; i < pass.rays.size(); ++i) {
+    const size_t pixel = pass.rays[i].id / pass.raysPerHit;
+    if (pixel >= pixels) throw std::logic_error("a pass's ray id beyond the frame");
+    ++rays[pixel];
+    misses[pixel] += !pass.results[i].hit;
+  }
+  for (size_t p = 0; p < pixels; ++p)
+    if (rays[p] > 0 || pass.type == RayType::Shadow)
+      open[p] = static_cast<double>(misses[p]) / pass.raysPerHit;
+  return open;
+}
+
+}  // namespace rtu

@@ -1,0 +1,43 @@
+#pragma once
+// A frame of passes (issue 32, `render --passes primary,shadow,ao`): the camera's primary rays,
+// then secondary rays spawned from their hits (inputs/ray_workload.h), each pass a workload of its
+// own, run on the chosen model after the one before as a renderer's passes follow each other: its
+// own statistics, and the frame's cycles the passes' sum. The SVO kind's: the secondary passes'
+// ray records point at a model header appended after the octree, placing its cube where the
+// frame's t-value records see it (the identity).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/run_config.h"
+#include "explore/frame_scene.h"
+#include "inputs/ray_workload.h"
+#include "run/rtu_simulation.h"
+
+namespace rtu {
+
+// "primary,shadow,ao": the first pass must be primary, then shadow, ao, reflection, diffuse or
+// random, each at most once. Throws std::invalid_argument naming `option`.
+std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option);
+
+struct PassRun {
+  RayType type = RayType::Primary;
+  uint32_t raysPerHit = 1;               // ids: pixel * raysPerHit + light or sample
+  std::vector<RayRecord> rays;           // in the order they ran
+  std::vector<TraversalResult> results;  // the same order
+  std::optional<RtuRun> run;             // on a timed model: its statistics
+};
+
+// Every pass of `passes` after the first (the caller's primary frame) on `scene` (an SVO scene),
+// on the model `settings` choose, with the rays of `spec` (its type aside).
+std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
+                                        const std::vector<RayType>& passes,
+                                        const RayWorkloadSpec& spec);
+
+// Per pixel of a frame of `pixels`: the share of a pass's rays from that pixel's hit that reached
+// their end without a hit (a light seen, an AO direction open); a shadow ray not spawned (the light
+// behind the face) counts as blocked. Pixels without rays get 1.
+std::vector<double> openShare(const PassRun& pass, size_t pixels);
+
+}  // namespace rtu

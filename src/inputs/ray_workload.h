@@ -1,0 +1,35 @@
+#pragma once
+// One workload of ray records of a single type (issue 32, `rtusim jobs --ray-type`): a camera
+// frame's primary rays, or the secondary rays spawned from the golden model's hits of that frame
+// (inputs/secondary_rays.h), or random rays in the model's box, in the order asked for
+// (inputs/ray_order.h).
+
+#include <cstdint>
+#include <vector>
+
+#include "inputs/camera.h"
+#include "inputs/ray_order.h"
+#include "inputs/secondary_rays.h"
+#include "kinds/svo/golden_config.h"
+#include "rtu/word_memory.h"
+
+namespace rtu {
+
+struct RayWorkloadSpec {
+  SecondarySettings secondary;  // its type is the workload's
+  RayOrder order = RayOrder::Pixel;
+  size_t randomRays = 0;  // random: how many (0: one per pixel)
+};
+
+struct RayWorkload {
+  std::vector<RayRecord> rays;
+  size_t primaryHits = 0;  // the frame's, for secondary types
+};
+
+// The workload on the model whose header is at `modelAddress` in `memory`. Throws
+// std::runtime_error for a header that is not valid, std::invalid_argument for settings that are
+// not (SecondarySettings::validate).
+RayWorkload makeRayWorkload(const WordMemory& memory, uint32_t modelAddress, const Camera& camera,
+                            const GoldenConfig& golden, const RayWorkloadSpec& spec);
+
+}  // namespace rtu
