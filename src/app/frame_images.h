@@ -22,6 +22,7 @@ struct FramePixel {
   double t = 0;  // the hit's distance along the ray (0 on a miss)
   uint32_t cost = 0;
   glm::dvec3 normal{0.0};  // the surface's at the hit, either way round, any length but 0
+  int64_t triangle = -1;  // the hit triangle's index in the scene's mesh (triangle kinds, ray pipe)
 };
 
 // Pixels indexed by job id (= pixel x + y * width); missing pixels are misses.

@@ -291,6 +291,18 @@ void addAccelSettings(std::vector<Setting>& schema) {
                ? std::string()
                : bih;
   };
+  schema.push_back(choice(
+      "accel.kd_edge_order", "--kd-edge-order", {"pbrt", "r1"}, kUseAccel,
+      "k-d tree: the order of edges at equal positions, pbrt (PBRT v1's: a START first, so a "
+      "triangle flat in a split plane is kept) or r1 (the Tray Racer team's: an END first, which "
+      "drops such a triangle from both children; their files are built so)",
+      [](C& c) -> std::string& { return c.accel.kdEdgeOrder; }, sameText, sameText));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "kdtree" || c.rtu.core == "kd" ||
+                   c.architecture == Architecture::Raypipe
+               ? std::string()
+               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
+  };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
                         [](C& c) -> std::string& { return c.accel.file; }));

@@ -16,8 +16,14 @@ struct BoundEdge {
 };
 
 // R1's BoundEdge::operator<: by t, and at equal t an END (type 1) before a START (type 0).
-bool edgeBefore(const BoundEdge& a, const BoundEdge& b) {
+bool endFirst(const BoundEdge& a, const BoundEdge& b) {
   if (a.t == b.t) return !a.start && b.start;
+  return a.t < b.t;
+}
+
+// PBRT v1's BoundEdge::operator<: by t, and at equal t a START (type 0) before an END (type 1).
+bool startFirst(const BoundEdge& a, const BoundEdge& b) {
+  if (a.t == b.t) return a.start && !b.start;
   return a.t < b.t;
 }
 
@@ -123,7 +129,10 @@ class Builder {
       edges_.push_back({boxes_[t].lower[axis], t, true});
       edges_.push_back({boxes_[t].upper[axis], t, false});
     }
-    sort2012(edges_.begin(), edges_.end(), edgeBefore);
+    if (p_.edgeOrder == KdEdgeOrder::EndFirst)
+      sort2012(edges_.begin(), edges_.end(), endFirst);
+    else
+      sort2012(edges_.begin(), edges_.end(), startFirst);
   }
 
   // Costs every edge strictly inside the node on `axis`, in R1's float32 operation order.
@@ -156,6 +165,12 @@ class Builder {
 };
 
 }  // namespace
+
+KdEdgeOrder parseKdEdgeOrder(const std::string& name) {
+  if (name == "r1") return KdEdgeOrder::EndFirst;
+  if (name == "pbrt") return KdEdgeOrder::StartFirst;
+  throw std::invalid_argument("accel.kd_edge_order '" + name + "': pbrt or r1");
+}
 
 int pbrtMaxDepth(size_t triangles) {
   return static_cast<int>(std::round(8.f + 1.3f * std::log2(float(triangles))));

@@ -1,0 +1,48 @@
+#pragma once
+// One architecture's row of `rtusim compare` (issue 30): the scene built for it, the frame's run
+// as a row of fps and sweep runs it (explore/exploration_run.h: runFrameRow, so the row's
+// statistics are those of `rtusim fps` with the same settings), the figures the comparison shows,
+// taken from that row's statistics, and its image against the float64 reference
+// (explore/frame_agreement.h), with the difference image.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "config/configuration.h"
+#include "geometry/triangle_oracle.h"
+#include "inputs/camera.h"
+
+namespace rtu {
+
+// What an architecture is run with besides its configuration.
+struct CompareTarget {
+  std::string name;    // svo, bvh, bih, kd, raypipe
+  std::string preset;  // the preset its configuration started from ("" for none)
+  Configuration configuration;
+  // The ray pipe traces the scene's triangles where the model sits (a mesh in its own space), so
+  // its camera is the frame's moved there and its t scaled back into the world by this.
+  double raypipeScale = 1;
+  std::string differenceImage;  // where its difference image goes, or ""
+  Camera frameCamera;           // the frame's camera, in the world of the reference
+};
+
+// The row: "architecture", "preset", "status", "error", "scene", "structure", "image_bytes",
+// "build_seconds", "figures" (compareFigures), "agreement" and "row" (the fps row in full).
+// Failures are rows with "status": "failed" and the error.
+nlohmann::ordered_json compareRow(const CompareTarget& target,
+                                  const std::vector<std::optional<OracleHit>>& reference);
+
+// The figures of a row's statistics (an RTU kind's or the ray pipe's): frame cycles and rate,
+// cycles per ray, bytes per ray from the core (its fetches), the L2 (L1 refills) and DRAM, L1 and
+// L2 hit rates, nodes and triangle tests per ray, the cores' (or the pipe's busiest unit's)
+// utilisation and the limit; null where the architecture has no such figure.
+nlohmann::ordered_json compareFigures(const nlohmann::ordered_json& row);
+
+// The CSV's columns and a row's fields.
+const std::vector<std::string>& compareColumns();
+std::vector<std::string> compareFields(const nlohmann::ordered_json& row);
+
+}  // namespace rtu
