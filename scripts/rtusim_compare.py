@@ -46,10 +46,12 @@ def bar_plot(plt, rows, title, series, log):
     fig, ax = plt.subplots(figsize=(7, 3.2))
     width = 0.8 / len(series)
     for k, (key, label) in enumerate(series):
-        heights = [value(r, key) or 0 for r in rows]
+        values = [value(r, key) for r in rows]
         positions = [i + (k - (len(series) - 1) / 2) * width for i in range(len(rows))]
-        bars = ax.bar(positions, heights, width, label=label)
-        ax.bar_label(bars, fmt="%.3g", fontsize=7)
+        bars = ax.bar(positions, [v or 0 for v in values], width, label=label)
+        # An architecture without the figure (the pipe's caches, the SVO's nodes): "n/a", no bar.
+        ax.bar_label(bars, labels=["n/a" if v is None else "%.3g" % v for v in values],
+                     fontsize=7)
     ax.set_xticks(range(len(rows)))
     ax.set_xticklabels(names)
     ax.set_title(title)

@@ -46,13 +46,14 @@ TEST_CASE("compare reference: the BVH finds closestHit's hits", "[compare]") {
   }
 }
 
-// A 2x1 frame looking down -z from z = 5 at the cube [-1,1]^3.
+// A 2x1 frame looking down -z from z = 5 at the cube [-1,1]^3, 10 degrees high (20 wide).
 Camera twoPixels() {
   Camera camera;
   camera.position = {0, 0, 5};
   camera.lookAt = {0, 0, 0};
   camera.width = 2;
   camera.height = 1;
+  camera.verticalFovDegrees = 10;
   return camera;
 }
 

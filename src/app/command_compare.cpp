@@ -130,6 +130,7 @@ struct SharedFrame {
   std::vector<std::pair<std::string, std::string>> sets;  // key, value
   std::optional<Camera> sceneCamera;                      // a scene file's, in its world
   ModelPlacement placement;
+  std::optional<ReferenceTracer> tracer;
   std::vector<std::optional<OracleHit>> reference;
   std::string triangles;  // the scene's triangles, for the heading
 };
@@ -185,8 +186,8 @@ void traceReference(const RunConfig& settings, const TriangleScene& triangles,
   shared.placement = framePlacement(settings.scene, triangles.mesh);
   shared.triangles =
       triangles.name + ", " + std::to_string(triangles.mesh.triangles.size()) + " triangles";
-  const ReferenceTracer tracer(placedMesh(triangles.mesh, shared.placement));
-  shared.reference = referenceFrame(tracer, settings.camera);
+  shared.tracer.emplace(placedMesh(triangles.mesh, shared.placement));
+  shared.reference = referenceFrame(*shared.tracer, settings.camera);
 }
 
 CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice& choice,
@@ -205,11 +206,11 @@ CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice&
   for (const auto& [key, value] : shared.sets) configuration.set(key, value, ConfigSource::Preset);
   configuration.set(raypipe ? "architecture" : "core", raypipe ? kRaypipe : choice.name,
                     ConfigSource::Preset);
-  // The seed's narrow scene file holds 2^16 nodes; a mesh's tree takes the wide one.
-  if (raypipe && !givenByCommand(configuration, "accel.index"))
+  // The seeds' index widths hold small scenes only (the BIH 1,024 nodes, the Tray Racer's narrow
+  // scene file 2^16): the wide ones, unless given.
+  if (!givenByCommand(configuration, "accel.index"))
     configuration.set("accel.index", "wide", ConfigSource::Preset);
   configuration.values().camera = camera;
-  target.frameCamera = camera;
   if (!images.empty()) target.differenceImage = images + "/" + choice.name + ".png";
   return target;
 }
@@ -219,7 +220,7 @@ CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice&
 void moveRaypipeCamera(CompareTarget& target, const ModelPlacement& fit) {
   Camera& camera = target.configuration.values().camera;
   camera = movedCamera(camera, [&](const glm::dvec3& p) { return unplaced(fit, p); });
-  target.raypipeScale = fit.scale.x;
+  target.raypipePlacement = fit;
 }
 
 std::string cell(const Json& value, int precision) {
@@ -341,7 +342,9 @@ void runCompare(const ConfigRequest& request, const CompareOptions& options) {
   size_t finished = 0, failed = 0;
   runInWorkers(
       indices, options.workers,
-      [&](size_t i) { return compareRow(targets[i], shared.reference).dump(); },
+      [&](size_t i) {
+        return compareRow(targets[i], {*shared.tracer, shared.reference}).dump();
+      },
       [&](size_t i, const WorkerOutcome& outcome) {
         rows[i] = outcome.answered ? Json::parse(outcome.line)
                                    : Json{{"architecture", targets[i].name},

@@ -2,12 +2,17 @@
 
 #include <chrono>
 
+#include <glm/geometric.hpp>
+
 #include "app/frame_outputs.h"
 #include "app/raypipe_render.h"
+#include "config/config_schema.h"
 #include "explore/exploration_run.h"
 #include "explore/frame_agreement.h"
 #include "explore/frame_scene.h"
 #include "explore/raypipe_frame.h"
+#include "explore/reference_frame.h"
+#include "kinds/kd/trayracer_scene.h"
 #include "run/analytic_run.h"
 
 namespace rtu {
@@ -19,9 +24,43 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The frame's pixels from the golden model, whose results the timed models equal (the
-// equivalence tests over every kind and the pipe's fidelity tests).
-RenderedFrame goldenPixels(const CompareTarget& target, const FrameScene& scene) {
+std::vector<FrameHit> frameHits(const RenderedFrame& frame) {
+  std::vector<FrameHit> hits;
+  hits.reserve(frame.pixels.size());
+  for (const FramePixel& pixel : frame.pixels) hits.push_back({pixel.hit, pixel.t, pixel.triangle});
+  return hits;
+}
+
+// What an architecture's frame is measured with: its pixels from the golden model, whose results
+// the timed models equal (the equivalence tests over every kind, the pipe's fidelity tests), and
+// the reference of its rays.
+struct MeasuredFrame {
+  std::vector<FrameHit> hits;
+  std::vector<std::optional<OracleHit>> reference;
+};
+
+// The ray pipe's rays are its PRG's (through a corner of each pixel, in binary32, in hardware
+// space where its scene lies), so its reference traces them, moved into the world.
+std::vector<std::optional<OracleHit>> raypipeReference(const std::vector<PrimaryRay>& rays,
+                                                       const ModelPlacement& placement,
+                                                       const ReferenceTracer& tracer) {
+  std::vector<std::optional<OracleHit>> reference(rays.size());
+  for (const PrimaryRay& primary : rays) {
+    const auto world = [](const std::array<float, 3>& v) {
+      return toHardwareSpace(glm::dvec3(v[0], v[1], v[2]));  // its own inverse
+    };
+    Ray ray;
+    ray.origin =
+        placement.translation + placement.rotation * (placement.scale * world(primary.ray.origin));
+    ray.direction =
+        glm::normalize(placement.rotation * (placement.scale * world(primary.ray.direction)));
+    reference.at(primary.pixel.pixelId) = tracer.trace(ray);
+  }
+  return reference;
+}
+
+MeasuredFrame measuredFrame(const CompareTarget& target, const FrameScene& scene,
+                            const CompareReference& shared) {
   const RunConfig& settings = target.configuration.values();
   if (settings.architecture == Architecture::Raypipe) {
     const PrgFrameSize size = raypipeFrameSize(settings);
@@ -29,19 +68,12 @@ RenderedFrame goldenPixels(const CompareTarget& target, const FrameScene& scene)
     const std::vector<PrimaryRay> rays = primaryRays(registers, size);
     RenderedFrame frame = raypipeRenderedFrame(runGoldenFrame(scene.words, rays, settings.raypipe),
                                                rays, {}, registers, size);
-    for (FramePixel& pixel : frame.pixels) pixel.t *= target.raypipeScale;
-    return frame;
+    for (FramePixel& pixel : frame.pixels) pixel.t *= target.raypipePlacement.scale.x;
+    return {frameHits(frame), raypipeReference(rays, target.raypipePlacement, shared.tracer)};
   }
   const std::vector<CoreKindResult> results =
       traceGolden(scene.memory(), frameRecords(scene, settings), settings.rtu);
-  return framePixels(settings, scene, results);
-}
-
-std::vector<FrameHit> frameHits(const RenderedFrame& frame) {
-  std::vector<FrameHit> hits;
-  hits.reserve(frame.pixels.size());
-  for (const FramePixel& pixel : frame.pixels) hits.push_back({pixel.hit, pixel.t, pixel.triangle});
-  return hits;
+  return {frameHits(framePixels(settings, scene, results)), shared.frame};
 }
 
 ObjectRule objectRule(const RunConfig& settings) {
@@ -93,8 +125,10 @@ Json coreBytes(const Json& row) {
 // Bytes the L2 serves: a line of the L1 for each L2 access.
 Json l2Bytes(const Json& row) {
   const Json accesses = statistic(row["statistics"], "memory/l2/accesses");
-  if (!accesses.is_number() || !row["config"].contains("memory.l1.line")) return Json();
-  return accesses.get<double>() * row["config"]["memory.l1.line"].get<double>();
+  const Json& line = row["config"]["memory.l1.line"];
+  if (!accesses.is_number() || !line.is_string()) return Json();
+  return accesses.get<double>() *
+         static_cast<double>(parseBytes(line.get<std::string>(), "memory.l1.line"));
 }
 
 }  // namespace
@@ -119,22 +153,18 @@ Json compareFigures(const Json& row) {
           {"limit_utilisation", s["limit_utilisation"]}};
 }
 
-Json compareRow(const CompareTarget& target,
-                const std::vector<std::optional<OracleHit>>& reference) {
+Json compareRow(const CompareTarget& target, const CompareReference& reference) {
   Json out = {{"architecture", target.name}, {"preset", target.preset}};
   try {
     const auto start = std::chrono::steady_clock::now();
     const FrameScene scene = loadFrameScene(target.configuration.values());
     const double buildSeconds = secondsSince(start);
     const Json row = runFrameRow(target.configuration, scene, RowModel::RecurrenceWhereExact);
-    const RenderedFrame pixels = goldenPixels(target, scene);
-    const std::vector<FrameHit> hits = frameHits(pixels);
+    const MeasuredFrame measured = measuredFrame(target, scene, reference);
     const ObjectRule rule = objectRule(target.configuration.values());
-    // The reference's camera: the frame's (the ray pipe's pixels follow it; its own camera may sit
-    // in a mesh's space).
-    const Camera& camera = target.frameCamera;
+    const Camera& camera = target.configuration.values().camera;
     if (!target.differenceImage.empty())
-      writePrecisionImage(camera, pixelVerdicts(camera, hits, reference, rule),
+      writePrecisionImage(camera, pixelVerdicts(camera, measured.hits, measured.reference, rule),
                           target.differenceImage);
     out.update(Json{{"status", "ok"},
                     {"error", ""},
@@ -143,7 +173,8 @@ Json compareRow(const CompareTarget& target,
                     {"image_bytes", scene.words.size() * sizeof(uint32_t)},
                     {"build_seconds", buildSeconds},
                     {"figures", compareFigures(row)},
-                    {"agreement", agreementJson(imageAgreement(camera, hits, reference, rule))},
+                    {"agreement", agreementJson(imageAgreement(camera, measured.hits,
+                                                               measured.reference, rule))},
                     {"difference_image", target.differenceImage},
                     {"row", row}});
   } catch (const std::exception& error) {

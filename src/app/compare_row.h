@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "config/configuration.h"
+#include "explore/reference_frame.h"
 #include "geometry/triangle_oracle.h"
-#include "inputs/camera.h"
 
 namespace rtu {
 
@@ -22,18 +22,25 @@ struct CompareTarget {
   std::string name;    // svo, bvh, bih, kd, raypipe
   std::string preset;  // the preset its configuration started from ("" for none)
   Configuration configuration;
-  // The ray pipe traces the scene's triangles where the model sits (a mesh in its own space), so
-  // its camera is the frame's moved there and its t scaled back into the world by this.
-  double raypipeScale = 1;
+  // The ray pipe traces the scene's triangles where the model sits (a mesh in its own space, which
+  // this places in the world), so its camera is the frame's moved there.
+  ModelPlacement raypipePlacement;
   std::string differenceImage;  // where its difference image goes, or ""
-  Camera frameCamera;           // the frame's camera, in the world of the reference
+};
+
+// The float64 reference: the scene's triangles in the world and the frame's nearest hits, one per
+// pixel of the frame's camera.
+struct CompareReference {
+  const ReferenceTracer& tracer;
+  std::vector<std::optional<OracleHit>> frame;
 };
 
 // The row: "architecture", "preset", "status", "error", "scene", "structure", "image_bytes",
 // "build_seconds", "figures" (compareFigures), "agreement" and "row" (the fps row in full).
 // Failures are rows with "status": "failed" and the error.
-nlohmann::ordered_json compareRow(const CompareTarget& target,
-                                  const std::vector<std::optional<OracleHit>>& reference);
+// The SVO and triangle kinds are measured against `reference.frame`; the ray pipe against its own
+// rays (its PRG's, through a corner of each pixel) traced by `reference.tracer`.
+nlohmann::ordered_json compareRow(const CompareTarget& target, const CompareReference& reference);
 
 // The figures of a row's statistics (an RTU kind's or the ray pipe's): frame cycles and rate,
 // cycles per ray, bytes per ray from the core (its fetches), the L2 (L1 refills) and DRAM, L1 and

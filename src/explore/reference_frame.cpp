@@ -46,16 +46,20 @@ ReferenceTracer::ReferenceTracer(TriangleMesh mesh) : mesh_(std::move(mesh)) {
   for (const BuildNode& node : tree_.nodes) boxes_.push_back(widened(node.box));
 }
 
+// Pass 1 finds every triangle hit within a relative 1e-9 of the nearest, through the BVH; pass 2
+// runs closestHit's rule over them in index order, so that ties and the watertight test's limit
+// (checked before its division) resolve as they do over every triangle.
 std::optional<OracleHit> ReferenceTracer::trace(const Ray& ray) const {
   const ShearedRay<double> sheared(ray.origin, ray.direction);
   const glm::dvec3 inverse = 1.0 / ray.direction;
-  std::optional<OracleHit> best;
+  const auto slack = [](double t) { return t * (1 + 1e-9) + 1e-300; };
+  double nearest = INFINITY;
+  std::vector<std::pair<uint32_t, double>> candidates;
   std::vector<uint32_t> pending{0};
   while (!pending.empty()) {
     const uint32_t index = pending.back();
     pending.pop_back();
-    const double limit = best ? best->t : INFINITY;
-    if (!meetsBox(ray, inverse, boxes_[index], limit)) continue;
+    if (!meetsBox(ray, inverse, boxes_[index], slack(nearest))) continue;
     const BuildNode& node = tree_.nodes[index];
     if (!node.leaf()) {
       pending.push_back(node.right);
@@ -64,13 +68,22 @@ std::optional<OracleHit> ReferenceTracer::trace(const Ray& ray) const {
     }
     for (uint32_t k = node.first; k < node.first + node.count; ++k) {
       const uint32_t i = tree_.refs[k];
-      const auto& corners = mesh_.triangles[i];
-      const double bound = best ? best->t : INFINITY;
-      const auto hit = watertight(sheared, mesh_.vertices[corners[0]], mesh_.vertices[corners[1]],
-                                  mesh_.vertices[corners[2]], 0.0, bound);
-      if (hit && (!best || hit->t < best->t || (hit->t == best->t && i < best->triangle)))
-        best = OracleHit{hit->t, hit->u, hit->v, i};
+      const auto& c = mesh_.triangles[i];
+      const auto hit = watertight(sheared, mesh_.vertices[c[0]], mesh_.vertices[c[1]],
+                                  mesh_.vertices[c[2]], 0.0, slack(nearest));
+      if (!hit) continue;
+      candidates.emplace_back(i, hit->t);
+      nearest = std::min(nearest, hit->t);
     }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  std::optional<OracleHit> best;
+  for (const auto& [i, t] : candidates) {
+    if (t > slack(nearest)) continue;
+    const auto& c = mesh_.triangles[i];
+    const auto hit = watertight(sheared, mesh_.vertices[c[0]], mesh_.vertices[c[1]],
+                                mesh_.vertices[c[2]], 0.0, best ? best->t : INFINITY);
+    if (hit && (!best || hit->t < best->t)) best = OracleHit{hit->t, hit->u, hit->v, i};
   }
   return best;
 }
