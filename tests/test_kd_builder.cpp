@@ -222,7 +222,35 @@ TEST_CASE("PBRT k-d: every voxel face is listed in PBRT's edge order", "[kd]") {
     return std::set<uint32_t>(tree.lists.begin(), tree.lists.end()).size();
   };
   CHECK(listed(KdEdgeOrder::StartFirst) == 6288);
+  CHECK(listed(KdEdgeOrder::FlatKept) == 6288);
   CHECK(listed(KdEdgeOrder::EndFirst) == 792);
+}
+
+// With no triangle flat on an axis, FlatKept is R1's order: the hand tree of "three triangles,
+// every node" (equal positions there: E0 and S1 at 1) comes out node for node. With the five boxes
+// of the flat case, the flat three are kept: at x = 1 in the below node the order is S S S E E E
+// (flat STARTs, then flat ENDs), as PBRT's, so the tree is the one derived for PBRT's order above.
+TEST_CASE("PBRT k-d: FlatKept is R1's order but for flat triangles", "[kd]") {
+  PbrtKdParameters flat;
+  flat.edgeOrder = KdEdgeOrder::FlatKept;
+  const std::vector<Aabb<float>> three = {box(0, 1), box(1, 2), box(3, 4)};
+  const KdBuild r1 = buildPbrtKd(three, PbrtKdParameters{});
+  const KdBuild kept = buildPbrtKd(three, flat);
+  REQUIRE(kept.nodes.size() == r1.nodes.size());
+  for (size_t i = 0; i < r1.nodes.size(); ++i) {
+    CHECK(kept.nodes[i].split == r1.nodes[i].split);
+    CHECK(kept.nodes[i].leaf == r1.nodes[i].leaf);
+  }
+  CHECK(kept.lists == r1.lists);
+  std::vector<Aabb<float>> boxes;
+  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
+  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  const KdBuild tree = buildPbrtKd(boxes, flat);
+  REQUIRE(tree.nodes.size() == 5);
+  CHECK(tree.nodes[1].belowEmpty);
+  CHECK(tree.nodes[3].count == 3);
+  CHECK(tree.nodes[4].count == 2);
+  CHECK(parseKdEdgeOrder("flat") == KdEdgeOrder::FlatKept);
 }
 
 TEST_CASE("strict OBJ: v, vn, f forms, quads split as (0,1,2), (2,3,0), errors by line", "[kd]") {

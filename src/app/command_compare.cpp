@@ -85,19 +85,11 @@ std::vector<ArchitectureChoice> parseArchitectures(const std::vector<std::string
   return choices;
 }
 
-// A pixel's footprint where the cube [-1,1]^3 is nearest the camera: 2 d tan(fov / 2) / height
-// at the distance d from the camera to the cube.
-double cubeFootprint(const Camera& camera) {
-  const glm::dvec3 outside = glm::max(glm::abs(camera.position) - glm::dvec3(1.0), 0.0);
-  return 2 * glm::length(outside) * std::tan(camera.verticalFovDegrees * M_PI / 360) /
-         camera.height;
-}
-
-// The shallowest depth whose voxels (2 / 2^depth wide) are no wider than that footprint of the
-// camera the frame has at that depth.
-int footprintDepth(const std::function<Camera(int)>& cameraAt) {
-  for (int depth = 1; depth < kMaxFootprintDepth; ++depth)
-    if (2 / std::ldexp(1.0, depth) <= cubeFootprint(cameraAt(depth))) return depth;
+// The shallowest depth (from 2, the voxelizer's least) whose voxels, 2 / 2^depth wide in the
+// cube, are no wider than `footprint`; at most kMaxFootprintDepth.
+int footprintDepth(double footprint) {
+  for (int depth = 2; depth < kMaxFootprintDepth; ++depth)
+    if (2 / std::ldexp(1.0, depth) <= footprint) return depth;
   return kMaxFootprintDepth;
 }
 
@@ -163,7 +155,24 @@ Camera frameCamera(const RunConfig& settings, const SharedFrame& shared, const T
   return movedCamera(*shared.sceneCamera, [&](const glm::dvec3& p) { return placed(fit, p); });
 }
 
-// The depth: --depth, or for a mesh the footprint's; a voxel scene's faces go to depth 9.
+// A pixel's footprint at the nearest point of the mesh the frame sees, with the mesh fitted into
+// the cube at `depth`: 2 t tan(fov / 2) / height at the nearest hit's distance t; 0 when the frame
+// sees none of it.
+double nearestFootprint(const RunConfig& settings, const SharedFrame& shared,
+                        const TriangleMesh& mesh, int depth) {
+  SceneSpec spec = settings.scene;
+  spec.depth = depth;
+  const Camera camera = frameCamera(settings, shared, mesh, depth);
+  const ReferenceTracer tracer(placedMesh(mesh, framePlacement(spec, mesh)));
+  double nearest = INFINITY;
+  for (const std::optional<OracleHit>& hit : referenceFrame(tracer, camera))
+    if (hit) nearest = std::min(nearest, hit->t);
+  if (std::isinf(nearest)) return 0;
+  return 2 * nearest * std::tan(camera.verticalFovDegrees * M_PI / 360) / camera.height;
+}
+
+// The depth: --depth, or for a mesh the footprint's at the nearest point the frame sees; a voxel
+// scene's faces go to depth 9.
 int chooseDepth(const Configuration& base, const SharedFrame& shared, const TriangleMesh& mesh,
                 const std::vector<ArchitectureChoice>& choices) {
   const RunConfig& settings = base.values();
@@ -177,7 +186,10 @@ int chooseDepth(const Configuration& base, const SharedFrame& shared, const Tria
                                   std::to_string(kMaxVoxelFaceDepth) + " at most");
     return settings.scene.depth;
   }
-  return footprintDepth([&](int depth) { return frameCamera(settings, shared, mesh, depth); });
+  // The fit into the cube moves the mesh by less than a voxel from one depth to the next, so the
+  // nearest point is found once, at depth 8.
+  const double footprint = nearestFootprint(settings, shared, mesh, 8);
+  return footprint > 0 ? footprintDepth(footprint) : settings.scene.depth;
 }
 
 // The float64 reference over the scene's triangles where the frame places them.

@@ -292,10 +292,11 @@ void addAccelSettings(std::vector<Setting>& schema) {
                : bih;
   };
   schema.push_back(choice(
-      "accel.kd_edge_order", "--kd-edge-order", {"pbrt", "r1"}, kUseAccel,
-      "k-d tree: the order of edges at equal positions, pbrt (PBRT v1's: a START first, so a "
-      "triangle flat in a split plane is kept) or r1 (the Tray Racer team's: an END first, which "
-      "drops such a triangle from both children; their files are built so)",
+      "accel.kd_edge_order", "--kd-edge-order", {"flat", "pbrt", "r1"}, kUseAccel,
+      "k-d tree: the order of edges at equal positions: flat (R1's, but a triangle flat on the "
+      "axis between the others' ENDs and STARTs, so it is kept), pbrt (PBRT v1's, a START first: "
+      "kept too, but a triangle touching the plane goes to both sides) or r1 (the Tray Racer "
+      "team's, an END first, which drops a triangle flat in the split plane; their files)",
       [](C& c) -> std::string& { return c.accel.kdEdgeOrder; }, sameText, sameText));
   schema.back().ignoredBecause = [](const C& c) {
     return c.accel.structure == "kdtree" || c.rtu.core == "kd" ||

@@ -22,7 +22,7 @@ struct AccelSpec {
   std::string builder = "binned";    // bvh: langr | binned | sweep | lbvh
   bool dropBadTriangles = false;     // degenerate and duplicate triangles dropped, not refused
   std::string index = "seed";        // bih, kdtree: the seed's index widths, or wide
-  std::string kdEdgeOrder = "pbrt";  // kdtree: edges at equal positions, pbrt or r1
+  std::string kdEdgeOrder = "flat";  // kdtree: edges at equal positions, flat, pbrt or r1
   std::string file;                  // a built triangle structure's image to trace (.bvh)
 };
 

@@ -94,7 +94,9 @@ AccelBuild kdBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   build.quality = measureQuality(tree, parameters);
   build.quality.buildSeconds = secondsSince(start);
   const std::string order = parameters.edgeOrder == KdEdgeOrder::EndFirst ? "R1's edge order, "
-                                                                          : "";
+                            : parameters.edgeOrder == KdEdgeOrder::StartFirst
+                                ? "PBRT's edge order, "
+                                : "";
   build.description = "k-d tree (PBRT v1 SAH, " + order + spec.index + " scene file)";
   return build;
 }

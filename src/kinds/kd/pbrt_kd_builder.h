@@ -26,12 +26,15 @@
 
 namespace rtu {
 
-// The order of edges at equal positions. R1's (EndFirst) gives a triangle lying flat in the split
-// plane, at the split, to neither child: it is in no leaf's list, so no ray finds it (on a voxel
-// scene's faces most triangles: the sphere at depth 5 keeps 792 of 6,288). PBRT's (StartFirst)
-// puts such a triangle below when the split is an END and above when it is a START, so every
-// triangle is in some leaf (docs/triangles.md, "Edge order").
-enum class KdEdgeOrder : uint8_t { EndFirst, StartFirst };
+// The order of edges at equal positions (docs/triangles.md, "Edge order"). R1's (EndFirst) gives a
+// triangle lying flat in the split plane, at the split, to neither child: it is in no leaf's
+// list, so no ray finds it (on a voxel scene's faces most triangles: the sphere at depth 5 keeps
+// 792 of 6,288). PBRT's (StartFirst) puts such a triangle below when the split is an END and above
+// when it is a START, so every triangle is in some leaf.
+// FlatKept is R1's order but for the flat triangles, whose START and END go between the others'
+// ENDs and STARTs: every flat triangle is listed, and a triangle merely touching the plane goes to
+// one side only, as in R1's (PBRT's puts it on both: the bunny's tree doubles).
+enum class KdEdgeOrder : uint8_t { EndFirst, StartFirst, FlatKept };
 
 struct PbrtKdParameters {
   int intersectionCost = 80;
@@ -40,7 +43,7 @@ struct PbrtKdParameters {
   int maxTriangles = 2;
   int maxDepth = -1;  // -1: round(8 + 1.3 log2 N), PBRT's default
   // R1's order, so that its files are reproduced byte for byte; rtusim's own builds choose with
-  // accel.kd_edge_order (PBRT's by default).
+  // accel.kd_edge_order (FlatKept by default).
   KdEdgeOrder edgeOrder = KdEdgeOrder::EndFirst;
   // rtusim's correction, off to reproduce R1's files byte for byte. R1's edge order gives a
   // triangle lying flat in its node's split plane to neither child, so a node whose triangles all
@@ -52,8 +55,8 @@ struct PbrtKdParameters {
   bool pruneEmptyPairs = true;
 };
 
-// "r1" -> EndFirst, "pbrt" -> StartFirst; throws std::invalid_argument naming accel.kd_edge_order
-// for other text.
+// "r1" -> EndFirst, "pbrt" -> StartFirst, "flat" -> FlatKept; throws std::invalid_argument naming
+// accel.kd_edge_order for other text.
 KdEdgeOrder parseKdEdgeOrder(const std::string& name);
 
 // round(8 + 1.3f log2(float(N))) in float32: 18 for 200 triangles, 21 for 1023.
