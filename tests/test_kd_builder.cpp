@@ -14,6 +14,14 @@
 namespace rtu {
 namespace {
 
+// Three triangles flat in x = 1 (y, z in [0, 1]) and two spanning x [0, 2] at y [3, 4].
+std::vector<Aabb<float>> flatAndTwo() {
+  std::vector<Aabb<float>> boxes;
+  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
+  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  return boxes;
+}
+
 Aabb<float> box(float x0, float x1) {
   Aabb<float> b;
   b.grow({x0, 0, 0});
@@ -133,9 +141,7 @@ TEST_CASE("PBRT k-d: no candidate on any axis leaves a leaf", "[kd]") {
 // it both its children are empty leaves; pruned, it is an empty leaf its parent marks empty.
 TEST_CASE("PBRT k-d: a node whose triangles lie flat in its split plane, as built and pruned",
           "[kd]") {
-  std::vector<Aabb<float>> boxes;
-  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
-  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
   PbrtKdParameters asR1;
   asR1.pruneEmptyPairs = false;
   const KdBuild built = buildPbrtKd(boxes, asR1);
@@ -178,9 +184,7 @@ TEST_CASE("PBRT k-d: a node whose triangles lie flat in its split plane, as buil
 // it no START (an empty leaf), above it every END: the three flat triangles, kept. That node
 // (x [1, 2], d = (1, 1, 1), axis z, then x, then y) has no edge strictly inside: a leaf of three.
 TEST_CASE("PBRT k-d: PBRT's edge order keeps triangles flat in the split plane", "[kd]") {
-  std::vector<Aabb<float>> boxes;
-  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
-  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
   PbrtKdParameters pbrt;
   pbrt.edgeOrder = KdEdgeOrder::StartFirst;
   const KdBuild tree = buildPbrtKd(boxes, pbrt);
@@ -242,9 +246,7 @@ TEST_CASE("PBRT k-d: FlatKept is R1's order but for flat triangles", "[kd]") {
     CHECK(kept.nodes[i].leaf == r1.nodes[i].leaf);
   }
   CHECK(kept.lists == r1.lists);
-  std::vector<Aabb<float>> boxes;
-  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
-  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
   const KdBuild tree = buildPbrtKd(boxes, flat);
   REQUIRE(tree.nodes.size() == 5);
   CHECK(tree.nodes[1].belowEmpty);
