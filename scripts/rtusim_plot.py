@@ -9,6 +9,7 @@ Usage:
   rtusim_plot.py best [--objective OBJ]... [--group KEY]... [--base KEY=VALUE]... -- INPUT...
   rtusim_plot.py diff [--stat NAME]... [--changed] [--label NAME]... -- A B
   rtusim_plot.py frames --out FILE.png FRAMES.csv
+  rtusim_plot.py compare --out FILE.html COMPARE.json
 
 INPUT is a sweep or fps result as JSON lines (*.jsonl, one object per configuration row with
 "status", "error", "preset", "config" and "statistics"), an fps CSV (header starting
@@ -180,6 +181,9 @@ def main(argv=None):
     diff.add_argument("--changed", action="store_true", help="only statistics that differ")
     diff.add_argument("--label", action="append", default=[], help="names of A and B")
     diff.add_argument("inputs", nargs="+", metavar="INPUT", help="two .json or .jsonl files")
+    compare = commands.add_parser("compare", help="the HTML report of rtusim compare")
+    compare.add_argument("--out", required=True, help="HTML file to write")
+    compare.add_argument("inputs", nargs=1, metavar="COMPARE.json", help="rtusim compare --json")
     frames = commands.add_parser("frames", help="frame rate over an animation (rtusim animate --csv)")
     frames.add_argument("--out", required=True, help="image to write (PNG, SVG)")
     frames.add_argument("csv", metavar="FRAMES.csv", help="per-frame CSV of rtusim animate")
@@ -189,6 +193,9 @@ def main(argv=None):
             plotting()
             from rtusim_report import command_report
             return command_report(args, objectives_of(args), rows_of(args))
+        if args.command == "compare":
+            from rtusim_compare import command_compare
+            return command_compare(args, plotting())
         handlers = {"plot": command_plot, "best": command_best, "diff": command_diff,
                     "frames": command_frames}
         return handlers[args.command](args)

@@ -2,13 +2,25 @@
 // and the strict OBJ reader (geometry/obj_exact.h) it is fed from.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "geometry/obj_exact.h"
 #include "kinds/kd/pbrt_kd_builder.h"
+#include "kinds/svo/procedural_scenes.h"
+#include "kinds/svo/voxel_faces.h"
 
 namespace rtu {
 namespace {
+
+// Three triangles flat in x = 1 (y, z in [0, 1]) and two spanning x [0, 2] at y [3, 4].
+std::vector<Aabb<float>> flatAndTwo() {
+  std::vector<Aabb<float>> boxes;
+  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
+  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  return boxes;
+}
 
 Aabb<float> box(float x0, float x1) {
   Aabb<float> b;
@@ -129,9 +141,7 @@ TEST_CASE("PBRT k-d: no candidate on any axis leaves a leaf", "[kd]") {
 // it both its children are empty leaves; pruned, it is an empty leaf its parent marks empty.
 TEST_CASE("PBRT k-d: a node whose triangles lie flat in its split plane, as built and pruned",
           "[kd]") {
-  std::vector<Aabb<float>> boxes;
-  for (int i = 0; i < 3; ++i) boxes.push_back(Aabb<float>{{1, 0, 0}, {1, 1, 1}});
-  for (int i = 0; i < 2; ++i) boxes.push_back(Aabb<float>{{0, 3, 0}, {2, 4, 1}});
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
   PbrtKdParameters asR1;
   asR1.pruneEmptyPairs = false;
   const KdBuild built = buildPbrtKd(boxes, asR1);
@@ -161,6 +171,88 @@ TEST_CASE("PBRT k-d: a node whose triangles lie flat in its split plane, as buil
   CHECK(pruned.nodes[2].count == 2);
   CHECK(pruned.lists == built.lists);
   CHECK(pruned.lists == std::vector<uint32_t>{3, 4});
+}
+
+// The same five boxes in PBRT's order (a START before an END at equal t). The root's y edges are
+// S S S (0) | E E E (1) | S S (3) | E E (4): no START and END share a position, so the root splits
+// as above, at the flat ones' last END (y = 1), below the flat three. The below node (x [0, 2],
+// y [0, 1], z [0, 1], d = (2, 1, 1), area 10) now sorts S S S E E E at x = 1, every edge strictly
+// inside; with A_b = A_a = 2 (1 + 1 * 2) = 6 each side is 0.6 of the node:
+//   S (first): n_b 0, n_a 3, bonus: 1 + 80 * 0.9 * 0.6 * 3 = 130.6
+//   S, S: n_b 1, 2 with n_a 3: 193, 241;  E, E, E: n_a 2, 1, 0 with n_b 3: 241, 193, 130.6
+// The first START wins (the last END's equal cost is not strictly cheaper), 130.6 < 80 * 3: below
+// it no START (an empty leaf), above it every END: the three flat triangles, kept. That node
+// (x [1, 2], d = (1, 1, 1), axis z, then x, then y) has no edge strictly inside: a leaf of three.
+TEST_CASE("PBRT k-d: PBRT's edge order keeps triangles flat in the split plane", "[kd]") {
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
+  PbrtKdParameters pbrt;
+  pbrt.edgeOrder = KdEdgeOrder::StartFirst;
+  const KdBuild tree = buildPbrtKd(boxes, pbrt);
+  REQUIRE(tree.nodes.size() == 5);
+  CHECK(tree.nodes[0].axis == 1);
+  CHECK(tree.nodes[0].split == 1.f);
+  CHECK(tree.nodes[0].above == 4);
+  CHECK(tree.nodes[1].axis == 0);
+  CHECK(tree.nodes[1].split == 1.f);
+  CHECK(tree.nodes[1].above == 3);
+  CHECK(tree.nodes[1].belowEmpty);
+  CHECK_FALSE(tree.nodes[1].aboveEmpty);
+  CHECK(tree.nodes[2].leaf);
+  CHECK(tree.nodes[2].count == 0);
+  CHECK(tree.nodes[3].leaf);
+  CHECK(tree.nodes[3].count == 3);
+  CHECK(tree.nodes[4].count == 2);
+  std::vector<uint32_t> listed = tree.lists;
+  std::sort(listed.begin(), listed.end());
+  CHECK(listed == std::vector<uint32_t>{0, 1, 2, 3, 4});
+  CHECK(tree.prunedNodes == 0);
+  CHECK(parseKdEdgeOrder("pbrt") == KdEdgeOrder::StartFirst);
+  CHECK(parseKdEdgeOrder("r1") == KdEdgeOrder::EndFirst);
+  CHECK_THROWS_WITH(parseKdEdgeOrder("pbrt2"), Catch::Contains("accel.kd_edge_order 'pbrt2'"));
+}
+
+// A voxel scene's faces all lie in planes where splits fall. In R1's order most are in no leaf's
+// list (docs/triangles.md: 792 of the sphere's 6,288 at depth 5); in PBRT's every one is listed.
+TEST_CASE("PBRT k-d: every voxel face is listed in PBRT's edge order", "[kd]") {
+  const TriangleMesh faces = voxelFaces(*makeProceduralScene("sphere", 5));
+  REQUIRE(faces.triangles.size() == 6288);
+  std::vector<glm::dvec3> corners;
+  for (const auto& triangle : faces.triangles)
+    for (uint32_t v : triangle) corners.push_back(faces.vertices[v]);
+  const auto listed = [&](KdEdgeOrder order) {
+    PbrtKdParameters parameters;
+    parameters.edgeOrder = order;
+    const KdBuild tree = buildPbrtKd(pbrtTriangleBoxes(corners), parameters);
+    return std::set<uint32_t>(tree.lists.begin(), tree.lists.end()).size();
+  };
+  CHECK(listed(KdEdgeOrder::StartFirst) == 6288);
+  CHECK(listed(KdEdgeOrder::FlatKept) == 6288);
+  CHECK(listed(KdEdgeOrder::EndFirst) == 792);
+}
+
+// With no triangle flat on an axis, FlatKept is R1's order: the hand tree of "three triangles,
+// every node" (equal positions there: E0 and S1 at 1) comes out node for node. With the five boxes
+// of the flat case, the flat three are kept: at x = 1 in the below node the order is S S S E E E
+// (flat STARTs, then flat ENDs), as PBRT's, so the tree is the one derived for PBRT's order above.
+TEST_CASE("PBRT k-d: FlatKept is R1's order but for flat triangles", "[kd]") {
+  PbrtKdParameters flat;
+  flat.edgeOrder = KdEdgeOrder::FlatKept;
+  const std::vector<Aabb<float>> three = {box(0, 1), box(1, 2), box(3, 4)};
+  const KdBuild r1 = buildPbrtKd(three, PbrtKdParameters{});
+  const KdBuild kept = buildPbrtKd(three, flat);
+  REQUIRE(kept.nodes.size() == r1.nodes.size());
+  for (size_t i = 0; i < r1.nodes.size(); ++i) {
+    CHECK(kept.nodes[i].split == r1.nodes[i].split);
+    CHECK(kept.nodes[i].leaf == r1.nodes[i].leaf);
+  }
+  CHECK(kept.lists == r1.lists);
+  const std::vector<Aabb<float>> boxes = flatAndTwo();
+  const KdBuild tree = buildPbrtKd(boxes, flat);
+  REQUIRE(tree.nodes.size() == 5);
+  CHECK(tree.nodes[1].belowEmpty);
+  CHECK(tree.nodes[3].count == 3);
+  CHECK(tree.nodes[4].count == 2);
+  CHECK(parseKdEdgeOrder("flat") == KdEdgeOrder::FlatKept);
 }
 
 TEST_CASE("strict OBJ: v, vn, f forms, quads split as (0,1,2), (2,3,0), errors by line", "[kd]") {

@@ -58,7 +58,10 @@ void writeStats(const std::string& path, const RunConfig& config, const Triangle
   nlohmann::json stats = build.quality;
   stats["accel"] = config.accel.structure;
   if (config.accel.structure == "bvh") stats["builder"] = config.accel.builder;
-  if (config.accel.structure == "kdtree") stats["builder"] = "pbrt";
+  if (config.accel.structure == "kdtree") {
+    stats["builder"] = "pbrt";
+    stats["kd_edge_order"] = config.accel.kdEdgeOrder;
+  }
   stats["scene"] = scene.name;
   stats["dropped_triangles"] = scene.dropped.size();
   stats["dropped_triangle_ids"] = scene.dropped;

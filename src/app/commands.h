@@ -22,5 +22,6 @@ void addPlotCommands(CLI::App& app);  // plot, report and best
 void addDiffCommand(CLI::App& app);
 void addWaveCommand(CLI::App& app);
 void addAnimateCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 
 }  // namespace rtu

@@ -22,6 +22,7 @@ struct FramePixel {
   double t = 0;  // the hit's distance along the ray (0 on a miss)
   uint32_t cost = 0;
   glm::dvec3 normal{0.0};  // the surface's at the hit, either way round, any length but 0
+  int64_t triangle = -1;  // the hit triangle's index in the scene's mesh (triangle kinds, ray pipe)
   // Secondary passes (explore/ray_passes.h): the share of the hit's shadow rays that reached the
   // light, and of its ambient-occlusion rays that met nothing; 1 without such a pass.
   float lightOpen = 1.0f;

@@ -186,11 +186,12 @@ void writePaletteImage(const RaypipeGoldenFrame& frame, PrgFrameSize size,
   writeRgbImage(path, size.width, size.height, rgb);
 }
 
-// The frame as rtusim's images take it: t in world units (hardware space only swaps axes), the
-// hit triangle's normal (none without normals), the golden traversal's states as the cost.
-RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<PrimaryRay>& rays,
-                            const std::vector<glm::dvec3>& normals, const RaypipeCamera& registers,
-                            PrgFrameSize size) {
+}  // namespace
+
+RenderedFrame raypipeRenderedFrame(const RaypipeGoldenFrame& frame,
+                                   const std::vector<PrimaryRay>& rays,
+                                   const std::vector<glm::dvec3>& normals,
+                                   const RaypipeCamera& registers, PrgFrameSize size) {
   RenderedFrame rendered(cameraOfRegisters(registers, size.width, size.height));
   for (size_t i = 0; i < frame.pixels.size(); ++i) {
     const RaypipePixel& p = frame.pixels[i];
@@ -200,14 +201,13 @@ RenderedFrame renderedFrame(const RaypipeGoldenFrame& frame, const std::vector<P
     if (p.hit) {
       const auto& d = rays[i].ray.direction;
       pixel.t = p.t * glm::length(glm::dvec3(d[0], d[1], d[2]));
+      pixel.triangle = p.primitive;
       if (p.primitive < normals.size()) pixel.normal = normals[p.primitive];
     }
     rendered.place(p.pixel.pixelId, pixel);
   }
   return rendered;
 }
-
-}  // namespace
 
 void addRaypipeRenderOptions(CLI::App& command, RaypipeRenderOptions& options) {
   command.add_option("--accel-file", options.accelFile,
@@ -273,7 +273,8 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
                     extraColumns(timed.has_value()));
   if (!images.image.empty()) writePaletteImage(frame, size, images.image);
   if (!options.shadedImage.empty() || !images.depthImage.empty() || !images.costImage.empty()) {
-    const RenderedFrame rendered = renderedFrame(frame, rays, scene.normals, registers, size);
+    const RenderedFrame rendered =
+        raypipeRenderedFrame(frame, rays, scene.normals, registers, size);
     if (!options.shadedImage.empty()) writeShadedImage(rendered, options.shadedImage);
     if (!images.depthImage.empty()) writeDepthImage(rendered, images.depthImage);
     if (!images.costImage.empty()) writeCostImage(rendered, images.costImage);

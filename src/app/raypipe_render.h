@@ -20,9 +20,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/frame_images.h"
 #include "app/output_paths.h"
 #include "app/run_outputs.h"
 #include "config/configuration.h"
+#include "raypipe/primary_rays.h"
+#include "raypipe/raypipe_camera.h"
+#include "raypipe/raypipe_golden.h"
 
 namespace rtu {
 
@@ -55,6 +59,14 @@ struct FrameImagePaths {
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
                    const RaypipeRenderOptions& options, const std::string& statsPath,
                    std::ostream& out);
+
+// The golden frame as rtusim's images take it: t in world units (hardware space only swaps axes),
+// the hit triangle's index and normal (none without normals), the golden traversal's states as
+// the cost.
+RenderedFrame raypipeRenderedFrame(const RaypipeGoldenFrame& frame,
+                                   const std::vector<PrimaryRay>& rays,
+                                   const std::vector<glm::dvec3>& normals,
+                                   const RaypipeCamera& registers, PrgFrameSize size);
 
 // Throws std::invalid_argument for an output of the RTU's timed models the pipe has no form of
 // (--trace, --timeline and the options that shape them).

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   rtu::addFpsCommand(app);
   rtu::addFidelityCommand(app);
   rtu::addSweepCommand(app);
+  rtu::addCompareCommand(app);
   rtu::addPlotCommands(app);
   rtu::addDiffCommand(app);
   rtu::addWaveCommand(app);

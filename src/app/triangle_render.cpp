@@ -28,6 +28,7 @@ FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uin
                          uint32_t primitive) {
   FramePixel pixel{hit, distance, cost, glm::dvec3(0.0)};
   if (!hit) return pixel;
+  pixel.triangle = primitive;
   const auto& corners = scene.mesh.triangles.at(primitive);
   const glm::dvec3 a = scene.mesh.vertices[corners[0]], b = scene.mesh.vertices[corners[1]],
                    c = scene.mesh.vertices[corners[2]];

@@ -291,6 +291,19 @@ void addAccelSettings(std::vector<Setting>& schema) {
                ? std::string()
                : bih;
   };
+  schema.push_back(choice(
+      "accel.kd_edge_order", "--kd-edge-order", {"flat", "pbrt", "r1"}, kUseAccel,
+      "k-d tree: the order of edges at equal positions: flat (R1's, but a triangle flat on the "
+      "axis between the others' ENDs and STARTs, so it is kept), pbrt (PBRT v1's, a START first: "
+      "kept too, but a triangle touching the plane goes to both sides) or r1 (the Tray Racer "
+      "team's, an END first, which drops a triangle flat in the split plane; their files)",
+      [](C& c) -> std::string& { return c.accel.kdEdgeOrder; }, sameText, sameText));
+  schema.back().ignoredBecause = [](const C& c) {
+    return c.accel.structure == "kdtree" || c.rtu.core == "kd" ||
+                   c.architecture == Architecture::Raypipe
+               ? std::string()
+               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
+  };
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
                         [](C& c) -> std::string& { return c.accel.file; }));

@@ -18,11 +18,12 @@ namespace rtu {
 // The acceleration structure `build` makes, and how (issue 27): the thesis' octree, seed 003's
 // BVH, seed 004's BIH or seed 001's k-d tree over the scene's triangles.
 struct AccelSpec {
-  std::string structure = "svo";   // svo | bvh | bih | kdtree
-  std::string builder = "binned";  // bvh: langr | binned | sweep | lbvh
-  bool dropBadTriangles = false;   // degenerate and duplicate triangles dropped, not refused
-  std::string index = "seed";      // bih, kdtree: the seed's index widths, or wide
-  std::string file;                // a built triangle structure's image to trace (.bvh)
+  std::string structure = "svo";     // svo | bvh | bih | kdtree
+  std::string builder = "binned";    // bvh: langr | binned | sweep | lbvh
+  bool dropBadTriangles = false;     // degenerate and duplicate triangles dropped, not refused
+  std::string index = "seed";        // bih, kdtree: the seed's index widths, or wide
+  std::string kdEdgeOrder = "flat";  // kdtree: edges at equal positions, flat, pbrt or r1
+  std::string file;                  // a built triangle structure's image to trace (.bvh)
 };
 
 // What a run models: the thesis' RTU (cores of a kind behind a job manager) or seed 001's ray pipe

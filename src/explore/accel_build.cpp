@@ -82,7 +82,8 @@ AccelBuild kdBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<glm::dvec3> corners, normals;
   cornersAndNormals(mesh, corners, normals);
-  const PbrtKdParameters parameters;
+  PbrtKdParameters parameters;
+  parameters.edgeOrder = parseKdEdgeOrder(spec.kdEdgeOrder);
   const KdBuild tree = buildPbrtKd(pbrtTriangleBoxes(corners), parameters);
   const TrayRacerScene scene = makeTrayRacerScene(tree, corners, normals, kGreyMaterial);
   AccelBuild build;
@@ -92,7 +93,11 @@ AccelBuild kdBuild(const TriangleMesh& mesh, const AccelSpec& spec) {
   build.warnings = trayRacerCapacityWarnings(scene);
   build.quality = measureQuality(tree, parameters);
   build.quality.buildSeconds = secondsSince(start);
-  build.description = "k-d tree (PBRT v1 SAH, " + spec.index + " scene file)";
+  const std::string order = parameters.edgeOrder == KdEdgeOrder::EndFirst ? "R1's edge order, "
+                            : parameters.edgeOrder == KdEdgeOrder::StartFirst
+                                ? "PBRT's edge order, "
+                                : "";
+  build.description = "k-d tree (PBRT v1 SAH, " + order + spec.index + " scene file)";
   return build;
 }
 

@@ -226,16 +226,6 @@ const std::vector<std::pair<std::string, Json::json_pointer>>& columnPointers() 
   return columns;
 }
 
-std::string valueText(const Json& value) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_number_float()) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.10g", value.get<double>());
-    return text;
-  }
-  return value.dump();
-}
-
 // The columns every row has, whatever its kind.
 std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
   return {{"rays", "rays"},
@@ -273,6 +263,16 @@ std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
 
 }  // namespace
 
+std::string csvValue(const Json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.10g", value.get<double>());
+    return text;
+  }
+  return value.dump();
+}
+
 const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys() {
   static const std::vector<std::pair<std::string, std::string>> columns = [] {
     std::vector<std::pair<std::string, std::string>> all = generalColumnKeys();
@@ -299,7 +299,7 @@ std::vector<std::string> statisticsValues(const Json& row) {
   const bool ok = row.contains("statistics");
   for (const auto& [name, pointer] : columnPointers()) {
     const Json* statistics = ok ? &row["statistics"] : nullptr;
-    values.push_back(statistics && statistics->contains(pointer) ? valueText((*statistics)[pointer])
+    values.push_back(statistics && statistics->contains(pointer) ? csvValue((*statistics)[pointer])
                                                                  : "");
   }
   return values;

@@ -82,6 +82,8 @@ const std::vector<std::string>& statisticsColumns();
 const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys();
 // A row's values for those columns (empty strings for a failed row).
 std::vector<std::string> statisticsValues(const nlohmann::ordered_json& row);
+// A value as a CSV field: a string as it is, a float in %.10g, anything else as JSON.
+std::string csvValue(const nlohmann::ordered_json& value);
 // One CSV line (RFC 4180 quoting) with its newline.
 std::string csvLine(const std::vector<std::string>& fields);
 

@@ -19,16 +19,6 @@
 namespace rtu {
 namespace {
 
-// Where the SVO frame puts the scene: a mesh file as the voxelizer fits it into the cube.
-ModelPlacement placementOf(const SceneSpec& spec, const TriangleMesh& mesh) {
-  ModelPlacement placement;
-  if (spec.meshFile.empty()) return placement;  // voxel faces: in the cube already
-  const MeshVoxelizer fit(mesh, spec.depth);
-  placement.translation = fit.offset();
-  placement.scale = glm::dvec3(fit.scale());
-  return placement;
-}
-
 // The model header a triangle kind's frame reads, appended after its structure (at word 0): the
 // BVH's model space is the mesh's; the BIH's is the grid `format` puts the mesh on (bih_model.h).
 template <class Kind>
@@ -72,7 +62,7 @@ struct FrameSceneOf {
     AccelBuild build = buildAccel(triangles.mesh, frameAccelSpec<Kind>(settings),
                                   settings.rtu.coreConfig<BihKind<>>().format);
     FrameScene scene;
-    scene.placement = placementOf(settings.scene, triangles.mesh);
+    scene.placement = framePlacement(settings.scene, triangles.mesh);
     scene.words = std::move(build.words);
     scene.entry =
         appendFrameModelHeader<Kind>(scene.words, triangles.mesh, scene.placement, settings);
@@ -129,6 +119,15 @@ FrameScene raypipeFrameScene(const RunConfig& settings) {
 
 }  // namespace
 
+ModelPlacement framePlacement(const SceneSpec& spec, const TriangleMesh& mesh) {
+  ModelPlacement placement;
+  if (spec.meshFile.empty()) return placement;  // voxel faces: in the cube already
+  const MeshVoxelizer fit(mesh, spec.depth);
+  placement.translation = fit.offset();
+  placement.scale = glm::dvec3(fit.scale());
+  return placement;
+}
+
 FrameScene loadFrameScene(const RunConfig& settings) {
   if (settings.architecture == Architecture::Raypipe) return raypipeFrameScene(settings);
   FrameScene scene = withCoreKind(settings.rtu.core, [&settings](auto kind) {
@@ -176,7 +175,8 @@ std::string frameSceneKey(const RunConfig& settings) {
          std::to_string(spec.seed) + "|" + std::to_string(spec.root) + "|" +
          std::to_string(spec.maxDepth) + "|" + accel.builder + "|" +
          std::to_string(accel.dropBadTriangles) + "|" +
-         bihFormatName(settings.rtu.coreConfig<BihKind<>>().format) + "|" + accel.index;
+         bihFormatName(settings.rtu.coreConfig<BihKind<>>().format) + "|" + accel.index + "|" +
+         accel.kdEdgeOrder;
 }
 
 }  // namespace rtu

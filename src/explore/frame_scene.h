@@ -40,6 +40,11 @@ struct FrameScene {
   WordMemory memory() const { return WordMemory(words); }
 };
 
+// Where the SVO frame puts the scene's triangles (loadSceneTriangles'): a mesh file as the
+// voxelizer fits it into the octree's cube at spec.depth; a voxel scene's faces, in the cube
+// already, where they are.
+ModelPlacement framePlacement(const SceneSpec& spec, const TriangleMesh& mesh);
+
 // The scene `settings` name for the kind settings.rtu.core, or for the ray pipe
 // (explore/raypipe_frame.h: the Tray Racer's k-d image, built or read from accel_file). Throws
 // std::invalid_argument for a scene the kind cannot take (an .svo file for a triangle kind) and

@@ -13,11 +13,26 @@ struct BoundEdge {
   float t = 0;
   uint32_t triangle = 0;
   bool start = false;
+  bool flat = false;  // the triangle's box has no extent on the axis
 };
 
 // R1's BoundEdge::operator<: by t, and at equal t an END (type 1) before a START (type 0).
-bool edgeBefore(const BoundEdge& a, const BoundEdge& b) {
+bool endFirst(const BoundEdge& a, const BoundEdge& b) {
   if (a.t == b.t) return !a.start && b.start;
+  return a.t < b.t;
+}
+
+// PBRT v1's BoundEdge::operator<: by t, and at equal t a START (type 0) before an END (type 1).
+bool startFirst(const BoundEdge& a, const BoundEdge& b) {
+  if (a.t == b.t) return a.start && !b.start;
+  return a.t < b.t;
+}
+
+// R1's order but for the triangles flat on the axis, whose edges go between the others' ENDs and
+// STARTs, their START first: at equal t, other ENDs, flat STARTs, flat ENDs, other STARTs.
+int flatKeptRank(const BoundEdge& e) { return e.flat ? (e.start ? 1 : 2) : (e.start ? 3 : 0); }
+bool flatKept(const BoundEdge& a, const BoundEdge& b) {
+  if (a.t == b.t) return flatKeptRank(a) < flatKeptRank(b);
   return a.t < b.t;
 }
 
@@ -120,10 +135,16 @@ class Builder {
   void sortEdges(const std::vector<uint32_t>& triangles, int axis) {
     edges_.clear();
     for (uint32_t t : triangles) {
-      edges_.push_back({boxes_[t].lower[axis], t, true});
-      edges_.push_back({boxes_[t].upper[axis], t, false});
+      const bool flat = boxes_[t].lower[axis] == boxes_[t].upper[axis];
+      edges_.push_back({boxes_[t].lower[axis], t, true, flat});
+      edges_.push_back({boxes_[t].upper[axis], t, false, flat});
     }
-    sort2012(edges_.begin(), edges_.end(), edgeBefore);
+    if (p_.edgeOrder == KdEdgeOrder::EndFirst)
+      sort2012(edges_.begin(), edges_.end(), endFirst);
+    else if (p_.edgeOrder == KdEdgeOrder::StartFirst)
+      sort2012(edges_.begin(), edges_.end(), startFirst);
+    else
+      sort2012(edges_.begin(), edges_.end(), flatKept);
   }
 
   // Costs every edge strictly inside the node on `axis`, in R1's float32 operation order.
@@ -156,6 +177,13 @@ class Builder {
 };
 
 }  // namespace
+
+KdEdgeOrder parseKdEdgeOrder(const std::string& name) {
+  if (name == "r1") return KdEdgeOrder::EndFirst;
+  if (name == "pbrt") return KdEdgeOrder::StartFirst;
+  if (name == "flat") return KdEdgeOrder::FlatKept;
+  throw std::invalid_argument("accel.kd_edge_order '" + name + "': flat, pbrt or r1");
+}
 
 int pbrtMaxDepth(size_t triangles) {
   return static_cast<int>(std::round(8.f + 1.3f * std::log2(float(triangles))));
