@@ -21,6 +21,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS_SANIT
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" -DRTUSIM_BENCH=OFF \
+  -DRTUSIM_UNITY_BUILD=ON \
   "${launcher[@]}" >/dev/null
 cmake --build build-sanitize -j "$(nproc)"
 

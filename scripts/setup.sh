@@ -24,5 +24,6 @@ if ((${#missing[@]})); then
 fi
 
 root_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-cmake -S "$root_dir" -B "$root_dir/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# RTUSIM_UNITY_BUILD: a from-scratch build in fewer translation units (CMakeLists.txt).
+cmake -S "$root_dir" -B "$root_dir/build" -DCMAKE_BUILD_TYPE=Release -DRTUSIM_UNITY_BUILD=ON >/dev/null
 cmake --build "$root_dir/build" -j "$(nproc)"

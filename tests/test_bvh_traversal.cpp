@@ -13,7 +13,7 @@
 namespace rtu {
 namespace {
 
-using Kind = BvhKind<WatertightIntersector>;
+using WatertightBvh = BvhKind<WatertightIntersector>;
 
 void appendNode(std::vector<uint32_t>& words, Vec3<float> lower, Vec3<float> upper, uint32_t w6,
                 uint32_t w7) {
@@ -55,7 +55,7 @@ BvhJob down(const HandImage& image, float x, float y) {
 }
 
 BvhResult trace(const HandImage& image, const BvhJob& job, BvhConfig config = {}) {
-  GoldenShell<Kind> shell(WordMemory(image.words), config);
+  GoldenShell<WatertightBvh> shell(WordMemory(image.words), config);
   BvhResult result;
   shell.run(7, job, result);
   return result;
@@ -162,7 +162,7 @@ TEST_CASE("BVH traversal: the axis order agrees here, the children's centres apa
 
 TEST_CASE("BVH traversal: every state reads within one aligned access", "[bvh_traversal]") {
   const HandImage image;
-  Kind::Behaviour traversal = Kind::behaviour(BvhConfig{});
+  WatertightBvh::Behaviour traversal = WatertightBvh::behaviour(BvhConfig{});
   traversal.start(down(image, 1.25f, 0.25f));
   const int reads = wordsReadWithinAccesses(traversal, WordMemory(image.words));
   // 6 node accesses of 4 words, 3 references, 3 triangles of 3 accesses of 4 words.

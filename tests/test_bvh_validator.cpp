@@ -3,10 +3,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 #include <vector>
 
+#include "base/float_bits.h"
 #include "bvh_meshes.h"
 #include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_validator.h"
@@ -34,12 +34,6 @@ std::string allProblems(const std::vector<BvhProblem>& problems) {
   std::string text;
   for (const BvhProblem& problem : problems) text += problem.what + "\n";
   return text;
-}
-
-uint32_t floatBits(float value) {
-  uint32_t word;
-  std::memcpy(&word, &value, sizeof word);
-  return word;
 }
 
 uint64_t fnv1a(const std::vector<uint32_t>& words) {

@@ -22,15 +22,12 @@
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/svo_builder.h"
 #include "reference/rtl_cycle_model.h"
+#include "svo_descriptor.h"
 #include "three_balls_scene.h"
 
 using namespace rtu;
 
 namespace {
-
-uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
-  return Descriptor::make(far, pointer, valid, leaf).word;
-}
 
 // Tiny trees of test_traversal_costs.cpp in one image; a job picks one by its root address. Child
 // pointers are relative, so each tree works wherever it is placed.

@@ -39,6 +39,7 @@
 #include "run/rtu_simulation.h"
 #include "sim/kernel/cycle_clock.h"
 #include "sim/memory/cache_array.h"
+#include "svo_descriptor.h"
 
 namespace rtu {
 namespace {
@@ -70,10 +71,6 @@ const SvoFrame& sceneNamed(const std::string& name) {
 
 // Hand-counted trees of test_rtl_cycle_model.cpp (costs from test_traversal_costs.cpp), in one
 // image; a job picks a tree by its root address.
-uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
-  return Descriptor::make(far, pointer, valid, leaf).word;
-}
-
 struct Tree {
   uint32_t root;
   uint32_t cost;  // of the centre-line job

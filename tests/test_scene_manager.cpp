@@ -15,6 +15,7 @@
 #include "kinds/core_result.h"
 #include "kinds/svo/svo_builder.h"
 #include "scene/scene_memory.h"
+#include "three_balls_scene.h"
 
 namespace rtu {
 namespace {
@@ -41,10 +42,6 @@ SceneModel modelOf(const VoxelSource& source) {
   model.scene.image = buildSvo(source).image;
   model.bounds = solidVoxelBounds(model.scene.image);
   return model;
-}
-
-SceneModel ballModel(int depth) {
-  return modelOf(PointSetSource(depth, [](const glm::dvec3& p) { return glm::length(p) <= 0.8; }));
 }
 
 ModelPlacement placedAt(glm::dvec3 translation, double scale = 1.0) {

@@ -7,13 +7,10 @@
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_validator.h"
+#include "svo_descriptor.h"
 
 namespace rtu {
 namespace {
-
-uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
-  return Descriptor::make(far, pointer, valid, leaf).word;
-}
 
 uint32_t negative(uint32_t distance) { return 0u - distance; }  // a far offset pointing back
 

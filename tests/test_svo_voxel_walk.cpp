@@ -17,6 +17,7 @@
 #include "kinds/svo/reference_model.h"
 #include "kinds/svo/svo_builder.h"
 #include "kinds/svo/svo_voxel_walk.h"
+#include "svo_descriptor.h"
 
 namespace rtu {
 namespace {
@@ -25,10 +26,6 @@ constexpr double kStep = 1.0 / 65536.0;  // Q16.16
 constexpr int kDepth = 7;                // of the procedural scenes
 
 // Hand-built images: index = word address.
-uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
-  return Descriptor::make(far, pointer, valid, leaf).word;
-}
-
 struct Expected {
   bool hit;
   double t = 0.0;

@@ -8,6 +8,7 @@
 
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/ray_setup.h"
+#include "svo_descriptor.h"
 
 using namespace rtu;
 
@@ -19,10 +20,6 @@ TValueRecord centreLineJob() {
   job.t0Bits = {floatBits(-8.0f), floatBits(-8.0f), floatBits(2.0f)};
   job.t1Bits = {floatBits(8.0f), floatBits(8.0f), floatBits(4.0f)};
   return job;
-}
-
-uint32_t descriptor(bool far, uint32_t pointer, uint8_t valid, uint8_t leaf) {
-  return Descriptor::make(far, pointer, valid, leaf).word;
 }
 
 TraversalResult trace(const std::vector<uint32_t>& image, const TValueRecord& job,
