@@ -38,6 +38,14 @@ std::string contents(const std::string& path) {
   return text.str();
 }
 
+// A finished trace's text; the trace and its save file removed.
+std::string takenTrace(const std::string& path) {
+  const std::string text = contents(path);
+  fs::remove(path);
+  fs::remove(saveFilePath(path));
+  return text;
+}
+
 // Two signals, the same records, written through `flushes` (cycles flushed in between).
 std::string recorded(const std::string& name, bool flushInBetween) {
   TraceOptions options;
@@ -104,10 +112,7 @@ std::string randomRecords(const std::string& name, uint64_t flushCycles, bool fl
     }
   }
   trace.finish(0);
-  const std::string text = contents(options.path);
-  fs::remove(options.path);
-  fs::remove(saveFilePath(options.path));
-  return text;
+  return takenTrace(options.path);
 }
 
 TEST_CASE("Trace streaming: records over many cycles or few give the trace held to the end",
@@ -145,10 +150,7 @@ std::string timedTrace(const std::string& name, TraceTime time, uint64_t periodP
   trace.record(level, 2, 1);
   trace.record(level, 7, 0);
   trace.finish(2);
-  const std::string text = contents(options.path);
-  fs::remove(options.path);
-  fs::remove(saveFilePath(options.path));
-  return text;
+  return takenTrace(options.path);
 }
 
 TEST_CASE("Trace time: cycle numbers in a timescale of the clock period\\, or picoseconds",
