@@ -131,4 +131,19 @@ for row in rows:
     assert use["cores"] + use["memory_latency"] <= 1 + 1e-9, row
     assert abs(use["cores"] - float(row["core_busy"])) < 1e-9, row
 PY
+# Incoherent rays name their limit: uniformly random rays through a menger too large for the L2
+# run DRAM's bandwidth at its ceiling on 16 cached cores (issue 31, section 3: the limit column
+# said "memory" for such a buffer).
+"$rtusim" build --scene menger --depth 8 --out random.svo >/dev/null
+header=$("$rtusim" build --scene menger --depth 8 --model-header --out random.svo |
+  sed -n 's/^model header at word //p')
+"$rtusim" jobs --width 64 --height 48 --rays random.bin --model-address "$header" --svo random.svo \
+  --ray-type random >/dev/null
+"$rtusim" fps --svo random.svo --rays random.bin --preset cached --cores 16 --csv random.csv >/dev/null
+"$python" - random.csv <<'PY' || fail "random rays' limit"
+import csv, sys
+row = next(csv.DictReader(open(sys.argv[1])))
+assert row["limit"] == "dram_bandwidth", row["limit"]
+assert float(row["util_dram_bandwidth"]) > 0.95, row["util_dram_bandwidth"]
+PY
 echo "exploration checks: ok"
