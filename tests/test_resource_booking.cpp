@@ -35,7 +35,7 @@ TEST_CASE("Booking out of order: a request fills the first gap it fits in", "[bo
   CHECK(bus.firstFree(26, 1) == 29);
 }
 
-TEST_CASE("Booking spread out of order: a request takes the first free cycles\, gaps or not",
+TEST_CASE("Booking spread out of order: a request takes the first free cycles\\, gaps or not",
           "[booking]") {
   ResourceBooking bus(RequestOrder::Any);
   CHECK(bus.bookSpread(20, 4) == 24);  // [20, 24)

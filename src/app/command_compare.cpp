@@ -212,7 +212,7 @@ CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice&
                : raypipe                ? ""
                : request.preset.empty() ? kCommonPreset
                                         : request.preset;
-  CompareTarget target{choice.name, own.preset, own.resolveUnchecked()};
+  CompareTarget target{choice.name, own.preset, own.resolveUnchecked(), {}, {}};
   Configuration& configuration = target.configuration;
   // What compare sets counts as a preset's: not the user's, so never reported as without effect.
   for (const auto& [key, value] : shared.sets) configuration.set(key, value, ConfigSource::Preset);

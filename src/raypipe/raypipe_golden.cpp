@@ -8,7 +8,7 @@
 namespace rtu {
 
 KdTraversalConfig kdTraversalConfig(const RaypipeConfig& config) {
-  return KdTraversalConfig{config.shortStackDepth, config.division, config.tMaxClamp};
+  return KdTraversalConfig{config.shortStackDepth, config.division, config.tMaxClamp, {}};
 }
 
 void RaypipeFrameTotals::add(const RaypipePixel& pixel) {
