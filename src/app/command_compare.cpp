@@ -255,8 +255,12 @@ void printTable(const std::vector<Json>& rows, std::ostream& out) {
       {"utilisation", "util"},          {"limit", "limit"},
       {"hit_miss_differ", "hit/miss"},  {"other_object", "other obj"},
       {"mean_depth_error", "depth err"}};
+  // A space before every cell, so a long limit name ("dram_bandwidth") never runs into the cell
+  // before it.
+  const auto width = [](const std::string& key) { return key == "limit" ? 14 : 11; };
   out << std::left << std::setw(9) << "arch";
-  for (const auto& [key, title] : columns) out << std::right << std::setw(12) << title;
+  for (const auto& [key, title] : columns)
+    out << ' ' << std::right << std::setw(width(key)) << title;
   out << "\n";
   for (const Json& row : rows) {
     out << std::left << std::setw(9) << row["architecture"].get<std::string>();
@@ -268,7 +272,8 @@ void printTable(const std::vector<Json>& rows, std::ostream& out) {
       const Json& value = row.contains(key)              ? row[key]
                           : row["figures"].contains(key) ? row["figures"][key]
                                                          : row["agreement"][key];
-      out << std::right << std::setw(12) << cell(value, key == "mean_depth_error" ? 5 : 2);
+      out << ' ' << std::right << std::setw(width(key))
+          << cell(value, key == "mean_depth_error" ? 5 : 2);
     }
     out << "\n";
   }
