@@ -159,9 +159,12 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
     if (wordThere) stepState<kTraced>();
     while (core_.busy()) {
       if (kTraced) traceState(localCycle_, static_cast<uint64_t>(core_.state()));
-      if (unitShared_ && issuesTriangleTest<Kind>(core_)) {
-        awaitUnit();
-        return;
+      // A kind without a triangle unit (SVO) has no test here at all.
+      if constexpr (HasTriangleUnit<Kind>::value) {
+        if (unitShared_ && issuesTriangleTest<Kind>(core_)) {
+          awaitUnit();
+          return;
+        }
       }
       if (!combinational_ && core_.readsMemory()) {
         const uint32_t address = core_.memoryAddress();
@@ -193,8 +196,9 @@ class TimedCore final : public TimedCoreBase, private SharedReadListener {
   }
 
   // The current state, waiting for a shared resource, ends in `stateEnd` at the earliest: OUT
-  // follows no earlier, and a job no earlier than the cycle after.
-  void declareStateEnd(uint64_t stateEnd) {
+  // follows no earlier, and a job no earlier than the cycle after. Forced inline: the stepping
+  // loop ran it inline before it became a function of its own (a call per shared read).
+  [[gnu::always_inline]] inline void declareStateEnd(uint64_t stateEnd) {
     out_->noOfferBefore(stateEnd + 1);
     in_->notReadyBefore(stateEnd + 2);
   }
