@@ -18,13 +18,21 @@ for line in (src / "layers.txt").read_text().splitlines():
 
 
 def layer_of(folder):
-    """The layer index of a folder of src/ and whether it is a core kind's folder."""
+    """The layer index of a folder of src/ and the core kind it belongs to (None for none). A
+    kind's folder `kinds/<kind>` sits at `kinds/*`; its plug-in folder `kinds/<kind>/<layer>`
+    (`kinds/kd/explore`) sits at that layer, so the kind's code that needs a higher layer's types
+    lives in the kind's folder."""
     if folder in layers:
-        return layers.index(folder), False
-    parent = folder.rsplit("/", 1)[0] if "/" in folder else ""
-    if parent + "/*" in layers:
-        return layers.index(parent + "/*"), True
-    return None, False
+        return layers.index(folder), None
+    parts = folder.split("/")
+    if len(parts) >= 2 and parts[0] + "/*" in layers:
+        kind = parts[0] + "/" + parts[1]
+        if len(parts) == 2:
+            return layers.index(parts[0] + "/*"), kind
+        plugin_layer = "/".join(parts[2:])
+        if plugin_layer in layers and layers.index(plugin_layer) > layers.index(parts[0] + "/*"):
+            return layers.index(plugin_layer), kind
+    return None, None
 
 
 include = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
@@ -57,7 +65,7 @@ for path in sorted(src.rglob("*")):
         theirs, their_kind = layer_of(other)
         if theirs is None or theirs > own:
             problems.append(f'{where}: {folder} includes "{name}" from {other}, above it')
-        elif own_kind and their_kind and other != folder:
+        elif own_kind and their_kind and own_kind != their_kind:
             problems.append(f'{where}: kind {folder} includes "{name}" from kind {other}')
 for problem in problems:
     print(problem)

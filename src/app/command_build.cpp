@@ -57,11 +57,7 @@ void writeStats(const std::string& path, const RunConfig& config, const Triangle
                 const AccelBuild& build) {
   nlohmann::json stats = build.quality;
   stats["accel"] = config.accel.structure;
-  if (config.accel.structure == "bvh") stats["builder"] = config.accel.builder;
-  if (config.accel.structure == "kdtree") {
-    stats["builder"] = "pbrt";
-    stats["kd_edge_order"] = config.accel.kdEdgeOrder;
-  }
+  for (const auto& [key, value] : build.settings) stats[key] = value;
   stats["scene"] = scene.name;
   stats["dropped_triangles"] = scene.dropped.size();
   stats["dropped_triangle_ids"] = scene.dropped;
@@ -74,8 +70,7 @@ void writeByteFile(const std::string& path, const std::vector<uint8_t>& bytes) {
 
 void buildTriangleStructure(const RunConfig& config, const BuildOptions& options) {
   const TriangleScene scene = loadSceneTriangles(config);
-  const AccelBuild build =
-      buildAccel(scene.mesh, config.accel, config.rtu.coreConfig<BihKind<>>().format);
+  const AccelBuild build = buildAccel(scene.mesh, config.accel, config.rtu);
   writeWordFile(options.out, build.words);
   if (!options.trayRacerScene.empty()) writeByteFile(options.trayRacerScene, build.sceneFile);
   if (!options.stats.empty()) writeStats(options.stats, config, scene, build);

@@ -41,6 +41,12 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kRaypipe = "raypipe";
+// Every architecture: the RTU with each core kind, then the ray pipe.
+std::vector<std::string> allArchitectures() {
+  std::vector<std::string> names = CoreKinds::names();
+  names.push_back(kRaypipe);
+  return names;
+}
 // The preset of the RTU's kinds unless --preset or NAME=PRESET says otherwise: the common one of
 // issue 30 (16 cores, BRAM caches, DRAM behind them).
 constexpr const char* kCommonPreset = "cached";
@@ -48,7 +54,7 @@ constexpr const char* kCommonPreset = "cached";
 constexpr int kMaxFootprintDepth = 12;
 
 struct CompareOptions {
-  std::vector<std::string> architectures = {"svo", "bvh", "bih", "kd", kRaypipe};
+  std::vector<std::string> architectures = allArchitectures();
   std::string sceneFile, csv, json, html, images;
   int workers = defaultWorkerCount();
 };

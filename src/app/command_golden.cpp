@@ -1,20 +1,15 @@
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 
-#include "app/bih_golden.h"
-#include "app/bvh_golden.h"
 #include "app/commands.h"
 #include "app/host_inputs.h"
+#include "app/image_files.h"
 #include "app/output_paths.h"
 #include "app/results_csv.h"
 #include "app/schema_flags.h"
 #include "base/binary_file.h"
 #include "inputs/host_buffers.h"
-#include "kinds/bih/bih_file.h"
-#include "kinds/bvh/bvh_file.h"
-#include "kinds/kd/kd_image.h"
 #include "kinds/svo/golden_model.h"
 #include "kinds/svo/result_summary.h"
 #include "kinds/svo/svo_image.h"
@@ -59,50 +54,6 @@ void goldenSvo(const RunConfig& settings, const GoldenOptions& options) {
   std::cout << ResultSummary::of(results).describe() << "host        " << seconds << " s\n";
 }
 
-std::string triangleSummary(size_t rays, size_t hits, uint64_t cost, uint64_t nodes,
-                            uint64_t triangles, double seconds) {
-  const double n = rays == 0 ? 1.0 : static_cast<double>(rays);
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "rays        %zu\nhits        %zu (%.1f %%)\ncost        mean %.2f states per ray\n"
-                "per ray     %.2f nodes, %.2f triangle tests\nhost        %g s\n",
-                rays, hits, 100.0 * hits / n, cost / n, nodes / n, triangles / n, seconds);
-  return text;
-}
-
-size_t hitsOf(const std::vector<ResultRow>& rows) {
-  size_t hits = 0;
-  for (const ResultRow& row : rows) hits += row.hit;
-  return hits;
-}
-
-// The BVH's rows and report (a .bvh image, in the world).
-std::string goldenBvh(const RunConfig& settings, const std::vector<RayRecord>& rays,
-                      std::vector<ResultRow>& rows) {
-  const BvhImage image = readBvhFile(settings.accel.file);
-  const BvhGoldenRun run = traceBvhGolden(image.words, rays, settings.rays,
-                                          settings.rtu.coreConfig<BvhKind<>>().triangleTest);
-  uint64_t cost = 0, nodes = 0, triangles = 0;
-  for (const BvhResult& r : run.results) {
-    cost += r.cost;
-    nodes += r.counts.nodes;
-    triangles += r.counts.triangleTests;
-    rows.push_back({r.idWord, r.hit, r.t, r.primitive, r.u, r.v, {}});
-  }
-  return triangleSummary(rows.size(), hitsOf(rows), cost, nodes, triangles, run.seconds);
-}
-
-// The BIH's rows and report (a .bih image, on its grid).
-std::string goldenBih(const RunConfig& settings, const std::vector<RayRecord>& rays,
-                      std::vector<ResultRow>& rows) {
-  const BihImage image = readBihFile(settings.accel.file);
-  for (const std::string& warning : image.warnings) std::cerr << "warning: " << warning << "\n";
-  BihGoldenRun run = traceBihGolden(image.words, rays, settings.rays);
-  rows = std::move(run.rows);
-  return triangleSummary(rows.size(), hitsOf(rows), run.cost, run.nodes, run.triangleTests,
-                         run.seconds);
-}
-
 void goldenTriangles(const RunConfig& settings, const GoldenOptions& options) {
   if (!settings.jobs.empty() || settings.rays.empty())
     throw std::invalid_argument(
@@ -110,22 +61,20 @@ void goldenTriangles(const RunConfig& settings, const GoldenOptions& options) {
   if (!options.out.empty())
     throw std::invalid_argument("--out: the host output buffer holds SVO results; for a triangle "
                                 "image give --results-csv");
-  const std::vector<uint32_t> words =
-      readWordFile(settings.accel.file, sizeof(uint32_t), "triangle image");
-  if (!words.empty() && words[0] == kKdMagic)
-    throw std::invalid_argument(
-        "--accel-file '" + settings.accel.file +
-        "' is a k-d image: golden traces BVH and BIH images (a k-d tree "
-        "image or scene file is traced by the ray pipe: render --architecture raypipe "
-        "--model golden --accel-file FILE)");
-  const bool bih = looksLikeBihImage(words);
+  const std::string kind =
+      imageKindOf(readWordFile(settings.accel.file, sizeof(uint32_t), "triangle image"));
+  if (kind.empty())
+    throw std::invalid_argument("--accel-file '" + settings.accel.file + "' holds no " +
+                                imageKindNames() + " image (an SVO image is given with --svo)");
   std::vector<SkippedRecord> skipped;
   const std::vector<RayRecord> rays = readRayBufferSkipping(settings.rays, skipped);
   warnSkippedRecords("ray buffer", settings.rays, skipped, std::cout);
   std::vector<ResultRow> rows;
   rows.reserve(rays.size());
-  const std::string summary = bih ? goldenBih(settings, rays, rows)
-                                  : goldenBvh(settings, rays, rows);
+  std::string summary;
+  withImageKind(kind, [&](auto image) {
+    summary = KindImageFile<decltype(image)>::golden(settings, rays, rows);
+  });
   writeResultsCsv(options.resultsCsv, rows);
   std::cout << summary;
 }

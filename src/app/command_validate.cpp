@@ -3,14 +3,10 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/image_files.h"
 #include "app/input_file_check.h"
 #include "app/placement_flags.h"
 #include "base/binary_file.h"
-#include "kinds/bih/bih_file.h"
-#include "kinds/bih/bih_validator.h"
-#include "kinds/bvh/bvh_file.h"
-#include "kinds/bvh/bvh_validator.h"
-#include "kinds/kd/kd_image.h"
 #include "kinds/svo/svo_image.h"
 #include "kinds/svo/svo_validator.h"
 
@@ -34,36 +30,6 @@ void validateSvoFile(const ValidateOptions& options, std::vector<uint32_t> words
   std::cout << options.file << ": valid, " << describe(report) << "\n";
 }
 
-void validateBvhFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
-  const std::vector<BvhProblem> problems = validateBvh(words);
-  if (!problems.empty())
-    throw std::runtime_error(describeBvhProblems("'" + options.file + "'", problems));
-  const BvhHeader header = decodeHeader(words.data());
-  std::cout << options.file << ": valid BVH image, " << header.nodeCount << " nodes, "
-            << header.triangleCount << " triangles, " << words.size() * sizeof(uint32_t)
-            << " bytes\n";
-}
-
-void validateBihFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
-  const std::vector<ImageProblem> problems = validateBih(words);
-  if (!problems.empty())
-    throw std::runtime_error(describeBihProblems("'" + options.file + "'", problems));
-  const BihHeader header = decodeBihHeader(words.data());
-  std::cout << options.file << ": valid BIH image, " << header.nodeCount << " nodes, "
-            << header.listCount << " list entries, " << header.triangleCount << " triangles, "
-            << words.size() * sizeof(uint32_t) << " bytes\n";
-}
-
-void validateKdFile(const ValidateOptions& options, const std::vector<uint32_t>& words) {
-  const std::vector<ImageProblem> problems = validateKd(words);
-  if (!problems.empty())
-    throw std::runtime_error(describeImageProblems("'" + options.file + "'", "k-d", problems, 10));
-  const KdHeader header = decodeKdHeader(words.data());
-  std::cout << options.file << ": valid k-d image, " << header.nodeCount << " nodes, "
-            << header.listCount << " list entries, " << header.uttmCount << " triangles, "
-            << words.size() * sizeof(uint32_t) << " bytes\n";
-}
-
 }  // namespace
 
 void addValidateCommand(CLI::App& app) {
@@ -81,14 +47,12 @@ void addValidateCommand(CLI::App& app) {
       ->capture_default_str();
   command->callback([options] {
     std::vector<uint32_t> words = readWordFile(options->file, sizeof(uint32_t), "memory image");
-    if (looksLikeBvhImage(words))
-      validateBvhFile(*options, words);
-    else if (looksLikeBihImage(words))
-      validateBihFile(*options, words);
-    else if (!words.empty() && words[0] == kKdMagic)
-      validateKdFile(*options, words);
-    else
-      validateSvoFile(*options, std::move(words));
+    const std::string kind = imageKindOf(words);
+    if (kind.empty()) return validateSvoFile(*options, std::move(words));
+    withImageKind(kind, [&](auto image) {
+      std::cout << options->file << ": "
+                << KindImageFile<decltype(image)>::describeValid(options->file, words) << "\n";
+    });
   });
 }
 

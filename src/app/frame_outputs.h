@@ -1,8 +1,7 @@
 #pragma once
 // Each core kind's own outputs of a rendered frame (`render`): the line naming its core, the report
-// of its results and the frame's pixels, chosen by the run's kind (`core`). The SVO kind's are the
-// thesis' (RenderedFrame::fromResults, ResultSummary); the triangle kinds' are in
-// app/triangle_render.h. A new kind specialises FrameOutputsOf (frame_outputs.cpp).
+// of its results and the frame's pixels, chosen by the run's kind (`core`): each kind's
+// KindOutputs (app/kind_outputs.h), in its folder kinds/<kind>/app/.
 
 #include <string>
 #include <vector>

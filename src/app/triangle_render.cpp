@@ -4,25 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "kinds/bih/bih_counters.h"
-#include "kinds/bvh/bvh_counters.h"
-#include "kinds/kd/kd_counters.h"
-
 namespace rtu {
-namespace {
-
-double perRay(uint64_t count, size_t rays) {
-  return static_cast<double>(count) / static_cast<double>(std::max<size_t>(rays, 1));
-}
-
-template <class Counters, class Result>
-Counters countersOf(const std::vector<Result>& results) {
-  Counters counters;
-  for (const Result& result : results) counters.add(result.counts);
-  return counters;
-}
-
-}  // namespace
 
 FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
                          uint32_t primitive) {
@@ -46,51 +28,6 @@ std::string describeHits(size_t rays, uint64_t hits, uint64_t cost, uint32_t max
                 rays, static_cast<unsigned long long>(hits), 100.0 * perRay(hits, rays),
                 perRay(cost, rays), maxCost);
   return text;
-}
-
-std::string describeBvhResults(const std::vector<BvhResult>& results) {
-  const auto counters = countersOf<BvhCounters>(results);
-  const size_t rays = results.size();
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "bvh         %.2f nodes, %.2f box tests, %.2f triangle tests, %.1f bytes per "
-                "ray; %llu rays lost stack entries\n",
-                perRay(counters.bvhNodesVisited, rays), perRay(counters.bvhBoxTests, rays),
-                perRay(counters.bvhTriangleTests, rays), perRay(counters.bvhBytesFetched, rays),
-                static_cast<unsigned long long>(counters.bvhStackOverflows));
-  return describeTriangleHits(results) + text;
-}
-
-std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval) {
-  const auto counters = countersOf<BihCounters>(results);
-  const size_t rays = results.size();
-  uint64_t cycles = 0;
-  for (const BihResult& result : results) cycles += result.cost;
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "bih         %.2f nodes, %.2f triangle tests, %.1f bytes per ray; %llu rays lost "
-                "stack entries, %llu divider errors\n"
-                "unit fill   %.1f %% (triangle tests x interval over the rays' cycles: seed 004 "
-                "measured about 40 %%)\n",
-                perRay(counters.bihNodesVisited, rays), perRay(counters.bihTriangleTests, rays),
-                perRay(counters.bihBytesFetched, rays),
-                static_cast<unsigned long long>(counters.bihStackOverflows),
-                static_cast<unsigned long long>(counters.bihDividerErrors),
-                100.0 * perRay(counters.bihTriangleTests * unitInterval, cycles));
-  return describeTriangleHits(results) + text;
-}
-
-std::string describeKdResults(const std::vector<KdResult>& results) {
-  const auto counters = countersOf<KdCounters>(results);
-  const size_t rays = results.size();
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "kd          %.2f nodes, %.2f triangle tests, %.3f restarts, %.3f short-stack "
-                "drops, %.1f bytes per ray\n",
-                perRay(counters.kdNodesVisited, rays), perRay(counters.kdTriangleTests, rays),
-                perRay(counters.kdRestarts, rays), perRay(counters.kdShortStackDrops, rays),
-                perRay(counters.kdBytesFetched, rays));
-  return describeTriangleHits(results) + text;
 }
 
 }  // namespace rtu

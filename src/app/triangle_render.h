@@ -1,9 +1,9 @@
 #pragma once
-// The triangle kinds' own outputs of a rendered frame (issue 28): their pixels and report lines,
-// from the results of a frame on the scene frame_scene.h built for the kind (`render --core bvh`,
-// `--core bih`, `--core kd`). A pixel takes the hit's distance along the world ray (a BIH result's
-// `distance`, its t being in grid units) and the normal of the hit triangle of the scene's mesh
-// (every kind's `primitive` is the mesh's triangle index).
+// What the triangle kinds' outputs of a rendered frame share (issue 28; each kind's own are in
+// kinds/<kind>/app/): their pixels and hit report lines, from the results of a frame on the scene
+// frame_scene.h built for the kind (`render --core bvh`, `--core bih`, `--core kd`). A pixel takes
+// the hit's distance along the world ray (the kind's `distance` of a result) and the normal of the
+// hit triangle of the scene's mesh (every kind's `primitive` is the mesh's triangle index).
 
 #include <algorithm>
 #include <cstdint>
@@ -12,9 +12,6 @@
 
 #include "app/frame_images.h"
 #include "explore/frame_scene.h"
-#include "kinds/bih/bih_kind.h"
-#include "kinds/bvh/bvh_kind.h"
-#include "kinds/kd/kd_kind.h"
 
 namespace rtu {
 
@@ -22,18 +19,15 @@ namespace rtu {
 FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
                          uint32_t primitive);
 
-inline double worldDistance(const BvhResult& result) { return result.t; }
-inline double worldDistance(const BihResult& result) { return result.distance; }
-inline double worldDistance(const KdResult& result) { return result.t; }
-
-// The frame's pixels from results whose id words are pixel indices.
-template <class Result>
+// The frame's pixels from results whose id words are pixel indices; `distance(result)` is a hit's
+// distance along the world ray.
+template <class Result, class Distance>
 RenderedFrame triangleFrame(const Camera& camera, const FrameScene& scene,
-                            const std::vector<Result>& results) {
+                            const std::vector<Result>& results, Distance distance) {
   RenderedFrame frame(camera);
   for (const Result& result : results)
-    frame.place(result.idWord, trianglePixel(scene, result.hit, worldDistance(result), result.cost,
-                                             result.primitive));
+    frame.place(result.idWord,
+                trianglePixel(scene, result.hit, distance(result), result.cost, result.primitive));
   return frame;
 }
 
@@ -52,10 +46,17 @@ std::string describeTriangleHits(const std::vector<Result>& results) {
   return describeHits(results.size(), hits, cost, maxCost);
 }
 
-// Hits, mean cost and the kind's counters per ray, as report lines; for the BIH the triangle unit's
-// fill rate, its tests' issue cycles (`unitInterval` each) over the rays' cycles (their costs).
-std::string describeBvhResults(const std::vector<BvhResult>& results);
-std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval);
-std::string describeKdResults(const std::vector<KdResult>& results);
+// A count per ray (0 rays count as one).
+inline double perRay(uint64_t count, size_t rays) {
+  return static_cast<double>(count) / static_cast<double>(std::max<size_t>(rays, 1));
+}
+
+// The sum of the results' counts, as the kind's counters.
+template <class Counters, class Result>
+Counters countersOf(const std::vector<Result>& results) {
+  Counters counters;
+  for (const Result& result : results) counters.add(result.counts);
+  return counters;
+}
 
 }  // namespace rtu

@@ -5,12 +5,12 @@
 // figures; the k-d tree also as the Tray Racer's own scene file.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "config/run_config.h"
 #include "geometry/accel_quality.h"
 #include "geometry/triangle_mesh.h"
-#include "kinds/bih/fixed_format.h"
 #include "kinds/svo/scene_loader.h"
 
 namespace rtu {
@@ -21,13 +21,19 @@ struct AccelBuild {
   AccelQuality quality;               // bytes and build_seconds included
   std::string description;            // "binned BVH", "BIH (c99 formats, seed indices)"
   std::vector<std::string> warnings;  // a seed's capacities exceeded
+  // The build's own settings for `build --stats` ("builder": "binned"), in their order.
+  std::vector<std::pair<std::string, std::string>> settings;
 };
 
-// Throws std::invalid_argument for an accel other than bvh, bih or kdtree, and what the builders
-// and layouts throw (a capacity a format cannot hold names it).
-// `bihFormat` is the BIH's number formats (accel.bih_format, the BIH kind's settings).
+// The structure spec.structure names, built by the kind that reads it (KindScene<Kind>::build,
+// explore/kind_scene.h) under that kind's settings in `rtu` (the BIH's number formats). Throws
+// std::invalid_argument for a name no kind builds, and what the builders and layouts throw (a
+// capacity a format cannot hold names it).
 AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec,
-                      const FixedTriangleFormat& bihFormat = kC99Format);
+                      const RtuConfig& rtu = RtuConfig{});
+
+// The names of the structures buildAccel builds, as "bvh, bih or kdtree".
+std::string accelStructureNames();
 
 // The scene's triangles under the settings' mesh-defect policy (accel.drop_bad_triangles); a
 // droppable defect refused is a std::runtime_error saying how to drop it.

@@ -10,8 +10,8 @@
 //              them where the SVO frame places the same scene (a voxel scene's faces lie in the
 //              octree's cube [-1,1]^3; a mesh file is fitted into it as the voxelizer fits it at
 //              `scene.depth`), and the frame's world-space ray records against that header.
-// A kind whose image is not buildAccel's structure of its name plugs in by specialising
-// FrameSceneOf<Kind> (frame_scene.cpp): `load` and `records`.
+// Each kind's scene is its KindScene (explore/kind_scene.h), in its folder:
+// kinds/<kind>/explore/.
 
 #include <cstdint>
 #include <string>

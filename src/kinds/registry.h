@@ -147,6 +147,12 @@ auto withCoreKind(const std::string& name, Use&& use) {
   return withCoreKindOf(CoreKinds{}, name, std::forward<Use>(use));
 }
 
+// Calls `visit(Kind{})` for every kind, in the registry's order.
+template <class Visit>
+void forEachCoreKind(Visit&& visit) {
+  std::apply([&visit](auto... kinds) { (visit(kinds), ...); }, CoreKinds::Tuple{});
+}
+
 // Throws std::invalid_argument naming the record and the kind when the kind named `core` takes no
 // set-up overload for one of `records`; the runs call it before they start.
 inline void checkCoreTakes(const std::string& core, const std::vector<HostRecord>& records) {

@@ -1,4 +1,4 @@
-#include "app/bih_golden.h"
+#include "kinds/bih/app/bih_golden.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "app/bvh_golden.h"
+#include "kinds/bvh/app/bvh_golden.h"
 
 #include <chrono>
 #include <cmath>

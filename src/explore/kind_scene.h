@@ -1,0 +1,69 @@
+#pragma once
+// Each core kind's scene for a frame (issue 26): what `build --accel` builds for it from triangles,
+// and how a frame's scene and host records are made for it (frame_scene.h chooses the kind once,
+// withCoreKind). A kind plugs in by specialising KindScene<Kind> in its own folder,
+// kinds/<kind>/explore/ (cmake/KindPlugins.cmake includes every header there as
+// "kind_explore_plugins.h"), with:
+//   kStructure   the name `accel` (build --accel) gives the structure it reads from triangles
+//                ("bvh", "kdtree"), or nullptr for a kind built otherwise (svo);
+//   build        (kStructure only) that structure from a mesh, as a memory image;
+//   load         the frame's scene (FrameScene) under a run's settings;
+//   records      the host records of the camera's frame on that scene;
+//   buildKey     the kind's own settings that change its scene (frameSceneKey).
+// A triangle kind derives from TriangleKindScene, which builds its structure, puts a model header
+// after it and aims the camera's world-space rays at the header; it may hide `accelSpec` (the
+// build settings a frame uses) and `appendModelHeader` (its model space) with its own.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "explore/accel_build.h"
+#include "explore/frame_scene.h"
+#include "inputs/camera.h"
+#include "rtu/model_header.h"
+
+namespace rtu {
+
+template <class Kind>
+struct KindScene;
+
+template <class Kind>
+struct TriangleKindScene {
+  // The structure the frame builds: the run's accel settings, the kind's structure.
+  static AccelSpec accelSpec(const RunConfig& settings) {
+    AccelSpec spec = settings.accel;
+    spec.structure = KindScene<Kind>::kStructure;
+    return spec;
+  }
+  // The model header the frame's records point at, appended after the structure (at word 0): the
+  // model's space is the mesh's.
+  static uint32_t appendModelHeader(std::vector<uint32_t>& words, const TriangleMesh&,
+                                    const ModelPlacement& placement, const RunConfig&) {
+    return rtu::appendModelHeader(words, placement, 0);
+  }
+  static std::string buildKey(const RunConfig&) { return ""; }
+
+  static FrameScene load(const RunConfig& settings) {
+    TriangleScene triangles = loadSceneTriangles(settings);
+    AccelBuild build =
+        buildAccel(triangles.mesh, KindScene<Kind>::accelSpec(settings), settings.rtu);
+    FrameScene scene;
+    scene.placement = framePlacement(settings.scene, triangles.mesh);
+    scene.words = std::move(build.words);
+    scene.entry =
+        KindScene<Kind>::appendModelHeader(scene.words, triangles.mesh, scene.placement, settings);
+    scene.name = triangles.name;
+    scene.description = build.description + ", " + std::to_string(triangles.mesh.triangles.size()) +
+                        " triangles, " + std::to_string(build.quality.nodes) + " nodes, " +
+                        std::to_string(build.quality.bytes) + " bytes";
+    scene.mesh = std::move(triangles.mesh);
+    return scene;
+  }
+  static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings) {
+    const std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, scene.entry);
+    return {rays.begin(), rays.end()};
+  }
+};
+
+}  // namespace rtu

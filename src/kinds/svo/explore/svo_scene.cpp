@@ -1,0 +1,35 @@
+#include "kinds/svo/explore/svo_scene.h"
+
+#include <utility>
+
+#include "kinds/svo/scene_loader.h"
+#include "kinds/svo/stack_check.h"
+#include "kinds/svo/svo_validator.h"
+
+namespace rtu {
+
+FrameScene KindScene<SvoKind>::load(const RunConfig& settings) {
+  // A deep build takes minutes: refused before it.
+  checkBuiltSceneFitsStack(settings.scene, settings.rtu.coreConfig<SvoKind>().stackFrames,
+                           settings.allowStackOverflow);
+  Scene built = loadScene(settings.scene);
+  FrameScene scene;
+  scene.stackNeeded = descriptorDepths(built.image, {built.image.root}).front();
+  scene.words = std::move(built.image.words);
+  scene.entry = built.image.root;
+  scene.name = std::move(built.name);
+  scene.description = std::move(built.summary);
+  return scene;
+}
+
+std::vector<HostRecord> KindScene<SvoKind>::records(const FrameScene& scene,
+                                                    const RunConfig& settings) {
+  checkNeededFrames({scene.entry}, {scene.stackNeeded},
+                    settings.rtu.coreConfig<SvoKind>().stackFrames, settings.allowStackOverflow,
+                    sceneSource(settings.scene));
+  const std::vector<TValueRecord> jobs =
+      makeFrameJobs(settings.camera, scene.entry, settings.epsilon);
+  return {jobs.begin(), jobs.end()};
+}
+
+}  // namespace rtu

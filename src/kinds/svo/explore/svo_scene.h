@@ -1,0 +1,23 @@
+#pragma once
+// The SVO kind's frame scene (explore/kind_scene.h): the octree (scene_loader.h: built from a
+// procedural scene, a mesh or a binvox file, or read from an .svo file) and the frame's t-value
+// records (thesis 8.1), its stack checked against the tree. It builds no structure from triangles
+// (`build --accel svo` voxelises them).
+
+#include <string>
+#include <vector>
+
+#include "explore/kind_scene.h"
+#include "kinds/svo/svo_kind.h"
+
+namespace rtu {
+
+template <>
+struct KindScene<SvoKind> {
+  static constexpr const char* kStructure = nullptr;
+  static FrameScene load(const RunConfig& settings);
+  static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings);
+  static std::string buildKey(const RunConfig&) { return ""; }
+};
+
+}  // namespace rtu
