@@ -2,8 +2,8 @@
 # Issue 28 §2: `replay` of triangle ray records on the BVH, BIH and k-d cores. Ray records of a
 # camera looking at the spider (naming model address 0, as golden's), replayed through each image
 # file on the cycle-accurate model (4 cores, triangle units shared by 2) and the loosely-timed one
-# (cached): the CSV rows, sorted by id, are golden's (golden --accel-file on the BVH and BIH, the
-# k-d core's golden model through --model golden), and the k-d core hits the BVH's triangles.
+# (cached): the CSV rows, sorted by id, are golden's (golden --accel-file), and the k-d core hits
+# the BVH's triangles.
 # Refusals name the mismatch: an image of another kind, a record naming a model header, --svo.
 # Usage: cli_triangle_replay.sh path/to/rtusim
 set -euo pipefail
@@ -34,8 +34,7 @@ PY
 
 "$rtusim" golden --accel-file s.bvh --rays rays.bin --results-csv bvh_golden.csv >/dev/null
 "$rtusim" golden --accel-file s.bih --rays grid_rays.bin --results-csv bih_golden.csv >/dev/null
-"$rtusim" replay --core kd --accel-file s.kd --rays rays.bin --out kd_golden.csv \
-  --model golden >/dev/null
+"$rtusim" golden --accel-file s.kd --rays rays.bin --results-csv kd_golden.csv >/dev/null
 for core in bvh bih kd; do
   image=s.$core rays=rays.bin
   [[ $core == bih ]] && rays=grid_rays.bin

@@ -2,8 +2,7 @@
 
 #include <stdexcept>
 
-#include "app/golden_summary.h"
-#include "kinds/bvh/app/bvh_golden.h"
+#include "app/triangle_golden.h"
 #include "kinds/bvh/bvh_file.h"
 #include "kinds/bvh/bvh_validator.h"
 #include "kinds/core_result.h"
@@ -44,20 +43,10 @@ std::vector<ResultRow> KindImageFile<BvhKind<>>::rows(const std::vector<CoreKind
   return rows;
 }
 
-// The image in the world: the records trace it with the BVH kind's triangle test.
 std::string KindImageFile<BvhKind<>>::golden(const RunConfig& settings,
                                              const std::vector<RayRecord>& rays,
                                              std::vector<ResultRow>& rows) {
-  const BvhGoldenRun run = traceBvhGolden(read(settings.accel.file), rays, settings.rays,
-                                          settings.rtu.coreConfig<BvhKind<>>().triangleTest);
-  uint64_t cost = 0, nodes = 0, triangles = 0;
-  for (const BvhResult& r : run.results) {
-    cost += r.cost;
-    nodes += r.counts.nodes;
-    triangles += r.counts.triangleTests;
-    rows.push_back({r.idWord, r.hit, r.t, r.primitive, r.u, r.v, {}});
-  }
-  return triangleGoldenSummary(rows, cost, nodes, triangles, run.seconds);
+  return traceImageGolden<BvhKind<>>(settings, rays, rows);
 }
 
 }  // namespace rtu

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "app/triangle_golden.h"
 #include "base/binary_file.h"
 #include "kinds/core_result.h"
 #include "kinds/kd/kd_image.h"
@@ -51,13 +52,10 @@ std::vector<ResultRow> KindImageFile<KdKind>::rows(const std::vector<CoreKindRes
   return rows;
 }
 
-std::string KindImageFile<KdKind>::golden(const RunConfig& settings, const std::vector<RayRecord>&,
-                                          std::vector<ResultRow>&) {
-  throw std::invalid_argument(
-      "--accel-file '" + settings.accel.file +
-      "' is a k-d image: golden traces BVH and BIH images (a k-d tree "
-      "image or scene file is traced by the ray pipe: render --architecture raypipe "
-      "--model golden --accel-file FILE)");
+std::string KindImageFile<KdKind>::golden(const RunConfig& settings,
+                                          const std::vector<RayRecord>& rays,
+                                          std::vector<ResultRow>& rows) {
+  return traceImageGolden<KdKind>(settings, rays, rows);
 }
 
 }  // namespace rtu
