@@ -8,6 +8,25 @@
 
 namespace rtu {
 
+namespace {
+
+// `rays` aimed at the identity model header at word `model` after an image file: each must name
+// model address 0, or a std::runtime_error names `raysPath` and the record.
+std::vector<RayRecord> recordsAtModel(const std::vector<RayRecord>& rays, uint32_t model,
+                                      const std::string& raysPath) {
+  std::vector<RayRecord> aimed = rays;
+  for (size_t i = 0; i < aimed.size(); ++i) {
+    if (aimed[i].modelAddress != 0)
+      throw std::runtime_error("ray buffer '" + raysPath + "': record " + std::to_string(i) +
+                               " names model address " + std::to_string(aimed[i].modelAddress) +
+                               "; an image file has no model headers: give 0");
+    aimed[i].modelAddress = model;
+  }
+  return aimed;
+}
+
+}  // namespace
+
 TriangleReplayInput triangleReplayInput(const std::string& core, const std::string& imagePath,
                                         const std::vector<RayRecord>& rays,
                                         const std::string& raysPath) {
@@ -24,22 +43,9 @@ TriangleReplayInput triangleReplayInput(const std::string& core, const std::stri
   withImageKind(core,
                 [&](auto image) { input.words = KindImageFile<decltype(image)>::read(imagePath); });
   const uint32_t model = appendModelHeader(input.words, ModelPlacement{}, 0);
-  const std::vector<RayRecord> aimed = recordsAtModel(rays, model, raysPath, "an image file");
+  const std::vector<RayRecord> aimed = recordsAtModel(rays, model, raysPath);
   input.records.assign(aimed.begin(), aimed.end());
   return input;
-}
-
-std::vector<RayRecord> recordsAtModel(const std::vector<RayRecord>& rays, uint32_t model,
-                                      const std::string& raysPath, const std::string& what) {
-  std::vector<RayRecord> aimed = rays;
-  for (size_t i = 0; i < aimed.size(); ++i) {
-    if (aimed[i].modelAddress != 0)
-      throw std::runtime_error("ray buffer '" + raysPath + "': record " + std::to_string(i) +
-                               " names model address " + std::to_string(aimed[i].modelAddress) +
-                               "; " + what + " has no model headers: give 0");
-    aimed[i].modelAddress = model;
-  }
-  return aimed;
 }
 
 std::vector<ResultRow> triangleResultRows(const std::string& core,

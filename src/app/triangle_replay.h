@@ -27,15 +27,10 @@ TriangleReplayInput triangleReplayInput(const std::string& core, const std::stri
                                         const std::vector<RayRecord>& rays,
                                         const std::string& raysPath);
 
-// `rays` aimed at the identity model header at word `model` after an image file: each must name
-// model address 0. Throws std::runtime_error naming `raysPath` and the record for another address
-// (`what` the file's kind, e.g. "an image file").
-std::vector<RayRecord> recordsAtModel(const std::vector<RayRecord>& rays, uint32_t model,
-                                      const std::string& raysPath, const std::string& what);
-
-// The rows of a triangle kind's results, in their order: t along the record's direction, the
-// triangle's index in the mesh as built, rtusim's barycentrics (hit = (1-u-v) v0 + u v1 + v v2).
-// `words` is the replayed image (a BIH's formats scale its barycentrics).
+// The rows of a triangle kind's results, in their order (KindImageFile::rows): t along the record's
+// direction, the triangle's index in the mesh as built, rtusim's barycentrics
+// (hit = (1-u-v) v0 + u v1 + v v2). `words` is the replayed image (a BIH's formats scale its
+// barycentrics).
 std::vector<ResultRow> triangleResultRows(const std::string& core,
                                           const std::vector<CoreKindResult>& results,
                                           const std::vector<uint32_t>& words);
