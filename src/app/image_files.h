@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/kind_image_file.h"
+#include "base/choice_list.h"
 #include "kind_app_plugins.h"
 
 namespace rtu {
@@ -28,10 +29,7 @@ inline std::string imageKindNames() {
   forEachCoreKind([&](auto kind) {
     if constexpr (KindImageFile<decltype(kind)>::kByHeader) names.push_back(decltype(kind)::kName);
   });
-  std::string text;
-  for (size_t i = 0; i < names.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-  return text;
+  return choiceList(names);
 }
 
 // Calls `use(Kind{})` with the kind named `name`, whose image has a header; throws

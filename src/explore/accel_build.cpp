@@ -3,6 +3,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "base/choice_list.h"
 #include "explore/kind_scene.h"
 #include "kind_explore_plugins.h"
 
@@ -42,10 +43,7 @@ AccelBuild buildAccel(const TriangleMesh& mesh, const AccelSpec& spec, const Rtu
 std::string accelStructureNames() {
   std::vector<std::string> names;
   forEachStructure([&](auto kind) { names.push_back(KindScene<decltype(kind)>::kStructure); });
-  std::string text;
-  for (size_t i = 0; i < names.size(); ++i)
-    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-  return text;
+  return choiceList(names);
 }
 
 TriangleScene loadSceneTriangles(const RunConfig& settings) {
