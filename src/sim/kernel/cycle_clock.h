@@ -39,10 +39,14 @@ class CycleClock {
   // The delay from now to the start of `cycle` (a later cycle). Throws std::overflow_error past
   // kMaxCycles rather than let the picosecond count wrap.
   sc_core::sc_time until(uint64_t cycle) const {
-    if (cycle > kMaxCycles)
-      throw std::overflow_error("the run reached cycle " + std::to_string(cycle) +
-                                ", past the last simulated cycle " + std::to_string(kMaxCycles));
+    if (cycle > kMaxCycles) pastLastCycle(cycle);
     return sc_core::sc_time::from_value(period_.value() * (cycle - now()));
+  }
+  // Out of line and cold: callers that convert a cycle per access (LtTime::delayTo) stay small
+  // enough to be inlined.
+  [[noreturn, gnu::noinline, gnu::cold]] static void pastLastCycle(uint64_t cycle) {
+    throw std::overflow_error("the run reached cycle " + std::to_string(cycle) +
+                              ", past the last simulated cycle " + std::to_string(kMaxCycles));
   }
 
  private:

@@ -33,7 +33,7 @@ class LtTime {
   // The delay from simulated time to `cycle` (not before it). Scaled in line, exactly while the
   // picoseconds fit a double's 53 bits: the library's sc_time::from_value is a call per read.
   sc_core::sc_time delayTo(uint64_t cycle) const {
-    if (cycle > kMaxCycles) return clock_.until(cycle);  // throws std::overflow_error
+    if (cycle > kMaxCycles) CycleClock::pastLastCycle(cycle);  // throws std::overflow_error
     return cycles(cycle - clock_.now());
   }
   // `count` cycles as a delay.
