@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/frame_images.h"
+#include "app/raypipe_trace.h"
 #include "app/results_csv.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
@@ -234,19 +235,10 @@ void checkRaypipeModel(ModelKind model) {
                                 "model (--model ca) is exact and costs per ray already");
 }
 
-void checkRaypipeOutputs(const RunOutputs& outputs) {
-  if (!outputs.vcdPath.empty() || !outputs.timelinePath.empty() || !outputs.needingOutput.empty())
-    throw std::invalid_argument(
-        (outputs.needingOutput.empty()
-             ? std::string(outputs.vcdPath.empty() ? "--timeline" : "--trace")
-             : outputs.needingOutput) +
-        ": the ray pipe has no trace or timeline yet (docs/raypipe.md); --stats and "
-        "--results-csv give its timing");
-}
-
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
-                   const RaypipeRenderOptions& options, const std::string& statsPath,
+                   const RaypipeRenderOptions& options, const RunOutputs& outputs,
                    std::ostream& out) {
+  const std::string& statsPath = outputs.statsPath;
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
   if (settings.model == ModelKind::CycleAccurate) checkRaypipeTimedTakes(settings.raypipe);
@@ -267,6 +259,7 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
     timed = timedFrame(scene, rays, settings.raypipe, frame);
     reportTiming(*timed, settings.raypipe, out);
     if (!statsPath.empty()) writeStats(*timed, configuration, statsPath);
+    writeRaypipeTraces(settings.raypipe, scene.image, rays, *timed, outputs, out);
   }
   if (!options.resultsCsv.empty())
     writeResultsCsv(options.resultsCsv, resultRows(frame, timed ? &*timed : nullptr),

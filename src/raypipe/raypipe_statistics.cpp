@@ -73,12 +73,31 @@ double RaypipeStatistics::utilisation(const RaypipeUnitStatistics& unit) const {
   return ratio(unit.busy * unit.interval, totalCycles);
 }
 
+double RaypipeStatistics::heldUtilisation(const RaypipeUnitStatistics& unit) const {
+  return ratio((unit.busy + unit.stall) * unit.interval, totalCycles);
+}
+
+// No unit saturated by its own work, the PRG busy or held back (never waiting for work) in most
+// of its slots, and the pixels waiting for the VGA reader with the pixel buffer full: the waits
+// reached back through the pipe to the PRG.
+bool RaypipeStatistics::vgaWindowBounds() const {
+  const RaypipeUnitStatistics* unit = busiest(*this);
+  if (writerWaits == 0 || units.empty() || (unit && utilisation(*unit) >= kSaturated)) return false;
+  const RaypipeUnitStatistics& prg = units.front();
+  const auto buffer = std::find_if(fifos.begin(), fifos.end(),
+                                   [](const auto& f) { return f.fifo == "pixel_buffer"; });
+  return prg.unit == raypipeUnitName(RaypipeUnit::Prg) && heldUtilisation(prg) >= kSaturated &&
+         buffer != fifos.end() && buffer->peak >= buffer->depth;
+}
+
 std::string RaypipeStatistics::limit() const {
+  if (vgaWindowBounds()) return kVgaWindow;
   const RaypipeUnitStatistics* unit = busiest(*this);
   return unit && utilisation(*unit) >= kSaturated ? unit->unit : "none";
 }
 
 double RaypipeStatistics::limitUtilisation() const {
+  if (vgaWindowBounds()) return heldUtilisation(units.front());
   const RaypipeUnitStatistics* unit = busiest(*this);
   return unit ? utilisation(*unit) : 0.0;
 }
@@ -135,10 +154,13 @@ const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
           .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
                    &S::raysPerSecond)
           .derived(Statistic("limit", "",
-                             "the unit of the highest utilisation, when it reaches 0.8; none "
-                             "below"),
+                             "the unit of the highest utilisation, when it reaches 0.8; "
+                             "vga_window when the SRAM writer's waits for the VGA reader held "
+                             "the PRG back instead (docs/raypipe.md); none below"),
                    &S::limit)
-          .derived(Statistic("limit_utilisation", "", "the highest utilisation, saturated or not"),
+          .derived(Statistic("limit_utilisation", "",
+                             "the highest utilisation, saturated or not; with vga_window the "
+                             "PRG's share of its slots busy or held back"),
                    &S::limitUtilisation)
           .count(Statistic("hits", "rays", "rays that hit a triangle"), &S::hits)
           .derived(Statistic("misses", "rays", "rays that entered the scene box and hit nothing"),

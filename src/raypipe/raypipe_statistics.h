@@ -58,11 +58,21 @@ struct RaypipeStatistics {
   double raysPerSecond() const;
   // A unit's share of its full rate over the frame: busy · interval / total cycles.
   double utilisation(const RaypipeUnitStatistics& unit) const;
+  // A unit's share of its full rate over the frame busy or offered an item it could not take
+  // (held back by what follows it): (busy + stall) · interval / total cycles.
+  double heldUtilisation(const RaypipeUnitStatistics& unit) const;
+  // The SRAM writer's waits for the VGA reader bound the frame: no unit reaches kSaturated by its
+  // own work, the PRG is busy or held back in kSaturated of its slots (never short of pixels to
+  // issue: something behind it holds it), pixels waited for the reader and the pixel buffer
+  // filled, so those waits reached back through the pipe (docs/raypipe.md, "Exploring the pipe").
+  bool vgaWindowBounds() const;
   // The unit of the highest utilisation when it reaches kSaturated (the RTU's rule,
-  // docs/exploration.md §2), else "none"; the highest utilisation, saturated or not.
+  // docs/exploration.md §2); else kVgaWindow when vgaWindowBounds(), with the PRG's held
+  // utilisation; else "none"; the highest utilisation, saturated or not.
   std::string limit() const;
   double limitUtilisation() const;
   static constexpr double kSaturated = 0.8;
+  static constexpr const char* kVgaWindow = "vga_window";
 
   static const StatisticGroup<RaypipeStatistics>& declaration();
 };
