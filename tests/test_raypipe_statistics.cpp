@@ -74,31 +74,26 @@ TEST_CASE("ray pipe statistics: utilisation of each unit's full rate and the lim
 
 TEST_CASE("ray pipe statistics: the VGA window as the limit", "[raypipe_statistics]") {
   RaypipeConfig config;
-  config.latency.prgInterval = 3;
-  // TRAV at 100 of 151 (66 %): nothing saturated by its own work. The PRG took 3 pixels and was
-  // held back on 38 more of its v0 slots: (3 + 38) · 3 = 123 of 151 cycles, 81 %.
+  // TRAV at 100 of 151 (66 %): nothing saturated by its own work. The SRAM writer took its 3
+  // pixels and waited 120 cycles for the VGA reader with one: 123 of 151 cycles, 81 %.
   RaypipeCycleRun run = handRun(100);
-  run.units[0].stall = 38;
-  run.writerWaits = 40;
-  run.fifos = {{"pixel_buffer", 20, 20}};  // the waits filled the pixel buffer
+  run.units.push_back({"pixel_writer", 3, 120});
+  run.writerWaits = 120;
   RaypipeStatistics s = RaypipeStatistics::of(run, config);
-  CHECK(s.heldUtilisation(s.units[0]) == Approx(123.0 / 151));
+  CHECK(s.heldUtilisation(s.units.back()) == Approx(123.0 / 151));
   CHECK(s.limit() == "vga_window");
   CHECK(s.limitUtilisation() == Approx(123.0 / 151));
   CHECK(statisticsJson(s)["limit"] == "vga_window");
-  // Each condition alone is not enough: a pixel buffer that never filled (the waits stayed in
-  // it), no waits at all, a PRG held back less, or a unit saturated by its own work.
-  run.fifos = {{"pixel_buffer", 20, 19}};
+  // A writer that held a pixel in fewer cycles (90 + 3 of 151: 62 %), or a unit saturated by its
+  // own work, or no waits at all (the writer's stall then is no window's) is no window bound.
+  run.units.back().stall = run.writerWaits = 90;
   CHECK(RaypipeStatistics::of(run, config).limit() == "none");
-  run.fifos = {{"pixel_buffer", 20, 20}};
-  run.writerWaits = 0;
-  CHECK(RaypipeStatistics::of(run, config).limit() == "none");
-  run.writerWaits = 40;
-  run.units[0].stall = 30;  // (3 + 30) · 3 = 99 of 151
-  CHECK(RaypipeStatistics::of(run, config).limit() == "none");
-  run.units[0].stall = 38;
+  run.units.back().stall = run.writerWaits = 120;
   run.units[2].busy = 130;
   CHECK(RaypipeStatistics::of(run, config).limit() == "trav");
+  run.units[2].busy = 100;
+  run.writerWaits = 0;
+  CHECK(RaypipeStatistics::of(run, config).limit() == "none");
 }
 
 TEST_CASE("ray pipe statistics: the JSON", "[raypipe_statistics]") {

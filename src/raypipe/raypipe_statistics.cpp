@@ -77,17 +77,20 @@ double RaypipeStatistics::heldUtilisation(const RaypipeUnitStatistics& unit) con
   return ratio((unit.busy + unit.stall) * unit.interval, totalCycles);
 }
 
-// No unit saturated by its own work, the PRG busy or held back (never waiting for work) in most
-// of its slots, and the pixels waiting for the VGA reader with the pixel buffer full: the waits
-// reached back through the pipe to the PRG.
+// The SRAM writer held a pixel (took it, or waited for the VGA reader) in most cycles of the frame
+// while taking one in fewer: the pixels left the pipe at the rate the reader's window let them,
+// and no unit was saturated by its own work.
 bool RaypipeStatistics::vgaWindowBounds() const {
   const RaypipeUnitStatistics* unit = busiest(*this);
-  if (writerWaits == 0 || units.empty() || (unit && utilisation(*unit) >= kSaturated)) return false;
-  const RaypipeUnitStatistics& prg = units.front();
-  const auto buffer = std::find_if(fifos.begin(), fifos.end(),
-                                   [](const auto& f) { return f.fifo == "pixel_buffer"; });
-  return prg.unit == raypipeUnitName(RaypipeUnit::Prg) && heldUtilisation(prg) >= kSaturated &&
-         buffer != fifos.end() && buffer->peak >= buffer->depth;
+  if (writerWaits == 0 || (unit && utilisation(*unit) >= kSaturated)) return false;
+  const RaypipeUnitStatistics* writer = pixelWriter();
+  return writer && heldUtilisation(*writer) >= kSaturated;
+}
+
+const RaypipeUnitStatistics* RaypipeStatistics::pixelWriter() const {
+  for (const RaypipeUnitStatistics& unit : units)
+    if (unit.unit == raypipeUnitName(RaypipeUnit::PixelWriter)) return &unit;
+  return nullptr;
 }
 
 std::string RaypipeStatistics::limit() const {
@@ -97,7 +100,7 @@ std::string RaypipeStatistics::limit() const {
 }
 
 double RaypipeStatistics::limitUtilisation() const {
-  if (vgaWindowBounds()) return heldUtilisation(units.front());
+  if (vgaWindowBounds()) return heldUtilisation(*pixelWriter());
   const RaypipeUnitStatistics* unit = busiest(*this);
   return unit ? utilisation(*unit) : 0.0;
 }
@@ -155,12 +158,13 @@ const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
                    &S::raysPerSecond)
           .derived(Statistic("limit", "",
                              "the unit of the highest utilisation, when it reaches 0.8; "
-                             "vga_window when the SRAM writer's waits for the VGA reader held "
-                             "the PRG back instead (docs/raypipe.md); none below"),
+                             "vga_window when the SRAM writer took or waited for the VGA reader "
+                             "with a pixel in 0.8 of the cycles instead (docs/raypipe.md); none "
+                             "below"),
                    &S::limit)
           .derived(Statistic("limit_utilisation", "",
                              "the highest utilisation, saturated or not; with vga_window the "
-                             "PRG's share of its slots busy or held back"),
+                             "writer's share of the cycles taking or waiting"),
                    &S::limitUtilisation)
           .count(Statistic("hits", "rays", "rays that hit a triangle"), &S::hits)
           .derived(Statistic("misses", "rays", "rays that entered the scene box and hit nothing"),
