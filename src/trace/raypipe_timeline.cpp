@@ -83,16 +83,20 @@ uint64_t writeRaypipeTimeline(const RaypipeCycleRun& run, const TimelineOptions&
                "\",\"ts\":" + json.time(static_cast<uint64_t>(r.shaderInCycle)) + ",\"dur\":" +
                json.time(static_cast<uint64_t>(r.exitCycle + 1 - r.shaderInCycle)) + "}");
   }
-  int64_t held = 0, waiting = 0;
+  int64_t held = 0, waiting = 0, heldShown = 0, waitingShown = 0;  // from 0 before the first
   for (const auto& [cycle, step] : steps) {
     held += step.first;
     waiting += step.second;
-    if (!inWindow(cycle) || (step.first == 0 && step.second == 0)) continue;
+    if (!inWindow(cycle)) continue;
     const std::string ts = json.time(static_cast<uint64_t>(cycle));
-    json.event("{\"ph\":\"C\",\"pid\":1,\"name\":\"ray ids held\",\"ts\":" + ts +
-               ",\"args\":{\"rays\":" + std::to_string(held) + "}}");
-    json.event("{\"ph\":\"C\",\"pid\":1,\"name\":\"waiting for an id\",\"ts\":" + ts +
-               ",\"args\":{\"pixels\":" + std::to_string(waiting) + "}}");
+    if (held != heldShown)  // a counter's event only where its value changes
+      json.event("{\"ph\":\"C\",\"pid\":1,\"name\":\"ray ids held\",\"ts\":" + ts +
+                 ",\"args\":{\"rays\":" + std::to_string(held) + "}}");
+    if (waiting != waitingShown)
+      json.event("{\"ph\":\"C\",\"pid\":1,\"name\":\"waiting for an id\",\"ts\":" + ts +
+                 ",\"args\":{\"pixels\":" + std::to_string(waiting) + "}}");
+    heldShown = held;
+    waitingShown = waiting;
   }
   return json.finish();
 }

@@ -55,8 +55,11 @@ class TimedPipe {
     if (trace_) trace_->stalled(u, now_, now_ + 1);
   }
   void traceTo(CycleTrace& trace);
-  // The first cycle a record can still be made for: the one after the PRG group's last call.
-  int64_t safeCycle() const { return std::min(now_, lastPrgCall_ + 1); }
+  // The first cycle a record can still be made for: the one after the PRG group's last call while
+  // its next call can add up stalls since then (a ray in the PRG's FIFO, or the PRG blocked).
+  int64_t safeCycle() const {
+    return c_.prgFifo.any() || prgBlocked_ ? std::min(now_, lastPrgCall_ + 1) : now_;
+  }
 
   // The unit groups, as calendar bits, in the order a cycle visits them.
   enum Group : uint32_t {
