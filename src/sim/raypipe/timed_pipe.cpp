@@ -116,6 +116,12 @@ void TimedPipe::settle(uint32_t group) {
 void TimedPipe::busy(Unit u, const RayToken& t, bool hasRay) {
   ++busy_[static_cast<size_t>(u)];
   lastProgress_ = now_;
+  if (recordTransfers_ || trace_) recordTransfer(u, t, hasRay);
+}
+
+// Out of busy()'s path (cold, not inlined): a run that neither traces nor records transfers pays
+// one test per transfer.
+void TimedPipe::recordTransfer(Unit u, const RayToken& t, bool hasRay) {
   if (trace_) trace_->took(u, now_, hasRay ? t.ray : t.index);
   if (recordTransfers_)
     transfers_.push_back(

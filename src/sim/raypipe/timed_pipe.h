@@ -40,6 +40,7 @@ class TimedPipe {
     return stack_[ray * static_cast<uint32_t>(config_.shortStackDepth) + row];
   }
   void busy(Unit u, const RayToken& t, bool hasRay = true);
+  [[gnu::noinline, gnu::cold]] void recordTransfer(Unit u, const RayToken& t, bool hasRay);
   void stall(Unit u) { stalls(u, now_, now_ + 1); }
   // `u` stalled in every cycle of [from, to) (the PRG's group adds up some it was not called in).
   void stalls(Unit u, int64_t from, int64_t to) {

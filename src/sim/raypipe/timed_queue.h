@@ -90,8 +90,9 @@ class TimedQueue {
     if (written == now) book(now + delay_, now);
     if (trace_) traced(now);
   }
-  // The count and head from the cycle after a write or read in `now`.
-  void traced(int64_t now) {
+  // The count and head from the cycle after a write or read in `now`; out of the untraced path
+  // (cold, not inlined: a test and a branch are all an untraced write or read pays).
+  [[gnu::noinline, gnu::cold]] void traced(int64_t now) {
     trace_->changed(now + 1, count_, count_ > 0 ? traceHead(front(), trace_->pixels()) : 0);
   }
   void book(int64_t cycle, int64_t now) {
