@@ -43,3 +43,17 @@ shot waveform_pipeline --cores 4 --trace-to 200 --trace-clock \
 # Cached memory: cores BLOCKED on their reads, the L1 counters.
 shot waveform_cached --cores 2 --memory cached --trace-to 400 \
   --trace-scope rtu.core_0 rtu.core_1 rtu.memory
+
+# Seed 001's ray pipe (docs/raypipe.md, "Traces and timeline"): one hitting ray's window on a voxel
+# sphere's faces at 20x15, its units and three FIFOs.
+"$rtusim" render --preset trayracer --scene sphere --depth 3 --index wide --level 0 \
+  --trace-ray 181 --trace waveform_raypipe.fst --trace-scope raypipe.sint raypipe.tarb \
+  raypipe.trav raypipe.larb raypipe.int raypipe.list raypipe.shader_return raypipe.fifos.tarb \
+  raypipe.fifos.pixel_buffer raypipe.fifos.shader_ray_ids >/dev/null
+DISPLAY=$display gtkwave waveform_raypipe.fst waveform_raypipe.fst.gtkw >/dev/null 2>&1 &
+viewer=$!
+sleep 4
+DISPLAY=$display import -window root "$out/waveform_raypipe.png"
+kill "$viewer"
+wait "$viewer" 2>/dev/null || true
+echo "wrote $out/waveform_raypipe.png"

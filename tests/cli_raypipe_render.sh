@@ -90,6 +90,65 @@ assert len(set(exits)) == len(exits), "two pixels left the shader in one cycle"
 assert all(e > i for i, e in zip(issue, exits))
 assert max(exits) + 1 == int(sys.argv[3]), (max(exits), sys.argv[3])
 PY
+# --trace and --timeline of the timed pipe: sizes first, then a VCD with every unit's valid, stall
+# and ray id and every FIFO's count, with its save file; the timeline's track per ray id. In the
+# VCD (50 MHz: 20,000 ps a cycle), the PRG takes a pixel every third cycle at most and its pixel
+# signal counts 0, 1, 2, ...; the pixel writer takes each pixel once; the timeline has a slice per
+# ray from its id to its exit, as the results CSV's cycles say.
+tiny=(--scene sphere --depth 4 --index wide --level 0)
+sphere=(--scene sphere --depth 4 --index wide)
+"$rtusim" render --architecture raypipe --model ca "${tiny[@]}" --trace t.vcd \
+  --timeline t.json --results-csv traced.csv >traced.txt
+grep -q "^trace size  t.vcd: " traced.txt && grep -q "^timeline    t.json: " traced.txt ||
+  fail "trace sizes: $(cat traced.txt)"
+[[ -s t.vcd && -s t.vcd.gtkw && -s t.json ]] || fail "trace, save file or timeline missing"
+python3 - t.vcd t.json traced.csv <<'PY' || fail "trace or timeline content"
+import csv, json, re, sys
+text = open(sys.argv[1]).read()
+ids, scope, names = {}, [], {}
+for line in text.split("$enddefinitions")[0].splitlines():
+    parts = line.split()
+    if parts[:2] == ["$scope", "module"]: scope.append(parts[2])
+    if parts[:1] == ["$upscope"]: scope.pop()
+    if parts[:1] == ["$var"]: names[parts[3]] = ".".join(scope + [parts[4]])
+assert "raypipe.trav.valid" in names.values() and "raypipe.fifos.tarb.count" in names.values()
+history = {name: [] for name in names.values()}
+time = 0
+for line in text.split("$enddefinitions")[1].splitlines():
+    if line.startswith("#"): time = int(line[1:]) // 20000; continue
+    m = re.match(r"^b([01x]+) (\S+)$", line) or re.match(r"^([01x])(\S+)$", line)
+    if m and m.group(2) in names: history[names[m.group(2)]].append((time, int(m.group(1), 2)))
+rows = list(csv.DictReader(open(sys.argv[3])))
+prg = [t for t, v in history["raypipe.prg.valid"] if v == 1]
+assert len(prg) == len(rows) == 300, len(prg)
+assert prg == sorted(int(r["issue_cycle"]) for r in rows)
+assert all(b - a >= 3 for a, b in zip(prg, prg[1:]))
+pixels = [v for t, v in history["raypipe.prg.pixel"]]
+assert pixels == list(range(len(pixels))) and pixels[-1] == 299, pixels[-3:]
+writes = [t for t, v in history["raypipe.pixel_writer.valid"] if v == 1]
+assert 0 < len(writes) <= 300
+events = json.load(open(sys.argv[2]))["traceEvents"]
+slices = [e for e in events if e["ph"] == "X"]
+assert len(slices) == 300, len(slices)
+exits = {int(r["id"]): int(r["exit_cycle"]) for r in rows}
+for e in slices:
+    pixel = int(e["name"].split()[1])
+    end = round((float(e["ts"]) + float(e["dur"])) * 50)  # microseconds at 50 MHz
+    assert end == exits[pixel] + 1, (e, exits[pixel])
+PY
+# --trace-ray: the window of one ray, from the PRG's take to its exit.
+"$rtusim" render --architecture raypipe --model ca "${tiny[@]}" --trace-ray 5 \
+  --trace ray.fst >ray.txt
+grep -q "^window      ray 5 (pixel 5, ray id [0-9]*): cycles 15 to [0-9]*" ray.txt ||
+  fail "--trace-ray window: $(cat ray.txt)"
+[[ -s ray.fst && -s ray.fst.gtkw ]] || fail "no FST"
+expect_error "matches no module" "$rtusim" render --architecture raypipe --model ca "${tiny[@]}" \
+  --trace bad.vcd --trace-scope raypipe.nosuch
+expect_error "above --trace-max-mb 1" "$rtusim" render --architecture raypipe --model ca \
+  "${sphere[@]}" --level 3 --trace big.vcd --trace-max-mb 1
+[[ ! -e big.vcd ]] || fail "a refused trace was written"
+expect_error "need --model ca or lt" "$rtusim" render --architecture raypipe --model golden \
+  "${tiny[@]}" --trace golden.vcd
 expect_error "no loosely-timed form" \
   "$rtusim" render --architecture raypipe --model lt "${frame[@]}" --level 0 --image lt.png
 [[ ! -e lt.png ]] || fail "--model lt wrote an image"

@@ -72,6 +72,30 @@ TEST_CASE("ray pipe statistics: utilisation of each unit's full rate and the lim
   CHECK(s.limitUtilisation() == Approx(150.0 / 151));
 }
 
+TEST_CASE("ray pipe statistics: the VGA window as the limit", "[raypipe_statistics]") {
+  RaypipeConfig config;
+  // TRAV at 100 of 151 (66 %): nothing saturated by its own work. The SRAM writer took its 3
+  // pixels and waited 120 cycles for the VGA reader with one: 123 of 151 cycles, 81 %.
+  RaypipeCycleRun run = handRun(100);
+  run.units.push_back({"pixel_writer", 3, 120});
+  run.writerWaits = 120;
+  RaypipeStatistics s = RaypipeStatistics::of(run, config);
+  CHECK(s.heldUtilisation(s.units.back()) == Approx(123.0 / 151));
+  CHECK(s.limit() == "vga_window");
+  CHECK(s.limitUtilisation() == Approx(123.0 / 151));
+  CHECK(statisticsJson(s)["limit"] == "vga_window");
+  // A writer that held a pixel in fewer cycles (90 + 3 of 151: 62 %), or a unit saturated by its
+  // own work, or no waits at all (the writer's stall then is no window's) is no window bound.
+  run.units.back().stall = run.writerWaits = 90;
+  CHECK(RaypipeStatistics::of(run, config).limit() == "none");
+  run.units.back().stall = run.writerWaits = 120;
+  run.units[2].busy = 130;
+  CHECK(RaypipeStatistics::of(run, config).limit() == "trav");
+  run.units[2].busy = 100;
+  run.writerWaits = 0;
+  CHECK(RaypipeStatistics::of(run, config).limit() == "none");
+}
+
 TEST_CASE("ray pipe statistics: the JSON", "[raypipe_statistics]") {
   const nlohmann::ordered_json json =
       statisticsJson(RaypipeStatistics::of(handRun(130), RaypipeConfig{}));

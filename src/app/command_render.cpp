@@ -190,10 +190,9 @@ void addRenderCommand(CLI::App& app) {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();
     const bool raypipe = settings.architecture == Architecture::Raypipe;
-    if (raypipe) {
+    if (raypipe)
       checkRaypipeModel(settings.model);
-      checkRaypipeOutputs(options->outputs);
-    } else
+    else
       checkRaypipeOnly(options->raypipe);
     checkOutputsOfModel(*options, *request, configuration);
     if (raypipe) {
@@ -202,7 +201,7 @@ void addRenderCommand(CLI::App& app) {
       checkOutputPaths(options->outputPaths(), inputs);
       options->checkImageFormats();
       renderRaypipe(configuration, {options->image, options->depthImage, options->costImage},
-                    options->raypipe, options->outputs.statsPath, std::cout);
+                    options->raypipe, options->outputs, std::cout);
       return;
     }
     settings.camera.validate();

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/frame_images.h"
+#include "app/raypipe_trace.h"
 #include "app/results_csv.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
@@ -77,11 +79,10 @@ void report(const RaypipeScene& scene, const RunConfig& settings, const RaypipeC
   for (const std::string& warning : scene.warnings) out << "warning     " << warning << "\n";
 }
 
-// The frame on the timed model (sim/raypipe), from the PRG's rays in issue order. Its results
-// must be the golden frame's, pixel by pixel: anything else is a model defect, never a number.
-RaypipeCycleRun timedFrame(const RaypipeScene& scene, const std::vector<PrimaryRay>& rays,
-                           const RaypipeConfig& config, const RaypipeGoldenFrame& golden) {
-  RaypipeCycleRun run = runRaypipeFrame(config, scene.image, rays);
+// The frame on the timed model (sim/raypipe), from the PRG's rays in issue order, checked: its
+// results must be the golden frame's, pixel by pixel; anything else is a model defect, never a
+// number.
+RaypipeCycleRun checkedTimedFrame(RaypipeCycleRun run, const RaypipeGoldenFrame& golden) {
   for (size_t i = 0; i < run.results.size(); ++i) {
     const RaypipeCycleResult& timed = run.results[i];
     const RaypipePixel& expected = golden.pixels[i];
@@ -234,19 +235,10 @@ void checkRaypipeModel(ModelKind model) {
                                 "model (--model ca) is exact and costs per ray already");
 }
 
-void checkRaypipeOutputs(const RunOutputs& outputs) {
-  if (!outputs.vcdPath.empty() || !outputs.timelinePath.empty() || !outputs.needingOutput.empty())
-    throw std::invalid_argument(
-        (outputs.needingOutput.empty()
-             ? std::string(outputs.vcdPath.empty() ? "--timeline" : "--trace")
-             : outputs.needingOutput) +
-        ": the ray pipe has no trace or timeline yet (docs/raypipe.md); --stats and "
-        "--results-csv give its timing");
-}
-
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
-                   const RaypipeRenderOptions& options, const std::string& statsPath,
+                   const RaypipeRenderOptions& options, const RunOutputs& outputs,
                    std::ostream& out) {
+  const std::string& statsPath = outputs.statsPath;
   const RunConfig& settings = configuration.values();
   settings.raypipe.validate();
   if (settings.model == ModelKind::CycleAccurate) checkRaypipeTimedTakes(settings.raypipe);
@@ -254,19 +246,26 @@ void renderRaypipe(const Configuration& configuration, const FrameImagePaths& im
   const RaypipeCamera registers = settings.raypipeView.camera.resolve(settings.camera);
   const RaypipeScene scene = loadRaypipeScene(settings, options.accelFile);
   const std::vector<PrimaryRay> rays = primaryRays(registers, size);
-  const auto start = std::chrono::steady_clock::now();
   if (scene.normals.empty() && !options.shadedImage.empty())
     throw std::invalid_argument("--shaded-image needs the triangles' normals: a k-d image holds "
                                 "none (give the mesh, or the seed's scene file)");
+  // The timed frame on a thread of its own while the golden frame runs (they share nothing but
+  // their inputs): the frame's wall time is the longer of the two, not their sum.
+  std::future<RaypipeCycleRun> timedRun;
+  if (settings.model == ModelKind::CycleAccurate)
+    timedRun = std::async(std::launch::async,
+                          [&] { return runRaypipeFrame(settings.raypipe, scene.image, rays); });
+  const auto start = std::chrono::steady_clock::now();
   const RaypipeGoldenFrame frame = runGoldenFrame(scene.image, rays, settings.raypipe);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report(scene, settings, registers, frame, seconds, out);
   std::optional<RaypipeCycleRun> timed;
   if (settings.model == ModelKind::CycleAccurate) {
-    timed = timedFrame(scene, rays, settings.raypipe, frame);
+    timed = checkedTimedFrame(timedRun.get(), frame);
     reportTiming(*timed, settings.raypipe, out);
     if (!statsPath.empty()) writeStats(*timed, configuration, statsPath);
+    writeRaypipeTraces(settings.raypipe, scene.image, rays, *timed, outputs, out);
   }
   if (!options.resultsCsv.empty())
     writeResultsCsv(options.resultsCsv, resultRows(frame, timed ? &*timed : nullptr),

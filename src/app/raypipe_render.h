@@ -54,10 +54,11 @@ struct FrameImagePaths {
 };
 
 // Renders the frame `configuration` describes on the ray pipe's golden model (and, with --model
-// ca, its timed model) and writes the outputs asked for: with `statsPath`, the timed frame's
-// statistics (raypipe/raypipe_statistics.h) as a run's JSON; the report goes to `out`.
+// ca, its timed model) and writes the outputs asked for: --stats, the timed frame's statistics
+// (raypipe/raypipe_statistics.h) as a run's JSON; --trace and --timeline (app/raypipe_trace.h);
+// the report goes to `out`.
 void renderRaypipe(const Configuration& configuration, const FrameImagePaths& images,
-                   const RaypipeRenderOptions& options, const std::string& statsPath,
+                   const RaypipeRenderOptions& options, const RunOutputs& outputs,
                    std::ostream& out);
 
 // The golden frame as rtusim's images take it: t in world units (hardware space only swaps axes),
@@ -67,9 +68,5 @@ RenderedFrame raypipeRenderedFrame(const RaypipeGoldenFrame& frame,
                                    const std::vector<PrimaryRay>& rays,
                                    const std::vector<glm::dvec3>& normals,
                                    const RaypipeCamera& registers, PrgFrameSize size);
-
-// Throws std::invalid_argument for an output of the RTU's timed models the pipe has no form of
-// (--trace, --timeline and the options that shape them).
-void checkRaypipeOutputs(const RunOutputs& outputs);
 
 }  // namespace rtu

@@ -15,15 +15,20 @@ RtuConfig RunOutputs::traced(const RtuConfig& config) const {
   if (!needingOutput.empty() && vcdPath.empty() && timelinePath.empty())
     throw std::invalid_argument(needingOutput + " needs --trace or --timeline");
   RtuConfig resolved = config;
-  if (!vcdPath.empty()) {
-    resolved.trace = TraceOptions{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
-    resolved.trace->clock = traceClock;
-    resolved.trace->time = traceTime == "cycles" ? TraceTime::Cycles
-                           : traceTime == "ps"   ? TraceTime::Picoseconds
-                                                 : TraceTime::Auto;
-  }
+  // (the period is the run's: simulateRtu sets it from clock_mhz)
+  if (!vcdPath.empty()) resolved.trace = traceOptions(TraceOptions{}.periodPs);
   resolved.timeline = TimelineOptions{timelinePath, vcdFrom, vcdTo};
   return resolved;
+}
+
+TraceOptions RunOutputs::traceOptions(uint64_t periodPs) const {
+  TraceOptions options{vcdPath, vcdFrom, vcdTo, vcdScopes, signalClasses};
+  options.periodPs = periodPs;
+  options.clock = traceClock;
+  options.time = traceTime == "cycles" ? TraceTime::Cycles
+                 : traceTime == "ps"   ? TraceTime::Picoseconds
+                                       : TraceTime::Auto;
+  return options;
 }
 
 RtuConfig plannedTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
@@ -62,8 +67,8 @@ void addRunOutputOptions(CLI::App& command, RunOutputs& outputs) {
       ->needs(vcd);
   command
       .add_option("--trace-signals", outputs.signalClasses,
-                  "trace only these signal classes: handshakes, ids, states, stack, caches "
-                  "(default: all)")
+                  "trace only these signal classes: handshakes, ids, states, stack, caches, "
+                  "fifos (the ray pipe's FIFO counts) (default: all)")
       ->delimiter(',')
       ->needs(vcd);
   command

@@ -36,6 +36,8 @@ struct RunOutputs {
 
   // The model configuration with the trace and the timeline asked for.
   RtuConfig traced(const RtuConfig& config) const;
+  // The trace asked for (--trace and the options that shape it), at a clock of `periodPs`.
+  TraceOptions traceOptions(uint64_t periodPs) const;
   std::vector<NamedPath> paths() const {
     return {{"--stats", statsPath}, {"--vcd", vcdPath}, {"--timeline", timelinePath}};
   }

@@ -103,9 +103,9 @@ std::vector<PrimaryRay> raypipeFrameRays(const RunConfig& settings) {
 }
 
 RaypipeCycleRun runRaypipeFrame(const RaypipeConfig& config, const std::vector<uint32_t>& image,
-                                const std::vector<PrimaryRay>& rays) {
+                                const std::vector<PrimaryRay>& rays, CycleTrace* trace) {
   config.validate();
-  return runRaypipeTimed(config, KdImage{image}, cycleRays(rays), cycleOptions(config));
+  return runRaypipeTimed(config, KdImage{image}, cycleRays(rays), cycleOptions(config), trace);
 }
 
 RaypipeCycleRun runRaypipeReferenceFrame(const RaypipeConfig& config,

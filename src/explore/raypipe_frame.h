@@ -12,6 +12,7 @@
 #include "config/run_config.h"
 #include "raypipe/primary_rays.h"
 #include "raypipe/raypipe_run.h"
+#include "trace/cycle_trace.h"
 
 namespace rtu {
 
@@ -39,8 +40,9 @@ std::vector<PrimaryRay> raypipeFrameRays(const RunConfig& settings);
 // The frame on the timed model: `rays` through the pipe of settings.raypipe over `image`, the
 // SRAM writer as raypipe.vga_window and raypipe.vga_phase say. Throws std::invalid_argument for
 // settings the model does not take (raypipe/raypipe_config.h's validate, and the model's own).
+// With `trace`, the run's trace goes to it (sim/raypipe/pipe_trace.h).
 RaypipeCycleRun runRaypipeFrame(const RaypipeConfig& config, const std::vector<uint32_t>& image,
-                                const std::vector<PrimaryRay>& rays);
+                                const std::vector<PrimaryRay>& rays, CycleTrace* trace = nullptr);
 
 // The per-cycle reference (reference/raypipe_cycles.h) on the same frame, for fidelity.
 RaypipeCycleRun runRaypipeReferenceFrame(const RaypipeConfig& config,

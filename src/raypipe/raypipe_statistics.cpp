@@ -73,12 +73,34 @@ double RaypipeStatistics::utilisation(const RaypipeUnitStatistics& unit) const {
   return ratio(unit.busy * unit.interval, totalCycles);
 }
 
+double RaypipeStatistics::heldUtilisation(const RaypipeUnitStatistics& unit) const {
+  return ratio((unit.busy + unit.stall) * unit.interval, totalCycles);
+}
+
+// The SRAM writer held a pixel (took it, or waited for the VGA reader) in most cycles of the frame
+// while taking one in fewer: the pixels left the pipe at the rate the reader's window let them,
+// and no unit was saturated by its own work.
+bool RaypipeStatistics::vgaWindowBounds() const {
+  const RaypipeUnitStatistics* unit = busiest(*this);
+  if (writerWaits == 0 || (unit && utilisation(*unit) >= kSaturated)) return false;
+  const RaypipeUnitStatistics* writer = pixelWriter();
+  return writer && heldUtilisation(*writer) >= kSaturated;
+}
+
+const RaypipeUnitStatistics* RaypipeStatistics::pixelWriter() const {
+  for (const RaypipeUnitStatistics& unit : units)
+    if (unit.unit == raypipeUnitName(RaypipeUnit::PixelWriter)) return &unit;
+  return nullptr;
+}
+
 std::string RaypipeStatistics::limit() const {
+  if (vgaWindowBounds()) return kVgaWindow;
   const RaypipeUnitStatistics* unit = busiest(*this);
   return unit && utilisation(*unit) >= kSaturated ? unit->unit : "none";
 }
 
 double RaypipeStatistics::limitUtilisation() const {
+  if (vgaWindowBounds()) return heldUtilisation(*pixelWriter());
   const RaypipeUnitStatistics* unit = busiest(*this);
   return unit ? utilisation(*unit) : 0.0;
 }
@@ -135,10 +157,14 @@ const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
           .derived(Statistic("rays_per_second", "rays/s", "rays per second at the clock"),
                    &S::raysPerSecond)
           .derived(Statistic("limit", "",
-                             "the unit of the highest utilisation, when it reaches 0.8; none "
+                             "the unit of the highest utilisation, when it reaches 0.8; "
+                             "vga_window when the SRAM writer took or waited for the VGA reader "
+                             "with a pixel in 0.8 of the cycles instead (docs/raypipe.md); none "
                              "below"),
                    &S::limit)
-          .derived(Statistic("limit_utilisation", "", "the highest utilisation, saturated or not"),
+          .derived(Statistic("limit_utilisation", "",
+                             "the highest utilisation, saturated or not; with vga_window the "
+                             "writer's share of the cycles taking or waiting"),
                    &S::limitUtilisation)
           .count(Statistic("hits", "rays", "rays that hit a triangle"), &S::hits)
           .derived(Statistic("misses", "rays", "rays that entered the scene box and hit nothing"),

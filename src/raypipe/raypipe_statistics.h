@@ -58,11 +58,22 @@ struct RaypipeStatistics {
   double raysPerSecond() const;
   // A unit's share of its full rate over the frame: busy · interval / total cycles.
   double utilisation(const RaypipeUnitStatistics& unit) const;
+  // A unit's share of its full rate over the frame busy or offered an item it could not take
+  // (held back by what follows it): (busy + stall) · interval / total cycles.
+  double heldUtilisation(const RaypipeUnitStatistics& unit) const;
+  // The VGA reader's window bounds the frame: no unit reaches kSaturated by its own work, and the
+  // SRAM writer took a pixel or waited for the reader with one in kSaturated of the cycles (its
+  // waits are its stall), so the pixels left at the rate the window let them (docs/raypipe.md,
+  // "Exploring the pipe").
+  bool vgaWindowBounds() const;
+  const RaypipeUnitStatistics* pixelWriter() const;  // null when the run has none
   // The unit of the highest utilisation when it reaches kSaturated (the RTU's rule,
-  // docs/exploration.md §2), else "none"; the highest utilisation, saturated or not.
+  // docs/exploration.md §2); else kVgaWindow when vgaWindowBounds(), with the writer's held
+  // utilisation; else "none"; the highest utilisation, saturated or not.
   std::string limit() const;
   double limitUtilisation() const;
   static constexpr double kSaturated = 0.8;
+  static constexpr const char* kVgaWindow = "vga_window";
 
   static const StatisticGroup<RaypipeStatistics>& declaration();
 };

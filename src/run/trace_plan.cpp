@@ -120,16 +120,36 @@ RayWindow rayWindow(const WordMemory& memory, const std::vector<HostRecord>& rec
                          std::to_string(ray));
 }
 
+uint64_t traceFileBytes(const std::string& path, uint64_t vcdBytes) {
+  return isFst(path) ? static_cast<uint64_t>(static_cast<double>(vcdBytes) / kVcdBytesPerFstByte)
+                     : vcdBytes;
+}
+
+void reportTraceSizes(const TraceSizes& sizes, const std::string& tracePath,
+                      const std::string& timelinePath, const TraceLimits& limits,
+                      std::ostream& out) {
+  if (!tracePath.empty()) {
+    out << "trace size  " << tracePath << ": " << megabytes(sizes.trace)
+        << (isFst(tracePath) ? " (estimated from its VCD's " + megabytes(sizes.vcd) + ")" : "")
+        << "\n";
+    refuseAbove("trace", tracePath, sizes.trace, limits.maxBytes,
+                "--trace-scope, --trace-from/--trace-to, --trace-ray, an .fst path");
+  }
+  if (!timelinePath.empty()) {
+    out << "timeline    " << timelinePath << ": " << megabytes(sizes.timeline) << "\n";
+    refuseAbove("timeline", timelinePath, sizes.timeline, limits.maxBytes,
+                "--trace-from/--trace-to or --trace-ray");
+  }
+}
+
 TraceSizes measureTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
                         const RtuConfig& config, const RunProgress& progress) {
   RtuConfig dry = config;
   if (dry.trace) dry.trace->countOnly = true;
   dry.timeline.countOnly = true;
   const RtuRun run = simulateRtu(memory, records, dry, progress);
-  TraceSizes sizes{run.traceBytes, run.timelineBytes, run.traceBytes};
-  if (config.trace && isFst(config.trace->path))
-    sizes.trace = static_cast<uint64_t>(static_cast<double>(run.traceBytes) / kVcdBytesPerFstByte);
-  return sizes;
+  return {config.trace ? traceFileBytes(config.trace->path, run.traceBytes) : run.traceBytes,
+          run.timelineBytes, run.traceBytes};
 }
 
 RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& records,
@@ -152,19 +172,8 @@ RtuConfig planTrace(const WordMemory& memory, const std::vector<HostRecord>& rec
     config.timeline.toCycle = window.to;
   }
   const TraceSizes sizes = measureTrace(memory, records, config, progress);
-  if (config.trace) {
-    out << "trace size  " << config.trace->path << ": " << megabytes(sizes.trace)
-        << (isFst(config.trace->path) ? " (estimated from its VCD's " + megabytes(sizes.vcd) + ")"
-                                      : "")
-        << "\n";
-    refuseAbove("trace", config.trace->path, sizes.trace, limits.maxBytes,
-                "--trace-scope, --trace-from/--trace-to, --trace-ray, an .fst path");
-  }
-  if (config.timeline.wanted()) {
-    out << "timeline    " << config.timeline.path << ": " << megabytes(sizes.timeline) << "\n";
-    refuseAbove("timeline", config.timeline.path, sizes.timeline, limits.maxBytes,
-                "--trace-from/--trace-to or --trace-ray");
-  }
+  reportTraceSizes(sizes, config.trace ? config.trace->path : "", config.timeline.path, limits,
+                   out);
   return config;
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 #include "run/rtu_simulation.h"
@@ -28,6 +29,15 @@ struct TraceSizes {
   uint64_t trace = 0, timeline = 0;  // bytes of each file (of an FST: estimated)
   uint64_t vcd = 0;                  // bytes of the trace as VCD
 };
+
+// The bytes of a trace at `path` whose VCD has `vcdBytes`: those, or an FST's estimate.
+uint64_t traceFileBytes(const std::string& path, uint64_t vcdBytes);
+
+// Prints the sizes of the trace and the timeline asked for (an empty path: none) and throws
+// std::invalid_argument naming the options that narrow a file above limits.maxBytes.
+void reportTraceSizes(const TraceSizes& sizes, const std::string& tracePath,
+                      const std::string& timelinePath, const TraceLimits& limits,
+                      std::ostream& out);
 
 // The window of job `ray`: from its handshake into the job manager to the cycle after its result's
 // handshake with the host, and the core that ran it (-1 when no core did: a scene's ray). Throws

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "base/output_file.h"
+#include "raypipe/raypipe_run.h"
 #include "trace/trace_writer.h"
 
 namespace rtu {
@@ -34,11 +35,20 @@ std::string moduleOf(const std::string& scope) {
   return scope.substr(first + 1, length);
 }
 
+// The ray pipe's modules (sim/raypipe/pipe_trace.h): its units in the pipe's order, then its
+// FIFOs.
+int raypipePosition(const std::string& module) {
+  for (size_t u = 0; u < static_cast<size_t>(RaypipeUnit::kCount); ++u)
+    if (module == raypipeUnitName(static_cast<RaypipeUnit>(u))) return static_cast<int>(u);
+  return static_cast<int>(RaypipeUnit::kCount);
+}
+
 // Pipeline position of a module, then its instance number (core_10 after core_9); `first` before
 // all.
-std::tuple<int, long, std::string> pipelineKey(const std::string& module,
-                                               const std::string& first) {
+std::tuple<int, long, std::string> pipelineKey(const std::string& scope, const std::string& first) {
+  const std::string module = moduleOf(scope);
   if (module == first) return {-1, 0, module};
+  if (scope.rfind("raypipe.", 0) == 0) return {raypipePosition(module), 0, module};
   static const std::vector<std::string> order{"job_manager", "scheduler",      "core_",
                                               "memory",      "result_manager", "reorder_buffer"};
   for (size_t i = 0; i < order.size(); ++i)
@@ -121,7 +131,7 @@ void writeSaveFile(const std::string& tracePath, const std::vector<SaveFileSigna
       out << kBinary << "\n+{" << signal.name << "} " << displayName(signal) << '\n';
   for (const SaveFileSignal& signal : signals) {
     if (signal.scope.find('.') == std::string::npos) continue;
-    byModule[pipelineKey(moduleOf(signal.scope), firstModule)].push_back(&signal);
+    byModule[pipelineKey(signal.scope, firstModule)].push_back(&signal);
     if (!signal.valueNames.empty() && !isFst(tracePath) && !translateFilters.count(signal.name))
       translateFilters[signal.name] = writeTranslateFilter(tracePath, signal);
   }

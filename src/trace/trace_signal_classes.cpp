@@ -7,14 +7,24 @@
 namespace rtu {
 
 const std::vector<std::string>& traceSignalClasses() {
-  static const std::vector<std::string> classes{"handshakes", "ids", "states", "stack", "caches"};
+  static const std::vector<std::string> classes{"handshakes", "ids",    "states",
+                                                "stack",      "caches", "fifos"};
   return classes;
 }
 
 std::string traceSignalClass(const std::string& name) {
   static const std::map<std::string, std::string> byName{
-      {"valid", "handshakes"},  {"ready", "handshakes"}, {"ray", "ids"},      {"state", "states"},
-      {"stack_depth", "stack"}, {"hits", "caches"},      {"misses", "caches"}};
+      {"valid", "handshakes"},
+      {"ready", "handshakes"},
+      {"ray", "ids"},
+      {"state", "states"},
+      {"stack_depth", "stack"},
+      {"hits", "caches"},
+      {"misses", "caches"},
+      // the ray pipe's (sim/raypipe/pipe_trace.h)
+      {"stall", "handshakes"},
+      {"pixel", "ids"},
+      {"count", "fifos"}};
   const auto found = byName.find(name);
   return found == byName.end() ? "" : found->second;
 }

@@ -31,6 +31,10 @@ struct RayToken {
   float t = 0, u = 0, v = 0;               // the list unit's answer
 };
 
+// What a traced FIFO (pipe_trace.h) shows at its head: the ray id, or before the shader gives one
+// (the PRG's FIFO) the pixel's place in the issue order.
+inline uint64_t traceHead(const RayToken& t, bool pixels) { return pixels ? t.index : t.ray; }
+
 struct StackRow {
   uint32_t node = 0;
   float tMax = 0;

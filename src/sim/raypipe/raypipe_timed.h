@@ -15,6 +15,7 @@
 #include "kinds/kd/kd_image.h"
 #include "raypipe/raypipe_config.h"
 #include "raypipe/raypipe_run.h"
+#include "trace/cycle_trace.h"
 
 namespace rtu {
 
@@ -25,9 +26,12 @@ void checkRaypipeTimedTakes(const RaypipeConfig& config);
 // Runs one frame. Throws std::invalid_argument for a configuration the model does not take (more
 // than one traversal unit, the set-associative caches, a negative VGA phase), logic_error when the
 // pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, no progress for a
-// million cycles).
+// million cycles). With `trace`, the run's trace goes to it and is finished (pipe_trace.h: every
+// unit's valid, stall and ray id, every FIFO's count and head; the save file's marker at the
+// first pixel's exit).
 RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
                                 const std::vector<RaypipeCycleRay>& rays,
-                                const RaypipeCycleOptions& options = {});
+                                const RaypipeCycleOptions& options = {},
+                                CycleTrace* trace = nullptr);
 
 }  // namespace rtu

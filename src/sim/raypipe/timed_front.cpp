@@ -44,11 +44,14 @@ void TimedPipe::shaderIssueAndPrg() {
   const auto& lat = config_.latency;
   // SINT stalled in every cycle since the last call from the one the PRG FIFO's head was shown
   if (c_.prgFifo.any())
-    stall_[static_cast<size_t>(Unit::Sint)] +=
-        std::max<int64_t>(0, now_ - std::max(lastPrgCall_ + 1, c_.prgFifo.headShownFrom()));
+    stalls(Unit::Sint, std::max(lastPrgCall_ + 1, c_.prgFifo.headShownFrom()), now_);
   if (prgBlocked_) {
     const int64_t interval = lat.prgInterval;  // the v0 cycles after the last call, before now
-    stall_[static_cast<size_t>(Unit::Prg)] += (now_ - 1) / interval - lastPrgCall_ / interval;
+    if (trace_)
+      for (int64_t v0 = (lastPrgCall_ / interval + 1) * interval; v0 < now_; v0 += interval)
+        stalls(Unit::Prg, v0, v0 + 1);
+    else
+      stall_[static_cast<size_t>(Unit::Prg)] += (now_ - 1) / interval - lastPrgCall_ / interval;
   }
   lastPrgCall_ = now_;
   const bool idShown = c_.idFifo.shown(now_);

@@ -14,7 +14,8 @@ namespace rtu {
 namespace raypipe_timed {
 
 TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
-                     const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options)
+                     const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options,
+                     CycleTrace* trace)
     : config_(config),
       recordTransfers_(options.recordTransfers),
       memory_(image.memory()),
@@ -30,6 +31,7 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
       busy_(static_cast<size_t>(Unit::kCount), 0),
       stall_(static_cast<size_t>(Unit::kCount), 0) {
   for (size_t i = 0; i < rays.size(); ++i) results_[i].pixelId = rays[i].pixelId;
+  if (trace) traceTo(*trace);
   vgaReadWindow_ = options.writer.vgaReadWindow;
   vga_ = VgaWindow(options.writer.vgaPhase);
   // The shader's reset fill (is_init): ray id i written i cycles after reset, results blocked for
@@ -40,6 +42,13 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
   initEnd_ = reset + 512;
   wireCalendar();
   calendar_.book(kPrg, 0, -1);
+}
+
+void TimedPipe::traceTo(CycleTrace& trace) {
+  trace_ = std::make_unique<PipeTrace>(trace, config_, rays_.size());
+  for (Fifo* f : c_.fifos()) f->traceTo(&trace_->fifo(f->name(), f->depth(), f == &c_.prgFifo));
+  c_.idFifo.traceTo(&trace_->fifo(c_.idFifo.name(), c_.idFifo.depth()));
+  trace.checkScopesMatched();  // a scope that matches none of the pipe's, before any cycle
 }
 
 // Which groups act on which channel: the one that reads it and the one whose code pops it when
@@ -107,6 +116,13 @@ void TimedPipe::settle(uint32_t group) {
 void TimedPipe::busy(Unit u, const RayToken& t, bool hasRay) {
   ++busy_[static_cast<size_t>(u)];
   lastProgress_ = now_;
+  if (recordTransfers_ || trace_) recordTransfer(u, t, hasRay);
+}
+
+// Out of busy()'s path (cold, not inlined): a run that neither traces nor records transfers pays
+// one test per transfer.
+void TimedPipe::recordTransfer(Unit u, const RayToken& t, bool hasRay) {
+  if (trace_) trace_->took(u, now_, hasRay ? t.ray : t.index);
   if (recordTransfers_)
     transfers_.push_back(
         RaypipeTransfer{now_, unitName(u), hasRay ? t.ray : RaypipeTransfer::kNoRayId, t.index});
@@ -135,9 +151,11 @@ void TimedPipe::step() {
 
 RaypipeCycleRun TimedPipe::run() {
   const auto start = std::chrono::steady_clock::now();
+  const int64_t flushCycles = static_cast<int64_t>(TraceOptions{}.flushCycles);
   while (written_ < rays_.size()) {
     booked_ = calendar_.take(now_);
     if (booked_) step();
+    if (trace_ && now_ % flushCycles == 0) trace_->flush(safeCycle());
     if (now_ - lastProgress_ > 1000000)
       throw std::logic_error("raypipe timed model: no progress for a million cycles at cycle " +
                              std::to_string(now_));
@@ -145,6 +163,11 @@ RaypipeCycleRun TimedPipe::run() {
   }
   RaypipeCycleRun run;
   run.setResults(results_);
+  if (trace_) {
+    int64_t firstExit = run.lastExitCycle;
+    for (const RaypipeCycleResult& r : results_) firstExit = std::min(firstExit, r.exitCycle);
+    trace_->finish(std::max<int64_t>(firstExit, 0));
+  }
   run.lastWriteCycle = lastWrite_;
   run.writerWaits = writerWaits_;
   run.transfers = std::move(transfers_);
@@ -170,13 +193,13 @@ void checkRaypipeTimedTakes(const RaypipeConfig& config) {
 
 RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
                                 const std::vector<RaypipeCycleRay>& rays,
-                                const RaypipeCycleOptions& options) {
+                                const RaypipeCycleOptions& options, CycleTrace* trace) {
   checkRaypipeTimedTakes(config);
   if (options.writer.vgaPhase < 0)
     throw std::invalid_argument("the VGA phase must not be negative");
   if (options.cyclesSinceReset < 0)
     throw std::invalid_argument("the cycles since reset must not be negative");
-  raypipe_timed::TimedPipe pipe(config, image, rays, options);
+  raypipe_timed::TimedPipe pipe(config, image, rays, options, trace);
   return pipe.run();
 }
 

@@ -10,12 +10,15 @@
 // stalls are low (each is some valid signal of its channels ANDed with more, and a valid one books
 // the group).
 
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "kinds/kd/kd_image.h"
 #include "raypipe/raypipe_config.h"
 #include "raypipe/raypipe_run.h"
+#include "sim/raypipe/pipe_trace.h"
 #include "sim/raypipe/timed_units.h"
 #include "sim/raypipe/vga_window.h"
 #include "sim/raypipe/wake_calendar.h"
@@ -25,8 +28,10 @@ namespace raypipe_timed {
 
 class TimedPipe {
  public:
+  // With `trace`, every unit's transfers and stalls and every FIFO's count go to it (pipe_trace.h).
   TimedPipe(const RaypipeConfig& config, const KdImage& image,
-            const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options);
+            const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options,
+            CycleTrace* trace = nullptr);
   RaypipeCycleRun run();
 
  private:
@@ -35,7 +40,27 @@ class TimedPipe {
     return stack_[ray * static_cast<uint32_t>(config_.shortStackDepth) + row];
   }
   void busy(Unit u, const RayToken& t, bool hasRay = true);
-  void stall(Unit u) { ++stall_[static_cast<size_t>(u)]; }
+  [[gnu::noinline, gnu::cold]] void recordTransfer(Unit u, const RayToken& t, bool hasRay);
+  void stall(Unit u) { stalls(u, now_, now_ + 1); }
+  // `u` stalled in every cycle of [from, to) (the PRG's group adds up some it was not called in).
+  void stalls(Unit u, int64_t from, int64_t to) {
+    if (to <= from) return;
+    stall_[static_cast<size_t>(u)] += to - from;
+    if (trace_) trace_->stalled(u, from, to);
+  }
+  // `inputs` of a unit with several (the shortstack's read FIFOs) stalled in this cycle: each
+  // counts, the trace shows the cycle's stall once.
+  void stalledInputs(Unit u, int inputs) {
+    if (inputs == 0) return;
+    stall_[static_cast<size_t>(u)] += inputs;
+    if (trace_) trace_->stalled(u, now_, now_ + 1);
+  }
+  void traceTo(CycleTrace& trace);
+  // The first cycle a record can still be made for: the one after the PRG group's last call while
+  // its next call can add up stalls since then (a ray in the PRG's FIFO, or the PRG blocked).
+  int64_t safeCycle() const {
+    return c_.prgFifo.any() || prgBlocked_ ? std::min(now_, lastPrgCall_ + 1) : now_;
+  }
 
   // The unit groups, as calendar bits, in the order a cycle visits them.
   enum Group : uint32_t {
@@ -84,6 +109,7 @@ class TimedPipe {
   std::vector<RaypipeCycleResult> results_;
   std::vector<RaypipeTransfer> transfers_;
   std::vector<int64_t> busy_, stall_;
+  std::unique_ptr<PipeTrace> trace_;
   int64_t now_ = 0, lastProgress_ = 0, lastWrite_ = -1;
   bool vgaReadWindow_ = false;  // the writer waits out the VGA reader (vga_window.h)
   VgaWindow vga_{0};

@@ -15,10 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "sim/raypipe/pipe_trace.h"
 #include "sim/raypipe/wake_calendar.h"
 
 namespace rtu {
 namespace raypipe_timed {
+
+// What a traced FIFO shows at its head (pipe_trace.h): the shader's free ray ids themselves.
+inline uint64_t traceHead(uint32_t id, bool) { return id; }
 
 template <class T>
 class TimedQueue {
@@ -37,6 +41,8 @@ class TimedQueue {
     calendar_ = &calendar;
     groups_ = groups;
   }
+  // Reports every write and read to `trace` from now on (none: untraced, the default).
+  void traceTo(FifoTrace* trace) { trace_ = trace; }
   // The head is shown in `now` and not yet read in it.
   bool shown(int64_t now) {
     const bool shown = count_ > 0 && lastPop_ != now && headShownFrom() <= now;
@@ -57,6 +63,7 @@ class TimedQueue {
     --count_;
     lastPop_ = now;
     if (count_ > 0) book(std::max(now + 1, headShownFrom()), now);
+    if (trace_) traced(now);
     return item;
   }
   void push(int64_t now, const T& item) { write(now, item, now); }
@@ -81,6 +88,12 @@ class TimedQueue {
     ++count_;
     lastPush_ = now;
     if (written == now) book(now + delay_, now);
+    if (trace_) traced(now);
+  }
+  // The count and head from the cycle after a write or read in `now`; out of the untraced path
+  // (cold, not inlined: a test and a branch are all an untraced write or read pays).
+  [[gnu::noinline, gnu::cold]] void traced(int64_t now) {
+    trace_->changed(now + 1, count_, count_ > 0 ? traceHead(front(), trace_->pixels()) : 0);
   }
   void book(int64_t cycle, int64_t now) {
     if (calendar_) calendar_->book(groups_, cycle, now);
@@ -98,6 +111,7 @@ class TimedQueue {
   int peak_ = 0;
   WakeCalendar* calendar_ = nullptr;
   uint32_t groups_ = 0;
+  FifoTrace* trace_ = nullptr;
 };
 
 }  // namespace raypipe_timed

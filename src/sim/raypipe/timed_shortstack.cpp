@@ -32,9 +32,11 @@ int roundRobin(std::array<Fifo, 3>& fifos, int& pointer, int64_t now, bool canRe
   return -1;
 }
 
-void countWaiting(std::array<Fifo, 3>& fifos, int64_t now, int64_t& stalls) {
+int countWaiting(std::array<Fifo, 3>& fifos, int64_t now) {
+  int waiting = 0;
   for (auto& f : fifos)
-    if (f.shown(now)) ++stalls;
+    if (f.shown(now)) ++waiting;
+  return waiting;
 }
 
 }  // namespace
@@ -105,7 +107,7 @@ void TimedPipe::stackPath() {
       c_.stackPipe.accept(now_, t);
       busy(Unit::StackRead, t);
     } else {
-      countWaiting(c_.stackRead, now_, stall_[static_cast<size_t>(Unit::StackRead)]);
+      stalledInputs(Unit::StackRead, countWaiting(c_.stackRead, now_));
     }
   }
   // one traversal unit: the write FIFO writes its row whenever it holds one
@@ -146,7 +148,7 @@ void TimedPipe::restartPath() {
       c_.restPipe.accept(now_, t);
       busy(Unit::RestartRead, t);
     } else {
-      countWaiting(c_.restRead, now_, stall_[static_cast<size_t>(Unit::RestartRead)]);
+      stalledInputs(Unit::RestartRead, countWaiting(c_.restRead, now_));
     }
   }
   restartWrites(reading);

@@ -54,18 +54,21 @@ Channels::Channels(const RaypipeConfig& c)
       shaderData("shader_data", 3, kRegister),
       pixelBuffer("pixel_buffer", c.fifo.pixelBuffer, kRegister) {}
 
-std::vector<RaypipeFifoPeak> Channels::peaks() const {
-  std::vector<const Fifo*> all = {
+std::vector<Fifo*> Channels::fifos() {
+  std::vector<Fifo*> all = {
       &prgFifo,     &sintTarb,    &sintSs,          &sintShader, &tarb.out(),
       &tcache.fifo, &rs0.fifo,    &leafFifo,        &travFifo,   &stackWrite,
       &stackFifo,   &notMissFifo, &missFifo,        &larb.out(), &lcache.fifo,
       &icache.fifo, &rs1.fifo,    &intList,         &intLarb,    &listLast,
       &listHitFifo, &rs2.fifo,    &shaderArb.out(), &shaderData, &pixelBuffer};
-  for (const auto& f : stackRead) all.push_back(&f);
-  for (const auto& f : restRead) all.push_back(&f);
-  for (const auto& f : restWrite) all.push_back(&f);
+  for (auto* group : {&stackRead, &restRead, &restWrite})
+    for (Fifo& f : *group) all.push_back(&f);
+  return all;
+}
+
+std::vector<RaypipeFifoPeak> Channels::peaks() {
   std::vector<RaypipeFifoPeak> peaks;
-  for (const Fifo* f : all) peaks.push_back(RaypipeFifoPeak{f->name(), f->depth(), f->peak()});
+  for (const Fifo* f : fifos()) peaks.push_back(RaypipeFifoPeak{f->name(), f->depth(), f->peak()});
   peaks.insert(peaks.begin() + 1, RaypipeFifoPeak{idFifo.name(), idFifo.depth(), idFifo.peak()});
   return peaks;
 }

@@ -45,7 +45,9 @@ using Register = StagedRegister<RayToken>;
 
 struct Channels {
   explicit Channels(const RaypipeConfig& c);
-  std::vector<RaypipeFifoPeak> peaks() const;
+  // Every FIFO of ray tokens, in the pipe's order (the shader's ray-id FIFO is idFifo).
+  std::vector<Fifo*> fifos();
+  std::vector<RaypipeFifoPeak> peaks();
 
   LatencyPipe<RayToken> prgPipe;
   Fifo prgFifo;
