@@ -3,9 +3,10 @@
 # passes"): a camera frame's primary rays and the shadow, AO (4 samples) and reflected rays spawned
 # from the octree's golden hits, replayed on the SVO core and on the BVH, BIH and k-d cores built
 # over the same scene's voxel faces (the same surfaces; the rays start 2^-12 off them), each
-# alone on the cycle-accurate model with the preset's memory. Prints one markdown row per kind
-# and workload: rays, hit rate, cycles per ray, cost per ray, triangle tests per ray, DRAM bytes
-# per ray and utilisation.
+# alone on the cycle-accurate model with the preset's memory; and the shadow and AO rays again as
+# rays taking the nearest hit ahead (span bits 01 for 10: what any-hit saves, though the nearest
+# hit may lie beyond the segment). Prints one markdown row per kind and workload: rays, hit rate,
+# cycles per ray, cost per ray, triangle tests per ray, DRAM bytes per ray and utilisation.
 # Usage: bench/secondary_rays_triangles.sh [rtusim] [scene] [depth] [width] [height] [preset]
 set -euo pipefail
 
@@ -57,12 +58,28 @@ PY
 
 echo "| kind | workload | rays | hit rate | cycles/ray | cost/ray | tests/ray | DRAM B/ray | DRAM util |"
 echo "|---|---|---|---|---|---|---|---|---|"
+# Any-hit records (bit 31 of word 0) as rays taking the nearest hit ahead (bit 30).
+as_nearest() {  # as_nearest in.bin out.bin
+  python3 - "$@" <<'PY'
+import struct, sys
+raw = bytearray(open(sys.argv[1], "rb").read())
+for i in range(0, len(raw), 32):
+    (word,) = struct.unpack_from("<I", raw, i)
+    struct.pack_into("<I", raw, i, word & ~(1 << 31) | (1 << 30) if word >> 31 else word)
+open(sys.argv[2], "wb").write(raw)
+PY
+}
+
 frame=(--width "$width" --height "$height")
-for type in primary shadow ao reflection; do
+for type in primary shadow ao reflection shadow-nearest ao-nearest; do
   extra=()
-  [[ $type == ao ]] && extra=(--samples 4)
-  "$rtusim" jobs --svo "$work/m.svo" --model-address "$header" --ray-type "$type" \
-    --rays "$work/$type.bin" "${frame[@]}" "${extra[@]}" >/dev/null
+  [[ $type == ao* ]] && extra=(--samples 4)
+  if [[ $type == *-nearest ]]; then
+    as_nearest "$work/${type%-nearest}.bin" "$work/$type.bin"
+  else
+    "$rtusim" jobs --svo "$work/m.svo" --model-address "$header" --ray-type "$type" \
+      --rays "$work/$type.bin" "${frame[@]}" "${extra[@]}" >/dev/null
+  fi
   to_image "$work/$type.bin" "$work/$type.image.bin"
   to_image "$work/$type.bin" "$work/$type.grid.bin" bih
   for kind in svo bvh bih kd; do
@@ -72,7 +89,7 @@ for type in primary shadow ao reflection; do
       *) input=(--core "$kind" --accel-file "$work/m.$kind" --rays "$work/$type.image.bin") ;;
     esac
     "$rtusim" replay --preset "$preset" "${input[@]}" --out "$work/out.csv" \
-      --stats "$work/s.json" >/dev/null
+      --stats "$work/s.json" >/dev/null 2>&1
     python3 - "$work/s.json" "$work/out.csv" "$kind" "$type" <<'PY'
 import csv, json, sys
 st = json.load(open(sys.argv[1]))["statistics"]

@@ -16,6 +16,7 @@
 #include "run/analytic_run.h"
 #include "run/rtu_simulation.h"
 #include "run/sampled_run.h"
+#include "run/statistics_output.h"
 #include "run/statistics_window.h"
 
 namespace rtu {
@@ -116,13 +117,7 @@ void validatePasses(const RunConfig& settings) {
     throw std::invalid_argument(passes + "--sample samples primary frames only");
 }
 
-nlohmann::ordered_json passJson(const RtuStatistics& s) {
-  return {{"rays", s.rays},
-          {"total_cycles", s.totalCycles},
-          {"cycles_per_ray", s.cyclesPerRay()},
-          {"dram_utilisation", s.utilisation().dramBandwidth},
-          {"limit", s.limit()}};
-}
+nlohmann::ordered_json passJson(const RtuStatistics& s) { return statisticsJson(FramePass{s}); }
 
 // The row of a frame with secondary passes: its statistics are the frame's, the primary run's and
 // every pass's summed (rays, cycles and counters: fps is the whole frame's rate), and

@@ -24,6 +24,25 @@ PassRun runPass(const WordMemory& memory, const RunConfig& settings, PassRun pas
 
 }  // namespace
 
+const StatisticGroup<FramePass>& FramePass::declaration() {
+  using P = FramePass;
+  static const StatisticGroup<FramePass> group =
+      StatisticGroup<FramePass>("a pass of a frame")
+          .derived(Statistic("rays", "rays", "the pass's rays"),
+                   [](const P& p) { return p.statistics.rays; })
+          .derived(Statistic("total_cycles", "cycles", "the pass's run, its cycles"),
+                   [](const P& p) { return p.statistics.totalCycles; })
+          .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"),
+                   [](const P& p) { return p.statistics.cyclesPerRay(); })
+          .derived(Statistic("dram_utilisation", "",
+                             "share of the pass's cycles the DRAM's data bus transfers"),
+                   [](const P& p) { return p.statistics.utilisation().dramBandwidth; })
+          .derived(Statistic("limit", "",
+                             "the pass's limiting resource (docs/exploration.md, §2), or none"),
+                   [](const P& p) { return p.statistics.limit(); });
+  return group;
+}
+
 RayWorkloadSpec passSpec(const RunConfig& settings) {
   RayWorkloadSpec spec = settings.workload;
   const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();

@@ -25,6 +25,13 @@ struct PassRun {
   std::optional<RtuRun> run;             // on a timed model: its statistics
 };
 
+// One pass's figures in a row of a frame with passes (fps, sweep, compare: the row's
+// statistics.passes.<pass>, and the CSV's <pass>_rays and <pass>_cycles_per_ray).
+struct FramePass {
+  RtuStatistics statistics;  // the pass's run
+  static const StatisticGroup<FramePass>& declaration();
+};
+
 // The secondary rays' settings of a run (the workload.* keys), with the self-intersection offset
 // 16 steps of the SVO format (its golden t is within a few steps of the exact one). Throws
 // std::invalid_argument naming a setting that is not valid.
