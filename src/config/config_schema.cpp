@@ -608,11 +608,11 @@ void addWorkloadSettings(std::vector<Setting>& s) {
     c.workload.secondary.lights = parseLights(trim(value), key);
   };
   s.push_back(lights);
-  s.push_back(integer("workload.samples", "--samples", "rays", 1, 1024, workload,
-                      "ao and diffuse: rays per primary hit",
+  s.push_back(integer("workload.samples", "--samples", "", 1, 1024, workload,
+                      "ao and diffuse rays per primary hit",
                       [](C& c) -> int& { return c.workload.secondary.samples; }));
   s.push_back(real("workload.ao_distance", "--ao-distance", "world units", 1e-9, 1e9, workload,
-                   "ao: the occlusion rays' length",
+                   "the ao rays' length",
                    [](C& c) -> double& { return c.workload.secondary.aoDistance; }));
   s.push_back(integer("workload.random_rays", "--random-rays", "rays", 0, kMaxRayId + 1.0, workload,
                       "random: how many rays (0: one per pixel)",
