@@ -48,7 +48,7 @@ size_t anyHitCount(const std::vector<CoreKindResult>& results) {
 
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("Span rays: every model's results equal golden's\\, every cycle the RTL's",
+TEMPLATE_LIST_TEST_CASE("Span rays: every model's results equal golden's and every cycle the RTL's",
                         "[spans]", TestedKinds) {
   using Fixture = KindFixture<TestType>;
   for (const std::string& scene : Fixture::scenes()) {
