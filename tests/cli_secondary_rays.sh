@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 32 end to end: jobs --ray-type writes secondary rays from a frame's hits, replay traces
 # them on the cycle-accurate model as the golden model does (any-hit results keep bit 31 of the
-# job word), render --passes runs them after the frame, and bad settings are named.
+# job word), render --passes runs them after the frame, fps and sweep rows hold them (workload.*
+# keys), and bad settings are named.
 # Usage: cli_secondary_rays.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -70,13 +71,39 @@ assert rays == sum(p["rays"] for p in passes)
 assert cycles == sum(p["total_cycles"] for p in passes)
 PY
 
-# The key workload.rays in a configuration file; fps does not use it and says so.
-printf '[workload]\nrays = "primary,shadow"\n' >w.toml
+# The key workload.rays in a configuration file, with the other workload keys.
+printf '[workload]\nrays = "primary,shadow"\nlights = "2.25,4,-2;-3,2.5,1"\n' >w.toml
 "$rtusim" render --model golden --config w.toml "${frame[@]}" | grep -q "^pass        shadow" ||
   fail "workload.rays from a file"
-"$rtusim" fps --config w.toml --resolutions 24x16 2>err.txt >/dev/null
-grep -q "workload.rays (configuration file) has no effect: rtusim fps does not use it" err.txt ||
-  fail "fps should name workload.rays as unused"
+
+# fps and sweep rows of a frame with passes: the row's rays and cycles are the passes' sums, and
+# each pass has its columns; the lights and samples keys change the shadow and ao passes.
+"$rtusim" fps --config w.toml --scene menger --depth 5 --resolutions 24x16 --csv f.csv -j 1 \
+  >/dev/null 2>&1
+"$rtusim" sweep --scene menger --depth 5 "${frame[@]}" --grid workload.rays=primary,primary+ao \
+  --grid workload.samples=1,2 --out s.csv -j 1 >/dev/null 2>&1
+python3 - f.csv s.csv f.jsonl <<'PY' || fail "fps and sweep rows of passes"
+import csv, json, sys
+for line in open(sys.argv[3]):
+    s = json.loads(line)["statistics"]
+    assert s["total_cycles"] == sum(p["total_cycles"] for p in s["passes"].values()), s
+for fps in csv.DictReader(open(sys.argv[1])):  # a row per core count
+    assert int(fps["rays"]) == int(fps["primary_rays"]) + int(fps["shadow_rays"]) > 384, fps
+    assert int(fps["primary_rays"]) == 384 and fps["ao_rays"] == "", fps
+    assert float(fps["shadow_cycles_per_ray"]) > 0
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert len(rows) == 4, len(rows)
+ao = {int(r["workload.samples"]): int(r["ao_rays"]) for r in rows if r["workload.rays"] != "primary"}
+assert ao[2] == 2 * ao[1] > 0, ao
+for r in rows:
+    if r["workload.rays"] == "primary":
+        assert int(r["rays"]) == 384 and r["ao_rays"] == "", r
+PY
+expect_error "secondary passes need the svo core" "$rtusim" fps --core bvh --scene menger \
+  --depth 5 --resolutions 24x16 --passes primary,shadow
+"$rtusim" config --list | grep -q "^workload.ao_distance" || fail "config --list: workload keys"
+expect_error "workload.samples" "$rtusim" render --scene menger --depth 5 "${frame[@]}" \
+  --passes primary,ao --samples 0 --model golden
 
 expect_error "--ray-type glossy" "$rtusim" jobs --svo m.svo --model-address "$header" \
   --ray-type glossy --rays x.bin

@@ -11,6 +11,7 @@
 
 #include "explore/animation_run.h"
 #include "explore/exploration_run.h"
+#include "explore/ray_passes.h"
 #include "run/rtu_statistics.h"
 #include "run/sampled_run.h"
 #include "run/statistics_output.h"
@@ -106,14 +107,18 @@ TEST_CASE("Every key of the sample, a frame and the CSV columns is declared", "[
   CHECK(std::find(header.begin(), header.end(), "clock_mhz") == header.end());
   CHECK(statisticsFields(FrameStatistics{}, "%g").size() == header.size());
 
-  // fps and sweep columns name declared statistics (an interval's end by its index).
+  // fps and sweep columns name declared statistics (an interval's end by its index; a pass's
+  // figure as passes/<pass>/<figure>).
   const std::set<std::string> run = declaredKeys(RtuStatistics::declaration().statistics());
+  const std::set<std::string> pass = declaredKeys(FramePass::declaration().statistics());
   for (const auto& [column, key] : statisticsColumnKeys()) {
     INFO(column);
     const std::string statistic =
         key.back() == '0' || key.back() == '1' ? key.substr(0, key.rfind('/')) : key;
     const bool inSample = statistic.rfind("sample/", 0) == 0 && sample.count(statistic.substr(7));
-    CHECK((run.count(statistic) || inSample));
+    const bool inPass = statistic.rfind("passes/", 0) == 0 &&
+                        pass.count(statistic.substr(statistic.rfind('/') + 1));
+    CHECK((run.count(statistic) || inSample || inPass));
   }
 }
 
@@ -395,18 +400,20 @@ TEST_CASE("A run's statistics hold the counters of its cores' kind and no other 
                                  "below_resolution"});
 
   const Json bvh = twoCoresOf("bvh").toJson();
-  CHECK(topKeys(bvh, "bvh_") ==
-        std::vector<std::string>{"bvh_nodes_visited", "bvh_box_tests", "bvh_triangle_tests",
-                                 "bvh_stack_overflows", "bvh_bytes_fetched"});
+  CHECK(topKeys(bvh, "bvh_") == std::vector<std::string>{"bvh_nodes_visited", "bvh_box_tests",
+                                                         "bvh_triangle_tests",
+                                                         "bvh_stack_overflows", "bvh_bytes_fetched",
+                                                         "bvh_any_hit_rays", "bvh_any_hit_hits"});
   CHECK(bvh["bvh_nodes_visited"] == 75);
   CHECK_FALSE(bvh.contains("stack_overflows"));
   CHECK_FALSE(bvh.contains("t_overflows"));
   CHECK(topKeys(bvh, "bih_").empty());
 
   const Json bih = twoCoresOf("bih").toJson();
-  CHECK(topKeys(bih, "bih_") ==
-        std::vector<std::string>{"bih_nodes_visited", "bih_triangle_tests", "bih_stack_overflows",
-                                 "bih_divider_errors", "bih_bytes_fetched"});
+  CHECK(topKeys(bih, "bih_") == std::vector<std::string>{"bih_nodes_visited", "bih_triangle_tests",
+                                                         "bih_stack_overflows",
+                                                         "bih_divider_errors", "bih_bytes_fetched",
+                                                         "bih_any_hit_rays", "bih_any_hit_hits"});
   CHECK(bih["bih_triangle_tests"] == 7);
   CHECK(topKeys(bih, "bvh_").empty());
   CHECK_FALSE(bih.contains("stack_overflows"));

@@ -228,6 +228,9 @@ CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice&
   // scene file 2^16): the wide ones, unless given.
   if (!givenByCommand(configuration, "accel.index"))
     configuration.set("accel.index", "wide", ConfigSource::Preset);
+  // Secondary passes (workload.rays) spawn on the SVO core only: the other rows trace the frame.
+  if (choice.name != SvoKind::kName)
+    configuration.set("workload.rays", "primary", ConfigSource::Preset);
   configuration.values().camera = camera;
   if (!images.empty()) target.differenceImage = images + "/" + choice.name + ".png";
   return target;
@@ -395,9 +398,9 @@ void addCompareCommand(CLI::App& app) {
                  "BVH, BIH and k-d cores, seed 001's ray pipe): frame rate, memory traffic, "
                  "work per ray and image agreement with the float64 reference, side by side");
   // compare sets the core and the architecture per row itself.
-  auto request =
-      addConfigOptions(*command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseAccel,
-                       {"--core", "--architecture", "--accel", "--accel-file"});
+  auto request = addConfigOptions(
+      *command, kUseModel | kUseArithmetic | kUseScene | kUseCamera | kUseAccel | kUseWorkload,
+      {"--core", "--architecture", "--accel", "--accel-file"});
   command
       ->add_option("--architectures", options->architectures,
                    "NAME or NAME=PRESET list: " + knownArchitectures() +

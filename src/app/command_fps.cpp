@@ -279,7 +279,7 @@ void addFpsCommand(CLI::App& app) {
   auto request =
       addConfigOptions(*command,
                        kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera |
-                           kUseSampling | kUseAccel | kUseBuffers,
+                           kUseSampling | kUseAccel | kUseBuffers | kUseWorkload,
                        // fps sets the ray pipe's level per resolution.
                        {"--cores", "--width", "--height", "--level", "--accel", "--jobs"});
   CLI::Option* resolutionsOption =

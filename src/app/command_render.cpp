@@ -7,7 +7,6 @@
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
 #include "app/output_paths.h"
-#include "app/ray_workload_options.h"
 #include "app/raypipe_render.h"
 #include "app/run_outputs.h"
 #include "app/schema_flags.h"
@@ -27,7 +26,6 @@ struct RenderOptions {
   RunOutputs outputs;
   std::string image, depthImage, costImage;
   RaypipeRenderOptions raypipe;
-  RayWorkloadOptions workload;
 
   std::vector<NamedPath> imagePaths() const {
     return {{"--image", image}, {"--depth-image", depthImage}, {"--cost-image", costImage}};
@@ -117,9 +115,7 @@ void renderPasses(const FrameScene& scene, const Configuration& configuration,
                   const RenderOptions& options, const std::vector<RayType>& passes,
                   uint64_t primaryCycles, RenderedFrame& frame) {
   const RunConfig& settings = configuration.values();
-  const std::vector<PassRun> runs = runSecondaryPasses(
-      scene, settings, passes,
-      options.workload.resolve(RayType::Primary, settings.rtu.coreConfig<SvoKind>()));
+  const std::vector<PassRun> runs = runSecondaryPasses(scene, settings, passes);
   uint64_t cycles = primaryCycles;
   size_t rays = frame.pixels.size();
   for (const PassRun& pass : runs) {
@@ -185,7 +181,6 @@ void addRenderCommand(CLI::App& app) {
   command->add_option("--cost-image", options->costImage,
                       "cost heat map in the style of thesis figure 8.2");
   addRaypipeRenderOptions(*command, options->raypipe);
-  addRayWorkloadOptions(*command, options->workload, "--ray-seed");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
     const RunConfig& settings = configuration.values();

@@ -187,10 +187,11 @@ void addSweepCommand(CLI::App& app) {
       "sweep", "run a grid and/or list of configurations on the cycle-accurate model in parallel "
                "workers: one row per configuration in CSV and JSON lines, resumable");
   // The accel settings of a triangle core's build (--builder, --drop-bad-triangles), as render's.
-  auto request = addConfigOptions(*command,
-                                  kUseModel | kUseModelChoice | kUseArithmetic | kUseScene |
-                                      kUseCamera | kUseSampling | kUseAccel | kUseBuffers,
-                                  {"--accel", "--jobs"});
+  auto request =
+      addConfigOptions(*command,
+                       kUseModel | kUseModelChoice | kUseArithmetic | kUseScene | kUseCamera |
+                           kUseSampling | kUseAccel | kUseBuffers | kUseWorkload,
+                       {"--accel", "--jobs"});
   command->add_option("--grid", options->grid,
                       "key=v1,v2,...: the sweep is the product of all grids (repeatable)");
   command

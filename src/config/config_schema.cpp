@@ -564,6 +564,69 @@ Setting cameraRegister(std::string key, std::string doc, F field) {
   return s;
 }
 
+// A frame's passes and how its secondary rays are spawned (issue 32, docs/workloads.md).
+std::string orderName(const RayOrder& order) { return toString(order); }
+
+std::string lightsText(const std::vector<glm::dvec3>& lights) {
+  std::string text;
+  for (const glm::dvec3& light : lights)
+    text += (text.empty() ? "" : ";") + formatReal(light.x) + "," + formatReal(light.y) + "," +
+            formatReal(light.z);
+  return text;
+}
+
+std::vector<glm::dvec3> parseLights(const std::string& text, const std::string& key) {
+  std::vector<glm::dvec3> lights;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find(';', start), text.size());
+    lights.push_back(parseVector(text.substr(start, end - start), key));
+    start = end + 1;
+  }
+  return lights;
+}
+
+void addWorkloadSettings(std::vector<Setting>& s) {
+  using C = RunConfig;
+  constexpr unsigned workload = kUseWorkload;
+  Setting passes = text(SettingKind::Text, "workload.rays", "--passes", workload,
+                        "the frame's passes: primary, then any of shadow, ao, reflection, "
+                        "diffuse, random spawned from its hits, each run after the one before "
+                        "with its own statistics (',' or '+' between them); shadow and ao shade "
+                        "render's image (docs/workloads.md)",
+                        [](C& c) -> std::string& { return c.rayPasses; });
+  passes.assign = [key = passes.key](C& c, const std::string& value) {
+    parseRayPasses(trim(value), key);
+    c.rayPasses = trim(value);
+  };
+  s.push_back(passes);
+  Setting lights = declare("workload.lights", "--light", SettingKind::Text, "", workload,
+                           "shadow rays: point lights x,y,z in world space, ';' between lights "
+                           "(the default lies along the shaded image's light, five units out)");
+  lights.get = [](const C& c) { return lightsText(c.workload.secondary.lights); };
+  lights.assign = [key = lights.key](C& c, const std::string& value) {
+    c.workload.secondary.lights = parseLights(trim(value), key);
+  };
+  s.push_back(lights);
+  s.push_back(integer("workload.samples", "--samples", "", 1, 1024, workload,
+                      "ao and diffuse rays per primary hit",
+                      [](C& c) -> int& { return c.workload.secondary.samples; }));
+  s.push_back(real("workload.ao_distance", "--ao-distance", "world units", 1e-9, 1e9, workload,
+                   "the ao rays' length",
+                   [](C& c) -> double& { return c.workload.secondary.aoDistance; }));
+  s.push_back(integer("workload.random_rays", "--random-rays", "rays", 0, kMaxRayId + 1.0, workload,
+                      "random: how many rays (0: one per pixel)",
+                      [](C& c) -> size_t& { return c.workload.randomRays; }));
+  s.push_back(integer("workload.seed", "--ray-seed", "", 0, 9007199254740992.0, workload,
+                      "seed of the sampled directions, random rays and the shuffled order",
+                      [](C& c) -> uint64_t& { return c.workload.secondary.seed; }));
+  s.push_back(choice(
+      "workload.order", "--order", {"pixel", "shuffled", "sorted"}, workload,
+      "secondary rays' order: pixel (as spawned), shuffled (a wavefront "
+      "renderer's), sorted (direction octant, then origin on a Morton curve)",
+      [](C& c) -> RayOrder& { return c.workload.order; }, orderName, parseRayOrder));
+}
+
 // The ray pipe's settings (raypipe/raypipe_config.h, RunConfig::raypipe) and workload (its camera
 // registers and resolution level): with architecture rtu they have no effect. Their keys are the
 // ones RaypipeConfig::validate names.
@@ -813,11 +876,7 @@ std::vector<Setting> makeSchema() {
   s.push_back(text(SettingKind::Path, "rays", "--rays", buffers,
                    "ray buffer (8 u32 per world-space ray record)",
                    [](C& c) -> std::string& { return c.rays; }));
-  s.push_back(text(SettingKind::Text, "workload.rays", "--passes", kUseWorkload,
-                   "the frame's passes: primary, then any of shadow, ao, reflection, diffuse, "
-                   "random spawned from its hits, each run after the one before with its own "
-                   "statistics; shadow and ao shade the image (docs/workloads.md)",
-                   [](C& c) -> std::string& { return c.rayPasses; }));
+  addWorkloadSettings(s);
   s.push_back(integer("width", "--width", "pixels", 1, 1 << 14, camera, "image width",
                       [](C& c) -> int& { return c.camera.width; }));
   s.back().ignoredBecause = ignoredAtRaypipeLevel;

@@ -24,7 +24,8 @@ enum SettingUse : unsigned {
   kUseSampling = 1u << 5,     // sampled simulation of fps and sweep rows
   kUseModelChoice = 1u << 6,  // which model answers: golden, lt or ca
   kUseAccel = 1u << 7,        // the acceleration structure `build` makes and its builder
-  kUseWorkload = 1u << 8,     // a frame's passes beyond its primary rays (render)
+  kUseWorkload = 1u << 8,     // a frame's passes beyond its primary rays (render, fps, sweep,
+                              // compare) and how their rays are spawned
 };
 
 struct Setting {

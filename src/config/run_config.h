@@ -6,6 +6,7 @@
 #include <string>
 
 #include "inputs/camera.h"
+#include "inputs/ray_workload.h"
 #include "kinds/svo/scene_loader.h"
 #include "raypipe/raypipe_camera.h"
 #include "raypipe/raypipe_config.h"
@@ -47,8 +48,11 @@ struct RunConfig {
   Camera camera;
   double epsilon = kDefaultDirectionEpsilon;  // the driver's replacement of zero directions
   std::string jobs, rays;                     // host input buffers of `replay` and `golden`
-  // workload.rays: a frame's passes, "primary,shadow,ao" (render; explore/ray_passes.h)
+  // workload.rays: a frame's passes, "primary,shadow,ao" (render, fps, sweep, compare;
+  // explore/ray_passes.h), and the other workload.* keys: how the secondary passes spawn their
+  // rays (their type is each pass's; the self-intersection offset is the format's, ray_passes.h)
   std::string rayPasses = "primary";
+  RayWorkloadSpec workload;
   bool allowStackOverflow = false;
   SampleSpec sample;  // fps and sweep rows
 };

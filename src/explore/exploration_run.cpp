@@ -9,12 +9,15 @@
 #include "base/binary_file.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
+#include "explore/ray_passes.h"
 #include "explore/raypipe_frame.h"
 #include "explore/raypipe_row.h"
 #include "explore/sweep_workers.h"
 #include "run/analytic_run.h"
 #include "run/rtu_simulation.h"
 #include "run/sampled_run.h"
+#include "run/statistics_output.h"
+#include "run/statistics_window.h"
 
 namespace rtu {
 namespace {
@@ -98,6 +101,54 @@ void SceneCache::load(const std::string& directory) {
   }
 }
 
+namespace {
+
+// A row of secondary passes (workload.rays beyond primary) spawns them from the golden model's
+// hits of the camera's frame on the SVO core and times them on a timed model, every ray.
+void validatePasses(const RunConfig& settings) {
+  if (parseRayPasses(settings.rayPasses, "workload.rays").size() < 2) return;
+  const std::string passes = "workload.rays " + settings.rayPasses + ": ";
+  if (settings.rtu.core != SvoKind::kName || recordedWorkload(settings))
+    throw std::invalid_argument(passes +
+                                "secondary passes need the svo core and the camera's frame");
+  if (settings.model == ModelKind::Golden)
+    throw std::invalid_argument(passes + "a row's passes need a timed model (ca or lt)");
+  if (settings.sample.enabled())
+    throw std::invalid_argument(passes + "--sample samples primary frames only");
+}
+
+nlohmann::ordered_json passJson(const RtuStatistics& s) { return statisticsJson(FramePass{s}); }
+
+// The row of a frame with secondary passes: its statistics are the frame's, the primary run's and
+// every pass's summed (rays, cycles and counters: fps is the whole frame's rate), and
+// statistics.passes holds each pass's own figures.
+nlohmann::ordered_json framePassesRow(const Configuration& configuration, const FrameScene& scene,
+                                      const RtuStatistics& primary) {
+  const RunConfig& settings = configuration.values();
+  const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "workload.rays");
+  RtuStatistics frame = primary;
+  nlohmann::ordered_json each = {{"primary", passJson(primary)}};
+  for (const PassRun& pass : runSecondaryPasses(scene, settings, passes)) {
+    addStatistics(frame, pass.run->statistics);
+    each[toString(pass.type)] = passJson(pass.run->statistics);
+  }
+  nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+  row.update(runJson(frame, configuration));
+  row["statistics"]["passes"] = each;
+  return row;
+}
+
+nlohmann::ordered_json okRow(const Configuration& configuration, const FrameScene& scene,
+                             const RtuStatistics& statistics) {
+  if (parseRayPasses(configuration.values().rayPasses, "workload.rays").size() > 1)
+    return framePassesRow(configuration, scene, statistics);
+  nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
+  row.update(runJson(statistics, configuration));
+  return row;
+}
+
+}  // namespace
+
 void validateRow(const Configuration& configuration) {
   const RunConfig& settings = configuration.values();
   if (settings.architecture == Architecture::Raypipe) return validateRaypipeRow(settings);
@@ -107,6 +158,7 @@ void validateRow(const Configuration& configuration) {
     throw std::invalid_argument(std::string("--sample samples the cycle-accurate model: it does "
                                             "not go with --model ") +
                                 toString(settings.model));
+  validatePasses(settings);
 }
 
 std::vector<size_t> validRows(
@@ -131,12 +183,9 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Fra
   validateRow(configuration);
   const std::vector<HostRecord> records = frameRecords(scene, settings);
   const WordMemory memory = scene.memory();
-  if (settings.model != ModelKind::CycleAccurate) {
-    const RtuRun run = runModel(settings.model, memory, records, settings.rtu);
-    nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
-    row.update(runJson(run.statistics, configuration));
-    return row;
-  }
+  if (settings.model != ModelKind::CycleAccurate)
+    return okRow(configuration, scene,
+                 runModel(settings.model, memory, records, settings.rtu).statistics);
   const bool recurrence = model == RowModel::RecurrenceWhereExact && !whyNotAnalytic(settings.rtu);
   if (!recurrence && settings.sample.enabled()) {
     nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
@@ -147,9 +196,7 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Fra
   }
   const RtuRun run = recurrence ? runAnalytic(memory, records, settings.rtu)
                                 : simulateRtu(memory, records, settings.rtu);
-  nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
-  row.update(runJson(run.statistics, configuration));
-  return row;
+  return okRow(configuration, scene, run.statistics);
 }
 
 nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,
@@ -261,6 +308,16 @@ std::vector<std::pair<std::string, std::string>> generalColumnKeys() {
           {"simulated_fraction", "sample/fraction_simulated"}};
 }
 
+// Each pass's rays and cycles per ray (workload.rays; empty for a pass the row does not run).
+std::vector<std::pair<std::string, std::string>> passColumnKeys() {
+  std::vector<std::pair<std::string, std::string>> columns;
+  for (const char* pass : {"primary", "shadow", "ao", "reflection", "diffuse", "random"})
+    for (const char* figure : {"rays", "cycles_per_ray"})
+      columns.emplace_back(std::string(pass) + "_" + figure,
+                           std::string("passes/") + pass + "/" + figure);
+  return columns;
+}
+
 }  // namespace
 
 std::string csvValue(const Json& value) {
@@ -276,6 +333,7 @@ std::string csvValue(const Json& value) {
 const std::vector<std::pair<std::string, std::string>>& statisticsColumnKeys() {
   static const std::vector<std::pair<std::string, std::string>> columns = [] {
     std::vector<std::pair<std::string, std::string>> all = generalColumnKeys();
+    for (const auto& column : passColumnKeys()) all.push_back(column);
     // Every kind's counters (run totals; zero for a kind the row does not run), as named in the
     // statistics JSON.
     for (const Statistic& counter : CoreKinds::Counters::declaration().statistics())

@@ -1,5 +1,6 @@
 #include "explore/ray_passes.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "kinds/core_result.h"
@@ -7,32 +8,6 @@
 #include "run/model_run.h"
 
 namespace rtu {
-
-std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option) {
-  std::vector<RayType> passes;
-  size_t start = 0;
-  while (start <= text.size()) {
-    const size_t comma = std::min(text.find(',', start), text.size());
-    const std::string name = text.substr(start, comma - start);
-    RayType type;
-    try {
-      type = parseRayType(name);
-    } catch (const std::invalid_argument&) {
-      throw std::invalid_argument(
-          option + " " + text + ": '" + name +
-          "' is not one of primary, shadow, ao, reflection, diffuse, random");
-    }
-    for (RayType seen : passes)
-      if (seen == type)
-        throw std::invalid_argument(option + " " + text + ": " + toString(type) + " twice");
-    passes.push_back(type);
-    start = comma + 1;
-  }
-  if (passes.front() != RayType::Primary)
-    throw std::invalid_argument(option + " " + text +
-                                ": the first pass is primary (the others spawn from its hits)");
-  return passes;
-}
 
 namespace {
 
@@ -49,9 +24,37 @@ PassRun runPass(const WordMemory& memory, const RunConfig& settings, PassRun pas
 
 }  // namespace
 
+const StatisticGroup<FramePass>& FramePass::declaration() {
+  using P = FramePass;
+  static const StatisticGroup<FramePass> group =
+      StatisticGroup<FramePass>("a pass of a frame")
+          .derived(Statistic("rays", "rays", "the pass's rays"),
+                   [](const P& p) { return p.statistics.rays; })
+          .derived(Statistic("total_cycles", "cycles", "the pass's run, its cycles"),
+                   [](const P& p) { return p.statistics.totalCycles; })
+          .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"),
+                   [](const P& p) { return p.statistics.cyclesPerRay(); })
+          .derived(Statistic("dram_utilisation", "",
+                             "share of the pass's cycles the DRAM's data bus transfers"),
+                   [](const P& p) { return p.statistics.utilisation().dramBandwidth; })
+          .derived(Statistic("limit", "",
+                             "the pass's limiting resource (docs/exploration.md, §2), or none"),
+                   [](const P& p) { return p.statistics.limit(); });
+  return group;
+}
+
+RayWorkloadSpec passSpec(const RunConfig& settings) {
+  RayWorkloadSpec spec = settings.workload;
+  const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();
+  golden.validate();
+  spec.secondary.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
+  spec.secondary.validate();
+  return spec;
+}
+
 std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
-                                        const std::vector<RayType>& passes,
-                                        const RayWorkloadSpec& spec) {
+                                        const std::vector<RayType>& passes) {
+  const RayWorkloadSpec spec = passSpec(settings);
   if (scene.core != SvoKind::kName)
     throw std::invalid_argument("secondary passes run on the svo core only, not " + scene.core);
   std::vector<uint32_t> words = scene.words;

@@ -17,10 +17,6 @@
 
 namespace rtu {
 
-// "primary,shadow,ao": the first pass must be primary, then shadow, ao, reflection, diffuse or
-// random, each at most once. Throws std::invalid_argument naming `option`.
-std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option);
-
 struct PassRun {
   RayType type = RayType::Primary;
   uint32_t raysPerHit = 1;               // ids: pixel * raysPerHit + light or sample
@@ -29,11 +25,22 @@ struct PassRun {
   std::optional<RtuRun> run;             // on a timed model: its statistics
 };
 
+// One pass's figures in a row of a frame with passes (fps, sweep, compare: the row's
+// statistics.passes.<pass>, and the CSV's <pass>_rays and <pass>_cycles_per_ray).
+struct FramePass {
+  RtuStatistics statistics;  // the pass's run
+  static const StatisticGroup<FramePass>& declaration();
+};
+
+// The secondary rays' settings of a run (the workload.* keys), with the self-intersection offset
+// 16 steps of the SVO format (its golden t is within a few steps of the exact one). Throws
+// std::invalid_argument naming a setting that is not valid.
+RayWorkloadSpec passSpec(const RunConfig& settings);
+
 // Every pass of `passes` after the first (the caller's primary frame) on `scene` (an SVO scene),
-// on the model `settings` choose, with the rays of `spec` (its type aside).
+// on the model `settings` choose, with the rays of passSpec(settings).
 std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
-                                        const std::vector<RayType>& passes,
-                                        const RayWorkloadSpec& spec);
+                                        const std::vector<RayType>& passes);
 
 // Per pixel of a frame of `pixels`: the share of a pass's rays from that pixel's hit that reached
 // their end without a hit (a light seen, an AO direction open); a shadow ray not spawned (the light

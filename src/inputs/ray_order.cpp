@@ -59,6 +59,14 @@ RayOrder parseRayOrder(const std::string& text) {
   throw std::invalid_argument("--order " + text + ": choose pixel, shuffled or sorted");
 }
 
+const char* toString(RayOrder order) {
+  switch (order) {
+    case RayOrder::Shuffled: return "shuffled";
+    case RayOrder::Sorted: return "sorted";
+    default: return "pixel";
+  }
+}
+
 void orderRays(std::vector<RayRecord>& rays, RayOrder order, uint64_t seed) {
   if (order == RayOrder::Sorted) sortByKey(rays);
   if (order != RayOrder::Shuffled) return;

@@ -17,6 +17,7 @@ enum class RayOrder { Pixel, Shuffled, Sorted };
 
 // "pixel", "shuffled" or "sorted"; throws std::invalid_argument naming the choices.
 RayOrder parseRayOrder(const std::string& text);
+const char* toString(RayOrder order);
 
 // Reorders `rays` in place; Shuffled is a Fisher-Yates shuffle drawn from `seed`, Sorted is stable
 // on a key of the direction's octant (sign bits x, y, z) and the origin's Morton code at 10 bits

@@ -1,5 +1,9 @@
 #include "inputs/ray_workload.h"
 
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
 #include "kinds/svo/golden_model.h"
 
 namespace rtu {
@@ -31,6 +35,32 @@ RayWorkload unordered(const WordMemory& memory, uint32_t modelAddress, const Cam
 }
 
 }  // namespace
+
+std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option) {
+  std::vector<RayType> passes;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find_first_of(",+", start), text.size());
+    const std::string name = text.substr(start, comma - start);
+    RayType type;
+    try {
+      type = parseRayType(name);
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument(
+          option + " " + text + ": '" + name +
+          "' is not one of primary, shadow, ao, reflection, diffuse, random");
+    }
+    for (RayType seen : passes)
+      if (seen == type)
+        throw std::invalid_argument(option + " " + text + ": " + toString(type) + " twice");
+    passes.push_back(type);
+    start = comma + 1;
+  }
+  if (passes.front() != RayType::Primary)
+    throw std::invalid_argument(option + " " + text +
+                                ": the first pass is primary (the others spawn from its hits)");
+  return passes;
+}
 
 RayWorkload makeRayWorkload(const WordMemory& memory, uint32_t modelAddress, const Camera& camera,
                             const GoldenConfig& golden, const RayWorkloadSpec& spec) {

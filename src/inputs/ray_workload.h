@@ -5,6 +5,7 @@
 // (inputs/ray_order.h).
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "inputs/camera.h"
@@ -14,6 +15,11 @@
 #include "rtu/word_memory.h"
 
 namespace rtu {
+
+// "primary,shadow,ao" (or "primary+shadow+ao", which a sweep's --grid list can hold): the first
+// pass must be primary, then shadow, ao, reflection, diffuse or random, each at most once.
+// Throws std::invalid_argument naming `option`.
+std::vector<RayType> parseRayPasses(const std::string& text, const std::string& option);
 
 struct RayWorkloadSpec {
   SecondarySettings secondary;  // its type is the workload's

@@ -92,6 +92,16 @@ void SecondarySettings::validate() const {
     throw std::invalid_argument("--samples must be 1 to 1024, got " + std::to_string(samples));
   checkPositive(aoDistance, "--ao-distance");
   checkPositive(selfOffset, "the self-intersection offset");
+  if (!(gridOffset >= 0.0 && std::isfinite(gridOffset)))
+    throw std::invalid_argument("the grid offset must be 0 or positive and finite, got " +
+                                std::to_string(gridOffset));
+}
+
+glm::dvec3 spawnOrigin(const SurfaceHit& hit, const SecondarySettings& settings) {
+  glm::dvec3 origin = hit.point + settings.selfOffset * hit.normal;
+  for (int k = 0; k < 3; ++k)
+    origin[k] += hit.normal[k] < 0 ? -settings.gridOffset : settings.gridOffset;
+  return origin;
 }
 
 uint32_t SecondarySettings::raysPerHit() const {
@@ -108,7 +118,7 @@ std::vector<RayRecord> spawnSecondaryRays(const std::vector<SurfaceHit>& hits,
   std::vector<RayRecord> rays;
   rays.reserve(hits.size() * perHit);
   for (const SurfaceHit& hit : hits) {
-    const glm::dvec3 origin = hit.point + settings.selfOffset * hit.normal;
+    const glm::dvec3 origin = spawnOrigin(hit, settings);
     RaySampler sampler(settings.seed, hit.pixel);
     for (uint64_t k = 0; k < perHit; ++k) {
       const uint64_t id = hit.pixel * perHit + k;

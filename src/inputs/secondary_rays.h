@@ -50,14 +50,22 @@ struct SecondarySettings {
   int samples = 1;              // ao and diffuse: rays per hit
   double aoDistance = 0.25;     // ao: the rays' length, world units
   double selfOffset = 0x1p-12;  // off the surface along the normal, world units
+  // Seed 004's offset for a fixed-point grid (S4 §2.1.5): each coordinate moved 2 grid units
+  // toward the side of the surface the ray leaves on, O[k] = h[k] + ((n . w > 0) ^ (n[k] < 0) ?
+  // 2 : -2); every spawned ray leaves on the normal's side, so by 2 grid units along the sign of
+  // n[k]. World units of 2 grid units (2 / SceneGrid::scale()); 0: none.
+  double gridOffset = 0;
   uint64_t seed = 1;
 
   // Throws std::invalid_argument naming the setting: no light, samples outside 1 to 1024, a
-  // distance or offset not positive and finite.
+  // distance or offset not positive and finite, a grid offset negative or not finite.
   void validate() const;
   // The ids a hit's rays take: pixel * raysPerHit() + k, k a light or a sample.
   uint32_t raysPerHit() const;
 };
+
+// Where a spawned ray starts: `hit`'s point moved off its surface by `settings`' offsets.
+glm::dvec3 spawnOrigin(const SurfaceHit& hit, const SecondarySettings& settings);
 
 // The secondary rays of `hits` (type Shadow, Ao, Reflection or Diffuse), hit by hit in the order
 // given, then light by light or sample by sample. A shadow ray runs from the spawn point to the

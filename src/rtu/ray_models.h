@@ -40,11 +40,12 @@ class RayModels {
  public:
   explicit RayModels(const JobManagerTiming& timing) : timing_(timing) {}
 
-  // `set`'s id word and latency for `record`, and its model: the first against a model address
+  // `set`'s id word (the record's id, bit 31 set for an any-hit ray, as the SVO kind's job word:
+  // rtu/ray_span.h) and latency for `record`, and its model: the first against a model address
   // reads it (`readModel(address)`) and waits for both headers.
   template <class Job, class ReadModel>
   const Model& find(const RayRecord& record, JobSetUp<Job>& set, ReadModel&& readModel) {
-    set.idWord = record.id;
+    set.idWord = record.id | (record.span == RaySpan::AnyHit ? kAnyHitBit : 0u);
     set.latency = static_cast<uint64_t>(timing_.stages + timing_.rayStages);
     auto model = models_.find(record.modelAddress);
     if (model == models_.end()) {

@@ -1,5 +1,7 @@
 #include "kinds/bih/bih_counters.h"
 
+#include "rtu/any_hit_statistics.h"
+
 namespace rtu {
 
 void BihCounters::add(const BihRayCounts& counts) {
@@ -9,6 +11,8 @@ void BihCounters::add(const BihRayCounts& counts) {
   bihStackOverflows += counts.dropped > 0;
   bihDividerErrors += counts.errBits;
   bihBytesFetched += uint64_t{counts.accesses} * kAccessBytes;
+  bihAnyHitRays += counts.anyHit;
+  bihAnyHitHits += counts.occluded;
 }
 
 const StatisticGroup<BihCounters>& BihCounters::declaration() {
@@ -37,7 +41,9 @@ const StatisticGroup<BihCounters>& BihCounters::declaration() {
                            "bytes the BIH traversals read, 16 a 4-word access (per ray: divided "
                            "by the jobs)")
                      .runTotal(),
-                 &C::bihBytesFetched);
+                 &C::bihBytesFetched)
+          .count(anyHitRaysStatistic("bih"), &C::bihAnyHitRays)
+          .count(anyHitHitsStatistic("bih"), &C::bihAnyHitHits);
   return group;
 }
 

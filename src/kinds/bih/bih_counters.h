@@ -18,6 +18,8 @@ struct BihCounters {
   uint64_t bihStackOverflows = 0;  // rays that lost a stack entry
   uint64_t bihDividerErrors = 0;   // tests ended by the VHDL divider's error bit
   uint64_t bihBytesFetched = 0;
+  uint64_t bihAnyHitRays = 0;  // rays traced as any-hit (rtu/ray_span.h)
+  uint64_t bihAnyHitHits = 0;  // of which hit (occluded)
 
   // One ray's counts added.
   void add(const BihRayCounts& counts);

@@ -1,5 +1,7 @@
 #include "kinds/bih/bih_job_setup.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +21,18 @@ SceneGrid gridOf(const BihScene& scene, const std::string& where) {
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(where + ": " + e.what());
   }
+}
+
+// An any-hit ray's segment ends at world t = 1: on the grid ray, floor((1 - tClip) / (a grid unit
+// of t)); a segment that ends before the box begins meets nothing.
+void limitToSegment(BihJob& job) {
+  job.anyHit = true;
+  if (job.missesBox) return;
+  const double end = std::floor((1.0 - job.ray.tClip) / job.ray.worldPerGridUnit);
+  if (end < 0)
+    job.missesBox = true;
+  else
+    job.tLimit = static_cast<int64_t>(std::min(end, static_cast<double>(kC99NoHitYet)));
 }
 
 }  // namespace
@@ -51,6 +65,7 @@ JobSetUp<BihJob> BihJobSetup::setUp(const RayRecord& record) {
     set.job.ray = *clipped;
   else
     set.job.missesBox = true;
+  if (record.span == RaySpan::AnyHit) limitToSegment(set.job);
   return set;
 }
 

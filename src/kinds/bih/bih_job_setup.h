@@ -10,6 +10,12 @@
 // m + C bits in the image's formats (header word 14). A ray that misses the box is a job that
 // ends in AABB. The grid ray keeps where the world ray entered the box, so a grid t maps back
 // to the world ray's parameter (GridRay::worldT).
+//
+// The record's span (rtu/ray_span.h): the clip already starts every ray at t >= 0 (ahead), and
+// the C99 kernel takes hits at t > 0 only; an any-hit ray's segment ends at world t = 1, so its
+// job carries that end as a grid t (BihJob::tLimit). A ray leaving a surface is moved off it by
+// its spawner, by seed 004's ±2 grid units (inputs/secondary_rays.h), not here: the job manager
+// knows no normal.
 
 #include <cstdint>
 

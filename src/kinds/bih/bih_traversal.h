@@ -30,6 +30,9 @@
 //   TRI0-2 the triangle's 12-word record, an access each -> TEST
 //   TEST   the kernel; a hit at t <= tBest replaces the best (the later of equal t). The leaf's
 //          next triangle -> LEAF; after its last POP, or OUT when the stack is empty
+// An any-hit ray (BihJob::anyHit, rtu/ray_span.h) starts with tBest at its segment's end, so
+// only a hit within the segment counts, AABB's tmax ends there too, and its first hit ends it:
+// TEST -> OUT, each of its tests waiting for the unit's result.
 // There is no early-out by default (S4 §3.4 L577: "not implemented"); the result does not depend
 // on when hits arrive, since TEST reduces them in the order LEAF emitted them.
 //
@@ -84,6 +87,10 @@ struct BihJob {
   GridRay ray;  // clipped and quantised on the image's grid (SceneGrid::quantise)
   BihScene scene;
   bool missesBox = false;  // the ray misses the scene box: AABB ends it (no grid ray exists)
+  // An any-hit ray (rtu/ray_span.h): ends at its first hit, at grid t <= tLimit (the end of its
+  // segment on the grid ray).
+  bool anyHit = false;
+  int64_t tLimit = kC99NoHitYet;
 };
 
 // What one ray's traversal counted.
@@ -96,11 +103,14 @@ struct BihRayCounts {
   uint32_t tOverflows = 0;  // C99 quotients beyond int (C7)
   uint32_t dropped = 0;     // stack entries lost to a push onto the full 32-entry stack
   uint32_t accesses = 0;    // memory accesses, kWordsPerRead words each
+  uint32_t anyHit = 0;      // 1 for an any-hit ray
+  uint32_t occluded = 0;    // 1 for an any-hit ray that hit
 
   bool operator==(const BihRayCounts& o) const {
     return nodes == o.nodes && pushes == o.pushes && pops == o.pops && leaves == o.leaves &&
            triangleTests == o.triangleTests && errBits == o.errBits && tOverflows == o.tOverflows &&
-           dropped == o.dropped && accesses == o.accesses;
+           dropped == o.dropped && accesses == o.accesses && anyHit == o.anyHit &&
+           occluded == o.occluded;
   }
 };
 
@@ -119,12 +129,14 @@ class BihTraversal {
     ray_ = job.ray;
     scene_ = job.scene;
     missesBox_ = job.missesBox;
+    anyHit_ = job.anyHit;
     lastIssue_ = kNoIssue;
     stack_.clear();
     counts_ = {};
+    counts_.anyHit = anyHit_;
     cost_ = 0;
     hit_ = false;
-    tBest_ = kC99NoHitYet;
+    tBest_ = anyHit_ ? std::min(job.tLimit, kC99NoHitYet) : kC99NoHitYet;
     state_ = BihState::Aabb;
   }
 
@@ -134,7 +146,8 @@ class BihTraversal {
   // initiation interval, the ray's last state until the last issued test's result is out.
   uint32_t stateCycles() const {
     const bool test = state_ == BihState::Test;
-    if (!endsRay()) return test ? cycles_.triangleInterval : 1;
+    // An any-hit ray's test waits for its result too: a hit ends the ray.
+    if (!endsRay() && !(test && anyHit_)) return test ? cycles_.triangleInterval : 1;
     const uint64_t issued = test ? cost_ : lastIssue_;
     // No test issued, or its result out already: the state's own cycle.
     if (issued == kNoIssue || issued + cycles_.triangleLatency <= cost_ + 1) return 1;
@@ -242,6 +255,8 @@ class BihTraversal {
     tmax_ = INT64_MAX;
     for (uint32_t k = 0; k < 3; ++k)
       tmax_ = std::min(tmax_, distance(negative(k) ? 0 : scene_.upper[k], k));
+    // An any-hit ray's segment ends at tBest (a grid unit on, for the distances' floors).
+    if (anyHit_) tmax_ = std::min(tmax_, bihDistance(tBest_ + 1));
     node_ = 0;
     state_ = missesBox_ || tmax_ < 0 ? BihState::Out : BihState::Node;
   }
@@ -326,7 +341,10 @@ class BihTraversal {
       v_ = result.v;
       primitive_ = triangle.source;
     }
-    if (entriesLeft_ > 0)
+    if (anyHit_ && hit_) {  // the first hit within the segment answers an any-hit ray
+      counts_.occluded = 1;
+      state_ = BihState::Out;
+    } else if (entriesLeft_ > 0)
       state_ = BihState::Leaf;
     else
       popOrDone();
@@ -337,6 +355,7 @@ class BihTraversal {
   BihCycles cycles_;
   Intersector intersector_;
   bool missesBox_ = false;
+  bool anyHit_ = false;
   uint64_t lastIssue_ = kNoIssue;  // the cost when the last test issued
   GridRay ray_;
   BihScene scene_;

@@ -2,6 +2,7 @@
 
 #include "kinds/bvh/bvh_intersectors.h"
 #include "kinds/bvh/langr_node.h"
+#include "rtu/any_hit_statistics.h"
 
 namespace rtu {
 
@@ -12,6 +13,8 @@ void BvhCounters::add(const BvhRayCounts& counts) {
   bvhTriangleTests += counts.triangleTests;
   bvhStackOverflows += counts.dropped > 0;
   bvhBytesFetched += uint64_t{counts.accesses} * Traversal::kWordsPerRead * sizeof(uint32_t);
+  bvhAnyHitRays += counts.anyHit;
+  bvhAnyHitHits += counts.occluded;
 }
 
 const StatisticGroup<BvhCounters>& BvhCounters::declaration() {
@@ -33,7 +36,9 @@ const StatisticGroup<BvhCounters>& BvhCounters::declaration() {
                            "bytes the BVH traversals read, 16 a 4-word access (per ray: divided "
                            "by the jobs)")
                      .runTotal(),
-                 &C::bvhBytesFetched);
+                 &C::bvhBytesFetched)
+          .count(anyHitRaysStatistic("bvh"), &C::bvhAnyHitRays)
+          .count(anyHitHitsStatistic("bvh"), &C::bvhAnyHitHits);
   return group;
 }
 

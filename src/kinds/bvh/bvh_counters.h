@@ -17,6 +17,8 @@ struct BvhCounters {
   uint64_t bvhTriangleTests = 0;
   uint64_t bvhStackOverflows = 0;  // rays that lost a stack entry
   uint64_t bvhBytesFetched = 0;
+  uint64_t bvhAnyHitRays = 0;  // rays traced as any-hit (rtu/ray_span.h)
+  uint64_t bvhAnyHitHits = 0;  // of which hit (occluded)
 
   // One ray's counts added.
   void add(const BvhRayCounts& counts);

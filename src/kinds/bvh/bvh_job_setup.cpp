@@ -26,7 +26,11 @@ JobSetUp<BvhJob> BvhJobSetup::setUp(const RayRecord& record) {
   const ModelSpaceRay ray = toModelSpace(record, model.transform);
   const Vec3<float> origin(ray.origin[0], ray.origin[1], ray.origin[2]);
   const Vec3<float> direction(ray.direction[0], ray.direction[1], ray.direction[2]);
-  set.job = BvhJob{makeBvhRay(origin, direction, 0.0f, INFINITY), model.image};
+  // A ray with a span leaves a surface: it starts kBvhSpanTMin along; an any-hit ray ends at t = 1.
+  const bool anyHit = record.span == RaySpan::AnyHit;
+  const float tMin = record.span == RaySpan::Line ? 0.0f : kBvhSpanTMin;
+  set.job =
+      BvhJob{makeBvhRay(origin, direction, tMin, anyHit ? 1.0f : INFINITY), model.image, anyHit};
   return set;
 }
 

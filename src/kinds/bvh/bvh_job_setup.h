@@ -5,7 +5,13 @@
 // bvh_image.h; the sections' bases are relative to it). The `rayStages` of every ray are the move
 // into the model's space (rtu/model_transform.h, steps 1-3) and the reciprocal direction of its
 // slab tests (bvh_ray.h). The model-space ray keeps the parameter t of the world-space one, over
-// [0, infinity).
+// [0, infinity) for a line (the thesis' rays).
+//
+// The record's span (rtu/ray_span.h): a ray with one leaves a surface, so its float32 hit point's
+// rounding must not find that surface again: it is traced from t = kBvhSpanTMin on (the float
+// epsilon of a renderer's secondary rays, in units of the direction: 2^-16 of a shadow ray's
+// length, 2^-16 world units for a unit direction, some hundred float32 steps of coordinates
+// near 1); an any-hit ray ends at t = 1 and at its first hit (bvh_traversal.h).
 
 #include <cstdint>
 
@@ -18,6 +24,8 @@
 #include "rtu/word_memory.h"
 
 namespace rtu {
+
+inline constexpr float kBvhSpanTMin = 0x1p-16f;
 
 class BvhJobSetup {
  public:

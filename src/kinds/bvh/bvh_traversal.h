@@ -9,7 +9,9 @@
 // the stack is empty, and a box whose entry lies beyond the nearest hit so far is skipped. What
 // the seed leaves open is a setting or a reading (docs/triangles.md): which hit child goes first
 // (ChildOrder), and that a hit replaces the best only when strictly nearer, so of equal t the
-// first in traversal order wins.
+// first in traversal order wins. An any-hit ray (BvhJob::anyHit, a shadow or occlusion ray:
+// rtu/ray_span.h) ends at its first hit within [tMin, tMax], and each of its tests waits for the
+// unit's result (the triangle latency), which decides whether the ray goes on.
 //
 // States, one step each (its cycles: bvh_timing.h; one each by default):
 //   ROOT0, ROOT1   the root node's words 0-3 and 4-7
@@ -20,7 +22,7 @@
 //                  the other if hit too; neither -> POP
 //   REF            the leaf's next triangle reference (1 word)
 //   TRI0-TRI2      the triangle's 12 words
-//   TEST           the triangle test; the leaf's last -> POP
+//   TEST           the triangle test; the leaf's last -> POP; an any-hit ray's hit -> OUT
 //   POP            OUT when the stack is empty; otherwise the newest entry, skipped (POP again)
 //                  when it begins beyond the nearest hit
 // A node reached from DECIDE or POP is entered without another fetch: its child or leaf words
@@ -79,6 +81,7 @@ inline BvhSections sectionsOf(const BvhHeader& header) {
 struct BvhJob {
   BvhRay ray;
   BvhSections image;
+  bool anyHit = false;  // ends at its first hit within [tMin, tMax] (rtu/ray_span.h)
 };
 
 // What one ray's traversal counted.
@@ -89,10 +92,13 @@ struct BvhRayCounts {
   uint32_t pushes = 0, pops = 0;
   uint32_t dropped = 0;   // stack entries lost to a push onto a full stack
   uint32_t accesses = 0;  // memory accesses, kWordsPerRead words each
+  uint32_t anyHit = 0;    // 1 for an any-hit ray
+  uint32_t occluded = 0;  // 1 for an any-hit ray that hit
 
   bool operator==(const BvhRayCounts& o) const {
     return nodes == o.nodes && boxTests == o.boxTests && triangleTests == o.triangleTests &&
-           pushes == o.pushes && pops == o.pops && dropped == o.dropped && accesses == o.accesses;
+           pushes == o.pushes && pops == o.pops && dropped == o.dropped && accesses == o.accesses &&
+           anyHit == o.anyHit && occluded == o.occluded;
   }
 };
 
@@ -109,9 +115,11 @@ class BvhTraversal {
   void start(const BvhJob& job) {
     ray_ = job.ray;
     image_ = job.image;
+    anyHit_ = job.anyHit;
     intersector_.prepare(ray_);
     stack_.clear();
     counts_ = {};
+    counts_.anyHit = anyHit_;
     cost_ = 0;
     hit_ = false;
     tBest_ = ray_.tMax;
@@ -126,7 +134,8 @@ class BvhTraversal {
       case BvhState::RootTest:
       case BvhState::Decide: return cycles_.boxLatency;
       case BvhState::Test:
-        return refsLeft_ > 1 ? cycles_.triangleInterval : cycles_.triangleLatency;
+        // An any-hit ray waits for every test's result: a hit ends it.
+        return refsLeft_ > 1 && !anyHit_ ? cycles_.triangleInterval : cycles_.triangleLatency;
       default: return 1;
     }
   }
@@ -329,6 +338,10 @@ class BvhTraversal {
     }
     ++nextRef_;
     state_ = --refsLeft_ > 0 ? BvhState::Ref : BvhState::Pop;
+    if (anyHit_ && hit_) {  // the first hit within the segment answers an any-hit ray
+      counts_.occluded = 1;
+      state_ = BvhState::Out;
+    }
   }
 
   void pop() {
@@ -348,6 +361,7 @@ class BvhTraversal {
   BvhRay ray_;
   BvhSections image_;
   BvhState state_ = BvhState::Idle;
+  bool anyHit_ = false;
   Words current_{}, left_{}, right_{};
   uint32_t nextRef_ = 0, refsLeft_ = 0, triangle_ = 0;
   std::array<uint32_t, kBvhTriangleWords> triangleWords_{};

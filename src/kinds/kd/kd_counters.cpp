@@ -1,5 +1,7 @@
 #include "kinds/kd/kd_counters.h"
 
+#include "rtu/any_hit_statistics.h"
+
 namespace rtu {
 
 void KdCounters::add(const KdRayCounts& counts) {
@@ -9,6 +11,8 @@ void KdCounters::add(const KdRayCounts& counts) {
   kdRestarts += counts.restarts;
   kdShortStackDrops += counts.dropped;
   kdBytesFetched += uint64_t{counts.accesses} * kAccessBytes;
+  kdAnyHitRays += counts.anyHit;
+  kdAnyHitHits += counts.occluded;
 }
 
 const StatisticGroup<KdCounters>& KdCounters::declaration() {
@@ -34,7 +38,9 @@ const StatisticGroup<KdCounters>& KdCounters::declaration() {
                            "bytes the k-d traversals read, 16 a 4-word access (per ray: divided "
                            "by the jobs)")
                      .runTotal(),
-                 &C::kdBytesFetched);
+                 &C::kdBytesFetched)
+          .count(anyHitRaysStatistic("kd"), &C::kdAnyHitRays)
+          .count(anyHitHitsStatistic("kd"), &C::kdAnyHitHits);
   return group;
 }
 

@@ -18,6 +18,8 @@ struct KdCounters {
   uint64_t kdRestarts = 0;
   uint64_t kdShortStackDrops = 0;  // entries overwritten by a push onto the full short stack
   uint64_t kdBytesFetched = 0;
+  uint64_t kdAnyHitRays = 0;  // rays traced as any-hit (rtu/ray_span.h)
+  uint64_t kdAnyHitHits = 0;  // of which hit (occluded)
 
   // One ray's counts added.
   void add(const KdRayCounts& counts);

@@ -25,7 +25,9 @@ JobSetUp<KdJob> KdJobSetup::setUp(const RayRecord& record) {
   const auto swapped = [](const std::array<float, 3>& v) {
     return std::array<float, 3>{v[1], v[0], v[2]};
   };
-  set.job = KdJob{KdRay{swapped(ray.origin), swapped(ray.direction), false}, model.image};
+  // An any-hit ray is the seed's shadow ray: t in [EPSILON, 1], ended at its first hit.
+  const bool anyHit = record.span == RaySpan::AnyHit;
+  set.job = KdJob{KdRay{swapped(ray.origin), swapped(ray.direction), anyHit}, model.image};
   return set;
 }
 

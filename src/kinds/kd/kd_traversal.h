@@ -34,6 +34,11 @@
 // (S1 §2.6.1; rtu/traversal_stack.h). The list unit replaces its best when a hit's t is not
 // greater than the best's (so ties go to the later triangle) or there is no best; at a leaf's end
 // the best is a hit if its t <= the leaf's t_max, and otherwise is kept into later leaves.
+//
+// An any-hit ray (rtu/ray_span.h) is the seed's shadow ray (KdRay::shadow, S1's "shader 2"): SINT
+// clamps its t_max to 1 (kd_units.h), and INT ends its leaf at its first hit within the leaf's
+// interval (the list unit's decision then ends the ray: the hit is within [t_min, 1]); each of its
+// tests waits for the unit's result (the triangle latency), which decides whether it goes on.
 
 #include <array>
 #include <cstdint>
@@ -74,11 +79,14 @@ struct KdRayCounts {
   uint32_t pushes = 0;
   uint32_t dropped = 0;   // stack entries overwritten by a push onto a full stack
   uint32_t accesses = 0;  // memory accesses, kWordsPerRead words each
+  uint32_t anyHit = 0;    // 1 for an any-hit (shadow) ray
+  uint32_t occluded = 0;  // 1 for an any-hit ray that hit
 
   bool operator==(const KdRayCounts& o) const {
     return nodes == o.nodes && leaves == o.leaves && triangleTests == o.triangleTests &&
            restarts == o.restarts && boxMisses == o.boxMisses && pushes == o.pushes &&
-           dropped == o.dropped && accesses == o.accesses;
+           dropped == o.dropped && accesses == o.accesses && anyHit == o.anyHit &&
+           occluded == o.occluded;
   }
 };
 
@@ -114,7 +122,9 @@ class KdTraversal {
       case KdState::Sint:
       case KdState::Trav: return config_.cycles.boxLatency;
       case KdState::Int:
-        return left_ > 1 ? config_.cycles.triangleInterval : config_.cycles.triangleLatency;
+        // A shadow ray waits for every test's result: a hit ends it.
+        return left_ > 1 && !ray_.shadow ? config_.cycles.triangleInterval
+                                         : config_.cycles.triangleLatency;
       default: return 1;
     }
   }
@@ -125,6 +135,7 @@ class KdTraversal {
     image_ = job.image;
     stack_.clear();
     counts_ = {};
+    counts_.anyHit = ray_.shadow;
     cost_ = 0;
     hitCur_ = hit_ = false;
     state_ = KdState::Sint;
@@ -290,7 +301,8 @@ class KdTraversal {
     }
     hitCur_ = hitCur_ || found.hit;
     ++nextList_;
-    if (--left_ > 0)
+    // A shadow ray's hit within the leaf's interval answers it.
+    if (--left_ > 0 && !(ray_.shadow && found.hit && !greater32(found.t, tMax_)))
       state_ = KdState::List;
     else
       endLeaf();
@@ -300,6 +312,7 @@ class KdTraversal {
   void endLeaf() {
     if (hitCur_ && !greater32(tCur_, tMax_)) {
       hit_ = true;
+      counts_.occluded = ray_.shadow;
       state_ = KdState::Out;
     } else {
       popAt(tMax_);
