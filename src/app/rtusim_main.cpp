@@ -1,5 +1,6 @@
 // rtusim: a model of the sparse voxel octree ray tracing unit of Espe (2019).
 
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -33,6 +34,11 @@ int main(int argc, char** argv) {
   rtu::addPlotCommands(app);
   rtu::addDiffCommand(app);
   rtu::addWaveCommand(app);
+  // RTUSIM_PARSE_ONLY=1: check a command line (options, values, required options) and run
+  // nothing; tests/doc_examples.py checks so the examples too long to run in the suite.
+  if (const char* parseOnly = std::getenv("RTUSIM_PARSE_ONLY"); parseOnly && *parseOnly == '1')
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+      command->callback([] {});
   int status = 0;
   try {
     try {
