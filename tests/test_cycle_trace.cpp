@@ -270,6 +270,51 @@ TEST_CASE("Trace listeners hear every signal and cycle, whatever the file keeps"
   CHECK(heard.finishedCalled);
 }
 
+// A listener with a window of its own (a windowed timeline): before it only the changes it
+// needs there, then the values of the others held in place, and nothing once it is satisfied.
+struct WindowedHeard : Heard {
+  uint64_t from = 10, satisfiedFrom = 20;
+  std::vector<std::tuple<uint64_t, size_t, uint64_t>> heldValues;
+  uint64_t listensFrom() const override { return from; }
+  bool needsBefore(const std::string&, const TraceVariable& variable) const override {
+    return variable.name == "valid";
+  }
+  void held(uint64_t cycle, const std::vector<TraceChange>& values) override {
+    for (const TraceChange& value : values)
+      heldValues.emplace_back(cycle, value.signal, value.value);
+  }
+  bool satisfiedBefore(uint64_t cycle) const override { return cycle >= satisfiedFrom; }
+};
+
+TEST_CASE("A listener with a window hears its early signals\\, the held values\\, then all",
+          "[trace]") {
+  WindowedHeard heard;
+  CycleTrace trace(TraceOptions{}, {&heard});
+  const int state = trace.declare("top.core_0", "state", 3);
+  const int valid = trace.declare("top.in", "valid", 1);
+  trace.record(state, 2, 1);
+  trace.record(state, 7, 2);
+  trace.record(state, 5, 3);  // an earlier cycle arriving later: not the value held
+  trace.record(valid, 3, 1);
+  CHECK(trace.pendingRecords() == 1);  // the state is held in place
+  trace.flush(8);
+  CHECK(heard.heldValues.empty());  // cycles 8 and 9 are not final yet
+  trace.record(state, 12, 4);
+  trace.record(valid, 12, 0);
+  trace.flush(16);
+  CHECK_FALSE(trace.listenersSatisfied());
+  trace.flush(24);
+  CHECK(trace.listenersSatisfied());
+  trace.record(state, 30, 5);  // after the listener is satisfied: not queued
+  CHECK(trace.pendingRecords() == 0);
+  trace.finish(0);
+  const std::vector<std::tuple<uint64_t, size_t, uint64_t>> changes{
+      {3, 1, 1}, {12, 0, 4}, {12, 1, 0}};
+  CHECK(heard.changes == changes);
+  const std::vector<std::tuple<uint64_t, size_t, uint64_t>> held{{9, 0, 2}};
+  CHECK(heard.heldValues == held);
+}
+
 TEST_CASE("A counting trace counts the bytes of the VCD it would write", "[trace]") {
   const auto run = [](TraceOptions options) {
     CycleTrace trace(options);

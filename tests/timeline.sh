@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The --timeline (src/trace/timeline_writer.h) against the run's statistics and the golden model's
 # costs (tests/timeline_check.py), for ideal and cached memory, with and without a reorder buffer;
+# a windowed timeline is that window cut from the full one;
 # the dry run's sizes (src/run/trace_plan.h) equal the files written; --trace-max-mb refuses a
 # file before writing it, naming the options that narrow it; --trace-ray's window runs from the
 # ray's handshake into the job manager to its result's handshake with the host, checked in a full
@@ -28,6 +29,50 @@ for options in "--cores 4" "--cores 12 --scheduler rr --reorder 8"; do
   done
 done
 grep -q '"name":"core_03"' t.json || fail "track names not zero-padded for 12 cores"
+
+# A windowed timeline is that window cut from the full timeline: the rays that start in it with
+# the slices nested in them, nothing else, and each counter's value in every cycle of it.
+"${replay[@]}" --cores 4 --memory cached --timeline whole.json >/dev/null
+"${replay[@]}" --cores 4 --memory cached --timeline part.json --trace-from 300 --trace-to 700 >/dev/null
+python3 - whole.json part.json 300 700 <<'PY' || fail "a windowed timeline is not the window cut from the full one"
+import json, sys
+whole, part = (json.load(open(p))["traceEvents"] for p in sys.argv[1:3])
+first, end = int(sys.argv[3]), int(sys.argv[4])
+def cycle(e):
+    return round(e["ts"] * 100)  # 100 MHz
+def ends(e):
+    return round((e["ts"] + e["dur"]) * 100)
+def cut(events):
+    """The ray slices that start in the window and the slices nested in them, on their core."""
+    kept = set()
+    slices = [e for e in events if e["ph"] == "X"]
+    for ray in slices:
+        if not ray["name"].startswith("ray ") or not first <= cycle(ray) < end:
+            continue
+        for e in slices:
+            if e["tid"] == ray["tid"] and cycle(ray) <= cycle(e) and ends(e) <= ends(ray):
+                kept.add((e["tid"], e["name"], e["ts"], e["dur"]))
+    return kept
+kept = cut(part)
+assert kept and kept == cut(whole)
+assert len(kept) == sum(e["ph"] == "X" for e in part)
+def samples(events, name):
+    return sorted((cycle(e), list(e["args"].values())[0]) for e in events if e["ph"] == "C" and e["name"] == name)
+def value(steps, c):
+    held = None
+    for at, v in steps:
+        if at > c:
+            break
+        held = v
+    return held
+names = {e["name"] for e in whole if e["ph"] == "C"}
+assert names == {e["name"] for e in part if e["ph"] == "C"}
+for name in names:
+    full, windowed = samples(whole, name), samples(part, name)
+    assert first <= windowed[0][0] and windowed[-1][0] < end, name
+    for c in range(windowed[0][0], end):
+        assert value(full, c) == value(windowed, c), (name, c)
+PY
 
 # Refused before anything is written, with the options that narrow it (64x48: about 2 MB each).
 "$rtusim" jobs --width 64 --height 48 --out jobs64.bin >/dev/null

@@ -1,7 +1,6 @@
 #include "run/rtu_simulation.h"
 
 #include <chrono>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -32,8 +31,7 @@ class RunLoop {
         trace_(trace),
         progress_(progress),
         plan_(plan),
-        snapshots_(snapshots),
-        countedUntil_(countedUntil(config)) {}
+        snapshots_(snapshots) {}
 
   End run() {
     if (!progress_ && !trace_ && plan_.afterResults.empty()) {
@@ -46,7 +44,7 @@ class RunLoop {
       const uint64_t now = clock_.now();
       // Modules record no cycle before the current one any more (src/trace/cycle_trace.h).
       if (trace_) trace_->flush(now);
-      if (now >= countedUntil_) return End::CountedWindow;
+      if (countedAll(now)) return End::CountedWindow;
       if (progress_ && now >= nextProgress) {
         progress_(top_.sink().arrivedBefore(now), top_.sink().expected());
         nextProgress = (now / kProgressCycles + 1) * kProgressCycles;
@@ -67,12 +65,15 @@ class RunLoop {
     return config_.trace ? config_.trace->flushCycles : TraceOptions{}.flushCycles;
   }
 
-  // A run that only counts a windowed trace's bytes has counted them all once the window has
-  // passed: no record after it reaches the file. (A timeline keeps a ray that starts in its
-  // window to its end, so a run with one goes on.)
-  static uint64_t countedUntil(const RtuConfig& config) {
-    const bool onlyCounting = config.trace && config.trace->countOnly && !config.timeline.wanted();
-    return onlyCounting ? config.trace->toCycle : std::numeric_limits<uint64_t>::max();
+  // A run that only counts a windowed trace's and timeline's bytes has counted them all once the
+  // trace's window has passed (no record after it reaches the file) and the timeline has heard
+  // its window and the rays that started in it.
+  bool countedAll(uint64_t now) const {
+    const bool traceCounted = !config_.trace ||
+                              (config_.trace->countOnly && now >= config_.trace->toCycle);
+    const bool timelineCounted = !config_.timeline.wanted() ||
+                                 (config_.timeline.countOnly && trace_->listenersSatisfied());
+    return (config_.trace || config_.timeline.wanted()) && traceCounted && timelineCounted;
   }
 
   // True once the last snapshot is taken.
@@ -92,7 +93,6 @@ class RunLoop {
   const RunProgress& progress_;
   const BlockRun& plan_;
   std::vector<RunSnapshot>& snapshots_;
-  const uint64_t countedUntil_;
 };
 
 // A trace when the run writes or counts one, a timeline, or has listeners: the file is optional.
@@ -136,9 +136,11 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (end == RunLoop::End::LastSnapshot) return run;
+  run.simulatedCycles = CycleClock::atMegahertz(config.clockMhz).now();
   if (end == RunLoop::End::CountedWindow) {
     trace->finish(0);
     run.traceBytes = trace->countedBytes();
+    if (timeline) run.timelineBytes = timeline->bytes();
     return run;
   }
 

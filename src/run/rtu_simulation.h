@@ -48,8 +48,12 @@ struct RtuRun {
   RtuStatistics statistics;
   std::vector<RunSnapshot> snapshots;
   // Bytes of the trace's VCD and of the timeline, of a run that only counts them (countOnly).
-  // A run counting a windowed trace alone stops once the window has passed, with no results.
+  // A run that only counts a windowed trace or timeline stops once the window (and for a
+  // timeline the rays that started in it) has passed, with no results.
   uint64_t traceBytes = 0, timelineBytes = 0;
+  // The kernel's simulated time when the run stopped, in cycles (the modules decide ahead of it:
+  // a whole run's may end before totalCycles).
+  uint64_t simulatedCycles = 0;
 };
 
 // Told now and then how many results the host has received of how many.

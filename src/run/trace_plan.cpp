@@ -1,6 +1,7 @@
 #include "run/trace_plan.h"
 
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <stdexcept>
@@ -9,12 +10,16 @@
 namespace rtu {
 namespace {
 
+// The listeners of --trace-ray's first run hear only the signals they look at, and nothing once
+// they have found what they look for (src/trace/trace_listener.h): no window of every signal.
+constexpr uint64_t kNeverListens = std::numeric_limits<uint64_t>::max();
+
 // The cycle of the n-th transfer into the job manager (jobs enter in sequence order).
 class JobEntry : public TraceListener {
  public:
   explicit JobEntry(uint64_t job) : job_(job) {}
   void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override {
-    if (scope.size() < 15 || scope.compare(scope.size() - 15, 15, ".job_manager.in") != 0) return;
+    if (!isJobManagerIn(scope)) return;
     if (variable.name == "valid") valid_ = static_cast<int64_t>(signal);
     if (variable.name == "ready") ready_ = static_cast<int64_t>(signal);
   }
@@ -30,9 +35,18 @@ class JobEntry : public TraceListener {
     }
     since_ = cycle;
   }
+  // Only the job manager's input matters, until the job has entered.
+  uint64_t listensFrom() const override { return kNeverListens; }
+  bool needsBefore(const std::string& scope, const TraceVariable&) const override {
+    return isJobManagerIn(scope);
+  }
+  bool satisfiedBefore(uint64_t) const override { return cycle_ >= 0; }
   int64_t cycle() const { return cycle_; }
 
  private:
+  static bool isJobManagerIn(const std::string& scope) {
+    return scope.size() >= 15 && scope.compare(scope.size() - 15, 15, ".job_manager.in") == 0;
+  }
   uint64_t job_;
   int64_t valid_ = -1, ready_ = -1, cycle_ = -1;
   bool validLevel_ = false, readyLevel_ = false;
@@ -45,11 +59,8 @@ class CoreOfRay : public TraceListener {
  public:
   explicit CoreOfRay(uint64_t ray) : ray_(ray) {}
   void declared(size_t signal, const std::string& scope, const TraceVariable& variable) override {
-    static const std::string prefix = "rtu.core_", suffix = ".in";
-    if (scope.rfind(prefix, 0) != 0 || scope.size() <= prefix.size() + suffix.size() ||
-        scope.compare(scope.size() - suffix.size(), suffix.size(), suffix) != 0)
-      return;
-    const int core = std::stoi(scope.substr(prefix.size()));
+    if (!isCoreIn(scope)) return;
+    const int core = std::stoi(scope.substr(std::string("rtu.core_").size()));
     if (variable.name == "valid") roles_[signal] = {core, Role::Valid};
     if (variable.name == "ready") roles_[signal] = {core, Role::Ready};
     if (variable.name == "ray") roles_[signal] = {core, Role::Ray};
@@ -66,9 +77,20 @@ class CoreOfRay : public TraceListener {
     for (const auto& [core, input] : inputs_)
       if (core_ < 0 && input.valid && input.ready && input.ray == ray_) core_ = core;
   }
+  // Only the cores' inputs matter, until a core has taken the ray.
+  uint64_t listensFrom() const override { return kNeverListens; }
+  bool needsBefore(const std::string& scope, const TraceVariable&) const override {
+    return isCoreIn(scope);
+  }
+  bool satisfiedBefore(uint64_t) const override { return core_ >= 0; }
   int core() const { return core_; }
 
  private:
+  static bool isCoreIn(const std::string& scope) {
+    static const std::string prefix = "rtu.core_", suffix = ".in";
+    return scope.rfind(prefix, 0) == 0 && scope.size() > prefix.size() + suffix.size() &&
+           scope.compare(scope.size() - suffix.size(), suffix.size(), suffix) == 0;
+  }
   enum class Role { Valid, Ready, Ray };
   struct Input {
     bool valid = false, ready = false;

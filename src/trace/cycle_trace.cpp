@@ -40,6 +40,13 @@ CycleTrace::CycleTrace(TraceOptions options, std::vector<TraceListener*> listene
                                 "500,000 MHz)");
   checkTraceSignalClasses(options_.signalClasses);
   chooseTimeUnit();
+  listening_ = !listeners_.empty();
+  if (listening_) {
+    listenFrom_ = std::numeric_limits<uint64_t>::max();
+    for (TraceListener* listener : listeners_)
+      listenFrom_ = std::min(listenFrom_, listener->listensFrom());
+    heldTold_ = listenFrom_ == 0;
+  }
   if (options_.countOnly)
     writer_ = openVcdCounter(counter_, unit_);
   else if (!options_.path.empty())
@@ -112,7 +119,12 @@ int CycleTrace::declare(const std::string& scope, const std::string& name, int w
   const bool kept = scopeKept(scope) && classKept(name) && writer_;
   if (!kept && listeners_.empty()) return kNoSignal;
   TraceVariable variable{name, width, std::move(valueNames)};
-  for (TraceListener* listener : listeners_) listener->declared(fileIndex_.size(), scope, variable);
+  bool early = listenFrom_ == 0;
+  for (TraceListener* listener : listeners_) {
+    listener->declared(fileIndex_.size(), scope, variable);
+    early = early || listener->needsBefore(scope, variable);
+  }
+  early_.push_back(early);
   fileIndex_.push_back(kept ? static_cast<int>(signals_.size()) : kNoSignal);
   if (kept) signals_.push_back(Signal{scope, std::move(variable)});
   return static_cast<int>(fileIndex_.size() - 1);
@@ -124,23 +136,29 @@ void CycleTrace::record(int signal, uint64_t cycle, uint64_t value) {
                            " arrived after the cycles before " + std::to_string(written_) +
                            " were written");
   if (signal == kNoSignal) return;
-  const int index = fileIndex_[static_cast<size_t>(signal)];
-  if (listeners_.empty() && cycle < options_.fromCycle) {
-    // Before the window only the value it starts from matters: kept in place, not queued, so
-    // the cycles before a window cost little more than untraced ones.
-    if (index != kNoSignal) holdInitial(signals_[static_cast<size_t>(index)], cycle, value);
+  const auto id = static_cast<size_t>(signal);
+  const int index = fileIndex_[id];
+  const bool forFile =
+      index != kNoSignal && cycle >= options_.fromCycle && cycle < options_.toCycle;
+  const bool heldForListeners = listening_ && cycle < listenFrom_ && !early_[id];
+  if (heldForListeners) {
+    if (heldFor_.size() <= id) heldFor_.resize(fileIndex_.size());
+    hold(heldFor_[id], cycle, value);
+  }
+  if (forFile || (listening_ && !heldForListeners)) {
+    changes_.push_back(Change{cycle, signal, value});
     return;
   }
-  const bool forFile = index != kNoSignal && cycle < options_.toCycle;
-  if (forFile || !listeners_.empty()) changes_.push_back(Change{cycle, signal, value});
+  // Before a window only the value it starts from matters: kept in place, not queued, so the
+  // cycles before a window cost little more than untraced ones.
+  if (index != kNoSignal && cycle < options_.fromCycle)
+    hold(signals_[static_cast<size_t>(index)].initial, cycle, value);
 }
 
 // The latest record before the window wins; within a cycle the last to arrive.
-void CycleTrace::holdInitial(Signal& signal, uint64_t cycle, uint64_t value) {
-  if (signal.hasInitial && cycle < signal.initialCycle) return;
-  signal.hasInitial = true;
-  signal.initialCycle = cycle;
-  signal.initialValue = value;
+void CycleTrace::hold(Held& held, uint64_t cycle, uint64_t value) {
+  if (held.known && cycle < held.cycle) return;
+  held = {true, cycle, value};
 }
 
 void CycleTrace::flush(uint64_t cycle) {
@@ -154,12 +172,15 @@ void CycleTrace::flush(uint64_t cycle) {
     auto next = begin;
     while (next != end && next->cycle == begin->cycle) ++next;
     settle(begin, next);
+    if (!heldTold_ && begin->cycle >= listenFrom_) tellHeld();
     notifyListeners(begin->cycle, settled_);
     if (writer_) fileCycle(begin->cycle, settled_);
     begin = next;
   }
   changes_.erase(changes_.begin(), end);
   sorted_ = changes_.size();
+  if (!heldTold_ && cycle >= listenFrom_) tellHeld();
+  checkListenersSatisfied();
   if (writer_ && !dumped_ && cycle > options_.fromCycle) {
     initialValues();
     writeInitialValues();
@@ -287,12 +308,38 @@ void CycleTrace::settle(std::vector<Change>::const_iterator begin,
   for (TraceChange& change : settled_) change.value = begin[lastRecord_[change.signal]].value;
 }
 
+// Every cycle before the listeners' window is final: the values their late signals hold there.
+void CycleTrace::tellHeld() {
+  heldTold_ = true;
+  heldFor_.resize(fileIndex_.size());
+  heard_.resize(fileIndex_.size());
+  heardValue_.resize(fileIndex_.size());
+  changed_.clear();
+  for (size_t signal = 0; signal < heldFor_.size(); ++signal) {
+    if (!heldFor_[signal].known) continue;
+    heard_[signal] = true;
+    heardValue_[signal] = heldFor_[signal].value;
+    changed_.push_back({signal, heldFor_[signal].value});
+  }
+  heldFor_ = {};
+  for (TraceListener* listener : listeners_) listener->held(listenFrom_ - 1, changed_);
+}
+
+// The cycles before written_ are heard: a listener may need no more.
+void CycleTrace::checkListenersSatisfied() {
+  if (!listening_) return;
+  for (TraceListener* listener : listeners_)
+    if (!listener->satisfiedBefore(written_)) return;
+  listening_ = false;
+}
+
 void CycleTrace::notifyListeners(uint64_t cycle, const Settled& settled) {
-  if (listeners_.empty()) return;
+  if (!listening_) return;
   heard_.resize(fileIndex_.size());
   heardValue_.resize(fileIndex_.size());
   changed_.clear();
   for (const TraceChange& change : settled) {
+    if (cycle < listenFrom_ && !early_[change.signal]) continue;  // held (tellHeld)
     if (heard_[change.signal] && heardValue_[change.signal] == change.value) continue;
     heard_[change.signal] = true;
     heardValue_[change.signal] = change.value;
@@ -310,7 +357,7 @@ void CycleTrace::fileCycle(uint64_t cycle, const Settled& settled) {
     for (const TraceChange& change : settled) {
       const int index = fileIndex_[change.signal];
       if (index != kNoSignal)
-        holdInitial(signals_[static_cast<size_t>(index)], cycle, change.value);
+        hold(signals_[static_cast<size_t>(index)].initial, cycle, change.value);
     }
     return;
   }
@@ -336,8 +383,8 @@ void CycleTrace::initialValues() {
   known_.resize(signals_.size());
   current_.resize(signals_.size());
   for (size_t i = 0; i < signals_.size(); ++i) {
-    known_[i] = signals_[i].hasInitial;
-    current_[i] = signals_[i].initialValue;
+    known_[i] = signals_[i].initial.known;
+    current_[i] = signals_[i].initial.value;
   }
 }
 

@@ -83,15 +83,21 @@ class CycleTrace {
 
   // Records held in memory, waiting for their cycle to become final.
   size_t pendingRecords() const { return changes_.size(); }
+  // True once every listener is satisfied (TraceListener::satisfiedBefore): it hears no more.
+  bool listenersSatisfied() const { return !listening_; }
   // With TraceOptions::countOnly: the bytes the VCD file would have, so far.
   uint64_t countedBytes() const { return writer_ ? writer_->bytes() : 0; }
 
  private:
+  // A signal's latest record before a window, kept in place instead of queued.
+  struct Held {
+    bool known = false;
+    uint64_t cycle = 0, value = 0;
+  };
   struct Signal {
     std::string scope;
     TraceVariable variable;
-    bool hasInitial = false;
-    uint64_t initialCycle = 0, initialValue = 0;
+    Held initial = {};
   };
   struct Change {
     uint64_t cycle;
@@ -109,7 +115,10 @@ class CycleTrace {
   // settled_: the last record of each signal among [begin, end) (one cycle's), by signal.
   void settle(std::vector<Change>::const_iterator begin, std::vector<Change>::const_iterator end);
   void notifyListeners(uint64_t cycle, const Settled& settled);
-  static void holdInitial(Signal& signal, uint64_t cycle, uint64_t value);
+  static void hold(Held& held, uint64_t cycle, uint64_t value);
+  // The listeners' held values, once every cycle before their window is final.
+  void tellHeld();
+  void checkListenersSatisfied();
   void fileCycle(uint64_t cycle, const Settled& settled);
   void initialValues();
   void writeInitialValues();
@@ -148,6 +157,13 @@ class CycleTrace {
   uint64_t clockNext_ = 0;   // the first cycle whose clock edges are not written
   std::vector<bool> heard_;  // per signal id: the listeners' last values
   std::vector<uint64_t> heardValue_;
+  // The listeners' window (TraceListener::listensFrom, the earliest of theirs): before it only
+  // the signals marked early are queued for them, the others held.
+  uint64_t listenFrom_ = 0;
+  bool heldTold_ = true;
+  bool listening_ = true;      // false once every listener is satisfied
+  std::vector<bool> early_;    // per signal id
+  std::vector<Held> heldFor_;  // per signal id: the listeners' values before their window
 };
 
 }  // namespace rtu

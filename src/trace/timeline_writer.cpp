@@ -24,6 +24,19 @@ size_t coreIndex(const std::string& name) {
   return std::stoul(digits);
 }
 
+// The scope below the top (rtu.core_3.in -> core_3.in).
+std::string belowTop(const std::string& scope) {
+  const size_t dot = scope.find('.');
+  return dot == std::string::npos ? "" : scope.substr(dot + 1);
+}
+
+// The channels whose transfers the counters count: job manager in, scheduler in, the cores'
+// outputs, result manager out, reorder buffer out.
+bool counted(const std::string& key) {
+  return key == "job_manager.in" || key == "scheduler.in" || key == "result_manager.out" ||
+         key == "reorder_buffer.out" || (startsWith(key, "core_") && endsWith(key, ".out"));
+}
+
 }  // namespace
 
 TimelineWriter::TimelineWriter(TimelineOptions options, uint64_t periodPs, StateVocabulary states)
@@ -37,12 +50,16 @@ TimelineWriter::TimelineWriter(TimelineOptions options, uint64_t periodPs, State
 void TimelineWriter::declared(size_t signal, const std::string& scope,
                               const TraceVariable& variable) {
   if (roles_.size() <= signal) roles_.resize(signal + 1);
-  const size_t dot = scope.find('.');
-  const std::string key = dot == std::string::npos ? "" : scope.substr(dot + 1);  // below the top
+  const std::string key = belowTop(scope);
   const size_t core = coreIndex(key);
+  const size_t coreIn = endsWith(key, ".in") ? coreIndex(key.substr(0, key.size() - 3))
+                                             : std::string::npos;
   if (core != std::string::npos && variable.name == "state") {
     if (cores_.size() <= core) cores_.resize(core + 1, Core{states_.idle});
     roles_[signal] = {Role::CoreState, core};
+  } else if (coreIn != std::string::npos && variable.name == "ray") {
+    if (cores_.size() <= coreIn) cores_.resize(coreIn + 1, Core{states_.idle});
+    roles_[signal] = {Role::CoreRay, coreIn};
   } else if (variable.name == "valid" || variable.name == "ready") {
     roles_[signal] = {variable.name == "valid" ? Role::Valid : Role::Ready, channel(key)};
   }
@@ -55,19 +72,60 @@ size_t TimelineWriter::channel(const std::string& key) {
   return channels_.size() - 1;
 }
 
+bool TimelineWriter::needsBefore(const std::string& scope, const TraceVariable& variable) const {
+  return (variable.name == "valid" || variable.name == "ready") && counted(belowTop(scope));
+}
+
 void TimelineWriter::changed(uint64_t cycle, const std::vector<TraceChange>& changes) {
   if (!started_) writeHeader();
   advanceTo(cycle);
+  apply(cycle, changes);
+  findStreaming();
+  sampleCounters(cycle);
+}
+
+// The levels before the window: a core busy there runs a ray that started before it (not shown).
+void TimelineWriter::held(uint64_t, const std::vector<TraceChange>& values) {
+  if (!started_) writeHeader();
+  for (const TraceChange& value : values) {
+    const SignalRole& role = roles_[value.signal];
+    if (role.role == Role::CoreState)
+      cores_[role.index].state = value.value;
+    else
+      level(role, value.value);
+  }
+  findStreaming();
+}
+
+// A core's state first, then the ray its input carries: a core leaving IDLE runs the ray its
+// input carried in the cycles before (the handshake's).
+void TimelineWriter::apply(uint64_t cycle, const std::vector<TraceChange>& changes) {
   for (const TraceChange& change : changes) {
     const SignalRole& role = roles_[change.signal];
     if (role.role == Role::CoreState) coreState(role.index, cycle, change.value);
-    if (role.role == Role::Valid) channels_[role.index].valid = change.value != 0;
-    if (role.role == Role::Ready) channels_[role.index].ready = change.value != 0;
+    if (role.role == Role::Valid || role.role == Role::Ready) level(role, change.value);
   }
+  for (const TraceChange& change : changes)
+    if (roles_[change.signal].role == Role::CoreRay) level(roles_[change.signal], change.value);
+}
+
+void TimelineWriter::level(const SignalRole& role, uint64_t value) {
+  if (role.role == Role::Valid) channels_[role.index].valid = value != 0;
+  if (role.role == Role::Ready) channels_[role.index].ready = value != 0;
+  if (role.role == Role::CoreRay) cores_[role.index].offered = value;
+}
+
+void TimelineWriter::findStreaming() {
   streaming_.clear();
   for (size_t i = 0; i < channels_.size(); ++i)
     if (channels_[i].valid && channels_[i].ready) streaming_.push_back(i);
-  sampleCounters(cycle);
+}
+
+// Past the window, with every ray that started in it handed over.
+bool TimelineWriter::satisfiedBefore(uint64_t cycle) const {
+  if (cycle < options_.toCycle) return false;
+  return std::none_of(cores_.begin(), cores_.end(),
+                      [&](const Core& c) { return c.state != states_.idle && inWindow(c.start); });
 }
 
 // Counts the transfers of the cycles from the cursor up to `cycle` (levels held since the last
@@ -85,7 +143,7 @@ void TimelineWriter::coreState(size_t core, uint64_t cycle, uint64_t state) {
   if (c.state == states_.blocked)
     slice(core, states_.names[states_.blocked], c.blockedStart, cycle);
   if (state != states_.idle && c.state == states_.idle) {
-    c.ray = nextRay_++;
+    c.ray = c.offered;
     c.start = cycle;
   }
   if (state == states_.blocked) c.blockedStart = cycle;

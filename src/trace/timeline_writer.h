@@ -8,8 +8,12 @@
 //   OUT slice (the result waiting for the result manager);
 // - counters: jobs inside the job manager, a pending job the scheduler cannot place, results
 //   held by the result manager and by the reorder buffer.
-// Ray numbers: the scheduler hands the jobs out in sequence order and each core starts INIT one
-// cycle after its handshake, so the k-th INIT of the run (over all cores) is job k.
+// Ray numbers: the id a core's input channel carries (class "ids", the host record's index) when
+// the core leaves IDLE, one cycle after its handshake.
+// A window (--trace-from/--trace-to, --trace-ray) keeps the rays that start in it and the
+// counters in it, and costs about its own cycles (TraceListener's window): before it the
+// timeline hears only the handshakes its counters count, then the values the rest holds, and
+// nothing once the window and the rays that started in it have ended.
 // Time stamps are simulated time in microseconds (at 100 MHz a cycle is 0.01 us), exact to the
 // picosecond. Events carry nothing else, to keep the file small (docs/waveforms.md).
 
@@ -44,12 +48,16 @@ class TimelineWriter : public TraceListener {
   void changed(uint64_t cycle, const std::vector<TraceChange>& changes) override;
   // Closes the JSON; throws std::runtime_error when the file could not be written.
   void finished() override;
+  uint64_t listensFrom() const override { return options_.fromCycle; }
+  bool needsBefore(const std::string& scope, const TraceVariable& variable) const override;
+  void held(uint64_t cycle, const std::vector<TraceChange>& values) override;
+  bool satisfiedBefore(uint64_t cycle) const override;
 
   // Bytes of the JSON so far, written or counted.
   uint64_t bytes() const { return bytes_; }
 
  private:
-  enum class Role { None, CoreState, Valid, Ready };
+  enum class Role { None, CoreState, Valid, Ready, CoreRay };
   struct SignalRole {
     Role role = Role::None;
     size_t index = 0;  // core or channel
@@ -64,6 +72,7 @@ class TimelineWriter : public TraceListener {
   struct Core {
     uint64_t state = 0;
     uint64_t ray = 0, start = 0, blockedStart = 0, outStart = 0;
+    uint64_t offered = 0;  // the ray its input channel carries
   };
   struct Counter {
     std::string name, unit;
@@ -72,6 +81,9 @@ class TimelineWriter : public TraceListener {
   };
 
   size_t channel(const std::string& key);
+  void apply(uint64_t cycle, const std::vector<TraceChange>& changes);
+  void level(const SignalRole& role, uint64_t value);
+  void findStreaming();
   void advanceTo(uint64_t cycle);
   void coreState(size_t core, uint64_t cycle, uint64_t state);
   void slice(size_t core, const std::string& name, uint64_t from, uint64_t to);
@@ -95,7 +107,6 @@ class TimelineWriter : public TraceListener {
   std::vector<Counter> counters_;
   size_t waitChannel_ = kNone;  // scheduler.in
   uint64_t cursor_ = 0;         // channel transfers are counted up to this cycle
-  uint64_t nextRay_ = 0;
   bool started_ = false, firstEvent_ = true;
 };
 
