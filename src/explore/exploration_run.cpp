@@ -9,6 +9,7 @@
 #include "base/binary_file.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
+#include "explore/architecture_resources.h"
 #include "explore/raypipe_frame.h"
 #include "explore/raypipe_row.h"
 #include "explore/sweep_workers.h"
@@ -124,8 +125,10 @@ std::vector<size_t> validRows(
   return valid;
 }
 
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
-                                   RowModel model) {
+namespace {
+
+nlohmann::ordered_json frameRow(const Configuration& configuration, const FrameScene& scene,
+                                RowModel model) {
   const RunConfig& settings = configuration.values();
   if (settings.architecture == Architecture::Raypipe) return runRaypipeRow(configuration, scene);
   validateRow(configuration);
@@ -149,6 +152,16 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Fra
                                 : simulateRtu(memory, records, settings.rtu);
   nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
   row.update(runJson(run.statistics, configuration));
+  return row;
+}
+
+}  // namespace
+
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
+                                   RowModel model) {
+  nlohmann::ordered_json row = frameRow(configuration, scene, model);
+  row["resources"] =
+      resourcesJson(architectureResources(configuration.values(), scene.words.size()));
   return row;
 }
 
