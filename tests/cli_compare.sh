@@ -93,6 +93,6 @@ assert (rows["raypipe"]["figures"]["bram18k"], rows["raypipe"]["figures"]["dsp48
 csv_row = {r["architecture"]: r for r in table}
 assert csv_row["svo"]["fps_per_dsp48e"] == "" and csv_row["raypipe"]["bram18k"] == "82", csv_row
 report = open(sys.argv[3]).read()
-assert report.count("data:image/png;base64") == 5 + 5, report.count("data:image/png;base64")
+assert report.count("data:image/png;base64") == 6 + 5, report.count("data:image/png;base64")
 PY
 echo "compare: ok"
