@@ -3,6 +3,7 @@
 // are counted by hand in the comments.
 #include <catch2/catch.hpp>
 
+#include "explore/architecture_resources.h"
 #include "kinds/bih/bih_resources.h"
 #include "kinds/bvh/bvh_resources.h"
 #include "kinds/kd/kd_resources.h"
@@ -163,6 +164,21 @@ TEST_CASE("A second traversal unit adds its FIFOs\\, ray store and units", "[res
   CHECK(more.unitCount(ArithmeticKind::Comparator) - one.unitCount(ArithmeticKind::Comparator) ==
         3);
   CHECK(more.unitCount(ArithmeticKind::Divider) - one.unitCount(ArithmeticKind::Divider) == 1);
+}
+
+TEST_CASE("A row's resources: the totals as columns and the rate per resource", "[resources]") {
+  ResourceEstimate estimate;
+  estimate.memories = {{"fifo", 100, 10, 2}, {"registers", 4, 8, 1}};
+  estimate.units = {{"unit", ArithmeticKind::Multiplier, NumberKind::Fixed, 32, 3},
+                    {"unit", ArithmeticKind::Adder, NumberKind::Fixed, 8, 2}};
+  const nlohmann::ordered_json row = {{"resources", resourcesJson(estimate)}};
+  // 2 x 100 x 10 + 4 x 8 = 2,032 bits, 2,000 of them in 2 RAMB18 (100 words each); 3 x 4
+  // DSP48E; 2 adders of 8 bits: 16 LUTs.
+  CHECK(resourceValues(row) ==
+        std::vector<std::string>{"2032", "2000", "2", "12", "3", "2", "0", "0", "16"});
+  CHECK(resourceValues(nlohmann::ordered_json::object()) == std::vector<std::string>(9, ""));
+  CHECK(perResource(60.0, 12).get<double>() == 5.0);
+  CHECK(perResource(60.0, 0).is_null());  // none of the resource: no rate per it
 }
 
 }  // namespace rtu
