@@ -20,6 +20,8 @@ COLUMNS = [("architecture", "architecture"), ("preset", "preset"), ("image_bytes
            ("l1_hit_rate", "L1 hit rate"), ("l2_hit_rate", "L2 hit rate"),
            ("nodes_per_ray", "nodes/ray"), ("tests_per_ray", "tests/ray"),
            ("utilisation", "utilisation"), ("limit", "limit"),
+           ("bram18k", "18 Kbit BRAMs"), ("dsp48e", "DSP48E"),
+           ("fps_per_bram18k", "frames/s per BRAM"), ("fps_per_dsp48e", "frames/s per DSP48E"),
            ("hit_miss_differ", "hit/miss differ"), ("other_object", "other object"),
            ("mean_depth_error", "mean depth error")]
 
@@ -30,6 +32,9 @@ PLOTS = [("Frame rate (frames/s)", [("fps", None)], True),
           [("core_bytes_per_ray", "core fetches (L1)"), ("l2_bytes_per_ray", "L2 (L1 refills)"),
            ("dram_bytes_per_ray", "DRAM")], False),
          ("Work per ray", [("nodes_per_ray", "nodes"), ("tests_per_ray", "triangle tests")], False),
+         # The resource estimate (docs/comparison.md, "Resources"): the SVO has no DSP48E.
+         ("Frame rate per resource",
+          [("fps_per_bram18k", "per 18 Kbit block RAM"), ("fps_per_dsp48e", "per DSP48E")], False),
          ("Pixels differing from the float64 reference",
           [("hit_miss_differ", "hit/miss"), ("other_object", "other object")], False)]
 

@@ -1,6 +1,7 @@
 """The plots of rtusim rows (matplotlib): the objective (a statistic, fps by default) against
 each varied key or --x, a line per value of --by, a panel per value of --facet; hit rates against
-cache size, core time, scheduler waits, cycles per ray against DRAM latency. Each plot function
+cache size, core time, scheduler waits, cycles per ray against DRAM latency; with --pareto, the
+frame rate against a resource with its Pareto front. Each plot function
 returns [(name, figure)], empty when it does not apply."""
 
 import io
@@ -15,6 +16,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullLocator  # noqa: E402
 import numpy as np  # noqa: E402
 
+from rtusim_objective import resource_front  # noqa: E402
 from rtusim_rows import (TIME_PARTS, InputError, as_number, core_time_of, cycles_per_ray_of,  # noqa: E402
                          describe, fixed_config, format_value, get, groups_by,
                          hit_rate_of, key_value, per_core_times, short_key, sort_key, value_of,
@@ -372,10 +374,12 @@ def plot_cycles_vs_dram(rows, varied):
 
 
 class PlotRequest:
-    """What `rtusim plot` was asked for: --x, --y, --by, --facet (None: chosen from the rows)."""
+    """What `rtusim plot` was asked for: --x, --y, --by, --facet (None: chosen from the rows),
+    --pareto (a resource: only the Pareto plot of --y against it)."""
 
-    def __init__(self, x=None, y=None, by=None, facet=None):
+    def __init__(self, x=None, y=None, by=None, facet=None, pareto=None):
         self.x, self.y, self.by, self.facet = x, y, by, facet
+        self.pareto = pareto
 
 
 def default_statistic(rows):
@@ -513,6 +517,67 @@ def plot_objective(rows, varied, request):
     return [plot for x in xs for plot in plot_stat_against(rows, varied, request, x)]
 
 
+# Axis labels of the resource estimate's columns (issue 30 §2, docs/comparison.md).
+RESOURCE_LABELS = {"bram18k": "18 Kbit block RAMs", "dsp48e": "DSP48E slices",
+                   "memory_bits": "on-chip memory (bits)", "bram_bits": "block RAM bits",
+                   "multipliers": "multipliers", "adders": "adders", "dividers": "dividers",
+                   "comparators": "comparators", "luts": "LUTs of the arithmetic"}
+# The keys that name an architecture, the first varied one colours the Pareto plot's points.
+ARCHITECTURE_KEYS = ["architecture", "core"]
+
+
+def resource_axis(ax, values):
+    """A log x axis when the resource spans a factor of 8 or more and none is zero."""
+    low, high = min(values), max(values)
+    if low > 0 and high / low >= 8:
+        ax.set_xscale("log")
+        ax.set_xlim(low / 1.5, high * 1.8)  # room for the last point's name
+        return " (log scale)"
+    ax.set_xlim(left=-0.03 * high if high > 0 else -1, right=high * 1.25 if high > 0 else 1)
+    return ""
+
+
+def plot_pareto(rows, varied, request, resource):
+    """request.y (fps by default) against a resource of the rows' estimate (bram18k, dsp48e,
+    memory_bits, ...): a point a row, coloured by --by (default the architecture or core kind
+    where they vary), the Pareto front joined as a staircase and its points named by the other
+    varied keys."""
+    y = request.y or "fps"
+    usable = [r for r in rows if as_number(value_of(r, y)) is not None
+              and as_number(value_of(r, resource)) is not None]
+    if not usable:
+        raise InputError("--pareto %s: no ok row has both %s and %s (sweep and fps rows carry the "
+                         "resource estimate under \"resources\")" % (resource, y, resource))
+    by = chosen(request.by, next((k for k in ARCHITECTURE_KEYS if k in varied), None))
+    fig, ax = new_figure(8.5, 5.2)
+    for index, (value, group) in enumerate(groups_by(usable, [by] if by else [])):
+        ax.scatter([value_of(r, resource) for r in group], [value_of(r, y) for r in group],
+                   color="C%d" % (index % 10), marker=MARKERS[index % len(MARKERS)], s=36,
+                   label=format_value(by, value[0]) if by else "rows", zorder=3)
+    front = resource_front(usable, resource, y)
+    xs, ys = [value_of(r, resource) for r in front], [value_of(r, y) for r in front]
+    line, = ax.step(xs, ys, where="post", color="black", linewidth=1.2, label="Pareto front",
+                    zorder=2)
+    line.set_gid("pareto front")  # for the tests
+    ax.scatter(xs, ys, s=140, facecolors="none", edgecolors="black", zorder=4)
+    named = [k for k in varied if k != by][:3]
+    for row in front:
+        text = describe(row["config"], ([by] if by else []) + named)
+        ax.annotate(textwrap.fill(text, 28), (value_of(row, resource), value_of(row, y)),
+                    textcoords="offset points", xytext=(6, 6), fontsize=7)
+    scale = resource_axis(ax, [value_of(r, resource) for r in usable])
+    ax.set_xlabel(RESOURCE_LABELS.get(resource, resource) + scale)
+    ax.set_ylabel(stat_label(y))
+    ax.set_ylim(bottom=0, top=max(value_of(r, y) for r in usable) * 1.15)
+    legend(ax, title=short_key(by) if by else None, loc="lower right")
+    what = "%s against %s" % (stat_label(y)[0].upper() + stat_label(y)[1:],
+                              RESOURCE_LABELS.get(resource, resource))
+    extra = "%d rows, %d on the Pareto front" % (len(usable), len(front))
+    set_title(fig, title_for(what, usable, exclude=tuple(varied),
+                             extra=extra + left_out_note(rows, usable, y, resource)))
+    return [("pareto_%s_vs_%s" % (file_part(y), file_part(resource)), fig)]
+
+
 PLOTS = [plot_hit_rates, plot_core_time, plot_wait_histogram, plot_cycles_vs_dram]
 
 
@@ -524,6 +589,8 @@ def make_plots(rows, request=None):
     if not ok:
         return []
     varied = varied_keys(ok) if len(ok) > 1 else []
+    if request.pareto:
+        return plot_pareto(ok, varied, request, request.pareto)
     figures = plot_objective(ok, varied, request)
     if request.x or request.y:
         return figures

@@ -66,6 +66,13 @@ def pareto_front(rows, objectives):
     return [r for r in rows if not any(dominates(other, r) for other in rows)]
 
 
+def resource_front(rows, resource, rate):
+    """The Pareto front of `rate` (fps) against a resource (bram18k): the rows no other row beats
+    with no more of the resource and no lower rate, by the resource."""
+    front = pareto_front(rows, [Objective("min:" + resource), Objective("max:" + rate)])
+    return sorted(front, key=lambda r: (value_of(r, resource), -value_of(r, rate)))
+
+
 def summaries(rows, objectives, groups_given=(), base_given=()):
     """Per group: {"group": {key: value}, "best": row, "ties": rows as good, "base": row or
     None, "gain": share or None, "front": rows (two objectives), "rows": count}."""

@@ -2,7 +2,8 @@
 """Plots, an HTML report, the best configuration and diffs of rtusim results.
 
 Usage:
-  rtusim_plot.py plot [--x KEY] [--y STAT] [--by KEY] [--facet KEY] [--where KEY=VALUE]...
+  rtusim_plot.py plot [--x KEY] [--y STAT] [--by KEY] [--facet KEY] [--pareto RESOURCE]
+                      [--where KEY=VALUE]...
                       [--label NAME]... --out-dir DIR -- INPUT...
   rtusim_plot.py report [--objective OBJ]... [--group KEY]... [--base KEY=VALUE]...
                         [--where KEY=VALUE]... [--label NAME]... --out FILE.html -- INPUT...
@@ -74,7 +75,7 @@ def command_plot(args):
     plt = plotting()
     from rtusim_figures import PlotRequest, make_plots, render
     rows = rows_of(args)
-    request = PlotRequest(args.x, args.y, args.by, args.facet)
+    request = PlotRequest(args.x, args.y, args.by, args.facet, args.pareto)
     figures = make_plots(rows, request)
     if not figures:
         ok = sum(r["status"] == "ok" for r in rows)
@@ -168,6 +169,9 @@ def main(argv=None):
     plot.add_argument("--y", help="the statistic on the y axis (default: fps)")
     plot.add_argument("--by", help="a line per value of this key (none: no such key)")
     plot.add_argument("--facet", help="a panel per value of this key (none: one panel)")
+    plot.add_argument("--pareto", metavar="RESOURCE",
+                      help="only the Pareto plot of --y (fps) against this resource column "
+                      "(bram18k, dsp48e, memory_bits, multipliers, luts)")
     add_rows(plot)
     report = commands.add_parser("report", help="write a self-contained HTML report")
     report.add_argument("--out", required=True, help="HTML file to write")

@@ -83,9 +83,12 @@ def run_row(obj, where):
     statistics = obj.get("statistics")
     if status == "ok" and not isinstance(statistics, dict):
         raise InputError("%s: status ok but no \"statistics\" object" % where)
+    # the architecture's resource estimate (issue 30 §2): its totals, not its itemised lists
+    resources = obj.get("resources") if isinstance(obj.get("resources"), dict) else {}
     return {"status": str(status), "error": str(obj.get("error") or ""),
             "preset": str(obj.get("preset") or ""), "config": flatten(config),
-            "statistics": statistics if status == "ok" else None, "source": where}
+            "statistics": statistics if status == "ok" else None, "source": where,
+            "resources": {k: v for k, v in resources.items() if not isinstance(v, (dict, list))}}
 
 
 def read_jsonl(path, handle):
@@ -242,9 +245,11 @@ def statistic(row, name):
 
 
 def value_of(row, name):
-    """A statistic, or else a configuration key, of a row (an objective or an axis may be
-    either: fps, or memory.l1.size as a cost)."""
+    """A statistic, a resource of the row's estimate (bram18k, dsp48e), or else a configuration
+    key, of a row (an objective or an axis may be either: fps, or memory.l1.size as a cost)."""
     value = statistic(row, name)
+    if value is None:
+        value = row.get("resources", {}).get(name)
     # `cores` is the per-core statistics and the setting: the setting is the number
     return key_value(row, name) if value is None or isinstance(value, (dict, list)) else value
 

@@ -79,7 +79,20 @@ print({a: (x["hit_miss_differ"], x["other_object"]) for a, x in agreement.items(
 table = list(csv.DictReader(open(sys.argv[2])))
 assert [r["architecture"] for r in table] == list(rows), table
 assert table[0]["total_cycles"] == str(rows["svo"]["figures"]["total_cycles"]), table[0]
+# The resource estimate beside the raw figures: the fps row's, and the rate per resource. The
+# SVO core has no multiplier (the thesis' 0 DSP), so no rate per DSP48E; the ray pipe's is its
+# final build's (tests/test_resource_estimate.cpp counts it: 82 RAMB18, 62 DSP48E).
+for arch, r in rows.items():
+    resources, f = r["row"]["resources"], r["figures"]
+    assert f["bram18k"] == resources["bram18k"] and f["dsp48e"] == resources["dsp48e"], arch
+    if resources["bram18k"] > 0:
+        assert abs(f["fps_per_bram18k"] - f["fps"] / resources["bram18k"]) < 1e-9 * f["fps"], arch
+assert rows["svo"]["figures"]["dsp48e"] == 0 and rows["svo"]["figures"]["fps_per_dsp48e"] is None
+assert rows["bvh"]["figures"]["multipliers"] > 0 and rows["bvh"]["figures"]["fps_per_dsp48e"] > 0
+assert (rows["raypipe"]["figures"]["bram18k"], rows["raypipe"]["figures"]["dsp48e"]) == (82, 62)
+csv_row = {r["architecture"]: r for r in table}
+assert csv_row["svo"]["fps_per_dsp48e"] == "" and csv_row["raypipe"]["bram18k"] == "82", csv_row
 report = open(sys.argv[3]).read()
-assert report.count("data:image/png;base64") == 5 + 5, report.count("data:image/png;base64")
+assert report.count("data:image/png;base64") == 6 + 5, report.count("data:image/png;base64")
 PY
 echo "compare: ok"

@@ -50,6 +50,22 @@ while read -r row; do
   same_statistics row$i.jsonl single$i.json || fail "sweep row $i differs from its single run"
 done <rows.jsonl
 
+# Sweep rows carry the resource estimate as the last columns (docs/comparison.md, "Resources").
+# Block RAMs by hand: the L2 (128 KiB: 16,384 x 64 bits, 64 RAMB18; tags 256 sets x 8 ways x
+# (18 + 1) = 256 x 152, 5) is 69; an L1 of 512 B (64 words) and its tags are LUT RAM, one of
+# 2 KiB (256 x 64) 2 RAMB18 a core; the SVO stacks (11 frames) and result registers none.
+"$python" - rows.csv <<'PY' || fail "sweep resource columns"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+header = list(rows[0])
+assert header[-9:] == ["memory_bits", "bram_bits", "bram18k", "dsp48e", "multipliers", "adders",
+                       "dividers", "comparators", "luts"], header[-9:]
+expected = {("1", "512"): 69, ("4", "512"): 69, ("1", "2KiB"): 71, ("4", "2KiB"): 77}
+got = {(r["cores"], r["memory.l1.size"]): int(r["bram18k"]) for r in rows}
+assert got == expected, got
+assert all(r["dsp48e"] == "0" and r["adders"] == str(3 * int(r["cores"])) for r in rows), rows
+PY
+
 # fps rows equal render's statistics for the same configuration.
 "$rtusim" fps --scene sphere --depth 5 --resolutions 24x16,32x18 --cores 2,8 -j 2 --csv fps.csv >fps.txt
 head -1 fps.csv | grep -q '^width,height,cores,rays,total_cycles,cycles_per_ray,frame_ms,fps,limit' \

@@ -26,6 +26,12 @@ assert len(rows) == 12 and all(r['preset'] == 'cached' for r in rows), 'rows or 
 "$rtusim" plot --x memory.l1.size --where scheduler=rr --out-dir w s.jsonl >/dev/null
 [[ $(grep -c '<g id="series ' w/fps_vs_memory_l1_size.svg) == 2 ]] || fail "--where scheduler=rr"
 
+# --pareto: the frame rate against the rows' block RAMs (a 2 KiB L1 2 RAMB18 a core, a 16 KiB one 8),
+# with its front; no other plot.
+"$rtusim" plot --pareto bram18k --where scene=menger --out-dir r s.jsonl >pareto.txt
+[[ $(ls r) == $'pareto_fps_vs_bram18k.png\npareto_fps_vs_bram18k.svg' ]] || fail "plot --pareto: $(ls r)"
+grep -q 'id="pareto front"' r/pareto_fps_vs_bram18k.svg || fail "plot --pareto drew no front"
+
 # The best row per scene is the one with the highest fps, against the first row's configuration.
 "$rtusim" best s.jsonl >best.txt
 python3 - <<'PY'

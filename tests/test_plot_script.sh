@@ -187,6 +187,39 @@ cmp -s diff.txt nompl.txt || fail "diff without matplotlib differs"
 python3 "$script" diff --changed a.json b.json >changed.txt
 ! grep -q hit_rate changed.txt || fail "diff --changed shows an equal statistic"
 
+# --pareto: frame rate against a resource of the rows' estimate (issue 30 §2). Four architectures
+# at two sizes, by hand: (block RAMs, fps) svo (2, 10) (8, 30), bvh (4, 8) (16, 50),
+# bih (3, 20) (12, 40), kd (6, 5) (24, 15). The front, by fewest RAMs at the highest fps:
+# svo 2/10, bih 3/20, svo 8/30, bih 12/40, bvh 16/50; bvh 4/8, kd 6/5, kd 24/15 are beaten.
+python3 - <<'EOF2'
+import json
+points = {"svo": [(2, 0, 10), (8, 0, 30)], "bvh": [(4, 24, 8), (16, 96, 50)],
+          "bih": [(3, 48, 20), (12, 192, 40)], "kd": [(6, 40, 5), (24, 160, 15)]}
+rows = []
+for core, sizes in points.items():
+    for cores, (rams, dsps, fps) in zip((4, 16), sizes):
+        rows.append({"status": "ok", "error": "", "config": {"core": core, "cores": cores},
+                     "statistics": {"fps": fps, "total_cycles": 1000},
+                     "resources": {"bram18k": rams, "dsp48e": dsps, "memories": []}})
+with open("resources.jsonl", "w") as f:
+    f.write("\n".join(json.dumps(r) for r in rows) + "\n")
+EOF2
+python3 "$script" plot --pareto bram18k --out-dir pareto resources.jsonl >pareto.txt \
+  || fail "plot --pareto exit status"
+magic pareto/pareto_fps_vs_bram18k.png 89504e470d0a1a0a
+grep -q 'id="pareto front"' pareto/pareto_fps_vs_bram18k.svg || fail "no Pareto front drawn"
+[[ $(wc -l <pareto.txt) == 2 ]] || fail "plot --pareto wrote more than its plot"
+PYTHONPATH=$(dirname "$script") python3 -c '
+import sys
+from rtusim_rows import load
+from rtusim_objective import resource_front
+front = [(r["config"]["core"], r["resources"]["bram18k"]) for r in resource_front(load(["resources.jsonl"]), "bram18k", "fps")]
+expected = [("svo", 2), ("bih", 3), ("svo", 8), ("bih", 12), ("bvh", 16)]
+sys.exit(0 if front == expected else "front %s, expected %s" % (front, expected))' \
+  || fail "the Pareto front is not the hand-derived one"
+expect_error "pareto luts: no ok row has both fps and luts" \
+  python3 "$script" plot --pareto luts --out-dir bad resources.jsonl
+
 head -2 fps.csv >one.csv
 expect_error "no plot applies" python3 "$script" plot --out-dir bad one.csv
 expect_error "usage" python3 "$script" plot sweep.jsonl

@@ -262,6 +262,8 @@ void printTable(const std::vector<Json>& rows, std::ostream& out) {
       {"l1_hit_rate", "L1 hit"},        {"l2_hit_rate", "L2 hit"},
       {"nodes_per_ray", "nodes/ray"},   {"tests_per_ray", "tests/ray"},
       {"utilisation", "util"},          {"limit", "limit"},
+      {"bram18k", "BRAM18k"},           {"dsp48e", "DSP48E"},
+      {"fps_per_bram18k", "fps/BRAM"},  {"fps_per_dsp48e", "fps/DSP"},
       {"hit_miss_differ", "hit/miss"},  {"other_object", "other obj"},
       {"mean_depth_error", "depth err"}};
   // A space before every cell, so a long limit name ("dram_bandwidth") never runs into the cell

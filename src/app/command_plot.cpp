@@ -43,9 +43,11 @@ void addObjectiveOptions(CLI::App& command, PlotArguments& rows) {
 void addPlotCommands(CLI::App& app) {
   auto plotRows = std::make_shared<PlotArguments>();
   CLI::App* plot = app.add_subcommand(
-      "plot", "plots (PNG and SVG) of sweep rows (.jsonl) or fps tables (.csv): frame rate against "
-              "each varied key, or --y STAT against --x KEY; hit rates against cache size, core "
-              "time, scheduler waits, cycles per ray against DRAM latency");
+      "plot",
+      "plots (PNG and SVG) of sweep rows (.jsonl) or fps tables (.csv): frame rate against "
+      "each varied key, or --y STAT against --x KEY, or against a resource with its Pareto front "
+      "(--pareto); hit rates against cache size, core "
+      "time, scheduler waits, cycles per ray against DRAM latency");
   plot->add_option("inputs", plotRows->inputs,
                    "sweep or fps .jsonl, fps .csv or --stats .json files")
       ->required()
@@ -63,6 +65,10 @@ void addPlotCommands(CLI::App& app) {
                    "line per configuration of the other keys)");
   plot->add_option("--facet", plotRows->values["--facet"],
                    "one panel per value of this key (default: scene when it varies; `none`)");
+  plot->add_option("--pareto", plotRows->values["--pareto"],
+                   "only the Pareto front of --y (default fps) against this resource of the "
+                   "rows' estimate: bram18k, dsp48e, memory_bits, bram_bits, multipliers, adders, "
+                   "dividers, comparators, luts");
   addRowOptions(*plot, *plotRows);
   plot->callback([plotRows] { runPlotScript("plot", plotRows->arguments()); });
 

@@ -17,6 +17,7 @@
 #include "base/file_lock.h"
 #include "base/output_file.h"
 #include "config/sweep_spec.h"
+#include "explore/architecture_resources.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_slurm.h"
 #include "explore/sweep_workers.h"
@@ -40,6 +41,7 @@ std::vector<std::string> csvHeader() {
   header.push_back("status");
   header.push_back("error");
   for (const std::string& column : statisticsColumns()) header.push_back(column);
+  for (const std::string& column : resourceColumns()) header.push_back(column);
   return header;
 }
 
@@ -52,6 +54,7 @@ std::vector<std::string> csvFields(const Json& row) {
   fields.push_back(row["status"].get<std::string>());
   fields.push_back(row["error"].get<std::string>());
   for (const std::string& value : statisticsValues(row)) fields.push_back(value);
+  for (const std::string& value : resourceValues(row)) fields.push_back(value);
   return fields;
 }
 

@@ -7,6 +7,7 @@
 #include "app/frame_outputs.h"
 #include "app/raypipe_render.h"
 #include "config/config_schema.h"
+#include "explore/architecture_resources.h"
 #include "explore/exploration_run.h"
 #include "explore/frame_agreement.h"
 #include "explore/frame_scene.h"
@@ -137,6 +138,7 @@ Json compareFigures(const Json& row) {
   const Json& s = row["statistics"];
   const double rays = s["rays"].get<double>();
   const bool raypipe = row["config"]["architecture"] == "raypipe";
+  const Json resources = row.contains("resources") ? row["resources"] : Json::object();
   return {{"total_cycles", s["total_cycles"]},
           {"fps", s["fps"]},
           {"frame_ms", s["frame_ms"]},
@@ -150,7 +152,13 @@ Json compareFigures(const Json& row) {
           {"tests_per_ray", perRay(kindCount(row, "triangle_tests"), rays)},
           {"utilisation", raypipe ? s["limit_utilisation"] : statistic(s, "utilisation/cores")},
           {"limit", s["limit"]},
-          {"limit_utilisation", s["limit_utilisation"]}};
+          {"limit_utilisation", s["limit_utilisation"]},
+          {"memory_bits", resources["memory_bits"]},
+          {"bram18k", resources["bram18k"]},
+          {"dsp48e", resources["dsp48e"]},
+          {"multipliers", resources["multipliers"]},
+          {"fps_per_bram18k", perResource(s["fps"], resources["bram18k"])},
+          {"fps_per_dsp48e", perResource(s["fps"], resources["dsp48e"])}};
 }
 
 Json compareRow(const CompareTarget& target, const CompareReference& reference) {
@@ -202,6 +210,12 @@ const std::vector<std::string>& compareColumns() {
                                                    "utilisation",
                                                    "limit",
                                                    "limit_utilisation",
+                                                   "memory_bits",
+                                                   "bram18k",
+                                                   "dsp48e",
+                                                   "multipliers",
+                                                   "fps_per_bram18k",
+                                                   "fps_per_dsp48e",
                                                    "pixels",
                                                    "hit_miss_differ",
                                                    "false_hits",

@@ -45,7 +45,9 @@ nlohmann::ordered_json compareRow(const CompareTarget& target, const CompareRefe
 // The figures of a row's statistics (an RTU kind's or the ray pipe's): frame cycles and rate,
 // cycles per ray, bytes per ray from the core (its fetches), the L2 (L1 refills) and DRAM, L1 and
 // L2 hit rates, nodes and triangle tests per ray, the cores' (or the pipe's busiest unit's)
-// utilisation and the limit; null where the architecture has no such figure.
+// utilisation and the limit, the resource estimate's memory bits, 18 Kbit block RAMs, DSP48E
+// slices and multipliers with the frame rate per block RAM and per DSP48E (the row's
+// "resources", explore/architecture_resources.h); null where the architecture has no such figure.
 nlohmann::ordered_json compareFigures(const nlohmann::ordered_json& row);
 
 // The CSV's columns and a row's fields.

@@ -9,6 +9,7 @@
 #include "base/binary_file.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
+#include "explore/architecture_resources.h"
 #include "explore/ray_passes.h"
 #include "explore/raypipe_frame.h"
 #include "explore/raypipe_row.h"
@@ -176,8 +177,10 @@ std::vector<size_t> validRows(
   return valid;
 }
 
-nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
-                                   RowModel model) {
+namespace {
+
+nlohmann::ordered_json frameRow(const Configuration& configuration, const FrameScene& scene,
+                                RowModel model) {
   const RunConfig& settings = configuration.values();
   if (settings.architecture == Architecture::Raypipe) return runRaypipeRow(configuration, scene);
   validateRow(configuration);
@@ -197,6 +200,16 @@ nlohmann::ordered_json runFrameRow(const Configuration& configuration, const Fra
   const RtuRun run = recurrence ? runAnalytic(memory, records, settings.rtu)
                                 : simulateRtu(memory, records, settings.rtu);
   return okRow(configuration, scene, run.statistics);
+}
+
+}  // namespace
+
+nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
+                                   RowModel model) {
+  nlohmann::ordered_json row = frameRow(configuration, scene, model);
+  row["resources"] =
+      resourcesJson(architectureResources(configuration.values(), scene.words.size()));
+  return row;
 }
 
 nlohmann::ordered_json runRowSafely(const Configuration& configuration, const SceneCache& scenes,

@@ -41,7 +41,8 @@ class SceneCache {
 // sample.fraction > 0 simulates a sample of the frame (sampled_run.h) and estimates the rest.
 enum class RowModel { Simulation, RecurrenceWhereExact };
 
-// The run JSON with "status": "ok"; throws for an impossible configuration or a stalled run.
+// The run JSON with "status": "ok" and the architecture's "resources" (architecture_resources.h);
+// throws for an impossible configuration or a stalled run.
 nlohmann::ordered_json runFrameRow(const Configuration& configuration, const FrameScene& scene,
                                    RowModel model = RowModel::Simulation);
 // runFrameRow, or the failed row of a configuration that cannot run.
