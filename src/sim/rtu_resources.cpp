@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "kinds/core_resources.h"
+#include "kinds/registry.h"
 
 namespace rtu {
 namespace {

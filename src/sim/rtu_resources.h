@@ -1,7 +1,8 @@
 #pragma once
 // The RTU's hardware as its configuration sizes it (issue 30 §2; docs/comparison.md,
-// "Resources"): its cores (each kind's coreResources, kinds/core_resources.h), the triangle units
-// they share, the memory hierarchy and the result manager's buffers.
+// "Resources"): its cores (each kind's coreResources, declared in its folder and included by its
+// kind header), the triangle units they share, the memory hierarchy and the result manager's
+// buffers.
 
 #include <cstdint>
 

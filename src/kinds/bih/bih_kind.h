@@ -16,6 +16,7 @@
 #include "kinds/bih/bih_counters.h"
 #include "kinds/bih/bih_intersectors.h"
 #include "kinds/bih/bih_job_setup.h"
+#include "kinds/bih/bih_resources.h"
 #include "kinds/bih/bih_traversal.h"
 #include "rtu/core_kind.h"
 #include "rtu/triangle_result.h"

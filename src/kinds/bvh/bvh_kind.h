@@ -15,6 +15,7 @@
 #include "kinds/bvh/bvh_counters.h"
 #include "kinds/bvh/bvh_intersectors.h"
 #include "kinds/bvh/bvh_job_setup.h"
+#include "kinds/bvh/bvh_resources.h"
 #include "kinds/bvh/bvh_traversal.h"
 #include "kinds/bvh/langr_node.h"
 #include "rtu/core_kind.h"

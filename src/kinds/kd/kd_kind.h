@@ -13,6 +13,7 @@
 
 #include "kinds/kd/kd_counters.h"
 #include "kinds/kd/kd_job_setup.h"
+#include "kinds/kd/kd_resources.h"
 #include "kinds/kd/kd_traversal.h"
 #include "rtu/core_kind.h"
 #include "rtu/triangle_result.h"

@@ -11,6 +11,7 @@
 #include "kinds/svo/state_vocabulary.h"
 #include "kinds/svo/svo_counters.h"
 #include "kinds/svo/svo_memory.h"
+#include "kinds/svo/svo_resources.h"
 #include "kinds/svo/thesis_records.h"
 #include "kinds/svo/traversal_core.h"
 #include "rtu/core_kind.h"
