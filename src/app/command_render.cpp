@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
+#include "app/frame_stream.h"
 #include "app/output_paths.h"
 #include "app/ray_workload_options.h"
 #include "app/raypipe_render.h"
@@ -38,6 +39,7 @@ struct RenderOptions {
       paths.insert(paths.end(), more.begin(), more.end());
     return paths;
   }
+  bool wantsImages() const { return !image.empty() || !depthImage.empty() || !costImage.empty(); }
   void checkImageFormats() const {
     for (const NamedPath& file : imagePaths())
       if (!file.path.empty()) checkImageFormat(file.option, file.path);
@@ -61,36 +63,39 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
   checkOutputsOfModel(options.outputs, model);
 }
 
-// The results of the frame's records on the chosen model, in pixel order, with the model's
-// report (the golden model's host time; a timed model's statistics, trace and timeline).
-std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
-                                       const std::vector<HostRecord>& records,
-                                       const Configuration& configuration,
-                                       const RenderOptions& options, uint64_t& cycles) {
+// The frame's records on the chosen model, each result taken by `stream` as it leaves the run
+// (none kept: app/frame_stream.h), with the model's report (the golden model's host time; a timed
+// model's statistics, trace and timeline).
+void traceFrame(const FrameScene& scene, FrameStream& stream, const Configuration& configuration,
+                const RenderOptions& options, uint64_t& cycles) {
   const RunConfig& settings = configuration.values();
   const WordMemory memory = scene.memory();
   if (settings.model == ModelKind::Golden) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<CoreKindResult> results = traceGolden(memory, records, settings.rtu);
+    traceGolden(memory, stream.records(), settings.rtu, stream.taker());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char host[128];
     std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
-                  results.size() / seconds / 1e6);
-    std::cout << describeResults(settings, results) << host;
-    return results;
+                  static_cast<double>(stream.held().taken) / seconds / 1e6);
+    std::cout << stream.describe() << host;
+    return;
   }
   const RtuConfig config = options.outputs.traced(settings.rtu);
-  const RtuConfig planned = plannedTrace(memory, records, config, options.outputs, std::cout);
+  // A trace's dry runs read the records more than once: a traced frame holds them.
+  const bool traced = config.trace || config.timeline.wanted();
+  const std::vector<HostRecord> held = traced ? stream.heldRecords() : std::vector<HostRecord>{};
+  const RecordSource records = traced ? RecordSource(held) : stream.records();
+  const RtuConfig planned = traced ? plannedTrace(memory, held, config, options.outputs, std::cout)
+                                   : config;
   RunProgressLine progress("render", "rays");
-  const RtuRun run = runModel(settings.model, memory, records, planned, progress.callback());
-  std::vector<CoreKindResult> results = resultsInJobOrder(run);
+  const RtuRun run =
+      runFrame(settings.model, memory, records, planned, stream.taker(), progress.callback());
   cycles = run.statistics.totalCycles;
-  std::cout << describeResults(settings, results);
+  std::cout << stream.describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
   if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
-  return results;
 }
 
 // One line of a pass: its rays and hits, and on a timed model its cycles and what limits it.
@@ -152,13 +157,17 @@ RenderedFrame renderFrame(const Configuration& configuration, const RenderOption
   if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
     throw std::invalid_argument("--passes " + settings.rayPasses +
                                 ": secondary passes need the svo core and the camera's frame");
-  const std::vector<HostRecord> records = frameRecords(scene, settings);
+  // Pixels are held only for what reads them: images and secondary passes.
+  const bool keepPixels = options.wantsImages() || passes.size() > 1;
+  const RtuConfig traced = options.outputs.traced(settings.rtu);
+  checkFrameFits(settings, keepPixels, traced.trace || traced.timeline.wanted());
+  FrameStream stream(settings, scene, keepPixels);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
             << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
   uint64_t cycles = 0;
-  RenderedFrame frame =
-      framePixels(settings, scene, traceFrame(scene, records, configuration, options, cycles));
+  traceFrame(scene, stream, configuration, options, cycles);
+  RenderedFrame frame = stream.takeFrame();
   if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, frame);
   return frame;
 }

@@ -15,13 +15,6 @@ double perRay(uint64_t count, size_t rays) {
   return static_cast<double>(count) / static_cast<double>(std::max<size_t>(rays, 1));
 }
 
-template <class Counters, class Result>
-Counters countersOf(const std::vector<Result>& results) {
-  Counters counters;
-  for (const Result& result : results) counters.add(result.counts);
-  return counters;
-}
-
 }  // namespace
 
 FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
@@ -48,9 +41,15 @@ std::string describeHits(size_t rays, uint64_t hits, uint64_t cost, uint32_t max
   return text;
 }
 
-std::string describeBvhResults(const std::vector<BvhResult>& results) {
-  const auto counters = countersOf<BvhCounters>(results);
-  const size_t rays = results.size();
+// The "rays", "hits" and "cost" lines of a tally.
+template <class Counters>
+std::string describeTriangleHits(const TriangleTally<Counters>& tally) {
+  return describeHits(tally.rays, tally.hits, tally.cost, tally.maxCost);
+}
+
+std::string describeBvhResults(const TriangleTally<BvhCounters>& tally) {
+  const BvhCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
   char text[256];
   std::snprintf(text, sizeof text,
                 "bvh         %.2f nodes, %.2f box tests, %.2f triangle tests, %.1f bytes per "
@@ -58,14 +57,13 @@ std::string describeBvhResults(const std::vector<BvhResult>& results) {
                 perRay(counters.bvhNodesVisited, rays), perRay(counters.bvhBoxTests, rays),
                 perRay(counters.bvhTriangleTests, rays), perRay(counters.bvhBytesFetched, rays),
                 static_cast<unsigned long long>(counters.bvhStackOverflows));
-  return describeTriangleHits(results) + text;
+  return describeTriangleHits(tally) + text;
 }
 
-std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval) {
-  const auto counters = countersOf<BihCounters>(results);
-  const size_t rays = results.size();
-  uint64_t cycles = 0;
-  for (const BihResult& result : results) cycles += result.cost;
+std::string describeBihResults(const TriangleTally<BihCounters>& tally, uint32_t unitInterval) {
+  const BihCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
+  const uint64_t cycles = tally.cost;
   char text[512];
   std::snprintf(text, sizeof text,
                 "bih         %.2f nodes, %.2f triangle tests, %.1f bytes per ray; %llu rays lost "
@@ -77,12 +75,12 @@ std::string describeBihResults(const std::vector<BihResult>& results, uint32_t u
                 static_cast<unsigned long long>(counters.bihStackOverflows),
                 static_cast<unsigned long long>(counters.bihDividerErrors),
                 100.0 * perRay(counters.bihTriangleTests * unitInterval, cycles));
-  return describeTriangleHits(results) + text;
+  return describeTriangleHits(tally) + text;
 }
 
-std::string describeKdResults(const std::vector<KdResult>& results) {
-  const auto counters = countersOf<KdCounters>(results);
-  const size_t rays = results.size();
+std::string describeKdResults(const TriangleTally<KdCounters>& tally) {
+  const KdCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
   char text[256];
   std::snprintf(text, sizeof text,
                 "kd          %.2f nodes, %.2f triangle tests, %.3f restarts, %.3f short-stack "
@@ -90,7 +88,7 @@ std::string describeKdResults(const std::vector<KdResult>& results) {
                 perRay(counters.kdNodesVisited, rays), perRay(counters.kdTriangleTests, rays),
                 perRay(counters.kdRestarts, rays), perRay(counters.kdShortStackDrops, rays),
                 perRay(counters.kdBytesFetched, rays));
-  return describeTriangleHits(results) + text;
+  return describeTriangleHits(tally) + text;
 }
 
 }  // namespace rtu

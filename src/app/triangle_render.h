@@ -40,22 +40,45 @@ RenderedFrame triangleFrame(const Camera& camera, const FrameScene& scene,
 // "rays", "hits" and "cost" report lines of a frame's results.
 std::string describeHits(size_t rays, uint64_t hits, uint64_t cost, uint32_t maxCost);
 
-template <class Result>
-std::string describeTriangleHits(const std::vector<Result>& results) {
+// What a triangle kind's report counts of its results, summed one result at a time (so a frame's
+// results can be counted as they leave a run): hits, costs and the kind's counters.
+template <class Counters>
+struct TriangleTally {
+  size_t rays = 0;
   uint64_t hits = 0, cost = 0;
   uint32_t maxCost = 0;
-  for (const Result& result : results) {
+  Counters counters;
+
+  template <class Result>
+  void add(const Result& result) {
+    ++rays;
     hits += result.hit;
     cost += result.cost;
     maxCost = std::max(maxCost, result.cost);
+    counters.add(result.counts);
   }
-  return describeHits(results.size(), hits, cost, maxCost);
-}
+  template <class Result>
+  static TriangleTally of(const std::vector<Result>& results) {
+    TriangleTally tally;
+    for (const Result& result : results) tally.add(result);
+    return tally;
+  }
+};
 
 // Hits, mean cost and the kind's counters per ray, as report lines; for the BIH the triangle unit's
 // fill rate, its tests' issue cycles (`unitInterval` each) over the rays' cycles (their costs).
-std::string describeBvhResults(const std::vector<BvhResult>& results);
-std::string describeBihResults(const std::vector<BihResult>& results, uint32_t unitInterval);
-std::string describeKdResults(const std::vector<KdResult>& results);
+std::string describeBvhResults(const TriangleTally<BvhCounters>& tally);
+std::string describeBihResults(const TriangleTally<BihCounters>& tally, uint32_t unitInterval);
+std::string describeKdResults(const TriangleTally<KdCounters>& tally);
+inline std::string describeBvhResults(const std::vector<BvhResult>& results) {
+  return describeBvhResults(TriangleTally<BvhCounters>::of(results));
+}
+inline std::string describeBihResults(const std::vector<BihResult>& results,
+                                      uint32_t unitInterval) {
+  return describeBihResults(TriangleTally<BihCounters>::of(results), unitInterval);
+}
+inline std::string describeKdResults(const std::vector<KdResult>& results) {
+  return describeKdResults(TriangleTally<KdCounters>::of(results));
+}
 
 }  // namespace rtu
