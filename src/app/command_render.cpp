@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/frame_images.h"
@@ -149,8 +150,10 @@ void renderPasses(const FrameScene& scene, const Configuration& configuration,
               << " cycles\n";
 }
 
-// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes.
-RenderedFrame renderFrame(const Configuration& configuration, const RenderOptions& options) {
+// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes; its
+// pixels when images or passes read them.
+std::optional<RenderedFrame> renderFrame(const Configuration& configuration,
+                                         const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
   const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
@@ -167,8 +170,8 @@ RenderedFrame renderFrame(const Configuration& configuration, const RenderOption
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
   uint64_t cycles = 0;
   traceFrame(scene, stream, configuration, options, cycles);
-  RenderedFrame frame = stream.takeFrame();
-  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, frame);
+  std::optional<RenderedFrame> frame = stream.takeFrame();
+  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, *frame);
   return frame;
 }
 
@@ -218,10 +221,10 @@ void addRenderCommand(CLI::App& app) {
     if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    const RenderedFrame rendered = renderFrame(configuration, *options);
-    if (!options->image.empty()) writeShadedImage(rendered, options->image);
-    if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
-    if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);
+    const std::optional<RenderedFrame> rendered = renderFrame(configuration, *options);
+    if (!options->image.empty()) writeShadedImage(*rendered, options->image);
+    if (!options->depthImage.empty()) writeDepthImage(*rendered, options->depthImage);
+    if (!options->costImage.empty()) writeCostImage(*rendered, options->costImage);
     for (const std::string* path : {&options->image, &options->depthImage, &options->costImage})
       if (!path->empty()) std::cout << "wrote       " << *path << "\n";
   });

@@ -186,9 +186,6 @@ void FrameStream::take(const CoreKindResult& result) {
 
 std::string FrameStream::describe() const { return tally_->describe(); }
 
-RenderedFrame FrameStream::takeFrame() {
-  if (!frame_) frame_.emplace(settings_.camera);
-  return std::move(*frame_);
-}
+std::optional<RenderedFrame> FrameStream::takeFrame() { return std::move(frame_); }
 
 }  // namespace rtu

@@ -52,8 +52,8 @@ class FrameStream {
   const RaysHeld& held() const { return held_; }
   // The report lines of the results taken (describeResults' of the same results).
   std::string describe() const;
-  // The pixels placed (every pixel a miss when pixels were not kept).
-  RenderedFrame takeFrame();
+  // The pixels placed, when kept.
+  std::optional<RenderedFrame> takeFrame();
 
  private:
   HostRecord make(uint64_t index);
