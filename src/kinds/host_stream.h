@@ -15,7 +15,8 @@
 
 namespace rtu {
 
-// A run's records by index; every run asks for each index once, in increasing order.
+// A run's records by index. A run asks for them in increasing order, each once; what reads them
+// more than once (warm frames, a trace's dry runs) takes them all() into a vector first.
 class RecordSource {
  public:
   using Make = std::function<HostRecord(uint64_t index)>;
@@ -43,11 +44,8 @@ class RecordSource {
   }
   // The caller's vector, or null for records made when asked.
   const std::vector<HostRecord>* vector() const { return records_; }
-  // A record of each alternative the source holds: the vector's all, a made source's sample.
-  std::vector<HostRecord> samples() const {
-    if (records_) return *records_;
-    return size_ == 0 ? std::vector<HostRecord>{} : std::vector<HostRecord>{*sample_};
-  }
+  // A made source's record 0, made beforehand (null for a vector's).
+  const HostRecord* sample() const { return sample_ ? &*sample_ : nullptr; }
 
  private:
   const std::vector<HostRecord>* records_ = nullptr;
@@ -76,7 +74,7 @@ struct RaysHeld {
 // checkCoreTakes (registry.h) for a source: a made source's records share one alternative.
 inline void checkCoreTakes(const std::string& core, const RecordSource& records) {
   if (const std::vector<HostRecord>* held = records.vector()) return checkCoreTakes(core, *held);
-  checkCoreTakes(core, records.samples());
+  if (records.size() > 0) checkCoreTakes(core, std::vector<HostRecord>{*records.sample()});
 }
 
 }  // namespace rtu
