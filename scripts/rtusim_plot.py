@@ -60,6 +60,24 @@ def plotting():
     return plt
 
 
+def write_whole(path, data):
+    """Writes `data` to `path` whole or not at all (docs/robustness.md, "Outputs: whole or not at
+    all"): into a temporary file beside it, flushed to the disk, then renamed into place. A full
+    disk or an interrupted run leaves the old file (or none), never a cut one."""
+    directory = os.path.dirname(os.path.abspath(path))
+    temporary = os.path.join(directory, ".%s.%d.tmp" % (os.path.basename(path), os.getpid()))
+    try:
+        with open(temporary, "wb") as handle:
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
 def rows_of(args):
     return select(load(args.inputs, args.label), args.where)
 
@@ -85,8 +103,7 @@ def command_plot(args):
     for name, fig in figures:
         for fmt in ("png", "svg"):
             path = os.path.join(args.out_dir, "%s.%s" % (name, fmt))
-            with open(path, "wb") as handle:
-                handle.write(render(fig, fmt))
+            write_whole(path, render(fig, fmt))
             print(path)
         plt.close(fig)
     return 0
@@ -131,7 +148,8 @@ def command_frames(args):
     fig.tight_layout()
     directory = os.path.dirname(os.path.abspath(args.out))
     os.makedirs(directory, exist_ok=True)
-    fig.savefig(args.out)
+    from rtusim_figures import render
+    write_whole(args.out, render(fig, os.path.splitext(args.out)[1][1:].lower() or "png"))
     plt.close(fig)
     print(args.out)
     return 0

@@ -322,3 +322,18 @@ TEST_CASE("Numbers that would change value are refused\\, not read leniently", "
   c.loadText("camera.up = [0, 0, 1]", "toml", "'c.toml'", ConfigSource::File);
   CHECK(c.values().camera.up.z == 1.0);
 }
+
+TEST_CASE("A sweep grid too large to hold is refused with its size before any point is made",
+          "[config]") {
+  SweepSpec spec;
+  spec.addGrid("cores=1,2");
+  CHECK(spec.expand(Configuration{}).size() == 2);
+  // 10^12 points: a few PB of configurations, refused at once rather than exhausting the machine.
+  std::vector<std::string> values;
+  for (int i = 1; i <= 1000; ++i) values.push_back(std::to_string(i));
+  for (const char* key : {"cores", "width", "height", "clock_mhz"})
+    spec.grid.emplace_back(key, values);
+  CHECK_THROWS_WITH(spec.expand(Configuration{}),
+                    Contains("the sweep has 2e+12 configurations, which would hold about") &&
+                        Contains("of this machine: sweep fewer values"));
+}

@@ -131,6 +131,28 @@ TEST_CASE("An ASCII PLY holds the elements its header declares\\, each on its li
              Contains("'face' element 1 of the 1 declared (body line 4) has 3 values"));
 }
 
+TEST_CASE("A binary PLY holds the elements its header declares\\, counted against its size",
+          "[mesh]") {
+  const auto problem = [](const std::string& name) {
+    const std::string path = kMalformed + "ply/" + name;
+    try {
+      rtu::loadTriangleMesh(path);
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("loaded");
+  };
+  // The tetrahedron of 4 vertices (12 bytes each) and 4 faces (a count byte, 3 indices: 13 bytes).
+  CHECK_THAT(problem("binary-body-cut-short.ply"),
+             Contains("declares more data than the file holds: 'face' element 4 of the 4 "
+                      "declared is cut off"));
+  CHECK_THAT(problem("binary-body-longer-than-declared.ply"),
+             Contains("declares less data than the file holds: 13 bytes follow the last element"));
+  CHECK_THAT(problem("binary-more-vertices-than-the-file-holds.ply"),
+             Contains("declares more data than the file holds: 20 'vertex' elements of 12 bytes, "
+                      "100 bytes left for them"));
+}
+
 TEST_CASE("Mesh loading limits come from the input size or the environment", "[mesh]") {
   ::unsetenv("RTUSIM_MESH_SECONDS");
   ::unsetenv("RTUSIM_MESH_MEMORY_MIB");

@@ -47,6 +47,12 @@ for name in fps_vs_cores core_time wait_histogram cycles_per_ray_vs_dram_latency
   grep -q "<svg" "plots/$name.svg" || fail "plots/$name.svg is not SVG"
   grep -q "plots/$name.png" plot.txt || fail "plot did not print plots/$name.png"
 done
+# Plots are written whole: beside their place, then renamed over it (a new file, not the old one
+# rewritten in place), with no temporary left behind.
+before=$(stat -c %i plots/fps_vs_cores.png)
+python3 "$script" plot --out-dir plots sweep.jsonl >/dev/null || fail "plot over an existing plot"
+[[ $(stat -c %i plots/fps_vs_cores.png) != "$before" ]] || fail "plots/fps_vs_cores.png rewritten in place"
+[[ -z $(find plots -name '.*.tmp') ]] || fail "temporaries left in plots: $(find plots -name '.*.tmp')"
 # The L1 size does not vary: no hit-rate plot.
 [[ ! -e plots/hit_rate_vs_l1_size.png ]] || fail "hit-rate plot without a cache size sweep"
 

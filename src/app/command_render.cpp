@@ -2,10 +2,12 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
+#include "app/frame_stream.h"
 #include "app/output_paths.h"
 #include "app/raypipe_render.h"
 #include "app/run_outputs.h"
@@ -36,6 +38,7 @@ struct RenderOptions {
       paths.insert(paths.end(), more.begin(), more.end());
     return paths;
   }
+  bool wantsImages() const { return !image.empty() || !depthImage.empty() || !costImage.empty(); }
   void checkImageFormats() const {
     for (const NamedPath& file : imagePaths())
       if (!file.path.empty()) checkImageFormat(file.option, file.path);
@@ -59,36 +62,39 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
   checkOutputsOfModel(options.outputs, model);
 }
 
-// The results of the frame's records on the chosen model, in pixel order, with the model's
-// report (the golden model's host time; a timed model's statistics, trace and timeline).
-std::vector<CoreKindResult> traceFrame(const FrameScene& scene,
-                                       const std::vector<HostRecord>& records,
-                                       const Configuration& configuration,
-                                       const RenderOptions& options, uint64_t& cycles) {
+// The frame's records on the chosen model, each result taken by `stream` as it leaves the run
+// (none kept: app/frame_stream.h), with the model's report (the golden model's host time; a timed
+// model's statistics, trace and timeline).
+void traceFrame(const FrameScene& scene, FrameStream& stream, const Configuration& configuration,
+                const RenderOptions& options, uint64_t& cycles) {
   const RunConfig& settings = configuration.values();
   const WordMemory memory = scene.memory();
   if (settings.model == ModelKind::Golden) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<CoreKindResult> results = traceGolden(memory, records, settings.rtu);
+    traceGolden(memory, stream.records(), settings.rtu, stream.taker());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char host[128];
     std::snprintf(host, sizeof host, "host        %.3f s, %.2f M rays/s (golden model)\n", seconds,
-                  results.size() / seconds / 1e6);
-    std::cout << describeResults(settings, results) << host;
-    return results;
+                  static_cast<double>(stream.held().taken) / seconds / 1e6);
+    std::cout << stream.describe() << host;
+    return;
   }
   const RtuConfig config = options.outputs.traced(settings.rtu);
-  const RtuConfig planned = plannedTrace(memory, records, config, options.outputs, std::cout);
+  // A trace's dry runs read the records more than once: a traced frame holds them.
+  const bool traced = config.trace || config.timeline.wanted();
+  const std::vector<HostRecord> held = traced ? stream.heldRecords() : std::vector<HostRecord>{};
+  const RecordSource records = traced ? RecordSource(held) : stream.records();
+  const RtuConfig planned = traced ? plannedTrace(memory, held, config, options.outputs, std::cout)
+                                   : config;
   RunProgressLine progress("render", "rays");
-  const RtuRun run = runModel(settings.model, memory, records, planned, progress.callback());
-  std::vector<CoreKindResult> results = resultsInJobOrder(run);
+  const RtuRun run =
+      runFrame(settings.model, memory, records, planned, stream.taker(), progress.callback());
   cycles = run.statistics.totalCycles;
-  std::cout << describeResults(settings, results);
+  std::cout << stream.describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
   if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
-  return results;
 }
 
 // One line of a pass: its rays and hits, and on a timed model its cycles and what limits it.
@@ -140,22 +146,28 @@ void renderPasses(const FrameScene& scene, const Configuration& configuration,
               << " cycles\n";
 }
 
-// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes.
-RenderedFrame renderFrame(const Configuration& configuration, const RenderOptions& options) {
+// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes; its
+// pixels when images or passes read them.
+std::optional<RenderedFrame> renderFrame(const Configuration& configuration,
+                                         const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
   const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
   if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
     throw std::invalid_argument("--passes " + settings.rayPasses +
                                 ": secondary passes need the svo core and the camera's frame");
-  const std::vector<HostRecord> records = frameRecords(scene, settings);
+  // Pixels are held only for what reads them: images and secondary passes.
+  const bool keepPixels = options.wantsImages() || passes.size() > 1;
+  const RtuConfig traced = options.outputs.traced(settings.rtu);
+  checkFrameFits(settings, keepPixels, traced.trace || traced.timeline.wanted());
+  FrameStream stream(settings, scene, keepPixels);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
             << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
   uint64_t cycles = 0;
-  RenderedFrame frame =
-      framePixels(settings, scene, traceFrame(scene, records, configuration, options, cycles));
-  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, frame);
+  traceFrame(scene, stream, configuration, options, cycles);
+  std::optional<RenderedFrame> frame = stream.takeFrame();
+  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, *frame);
   return frame;
 }
 
@@ -203,10 +215,10 @@ void addRenderCommand(CLI::App& app) {
     if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    const RenderedFrame rendered = renderFrame(configuration, *options);
-    if (!options->image.empty()) writeShadedImage(rendered, options->image);
-    if (!options->depthImage.empty()) writeDepthImage(rendered, options->depthImage);
-    if (!options->costImage.empty()) writeCostImage(rendered, options->costImage);
+    const std::optional<RenderedFrame> rendered = renderFrame(configuration, *options);
+    if (!options->image.empty()) writeShadedImage(*rendered, options->image);
+    if (!options->depthImage.empty()) writeDepthImage(*rendered, options->depthImage);
+    if (!options->costImage.empty()) writeCostImage(*rendered, options->costImage);
     for (const std::string* path : {&options->image, &options->depthImage, &options->costImage})
       if (!path->empty()) std::cout << "wrote       " << *path << "\n";
   });

@@ -15,6 +15,7 @@
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
 #include "base/file_lock.h"
+#include "base/input_file.h"
 #include "base/output_file.h"
 #include "config/sweep_spec.h"
 #include "explore/architecture_resources.h"
@@ -62,7 +63,7 @@ std::vector<std::string> csvFields(const Json& row) {
 // interruption is dropped).
 std::vector<Json> readEarlierRows(const std::string& path) {
   std::vector<Json> rows;
-  std::ifstream file(path);
+  std::ifstream file = openInputFileIfAny(path, "earlier sweep rows");
   std::string line;
   while (std::getline(file, line)) {
     try {

@@ -281,12 +281,14 @@ void RenderedFrame::place(uint32_t id, const FramePixel& pixel) {
 RenderedFrame RenderedFrame::fromResults(const Camera& camera, const FixedFormat& format,
                                          const std::vector<TraversalResult>& results) {
   RenderedFrame frame(camera);
-  for (const TraversalResult& result : results) {
-    FramePixel pixel{result.hit, format.toDouble(result.tHit), result.cost, glm::dvec3(0.0)};
-    pixel.normal[result.normal[0] ? 0 : result.normal[1] ? 1 : 2] = 1.0;  // the face's axis
-    frame.place(result.id(), pixel);
-  }
+  for (const TraversalResult& result : results) frame.place(result.id(), svoPixel(format, result));
   return frame;
+}
+
+FramePixel svoPixel(const FixedFormat& format, const TraversalResult& result) {
+  FramePixel pixel{result.hit, format.toDouble(result.tHit), result.cost, glm::dvec3(0.0)};
+  pixel.normal[result.normal[0] ? 0 : result.normal[1] ? 1 : 2] = 1.0;  // the face's axis
+  return pixel;
 }
 
 void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {

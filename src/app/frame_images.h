@@ -42,6 +42,9 @@ struct RenderedFrame {
                                    const std::vector<TraversalResult>& results);
 };
 
+// The pixel of an SVO result: t from `format`, the normal of the voxel face entered.
+FramePixel svoPixel(const FixedFormat& format, const TraversalResult& result);
+
 // Throws std::invalid_argument naming `option` when no image format writes `path`'s extension;
 // for checking outputs before a run.
 void checkImageFormat(const std::string& option, const std::string& path);

@@ -4,23 +4,29 @@
 #include "kind_app_plugins.h"
 
 namespace rtu {
+namespace {
+
+// The pixels of `results` placed into `frame` by the kind's tally (KindOutputs<Kind>::Tally).
+template <class Kind>
+void placePixels(const RunConfig& settings, const FrameScene& scene,
+                 const std::vector<CoreKindResult>& results, RenderedFrame& frame) {
+  typename KindOutputs<Kind>::Tally tally(settings, scene);
+  for (const CoreKindResult& result : results) tally.add(result, &frame);
+}
+
+}  // namespace
 
 std::string describeCore(const RunConfig& settings) {
   return withCoreKind(settings.rtu.core,
                       [&](auto kind) { return KindOutputs<decltype(kind)>::core(settings); });
 }
 
-std::string describeResults(const RunConfig& settings, const std::vector<CoreKindResult>& results) {
-  return withCoreKind(settings.rtu.core, [&](auto kind) {
-    return KindOutputs<decltype(kind)>::results(settings, results);
-  });
-}
-
 RenderedFrame framePixels(const RunConfig& settings, const FrameScene& scene,
                           const std::vector<CoreKindResult>& results) {
-  return withCoreKind(settings.rtu.core, [&](auto kind) {
-    return KindOutputs<decltype(kind)>::pixels(settings, scene, results);
-  });
+  RenderedFrame frame(settings.camera);
+  withCoreKind(settings.rtu.core,
+               [&](auto kind) { placePixels<decltype(kind)>(settings, scene, results, frame); });
+  return frame;
 }
 
 }  // namespace rtu

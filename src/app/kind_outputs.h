@@ -4,8 +4,11 @@
 // kinds/<kind>/app/ (cmake/KindPlugins.cmake includes every header there as
 // "kind_app_plugins.h"), with:
 //   core      the line naming its core and settings ("bvh core, float32 test, 32 stack entries");
-//   results   the report lines of a frame's results (hits, costs, the kind's counters);
-//   pixels    the frame's pixels from results in pixel order.
+//   Tally     a frame's results taken one at a time, as they leave a run (app/frame_stream.h) or
+//             from a vector (frame_outputs.h): constructed from the run's settings and scene
+//             (both outlive it), `add(result, frame)` counts a result and, given a frame, places
+//             its pixel; `describe()` is the report lines of the results added (hits, costs, the
+//             kind's counters).
 // The triangle kinds' share app/triangle_render.h.
 
 #include <string>

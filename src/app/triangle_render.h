@@ -12,6 +12,7 @@
 
 #include "app/frame_images.h"
 #include "explore/frame_scene.h"
+#include "kinds/core_result.h"
 
 namespace rtu {
 
@@ -19,44 +20,55 @@ namespace rtu {
 FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
                          uint32_t primitive);
 
-// The frame's pixels from results whose id words are pixel indices; `distance(result)` is a hit's
-// distance along the world ray.
-template <class Result, class Distance>
-RenderedFrame triangleFrame(const Camera& camera, const FrameScene& scene,
-                            const std::vector<Result>& results, Distance distance) {
-  RenderedFrame frame(camera);
-  for (const Result& result : results)
-    frame.place(result.idWord,
-                trianglePixel(scene, result.hit, distance(result), result.cost, result.primitive));
-  return frame;
-}
-
 // "rays", "hits" and "cost" report lines of a frame's results.
 std::string describeHits(size_t rays, uint64_t hits, uint64_t cost, uint32_t maxCost);
 
-template <class Result>
-std::string describeTriangleHits(const std::vector<Result>& results) {
+// What a triangle kind's report counts of its results, summed one result at a time (so a frame's
+// results can be counted as they leave a run): hits, costs and the kind's counters.
+template <class Counters>
+struct TriangleTally {
+  size_t rays = 0;
   uint64_t hits = 0, cost = 0;
   uint32_t maxCost = 0;
-  for (const Result& result : results) {
+  Counters counters;
+
+  template <class Result>
+  void add(const Result& result) {
+    ++rays;
     hits += result.hit;
     cost += result.cost;
     maxCost = std::max(maxCost, result.cost);
+    counters.add(result.counts);
   }
-  return describeHits(results.size(), hits, cost, maxCost);
-}
+  // The "rays", "hits" and "cost" lines.
+  std::string describeHits() const { return rtu::describeHits(rays, hits, cost, maxCost); }
+};
+
+// A triangle kind's results taken one at a time (KindOutputs<Kind>::Tally, app/kind_outputs.h):
+// counted, and each placed as a pixel into `frame` when given; `distance(result)` is a hit's
+// distance along the world ray.
+template <class Kind, class Counters>
+class TriangleResults {
+ public:
+  explicit TriangleResults(const FrameScene& scene) : scene_(scene) {}
+  template <class Distance>
+  void add(const CoreKindResult& result, RenderedFrame* frame, Distance distance) {
+    const typename Kind::Result& own = resultOfKind<Kind>(result);
+    tally_.add(own);
+    if (frame)
+      frame->place(own.idWord,
+                   trianglePixel(scene_, own.hit, distance(own), own.cost, own.primitive));
+  }
+  const TriangleTally<Counters>& tally() const { return tally_; }
+
+ private:
+  const FrameScene& scene_;
+  TriangleTally<Counters> tally_;
+};
 
 // A count per ray (0 rays count as one).
 inline double perRay(uint64_t count, size_t rays) {
   return static_cast<double>(count) / static_cast<double>(std::max<size_t>(rays, 1));
-}
-
-// The sum of the results' counts, as the kind's counters.
-template <class Counters, class Result>
-Counters countersOf(const std::vector<Result>& results) {
-  Counters counters;
-  for (const Result& result : results) counters.add(result.counts);
-  return counters;
 }
 
 }  // namespace rtu

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <iterator>
 #include <stdexcept>
 
@@ -45,6 +46,13 @@ std::ifstream openInputFile(const std::string& path, const std::string& what, ui
   std::ifstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error("cannot open " + named(what, path));
   return file;
+}
+
+std::ifstream openInputFileIfAny(const std::string& path, const std::string& what) {
+  std::error_code error;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, error))) return {};
+  uint64_t bytes = 0;
+  return openInputFile(path, what, bytes);
 }
 
 std::string readInputFile(const std::string& path, const std::string& what, uint64_t maxBytes) {

@@ -18,6 +18,10 @@ uint64_t inputFileBytes(const std::string& path, const std::string& what);
 // Opens the regular file at `path` in binary after the check above; `bytes` is its size.
 std::ifstream openInputFile(const std::string& path, const std::string& what, uint64_t& bytes);
 
+// The same for a file a run may not have written yet (a sweep's rows): a closed stream, which reads
+// nothing, when nothing is at `path`.
+std::ifstream openInputFileIfAny(const std::string& path, const std::string& what);
+
 // The whole regular file at `path`, refused without reading when it is larger than `maxBytes`.
 std::string readInputFile(const std::string& path, const std::string& what, uint64_t maxBytes);
 

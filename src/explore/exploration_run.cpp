@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "base/binary_file.h"
+#include "base/input_file.h"
 #include "base/output_file.h"
 #include "config/run_json.h"
 #include "explore/architecture_resources.h"
@@ -82,9 +83,8 @@ void SceneCache::save(const std::string& directory) const {
 }
 
 void SceneCache::load(const std::string& directory) {
-  std::ifstream in(directory + "/scenes.json");
-  if (!in) throw std::runtime_error("no scenes.json in sweep directory " + directory);
-  const nlohmann::json index = nlohmann::json::parse(in);
+  const nlohmann::json index = nlohmann::json::parse(
+      readInputFile(directory + "/scenes.json", "sweep scene index", kMaxSettingsFileBytes));
   for (const auto& [key, entry] : index.items()) {
     if (entry.contains("error")) {
       errors_[key] = entry["error"].get<std::string>();

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "base/input_file.h"
 #include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
@@ -30,7 +31,7 @@ std::string rowsFile(const std::string& directory, int task) {
 // The rows in a task's file; a line cut short (the task was killed) is left out.
 std::vector<Json> readRows(const std::string& path) {
   std::vector<Json> rows;
-  std::ifstream in(path);
+  std::ifstream in = openInputFileIfAny(path, "sweep rows");
   std::string line;
   while (std::getline(in, line)) {
     try {
@@ -42,8 +43,8 @@ std::vector<Json> readRows(const std::string& path) {
 }
 
 std::vector<Configuration> readConfigurations(const std::string& directory) {
-  std::ifstream in(directory + "/configs.jsonl");
-  if (!in) throw std::runtime_error("no configs.jsonl in sweep directory " + directory);
+  uint64_t bytes = 0;
+  std::ifstream in = openInputFile(directory + "/configs.jsonl", "sweep configurations", bytes);
   std::vector<Configuration> configurations;
   std::string line;
   while (std::getline(in, line)) {
@@ -76,7 +77,7 @@ void writeBatchScript(const std::string& path, const std::string& directory, int
 size_t countRows(const std::string& directory, int tasks) {
   size_t rows = 0;
   for (int task = 0; task < tasks; ++task) {
-    std::ifstream in(rowsFile(directory, task));
+    std::ifstream in = openInputFileIfAny(rowsFile(directory, task), "sweep rows");
     rows += static_cast<size_t>(std::count(std::istreambuf_iterator<char>(in), {}, '\n'));
   }
   return rows;
@@ -152,9 +153,9 @@ std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
 }
 
 void runSlurmTask(const std::string& directory, int task) {
-  std::ifstream planFile(directory + "/plan.json");
-  if (!planFile) throw std::runtime_error("no plan.json in sweep directory " + directory);
-  const int tasks = nlohmann::json::parse(planFile)["tasks"].get<int>();
+  const int tasks = nlohmann::json::parse(readInputFile(directory + "/plan.json", "sweep plan",
+                                                        kMaxSettingsFileBytes))["tasks"]
+                        .get<int>();
   if (task < 0 || task >= tasks)
     throw std::invalid_argument("--slurm-task " + std::to_string(task) + " is not in 0.." +
                                 std::to_string(tasks - 1));

@@ -1,5 +1,6 @@
 #include "geometry/ply_header_check.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
@@ -17,16 +18,25 @@ struct HeaderProblem {
   std::string text;
 };
 
+// A property's bytes in a binary body: a value's, or a list's count and each of its values'.
+struct PlyProperty {
+  bool list = false;
+  uint32_t countBytes = 0;  // a list's count (0: not a list)
+  uint32_t valueBytes = 0;  // 0: a type PLY does not name
+};
+
 struct PlyElement {
   std::string name;
   uint64_t count;
   // Its properties in order: true for a list (a count, then that many values).
   std::vector<bool> lists;
+  std::vector<PlyProperty> properties;
 };
 
 struct PlyHeader {
   std::vector<PlyElement> elements;
   bool ascii = false;
+  bool bigEndian = false;
   size_t bytes = 0;  // up to and including the end_header line
 };
 
@@ -34,6 +44,17 @@ struct PlyHeader {
 bool isHeaderText(char c, bool comment) {
   const auto byte = static_cast<unsigned char>(c);
   return (byte >= ' ' && byte <= '~') || c == '\r' || c == '\t' || (comment && byte >= 0x80);
+}
+
+// The bytes of a PLY scalar type in a binary body; 0 for a name PLY does not have.
+uint32_t typeBytes(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
 }
 
 bool parseCount(const std::string& text, uint64_t& count) {
@@ -59,11 +80,22 @@ void readHeaderLine(const std::string& line, size_t lineNumber, PlyHeader& heade
     std::string format;
     words >> format;
     header.ascii = format == "ascii";
+    header.bigEndian = format == "binary_big_endian";
   }
   if (keyword == "property" && !header.elements.empty()) {
-    std::string type;
+    std::string type, valueType;
     words >> type;
-    header.elements.back().lists.push_back(type == "list");
+    PlyProperty property;
+    property.list = type == "list";
+    if (property.list) {
+      words >> type >> valueType;
+      property.countBytes = typeBytes(type);
+      property.valueBytes = typeBytes(valueType);
+    } else {
+      property.valueBytes = typeBytes(type);
+    }
+    header.elements.back().lists.push_back(property.list);
+    header.elements.back().properties.push_back(property);
   }
   PlyElement element;
   if (keyword != "element") return;
@@ -154,6 +186,102 @@ void checkAsciiBody(std::istream& body, const PlyHeader& header) {
                         std::to_string(lineNumber) + " follows the last element"};
 }
 
+// The body of a binary file read forward in blocks: a list's count read, the rest skipped.
+class BinaryBody {
+ public:
+  BinaryBody(std::istream& in, bool bigEndian) : in_(in), bigEndian_(bigEndian) {}
+
+  // Skipped lazily: one seek for a run of values beyond the buffer.
+  void skip(uint64_t bytes) { pending_ += bytes; }
+  // A count of `bytes` bytes (1, 2 or 4) in the file's byte order; the caller knows it is there.
+  uint64_t count(uint32_t bytes) {
+    settle();
+    uint64_t value = 0;
+    for (uint32_t i = 0; i < bytes; ++i) {
+      const uint64_t byte = next();
+      value |= byte << (8 * (bigEndian_ ? bytes - 1 - i : i));
+    }
+    return value;
+  }
+
+ private:
+  void settle() {
+    const uint64_t buffered = std::min<uint64_t>(pending_, end_ - next_);
+    next_ += buffered;
+    pending_ -= buffered;
+    if (pending_ == 0) return;
+    in_.seekg(static_cast<std::streamoff>(pending_), std::ios::cur);
+    pending_ = 0;
+    next_ = end_ = 0;
+  }
+  uint64_t next() {
+    if (next_ == end_) {
+      in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+      next_ = 0;
+      end_ = static_cast<uint64_t>(in_.gcount());
+      in_.clear();
+    }
+    return static_cast<unsigned char>(buffer_[next_++]);
+  }
+
+  std::istream& in_;
+  bool bigEndian_;
+  std::vector<char> buffer_ = std::vector<char>(64 * 1024);
+  uint64_t next_ = 0, end_ = 0;
+  uint64_t pending_ = 0;
+};
+
+bool hasList(const PlyElement& element) {
+  return std::find(element.lists.begin(), element.lists.end(), true) != element.lists.end();
+}
+
+// A binary body holds exactly the elements declared: their fixed-size properties, and each list's
+// count then that many values. A header declaring more or fewer elements than held was read as
+// another model (issue 33), as in an ASCII body. A body with a property of a type PLY does not
+// name is left to assimp.
+void checkBinaryBody(std::istream& in, const PlyHeader& header, uint64_t bodyBytes) {
+  for (const PlyElement& element : header.elements)
+    for (const PlyProperty& property : element.properties)
+      if (property.valueBytes == 0 || (property.list && property.countBytes == 0)) return;
+  BinaryBody body(in, header.bigEndian);
+  uint64_t left = bodyBytes;  // bytes of the body not yet accounted for
+  for (const PlyElement& element : header.elements) {
+    if (!hasList(element)) {  // a fixed size: counted at once
+      uint64_t each = 0;
+      for (const PlyProperty& property : element.properties) each += property.valueBytes;
+      if (each > 0 && element.count > left / each)
+        throw HeaderProblem{
+            "declares more data than the file holds: " + std::to_string(element.count) + " '" +
+            element.name + "' elements of " + std::to_string(each) + " bytes, " +
+            std::to_string(left) + " bytes left for them"};
+      left -= element.count * each;
+      body.skip(element.count * each);
+      continue;
+    }
+    for (uint64_t i = 0; i < element.count; ++i) {
+      const auto missing = [&] {
+        return HeaderProblem{"declares more data than the file holds: '" + element.name +
+                             "' element " + std::to_string(i + 1) + " of the " +
+                             std::to_string(element.count) + " declared is cut off"};
+      };
+      for (const PlyProperty& property : element.properties) {
+        uint64_t values = 1;
+        if (property.list) {
+          if (left < property.countBytes) throw missing();
+          values = body.count(property.countBytes);
+          left -= property.countBytes;
+        }
+        if (values > left / property.valueBytes) throw missing();
+        left -= values * property.valueBytes;
+        body.skip(values * property.valueBytes);
+      }
+    }
+  }
+  if (left > 0)
+    throw HeaderProblem{"declares less data than the file holds: " + std::to_string(left) +
+                        " bytes follow the last element"};
+}
+
 }  // namespace
 
 void checkPlyHeader(const std::string& path) {
@@ -172,6 +300,10 @@ void checkPlyHeader(const std::string& path) {
       file.clear();
       file.seekg(static_cast<std::streamoff>(header.bytes));
       checkAsciiBody(file, header);
+    } else {
+      file.clear();
+      file.seekg(static_cast<std::streamoff>(header.bytes));
+      checkBinaryBody(file, header, fileBytes - header.bytes);
     }
   } catch (const HeaderProblem& problem) {
     throw std::runtime_error("mesh '" + path + "': PLY header " + problem.text);

@@ -11,7 +11,9 @@ namespace rtu {
 // first 64 KiB, and every `element NAME COUNT` to have a decimal count no larger than the bytes
 // after the header (each element takes at least one). An ASCII file's body must hold exactly the
 // elements declared, one a line, each with the values its properties take (a list's count read
-// from the line): a header declaring more vertices than held was read as another model.
+// from the line): a header declaring more vertices than held was read as another model. A binary
+// file's body must hold exactly the bytes its elements take (each list's count read from the
+// file), so that the counts agree with the file's size.
 // Throws std::runtime_error naming `path` and the problem. Other files pass unchecked.
 void checkPlyHeader(const std::string& path);
 

@@ -53,7 +53,27 @@ Traced traceRecords(const WordMemory& memory, const std::vector<Record>& records
   return std::move(tracer.traced);
 }
 
+// Traces each record and hands its result on: the tracer's columns hold one record's at a time.
+template <class Kind>
+void streamRecords(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                   const ResultTaker& take) {
+  RecordTracer<Kind> tracer(memory, config);
+  for (uint64_t i = 0; i < records.size(); ++i) {
+    tracer.trace(records[i]);
+    take(i, tracer.traced.results.back());
+    tracer.traced.results.clear();
+    tracer.traced.timing.clear();
+  }
+}
+
 }  // namespace
+
+void traceGolden(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                 const ResultTaker& take) {
+  checkCoreTakes(config.core, records);
+  withCoreKind(config.core,
+               [&](auto kind) { streamRecords<decltype(kind)>(memory, records, config, take); });
+}
 
 std::vector<CoreKindResult> traceGolden(const WordMemory& memory,
                                         const std::vector<HostRecord>& records,

@@ -28,5 +28,9 @@ RtuRun runAnalytic(const WordMemory& memory, const std::vector<TValueRecord>& jo
 std::vector<CoreKindResult> traceGolden(const WordMemory& memory,
                                         const std::vector<HostRecord>& records,
                                         const RtuConfig& config);
+// The same results, each handed to `take` as soon as it is traced and none kept (the records
+// made one at a time when the source makes them): a frame of any size in little memory.
+void traceGolden(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                 const ResultTaker& take);
 
 }  // namespace rtu

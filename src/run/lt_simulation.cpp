@@ -49,7 +49,7 @@ RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
 
 }  // namespace
 
-RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runLooselyTimed(const WordMemory& memory, const RecordSource& records,
                        const RtuConfig& config, const RunProgress& progress) {
   validate(config);
   checkCoreTakes(config.core, records);

@@ -17,7 +17,7 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config);
 
 // Throws std::invalid_argument for a configuration whyNotLooselyTimed refuses or that is
 // impossible; std::runtime_error for an invalid model header.
-RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
+RtuRun runLooselyTimed(const WordMemory& memory, const RecordSource& records,
                        const RtuConfig& config, const RunProgress& progress = {});
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                        const RtuConfig& config, const RunProgress& progress = {});

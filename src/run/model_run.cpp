@@ -1,6 +1,7 @@
 #include "run/model_run.h"
 
 #include <stdexcept>
+#include <utility>
 
 #include "run/analytic_run.h"
 #include "run/lt_simulation.h"
@@ -44,6 +45,37 @@ RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<Hos
     case ModelKind::CycleAccurate: break;
   }
   return simulateRtu(memory, records, config, progress);
+}
+
+namespace {
+
+// Hands a run's results to `take` in the host's order, then lets go of them and their columns.
+RtuRun handedOver(RtuRun run, const ResultTaker& take) {
+  for (size_t i = 0; i < run.results.size(); ++i) take(run.jobIndices[i], run.results[i]);
+  RtuRun rest;
+  rest.totalCycles = run.totalCycles;
+  rest.statistics = std::move(run.statistics);
+  rest.snapshots = std::move(run.snapshots);
+  rest.traceBytes = run.traceBytes;
+  rest.timelineBytes = run.timelineBytes;
+  return rest;
+}
+
+}  // namespace
+
+RtuRun runFrame(ModelKind model, const WordMemory& memory, const RecordSource& records,
+                const RtuConfig& config, const ResultTaker& take, const RunProgress& progress) {
+  switch (model) {
+    case ModelKind::Golden: {
+      if (const std::vector<HostRecord>* held = records.vector())
+        return handedOver(runGoldenTimed(memory, *held, config), take);
+      return handedOver(runGoldenTimed(memory, records.all(), config), take);
+    }
+    case ModelKind::LooselyTimed:
+      return handedOver(runLooselyTimed(memory, records, config, progress), take);
+    case ModelKind::CycleAccurate: break;
+  }
+  return streamRtu(memory, records, config, take, progress);
 }
 
 RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TValueRecord>& jobs,

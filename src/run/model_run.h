@@ -26,6 +26,14 @@ RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<Hos
 RtuRun runModel(ModelKind model, const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                 const RtuConfig& config, const RunProgress& progress = {});
 
+// A frame's run that hands each result to `take` (kinds/host_stream.h): the cycle-accurate model
+// as it leaves the RTU, keeping none (streamRtu); the loosely-timed model and the golden model's
+// timing, whose recurrence orders the whole run, keep them to the end and then hand them over in
+// the host's order, and the golden timing reads a made source's records into a vector first. The
+// run's results are then empty; its statistics are runModel's.
+RtuRun runFrame(ModelKind model, const WordMemory& memory, const RecordSource& records,
+                const RtuConfig& config, const ResultTaker& take, const RunProgress& progress = {});
+
 // The golden model's timing: golden costs in the recurrence, memory as ideal.
 RtuRun runGoldenTimed(const WordMemory& memory, const std::vector<HostRecord>& records,
                       const RtuConfig& config);

@@ -104,10 +104,39 @@ std::unique_ptr<CycleTrace> openTrace(const RtuConfig& config,
   return std::make_unique<CycleTrace>(options, std::move(listeners));
 }
 
-RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records,
-                const RtuConfig& config, const RunProgress& progress,
-                std::vector<TraceListener*> listeners, const BlockRun& plan,
-                const std::vector<SceneInstance>* scene = nullptr) {
+// The caches of a whole frame's warm frames (none without them): the warmer walks a vector of
+// records, so made records are made for it into one (warm frames hold the frame's records).
+std::optional<CacheContents> warmFramesOf(const WordMemory& memory, const RecordSource& records,
+                                          const RtuConfig& config) {
+  if (config.warmFrames <= 0 || config.memory.ideal) return std::nullopt;
+  if (const std::vector<HostRecord>* held = records.vector())
+    return warmedCaches(memory, *held, config);
+  return warmedCaches(memory, records.all(), config);
+}
+
+// What a streaming run counts of its results as they leave (the statistics of the rest come from
+// the top, as collectStatistics takes them).
+class CountingTaker {
+ public:
+  explicit CountingTaker(const ResultTaker& take) : take_(take) {}
+  HostSink::Take sinkTake() {
+    if (!take_) return {};
+    return [this](uint64_t, const CoreResult& result) {
+      counted_.count(result.result, result.blockedCycles);
+      take_(result.ids.ray, result.result);
+    };
+  }
+  const RtuStatistics& counted() const { return counted_; }
+
+ private:
+  const ResultTaker& take_;
+  RtuStatistics counted_;
+};
+
+RtuRun simulate(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                const RunProgress& progress, std::vector<TraceListener*> listeners,
+                const BlockRun& plan, const std::vector<SceneInstance>* scene = nullptr,
+                const ResultTaker& take = {}) {
   validate(config);
   checkCoreTakes(config.core, records);
   if (scene && config.warmFrames > 0)
@@ -115,7 +144,7 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
                                 "set warm_frames to 0");
   // A sampled block brings its own caches; a whole frame, those of its warm frames.
   const std::optional<CacheContents> warmed =
-      plan.startCaches ? std::nullopt : warmedCaches(memory, records, config);
+      plan.startCaches ? std::nullopt : warmFramesOf(memory, records, config);
   const CacheContents* startCaches = warmed ? &*warmed : plan.startCaches;
   freshKernel();
   std::unique_ptr<TimelineWriter> timeline;
@@ -126,8 +155,9 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
     listeners.push_back(timeline.get());
   }
   std::unique_ptr<CycleTrace> trace = openTrace(config, std::move(listeners));
-  auto top =
-      std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), startCaches, scene);
+  CountingTaker counting(take);
+  auto top = std::make_unique<RtuTop>("rtu", config, memory, records, trace.get(), startCaches,
+                                      scene, counting.sinkTake());
   if (trace) trace->checkScopesMatched();
 
   RtuRun run;
@@ -147,14 +177,14 @@ RtuRun simulate(const WordMemory& memory, const std::vector<HostRecord>& records
   HostSink& sink = top->sink();
   sink.arrange();
   // Before the stall check: the trace of a stalled run shows why. The marker: the first result.
-  const std::vector<uint64_t>& cycles = sink.arrivals().cycles;
-  if (trace) trace->finish(cycles.empty() ? 0 : cycles.front());
+  if (trace) trace->finish(sink.firstArrival());
   if (!sink.complete())
-    throw std::runtime_error("simulation stalled after " + std::to_string(cycles.size()) + " of " +
-                             std::to_string(records.size()) + " results");
-  run.totalCycles = cycles.empty() ? 0 : cycles.back() + 1;
+    throw std::runtime_error("simulation stalled after " + std::to_string(sink.received()) +
+                             " of " + std::to_string(records.size()) + " results");
+  run.totalCycles = sink.received() == 0 ? 0 : sink.lastArrival() + 1;
   if (top->sceneManager()) run.jobIssueCycles = top->sceneManager()->issueCycles();
   run.statistics = collectStatistics(*top, config, run.totalCycles);
+  run.statistics.addCounts(counting.counted());
   run.statistics.hostSeconds = seconds;
   HostSink::Arrivals arrivals = sink.takeArrivals();
   run.arrivalCycles = std::move(arrivals.cycles);
@@ -178,6 +208,11 @@ RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& reco
                    const RtuConfig& config, const RunProgress& progress,
                    std::vector<TraceListener*> listeners) {
   return simulate(memory, records, config, progress, std::move(listeners), BlockRun{});
+}
+
+RtuRun streamRtu(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                 const ResultTaker& take, const RunProgress& progress) {
+  return simulate(memory, records, config, progress, {}, BlockRun{}, nullptr, take);
 }
 
 RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "kinds/host_stream.h"
 #include "kinds/svo/thesis_records.h"
 #include "rtu/word_memory.h"
 #include "run/rtu_statistics.h"
@@ -67,6 +68,11 @@ RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& reco
                    std::vector<TraceListener*> listeners = {});
 RtuRun simulateRtu(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                    const RtuConfig& config, const RunProgress& progress = {});
+// A run that streams (kinds/host_stream.h): records made as the host source asks for them (or a
+// vector's), each result handed to `take` as it reaches the host, none kept (the run's results
+// and their columns are empty; its statistics count them all). The statistics equal simulateRtu's.
+RtuRun streamRtu(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+                 const ResultTaker& take, const RunProgress& progress = {});
 // A sampled block's run.
 RtuRun simulateRtu(const WordMemory& memory, const std::vector<HostRecord>& records,
                    const RtuConfig& config, const BlockRun& block);

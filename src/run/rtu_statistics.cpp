@@ -48,6 +48,14 @@ void RtuStatistics::count(const CoreKindResult& result, uint64_t blocked) {
   maxBlocked = std::max(maxBlocked, blocked);
 }
 
+void RtuStatistics::addCounts(const RtuStatistics& other) {
+  totalCost += other.totalCost;
+  maxCost = std::max(maxCost, other.maxCost);
+  belowResolution += other.belowResolution;
+  totalBlocked += other.totalBlocked;
+  maxBlocked = std::max(maxBlocked, other.maxBlocked);
+}
+
 double RtuStatistics::cyclesPerRay() const { return rays == 0 ? 0.0 : ratio(totalCycles, rays); }
 double RtuStatistics::raysPerSecond() const {
   return totalCycles == 0
@@ -362,7 +370,7 @@ void RtuStatistics::writeReport(std::ostream& out) const {
 
 RtuStatistics collectStatistics(const RtuTop& top, const RtuConfig& config, uint64_t totalCycles) {
   RtuStatistics stats = RtuStatistics::of(config);
-  stats.rays = top.sink().arrivals().size();
+  stats.rays = top.sink().received();
   stats.totalCycles = totalCycles;
   for (const auto& core : top.cores()) stats.coreTimes.push_back(core->statistics());
   const HostSink::Arrivals& arrivals = top.sink().arrivals();

@@ -55,6 +55,8 @@ struct RtuStatistics {
   static RtuStatistics of(const RtuConfig& config);
   // Counts one result: its cost, cycles blocked on memory and flags.
   void count(const CoreKindResult& result, uint64_t blocked);
+  // Adds what count() counted in `other` (results counted as they left a run that keeps none).
+  void addCounts(const RtuStatistics& other);
 
   // Shares of the cores' time (cores x total cycles); they add up to 1.
   struct CoreTimeShares {

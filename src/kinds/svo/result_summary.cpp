@@ -7,17 +7,19 @@ namespace rtu {
 
 ResultSummary ResultSummary::of(const std::vector<TraversalResult>& results) {
   ResultSummary summary;
-  summary.rays = results.size();
-  for (const TraversalResult& result : results) {
-    summary.hits += result.hit;
-    summary.stackOverflows += result.stackOverflow;
-    summary.tOverflows += result.tOverflow;
-    summary.belowResolution += result.belowResolution;
-    summary.hitsBehindOrigin += result.hit && result.tHit < 0;
-    summary.totalCost += result.cost;
-    summary.maxCost = std::max(summary.maxCost, result.cost);
-  }
+  for (const TraversalResult& result : results) summary.add(result);
   return summary;
+}
+
+void ResultSummary::add(const TraversalResult& result) {
+  ++rays;
+  hits += result.hit;
+  stackOverflows += result.stackOverflow;
+  tOverflows += result.tOverflow;
+  belowResolution += result.belowResolution;
+  hitsBehindOrigin += result.hit && result.tHit < 0;
+  totalCost += result.cost;
+  maxCost = std::max(maxCost, result.cost);
 }
 
 std::string ResultSummary::describe() const {

@@ -20,6 +20,8 @@ struct ResultSummary {
   uint32_t maxCost = 0;
 
   static ResultSummary of(const std::vector<TraversalResult>& results);
+  // Counts one more result (a frame's results summed as they leave a run).
+  void add(const TraversalResult& result);
   double meanCost() const { return rays ? static_cast<double>(totalCost) / rays : 0.0; }
   double hitShare() const { return rays ? static_cast<double>(hits) / rays : 0.0; }
   std::string describe() const;  // a few report lines

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 #include <type_traits>
+#include <utility>
 
 #include "base/prefault.h"
 
@@ -23,9 +24,10 @@ void forEachColumn(HostSink::Arrivals& arrivals, Apply&& apply) {
 
 }  // namespace
 
-HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link)
-    : Agent(pump), expected_(expected), link_(link), pacer_(link) {
+HostSink::HostSink(DecisionPump& pump, uint64_t expected, HostLinkConfig link, Take take)
+    : Agent(pump), expected_(expected), link_(link), pacer_(link), take_(std::move(take)) {
   validate(link, "host output");
+  if (take_) return;
   forEachColumn(arrivals_, [expected](auto& column) {
     column.reserve(expected);
     prefaultCapacity(column);
@@ -56,12 +58,17 @@ void HostSink::decide() {
 }
 
 void HostSink::receive(uint64_t cycle, const CoreResult& result) {
-  arrivals_.cycles.push_back(cycle);
-  arrivals_.results.push_back(result.result);
-  arrivals_.rays.push_back(result.ids.ray);
-  arrivals_.jobs.push_back(result.ids.job);
-  arrivals_.blockedCycles.push_back(result.blockedCycles);
-  arrivals_.instances.push_back(result.instance);
+  if (take_) {
+    take_(cycle, result);
+  } else {
+    arrivals_.cycles.push_back(cycle);
+    arrivals_.results.push_back(result.result);
+    arrivals_.rays.push_back(result.ids.ray);
+    arrivals_.jobs.push_back(result.ids.job);
+    arrivals_.blockedCycles.push_back(result.blockedCycles);
+    arrivals_.instances.push_back(result.instance);
+  }
+  firstArrival_ = received_++ == 0 ? cycle : std::min(firstArrival_, cycle);
   notYetArrived_.push_back(cycle);
   lastArrival_ = std::max(lastArrival_, cycle);
   if (complete()) {

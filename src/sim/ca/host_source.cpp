@@ -1,16 +1,16 @@
 #include "sim/ca/host_source.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace rtu {
 
 HostSource::HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-                       const std::vector<HostRecord>& records, HostLinkConfig link,
-                       uint64_t lookAhead)
+                       RecordSource records, HostLinkConfig link, uint64_t lookAhead)
     : sc_core::sc_module(name),
       Agent(pump),
       clock_(clock),
-      records_(records),
+      records_(std::move(records)),
       pacer_(link),
       lookAhead_(lookAhead),
       wake_(clock) {

@@ -10,6 +10,7 @@
 
 #include <systemc>
 
+#include "kinds/host_stream.h"
 #include "rtu/host_link.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/kernel/cycle_clock.h"
@@ -24,7 +25,7 @@ class HostSource final : public sc_core::sc_module, public Agent {
   static constexpr int kOutPort = 0;  // its port on the transfer channel
 
   HostSource(sc_core::sc_module_name name, const CycleClock& clock, DecisionPump& pump,
-             const std::vector<HostRecord>& records, HostLinkConfig link, uint64_t lookAhead);
+             RecordSource records, HostLinkConfig link, uint64_t lookAhead);
 
   void bind(TransferChannel<HostPayload>& out);
   void decide() override;
@@ -35,7 +36,7 @@ class HostSource final : public sc_core::sc_module, public Agent {
 
   const CycleClock& clock_;
   TransferChannel<HostPayload>* out_ = nullptr;
-  const std::vector<HostRecord>& records_;  // the caller's: they outlive the run
+  const RecordSource records_;  // a vector's outlives the run
   HostLinkPacer pacer_;
   uint64_t lookAhead_;
   uint64_t next_ = 0;                  // index of the record offered or to be offered

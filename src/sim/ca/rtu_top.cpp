@@ -27,8 +27,8 @@ TriangleUnitArbiter triangleUnits(const RtuConfig& config) {
 }  // namespace
 
 RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-               const std::vector<HostRecord>& records, CycleTrace* trace,
-               const CacheContents* caches, const std::vector<SceneInstance>* scene)
+               const RecordSource& records, CycleTrace* trace, const CacheContents* caches,
+               const std::vector<SceneInstance>* scene, HostSink::Take take)
     : sc_core::sc_module(name), clock_(CycleClock::atMegahertz(config.clockMhz)) {
   validate(config);
   const std::string top = this->name();
@@ -86,7 +86,7 @@ RtuTop::RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory
   }
 
   Channel<CoreResult>* toHost = managedResults_.get();
-  sink_ = std::make_unique<HostSink>(pump_, jobCount, config.outputLink());
+  sink_ = std::make_unique<HostSink>(pump_, jobCount, config.outputLink(), std::move(take));
   if (config.reorderCapacity > 0) {
     orderedResults_ =
         channel<CoreResult>("ordered_results", clock_, trace, top + ".reorder_buffer.out");

@@ -35,8 +35,8 @@ class RtuTop : public sc_core::sc_module {
   // `caches`: lines resident from cycle 0 (sampled simulation), or null. `scene`: the instances
   // the host's ray records are traced against, or null for records each traced once.
   RtuTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-         const std::vector<HostRecord>& records, CycleTrace* trace,
-         const CacheContents* caches = nullptr, const std::vector<SceneInstance>* scene = nullptr);
+         const RecordSource& records, CycleTrace* trace, const CacheContents* caches = nullptr,
+         const std::vector<SceneInstance>* scene = nullptr, HostSink::Take take = {});
 
   // How far ahead of simulated time the host source offers records.
   static constexpr uint64_t kLookAheadCycles = 4096;

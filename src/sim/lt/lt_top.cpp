@@ -8,15 +8,15 @@
 namespace rtu {
 
 LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-                     const std::vector<HostRecord>& records, uint32_t accessBytes)
+                     RecordSource records, uint32_t accessBytes)
     : sc_core::sc_module(name),
       config_(config),
-      records_(records),
+      records_(std::move(records)),
       memory_(memory),
       accessBytes_(accessBytes),
       time_(CycleClock::atMegahertz(config.clockMhz)),
       setup_(makeCoreJobSetup(config.core, memory, config.jobManager, config.coreConfigs)) {
-  results_.reserve(records.size());
+  results_.reserve(records_.size());
   prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
                                                    static_cast<double>(config.ltQuantum));

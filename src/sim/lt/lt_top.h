@@ -24,6 +24,7 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "kinds/core_result.h"
+#include "kinds/host_stream.h"
 #include "rtu/rtu_recurrence.h"
 #include "sim/ca/rtu_payloads.h"
 #include "sim/lt/lt_core.h"
@@ -54,7 +55,7 @@ class LtTopBase : public sc_core::sc_module {
   // `records` must outlive the top; `accessBytes` is a core's access (what the ROM and an L1
   // serve).
   LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-            const std::vector<HostRecord>& records, uint32_t accessBytes);
+            RecordSource records, uint32_t accessBytes);
 
   // Binds a core's socket to its memory: the ROM, or an L1 of its own in front of the L2.
   void bindCore(tlm::tlm_initiator_socket<>& socket);
@@ -78,7 +79,7 @@ class LtTopBase : public sc_core::sc_module {
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
 
   const RtuConfig& config_;
-  const std::vector<HostRecord>& records_;
+  const RecordSource records_;  // a vector's outlives the top
   WordMemory memory_;
   uint32_t accessBytes_;
   LtTime time_;
@@ -101,8 +102,8 @@ class LtTop final : public LtTopBase {
  public:
   // `records` must outlive the top.
   LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-        const std::vector<HostRecord>& records)
-      : LtTopBase(name, config, memory, records, 4 * Kind::kWordsPerRead),
+        RecordSource records)
+      : LtTopBase(name, config, memory, std::move(records), 4 * Kind::kWordsPerRead),
         behaviour_(Kind::behaviour(config.coreConfig<Kind>())) {
     for (int i = 0; i < config.cores; ++i) {
       cores_.push_back(std::make_unique<LtCore<Kind>>(("core_" + std::to_string(i)).c_str(),

@@ -15,16 +15,21 @@ std::string KindOutputs<BihKind<>>::core(const RunConfig& settings) {
          std::to_string(core.cycles.triangleLatency) + " cycles";
 }
 
+KindOutputs<BihKind<>>::Tally::Tally(const RunConfig& settings, const FrameScene& scene)
+    : unitInterval_(settings.rtu.coreConfig<BihKind<>>().cycles.triangleInterval),
+      results_(scene) {}
+
+// A BIH result's t is in grid units: its pixel takes the world `distance`.
+void KindOutputs<BihKind<>>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+  results_.add(result, frame, [](const BihResult& own) { return own.distance; });
+}
+
 // Hits, mean cost and the BIH's counters per ray, and the triangle unit's fill rate: its tests'
 // issue cycles (the unit's interval each) over the rays' cycles (their costs).
-std::string KindOutputs<BihKind<>>::results(const RunConfig& settings,
-                                            const std::vector<CoreKindResult>& kindResults) {
-  const std::vector<BihResult> results = resultsOfKind<BihKind<>>(kindResults);
-  const uint32_t unitInterval = settings.rtu.coreConfig<BihKind<>>().cycles.triangleInterval;
-  const auto counters = countersOf<BihCounters>(results);
-  const size_t rays = results.size();
-  uint64_t cycles = 0;
-  for (const BihResult& result : results) cycles += result.cost;
+std::string KindOutputs<BihKind<>>::Tally::describe() const {
+  const TriangleTally<BihCounters>& tally = results_.tally();
+  const BihCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
   char text[512];
   std::snprintf(text, sizeof text,
                 "bih         %.2f nodes, %.2f triangle tests, %.1f bytes per ray; %llu rays lost "
@@ -35,15 +40,8 @@ std::string KindOutputs<BihKind<>>::results(const RunConfig& settings,
                 perRay(counters.bihBytesFetched, rays),
                 static_cast<unsigned long long>(counters.bihStackOverflows),
                 static_cast<unsigned long long>(counters.bihDividerErrors),
-                100.0 * perRay(counters.bihTriangleTests * unitInterval, cycles));
-  return describeTriangleHits(results) + text;
-}
-
-// A BIH result's t is in grid units: its pixel takes the world `distance`.
-RenderedFrame KindOutputs<BihKind<>>::pixels(const RunConfig& settings, const FrameScene& scene,
-                                             const std::vector<CoreKindResult>& results) {
-  return triangleFrame(settings.camera, scene, resultsOfKind<BihKind<>>(results),
-                       [](const BihResult& result) { return result.distance; });
+                100.0 * perRay(counters.bihTriangleTests * unitInterval_, tally.cost));
+  return tally.describeHits() + text;
 }
 
 }  // namespace rtu

@@ -14,12 +14,17 @@ std::string KindOutputs<BvhKind<>>::core(const RunConfig& settings) {
          " stack entries";
 }
 
+KindOutputs<BvhKind<>>::Tally::Tally(const RunConfig&, const FrameScene& scene) : results_(scene) {}
+
+void KindOutputs<BvhKind<>>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+  results_.add(result, frame, [](const BvhResult& own) { return own.t; });
+}
+
 // Hits, mean cost and the BVH's counters per ray.
-std::string KindOutputs<BvhKind<>>::results(const RunConfig&,
-                                            const std::vector<CoreKindResult>& kindResults) {
-  const std::vector<BvhResult> results = resultsOfKind<BvhKind<>>(kindResults);
-  const auto counters = countersOf<BvhCounters>(results);
-  const size_t rays = results.size();
+std::string KindOutputs<BvhKind<>>::Tally::describe() const {
+  const TriangleTally<BvhCounters>& tally = results_.tally();
+  const BvhCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
   char text[256];
   std::snprintf(text, sizeof text,
                 "bvh         %.2f nodes, %.2f box tests, %.2f triangle tests, %.1f bytes per "
@@ -27,13 +32,7 @@ std::string KindOutputs<BvhKind<>>::results(const RunConfig&,
                 perRay(counters.bvhNodesVisited, rays), perRay(counters.bvhBoxTests, rays),
                 perRay(counters.bvhTriangleTests, rays), perRay(counters.bvhBytesFetched, rays),
                 static_cast<unsigned long long>(counters.bvhStackOverflows));
-  return describeTriangleHits(results) + text;
-}
-
-RenderedFrame KindOutputs<BvhKind<>>::pixels(const RunConfig& settings, const FrameScene& scene,
-                                             const std::vector<CoreKindResult>& results) {
-  return triangleFrame(settings.camera, scene, resultsOfKind<BvhKind<>>(results),
-                       [](const BvhResult& result) { return result.t; });
+  return tally.describeHits() + text;
 }
 
 }  // namespace rtu

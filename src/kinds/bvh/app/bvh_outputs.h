@@ -3,6 +3,8 @@
 // kinds' pixels (app/triangle_render.h) and its counters per ray.
 
 #include "app/kind_outputs.h"
+#include "app/triangle_render.h"
+#include "kinds/bvh/bvh_counters.h"
 #include "kinds/bvh/bvh_kind.h"
 
 namespace rtu {
@@ -10,9 +12,15 @@ namespace rtu {
 template <>
 struct KindOutputs<BvhKind<>> {
   static std::string core(const RunConfig& settings);
-  static std::string results(const RunConfig& settings, const std::vector<CoreKindResult>& results);
-  static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
-                              const std::vector<CoreKindResult>& results);
+  class Tally {
+   public:
+    Tally(const RunConfig& settings, const FrameScene& scene);
+    void add(const CoreKindResult& result, RenderedFrame* frame);
+    std::string describe() const;
+
+   private:
+    TriangleResults<BvhKind<>, BvhCounters> results_;
+  };
 };
 
 }  // namespace rtu

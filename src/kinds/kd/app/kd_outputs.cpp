@@ -14,12 +14,17 @@ std::string KindOutputs<KdKind>::core(const RunConfig& settings) {
          std::to_string(core.cycles.triangleLatency) + " cycles";
 }
 
+KindOutputs<KdKind>::Tally::Tally(const RunConfig&, const FrameScene& scene) : results_(scene) {}
+
+void KindOutputs<KdKind>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+  results_.add(result, frame, [](const KdResult& own) { return own.t; });
+}
+
 // Hits, mean cost and the k-d core's counters per ray.
-std::string KindOutputs<KdKind>::results(const RunConfig&,
-                                         const std::vector<CoreKindResult>& kindResults) {
-  const std::vector<KdResult> results = resultsOfKind<KdKind>(kindResults);
-  const auto counters = countersOf<KdCounters>(results);
-  const size_t rays = results.size();
+std::string KindOutputs<KdKind>::Tally::describe() const {
+  const TriangleTally<KdCounters>& tally = results_.tally();
+  const KdCounters& counters = tally.counters;
+  const size_t rays = tally.rays;
   char text[256];
   std::snprintf(text, sizeof text,
                 "kd          %.2f nodes, %.2f triangle tests, %.3f restarts, %.3f short-stack "
@@ -27,13 +32,7 @@ std::string KindOutputs<KdKind>::results(const RunConfig&,
                 perRay(counters.kdNodesVisited, rays), perRay(counters.kdTriangleTests, rays),
                 perRay(counters.kdRestarts, rays), perRay(counters.kdShortStackDrops, rays),
                 perRay(counters.kdBytesFetched, rays));
-  return describeTriangleHits(results) + text;
-}
-
-RenderedFrame KindOutputs<KdKind>::pixels(const RunConfig& settings, const FrameScene& scene,
-                                          const std::vector<CoreKindResult>& results) {
-  return triangleFrame(settings.camera, scene, resultsOfKind<KdKind>(results),
-                       [](const KdResult& result) { return result.t; });
+  return tally.describeHits() + text;
 }
 
 }  // namespace rtu

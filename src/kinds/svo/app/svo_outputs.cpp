@@ -1,7 +1,6 @@
 #include "kinds/svo/app/svo_outputs.h"
 
 #include "kinds/core_result.h"
-#include "kinds/svo/result_summary.h"
 
 namespace rtu {
 
@@ -11,15 +10,16 @@ std::string KindOutputs<SvoKind>::core(const RunConfig& settings) {
          std::to_string(golden.stackFrames) + " stack frames";
 }
 
-std::string KindOutputs<SvoKind>::results(const RunConfig&,
-                                          const std::vector<CoreKindResult>& results) {
-  return ResultSummary::of(svoResults(results)).describe();
+KindOutputs<SvoKind>::Tally::Tally(const RunConfig& settings, const FrameScene&)
+    : format_(settings.rtu.coreConfig<SvoKind>().format) {}
+
+// The thesis' report (ResultSummary) and pixels (svoPixel).
+void KindOutputs<SvoKind>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+  const TraversalResult& own = svoResult(result);
+  summary_.add(own);
+  if (frame) frame->place(own.id(), svoPixel(format_, own));
 }
 
-RenderedFrame KindOutputs<SvoKind>::pixels(const RunConfig& settings, const FrameScene&,
-                                           const std::vector<CoreKindResult>& results) {
-  return RenderedFrame::fromResults(settings.camera, settings.rtu.coreConfig<SvoKind>().format,
-                                    svoResults(results));
-}
+std::string KindOutputs<SvoKind>::Tally::describe() const { return summary_.describe(); }
 
 }  // namespace rtu

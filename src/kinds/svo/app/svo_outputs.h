@@ -3,6 +3,7 @@
 // ResultSummary).
 
 #include "app/kind_outputs.h"
+#include "kinds/svo/result_summary.h"
 #include "kinds/svo/svo_kind.h"
 
 namespace rtu {
@@ -10,9 +11,16 @@ namespace rtu {
 template <>
 struct KindOutputs<SvoKind> {
   static std::string core(const RunConfig& settings);
-  static std::string results(const RunConfig& settings, const std::vector<CoreKindResult>& results);
-  static RenderedFrame pixels(const RunConfig& settings, const FrameScene& scene,
-                              const std::vector<CoreKindResult>& results);
+  class Tally {
+   public:
+    Tally(const RunConfig& settings, const FrameScene& scene);
+    void add(const CoreKindResult& result, RenderedFrame* frame);
+    std::string describe() const;
+
+   private:
+    FixedFormat format_;
+    ResultSummary summary_;
+  };
 };
 
 }  // namespace rtu

@@ -1,0 +1,136 @@
+#include "app/frame_stream.h"
+
+#include <algorithm>
+#include <functional>
+#include <stdexcept>
+#include <utility>
+#include <variant>
+
+#include "app/kind_outputs.h"
+#include "kind_app_plugins.h"
+#include "kinds/core_result.h"
+#include "kinds/svo/ray_setup.h"
+#include "rtu/host_memory.h"
+#include "run/model_run.h"
+
+namespace rtu {
+
+// The kind's tally (KindOutputs<Kind>::Tally, app/kind_outputs.h) behind one call per result.
+class FrameStream::Tally {
+ public:
+  virtual ~Tally() = default;
+  virtual void add(const CoreKindResult& result, RenderedFrame* frame) = 0;
+  virtual std::string describe() const = 0;
+};
+
+namespace {
+
+template <class Kind>
+class KindTally final : public FrameStream::Tally {
+ public:
+  KindTally(const RunConfig& settings, const FrameScene& scene) : tally_(settings, scene) {}
+  void add(const CoreKindResult& result, RenderedFrame* frame) override {
+    tally_.add(result, frame);
+  }
+  std::string describe() const override { return tally_.describe(); }
+
+ private:
+  typename KindOutputs<Kind>::Tally tally_;
+};
+
+std::unique_ptr<FrameStream::Tally> tallyOf(const RunConfig& settings, const FrameScene& scene) {
+  return withCoreKind(settings.rtu.core, [&](auto kind) -> std::unique_ptr<FrameStream::Tally> {
+    return std::make_unique<KindTally<decltype(kind)>>(settings, scene);
+  });
+}
+
+// The settings with a 1x1 frame: frameRecords' checks at the cost of one record.
+RunConfig onePixel(const RunConfig& settings) {
+  RunConfig one = settings;
+  one.camera.width = one.camera.height = 1;
+  return one;
+}
+
+}  // namespace
+
+FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, bool traced) {
+  const double rays = static_cast<double>(settings.camera.pixelCount());
+  FrameMemory memory;
+  const auto add = [&](double bytesPerRay, const std::string& what) {
+    memory.bytes += rays * bytesPerRay;
+    memory.what += (memory.what.empty() ? "" : ", ") + what;
+  };
+  if (keepPixels) add(sizeof(FramePixel) + 3 * sizeof(float), "the pixels images and passes read");
+  const bool timed = settings.model != ModelKind::Golden;
+  // The recurrence's seven columns per job, a result's arrival and job index, its blocked cycles.
+  if (timed && settings.model == ModelKind::LooselyTimed)
+    add(sizeof(CoreKindResult) + 9 * sizeof(uint64_t) + sizeof(uint32_t),
+        "the loosely-timed model's results and recurrence");
+  if (timed && traced)
+    add(sizeof(HostRecord) + sizeof(CoreKindResult) + 4 * sizeof(uint64_t),
+        "a traced frame's records and its dry run's results");
+  return memory;
+}
+
+void checkFrameFits(const RunConfig& settings, bool keepPixels, bool traced) {
+  const FrameMemory memory = estimateFrameMemory(settings, keepPixels, traced);
+  const uint64_t available = physicalMemoryBytes();
+  if (memory.bytes <= static_cast<double>(available)) return;
+  throw std::runtime_error(
+      "a " + std::to_string(settings.camera.width) + "x" + std::to_string(settings.camera.height) +
+      " frame would hold about " + formatGiB(memory.bytes) + " (" + memory.what +
+      "), more than the " + formatGiB(static_cast<double>(available)) +
+      " of this machine: lower --width and --height" + (keepPixels ? " or drop the images" : ""));
+}
+
+FrameStream::FrameStream(const RunConfig& settings, const FrameScene& scene, bool keepPixels)
+    : settings_(settings), scene_(scene), tally_(tallyOf(settings, scene)) {
+  if (recordedWorkload(settings)) {
+    recorded_ = frameRecords(scene, settings);
+  } else {
+    settings.camera.validate();
+    sample_ = frameRecords(scene, onePixel(settings)).front();
+  }
+  if (keepPixels) frame_.emplace(settings.camera);
+}
+
+FrameStream::~FrameStream() = default;
+
+RecordSource FrameStream::records() {
+  if (recorded_) return RecordSource(*recorded_);
+  return RecordSource(
+      settings_.camera.pixelCount(), [this](uint64_t index) { return make(index); }, sample_);
+}
+
+std::vector<HostRecord> FrameStream::heldRecords() {
+  if (recorded_) return *recorded_;
+  return frameRecords(scene_, settings_);
+}
+
+ResultTaker FrameStream::taker() {
+  return [this](uint64_t, const CoreKindResult& result) { take(result); };
+}
+
+// Row by row from the top, as frameRays makes them: index = x + y * width.
+HostRecord FrameStream::make(uint64_t index) {
+  held_.madeOne();
+  const Camera& camera = settings_.camera;
+  const uint64_t width = static_cast<uint64_t>(camera.width);
+  const Ray ray =
+      camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width));
+  const uint32_t id = static_cast<uint32_t>(index);
+  if (std::holds_alternative<TValueRecord>(sample_))
+    return makeTValueRecord(id, ray, scene_.entry, settings_.epsilon);
+  return makeRayRecord(id, ray, scene_.entry);
+}
+
+void FrameStream::take(const CoreKindResult& result) {
+  held_.tookOne();
+  tally_->add(result, frame_ ? &*frame_ : nullptr);
+}
+
+std::string FrameStream::describe() const { return tally_->describe(); }
+
+std::optional<RenderedFrame> FrameStream::takeFrame() { return std::move(frame_); }
+
+}  // namespace rtu

@@ -1,0 +1,71 @@
+#pragma once
+// A frame's rays as streams (kinds/host_stream.h, docs/robustness.md "Memory"): the records made
+// from the camera one at a time as the run asks for them, and the results taken as they leave it,
+// summed into the kind's report lines (its KindOutputs<Kind>::Tally, app/kind_outputs.h)
+// and, only when pixels are wanted (images, secondary passes), placed into the frame. What it
+// holds per ray is then only the pixels asked for; it counts the rays held at once (made and not
+// yet taken), which the RTU's buffers bound, not the frame.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/frame_images.h"
+#include "config/run_config.h"
+#include "explore/frame_scene.h"
+#include "kinds/host_stream.h"
+
+namespace rtu {
+
+// What a frame's render still holds per ray, estimated before it starts: the pixels, when kept
+// (a FramePixel each and an image's buffer of three floats); the loosely-timed model's results
+// and recurrence columns; a traced frame's records and its dry runs' results. `what` names them.
+struct FrameMemory {
+  double bytes = 0;
+  std::string what;
+};
+FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, bool traced);
+// Throws std::runtime_error naming the estimate and the limit (this machine's memory) when it is
+// over it.
+void checkFrameFits(const RunConfig& settings, bool keepPixels, bool traced);
+
+class FrameStream {
+ public:
+  // The kind's report and pixels of results (frame_stream.cpp).
+  class Tally;
+
+  // The frame of `settings`' camera on `scene` (or its recorded workload, held as a vector); both
+  // must outlive the stream. Throws as frameRecords does (another core's scene, too few stack
+  // frames) before any ray is made.
+  FrameStream(const RunConfig& settings, const FrameScene& scene, bool keepPixels);
+  ~FrameStream();
+
+  // The frame's records; each counts as held from when the run makes it.
+  RecordSource records();
+  // Takes a result: counted, its pixel placed when pixels are kept.
+  ResultTaker taker();
+  // The records as one vector (a traced run's dry runs read them more than once).
+  std::vector<HostRecord> heldRecords();
+
+  const RaysHeld& held() const { return held_; }
+  // The report lines of the results taken.
+  std::string describe() const;
+  // The pixels placed, when kept.
+  std::optional<RenderedFrame> takeFrame();
+
+ private:
+  HostRecord make(uint64_t index);
+  void take(const CoreKindResult& result);
+
+  const RunConfig& settings_;
+  const FrameScene& scene_;
+  std::unique_ptr<Tally> tally_;
+  std::optional<std::vector<HostRecord>> recorded_;  // a recorded workload's
+  HostRecord sample_;                                // record 0 of the frame, made beforehand
+  std::optional<RenderedFrame> frame_;
+  RaysHeld held_;
+};
+
+}  // namespace rtu
