@@ -203,14 +203,14 @@ class TempDir {
 // ---------------------------------------------------------------------------------------------
 // Workload: a small frame of a procedural scene.
 
-struct Scene {
+struct VcdWorkload {
   SvoBuild build;
   std::vector<TValueRecord> jobs;
   WordMemory memory() const { return build.image.memory(); }
 };
 
-Scene frameScene(const std::string& name, int width, int height) {
-  Scene s{buildSvo(*makeProceduralScene(name, 6)), {}};
+VcdWorkload vcdWorkload(const std::string& name, int width, int height) {
+  VcdWorkload s{buildSvo(*makeProceduralScene(name, 6)), {}};
   Camera camera;
   camera.width = width;
   camera.height = height;
@@ -218,8 +218,8 @@ Scene frameScene(const std::string& name, int width, int height) {
   return s;
 }
 
-const Scene& sphere() {
-  static const Scene scene = frameScene("sphere", 8, 6);
+const VcdWorkload& sphere() {
+  static const VcdWorkload scene = vcdWorkload("sphere", 8, 6);
   return scene;
 }
 
@@ -242,8 +242,8 @@ struct Traced {
   }
 };
 
-Traced traced(const Scene& scene, RtuConfig config, const TempDir& dir, const std::string& file,
-              TraceOptions options = {}) {
+Traced traced(const VcdWorkload& scene, RtuConfig config, const TempDir& dir,
+              const std::string& file, TraceOptions options = {}) {
   options.path = dir.file(file);
   config.trace = options;
   Traced t{simulateRtu(scene.memory(), scene.jobs, config), {}, 0, 0};
