@@ -1,11 +1,11 @@
 // The BVH's golden traversal against the independent oracle (geometry/triangle_oracle.h) on real
 // meshes: every ray of four views, random rays, and rays aimed at vertices and edges, traced
 // through the langr, binned and lbvh builds' images with each triangle test, against the float64
-// brute force over the same float32 triangles. Agreement (docs/triangles.md, "Checking against the
-// oracle"): both miss, or both hit the same triangle, or hit two at the same t within 4 float32 ulp
-// (a shared edge or vertex, or coincident triangles). A disagreement is explained when the ray's
-// line passes within 4 float32 ulp of the scene's scale of an edge of a disputed triangle: there
-// float32 arithmetic may decide the other way (measured: at most 0.55 ulp on these meshes).
+// brute force over the same float32 triangles. BvhAgreement (docs/triangles.md, "Checking against
+// the oracle"): both miss, or both hit the same triangle, or hit two at the same t within 4 float32
+// ulp (a shared edge or vertex, or coincident triangles). A disagreement is explained when the
+// ray's line passes within 4 float32 ulp of the scene's scale of an edge of a disputed triangle:
+// there float32 arithmetic may decide the other way (measured: at most 0.55 ulp on these meshes).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -32,7 +32,7 @@ TriangleMesh roundedToFloat(TriangleMesh mesh) {
   return mesh;
 }
 
-struct Agreement {
+struct BvhAgreement {
   int same = 0, ties = 0, explained = 0, unexplained = 0;
   int disagreements() const { return explained + unexplained; }
 };
@@ -65,10 +65,10 @@ class OracleCheck {
   }
 
   template <class Intersector>
-  Agreement compare(const std::vector<Ray>& rays,
-                    const std::vector<std::optional<OracleHit>>& oracle) const {
+  BvhAgreement compare(const std::vector<Ray>& rays,
+                       const std::vector<std::optional<OracleHit>>& oracle) const {
     GoldenShell<BvhKind<Intersector>> shell(image_.memory(), BvhConfig{});
-    Agreement agreement;
+    BvhAgreement agreement;
     for (size_t i = 0; i < rays.size(); ++i) {
       const Ray ray = carried(rays[i]);
       BvhResult result;
@@ -83,7 +83,7 @@ class OracleCheck {
 
  private:
   void classify(const BvhResult& result, const std::optional<OracleHit>& oracle, const Ray& ray,
-                Agreement& agreement) const {
+                BvhAgreement& agreement) const {
     if (result.hit == oracle.has_value() && (!oracle || result.primitive == oracle->triangle)) {
       ++agreement.same;
     } else if (result.hit && oracle && std::abs(result.t - oracle->t) <= 4 * ulp(oracle->t)) {
@@ -122,7 +122,7 @@ TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_or
     const std::vector<Ray> random = randomRays(box, 1000, 2);
     rays.insert(rays.end(), random.begin(), random.end());
     const auto& oracle = check.oracleHits(std::string(name) + " views", rays);
-    const Agreement watertight = check.compare<WatertightIntersector>(rays, oracle);
+    const BvhAgreement watertight = check.compare<WatertightIntersector>(rays, oracle);
     CHECK(watertight.disagreements() == 0);
     CHECK(watertight.same > 4000);
     CHECK(check.compare<MollerTrumboreIntersector>(rays, oracle).disagreements() == 0);
@@ -130,8 +130,8 @@ TEST_CASE("BVH golden traversal agrees with the oracle on real meshes", "[bvh_or
   SECTION("rays aimed at vertices and edges: none unexplained") {
     const std::vector<Ray> rays = aimedRays(mesh, 2000, 1);
     const auto& oracle = check.oracleHits(std::string(name) + " aimed", rays);
-    const Agreement watertight = check.compare<WatertightIntersector>(rays, oracle);
-    const Agreement mt = check.compare<MollerTrumboreIntersector>(rays, oracle);
+    const BvhAgreement watertight = check.compare<WatertightIntersector>(rays, oracle);
+    const BvhAgreement mt = check.compare<MollerTrumboreIntersector>(rays, oracle);
     INFO(name << ' ' << builder << ": watertight same " << watertight.same << " ties "
               << watertight.ties << " explained " << watertight.explained
               << "; Moller-Trumbore same " << mt.same << " ties " << mt.ties << " explained "

@@ -16,17 +16,17 @@ KdRay alongX(float x, float y, float z, float speed = 1) {
   return KdRay{{x, y, z}, {speed, 0, 0}, false};
 }
 
-struct Trace {
+struct KdStateTrace {
   std::vector<KdState> states;
   std::vector<uint32_t> addresses;  // of the reading states, in order
   KdTraversal traversal;
 };
 
-Trace trace(const KdRay& ray, int stackDepth) {
+KdStateTrace trace(const KdRay& ray, int stackDepth) {
   static const KdImage image = layOutKd(handKdScene());
   KdTraversalConfig config;
   config.stackDepth = stackDepth;
-  Trace t{{}, {}, KdTraversal(config)};
+  KdStateTrace t{{}, {}, KdTraversal(config)};
   t.traversal.start(KdJob{ray, sectionsOf(decodeKdHeader(image.words.data()))});
   const WordMemory memory = image.memory();
   while (t.traversal.busy()) {
@@ -100,7 +100,7 @@ TEST_CASE("k-d TRAV: the plane test's four decisions", "[kd]") {
 // t_max_scene 8. Node 1 over [EPSILON, 4]: t_mid 2, low then high: push {3, 4}. Leaf 2 misses: pop
 // {3, 4} with t_min 2; leaf 3 misses twice: pop {4, 8} with t_min 4; leaf 4 hits at 7 <= 8.
 TEST_CASE("k-d traversal: a ray's states, addresses and counters by hand", "[kd]") {
-  const Trace t = trace(alongX(0, 0.75f, 0.75f), 4);
+  const KdStateTrace t = trace(alongX(0, 0.75f, 0.75f), 4);
   CHECK(t.states == joined<S>({{S::Sint, S::Node, S::Trav, S::Node, S::Trav, S::Node},
                                kTriangle,
                                {S::Pop, S::Node},
@@ -136,7 +136,7 @@ TEST_CASE("k-d traversal: a ray's states, addresses and counters by hand", "[kd]
 // 4 < t_max_scene 8: restart at node 0 over [4, 8], where t_mid = 4 is not above t_min = 4:
 // only high, to leaf 4 directly. Two more states (node 0 and its TRAV) than with 4 entries.
 TEST_CASE("k-d traversal: a shallow stack loses an entry and restarts", "[kd]") {
-  const Trace t = trace(alongX(0, 0.75f, 0.75f), 1);
+  const KdStateTrace t = trace(alongX(0, 0.75f, 0.75f), 1);
   CHECK(t.states == joined<S>({{S::Sint, S::Node, S::Trav, S::Node, S::Trav, S::Node},
                                kTriangle,
                                {S::Pop, S::Node},
@@ -160,13 +160,13 @@ TEST_CASE("k-d traversal: a shallow stack loses an entry and restarts", "[kd]") 
 // above) sends it high only; T1 and T3 both hit at 0.5 (o'_z = -0.25 * 2.5 + 0.75 = 0.125 over
 // 0.25) and the tie goes to the later, T3.
 TEST_CASE("k-d traversal: a definite miss, a tie to the later triangle, a box miss", "[kd]") {
-  const Trace miss = trace(alongX(0, 1.5f, 1.5f), 4);
+  const KdStateTrace miss = trace(alongX(0, 1.5f, 1.5f), 4);
   CHECK_FALSE(miss.traversal.hit());
   CHECK(miss.traversal.cost() == 31);
   CHECK(miss.states.back() == S::Pop);
   CHECK(miss.traversal.counts().restarts == 0);
 
-  const Trace tie = trace(alongX(2.5f, 0.25f, 0.25f), 4);
+  const KdStateTrace tie = trace(alongX(2.5f, 0.25f, 0.25f), 4);
   CHECK(tie.states ==
         joined<S>({{S::Sint, S::Node, S::Trav, S::Node, S::Trav, S::Node}, kTriangle, kTriangle}));
   CHECK(tie.traversal.hit());
@@ -175,7 +175,7 @@ TEST_CASE("k-d traversal: a definite miss, a tie to the later triangle, a box mi
   CHECK(tie.traversal.u() == 0.25f);
   CHECK(tie.traversal.v() == 0.25f);
 
-  const Trace outside = trace(alongX(0, 3, 0.5f), 4);
+  const KdStateTrace outside = trace(alongX(0, 3, 0.5f), 4);
   CHECK(outside.states == std::vector<S>{S::Sint});
   CHECK(outside.traversal.counts().boxMisses == 1);
   CHECK_FALSE(outside.traversal.hit());

@@ -71,14 +71,15 @@ const SvoFrame& sceneNamed(const std::string& name) {
 
 // Hand-counted trees of test_rtl_cycle_model.cpp (costs from test_traversal_costs.cpp), in one
 // image; a job picks a tree by its root address.
-struct Tree {
+struct ConfigurationTree {
   uint32_t root;
   uint32_t cost;  // of the centre-line job
 };
-constexpr Tree kFullRoot{0, 2};     // INIT EVAL(hit)
-constexpr Tree kEmptyRoot{1, 5};    // INIT EVAL NEXT EVAL NEXT
-constexpr Tree kOnePush{2, 7};      // INIT EVAL NEXT EVAL PUSH INIT EVAL
-constexpr Tree kFiveLevels{7, 17};  // INIT EVAL, then PUSH INIT EVAL for each of five levels
+constexpr ConfigurationTree kFullRoot{0, 2};   // INIT EVAL(hit)
+constexpr ConfigurationTree kEmptyRoot{1, 5};  // INIT EVAL NEXT EVAL NEXT
+constexpr ConfigurationTree kOnePush{2, 7};    // INIT EVAL NEXT EVAL PUSH INIT EVAL
+constexpr ConfigurationTree kFiveLevels{
+    7, 17};  // INIT EVAL, then PUSH INIT EVAL for each of five levels
 
 const std::vector<uint32_t>& treeImage() {
   static const std::vector<uint32_t> image = [] {
@@ -98,9 +99,9 @@ const std::vector<uint32_t>& treeImage() {
 }
 
 // t0 = (-8, -8, 2), t1 = (8, 8, 4): the centre-line job of test_traversal_costs.cpp.
-std::vector<TValueRecord> treeJobs(const std::vector<Tree>& trees) {
+std::vector<TValueRecord> treeJobs(const std::vector<ConfigurationTree>& trees) {
   std::vector<TValueRecord> jobs;
-  for (const Tree& tree : trees) {
+  for (const ConfigurationTree& tree : trees) {
     TValueRecord job;
     job.id = static_cast<uint32_t>(jobs.size());
     job.t0Bits = {floatBits(-8.0f), floatBits(-8.0f), floatBits(2.0f)};
@@ -114,7 +115,7 @@ std::vector<TValueRecord> treeJobs(const std::vector<Tree>& trees) {
   return jobs;
 }
 
-RtuRun runTrees(const std::vector<Tree>& trees, const RtuConfig& config) {
+RtuRun runTrees(const std::vector<ConfigurationTree>& trees, const RtuConfig& config) {
   return simulateRtu(WordMemory(treeImage()), treeJobs(trees), config);
 }
 
@@ -538,7 +539,7 @@ TEST_CASE("Scheduler waits on a hand-counted job pair", "[rtu]") {
   // Results: job 1 (core 1, cost 2) is in its result buffer from d + 4 = 13 (cfa) or 12 (rr,
   // fa) and leaves in the first cycle with result_select = 1: 13 either way. Job 0 is there from
   // 25 and leaves in the first cycle with select 0: 26. Total 27.
-  const std::vector<Tree> trees = {kFiveLevels, kFullRoot};
+  const std::vector<ConfigurationTree> trees = {kFiveLevels, kFullRoot};
   for (SchedulerPolicy policy : kPolicies) {
     RtuConfig config;
     config.cores = 2;
@@ -747,7 +748,7 @@ TEST_CASE("Host link pacing on one core, counted by hand", "[rtu]") {
   // behind the one busy core"): dispatched in 6, 10, 19; results in 10, 19, 26.
   // With one core and an empty result buffer, a job dispatched in d is taken by a ready host in
   // d + 2 + c; the core is IDLE (and can take the next job) in d + 2 + c as well.
-  const std::vector<Tree> trees = {kFullRoot, kOnePush, kEmptyRoot};
+  const std::vector<ConfigurationTree> trees = {kFullRoot, kOnePush, kEmptyRoot};
   RtuConfig config;
   config.cores = 1;
 
@@ -814,7 +815,7 @@ TEST_CASE("A saturated link moves R bytes per cycle", "[rtu]") {
   const size_t n = 31;
   RtuConfig config;
   config.cores = 1;
-  const RtuRun unlimited = runTrees(std::vector<Tree>(n, kFullRoot), config);
+  const RtuRun unlimited = runTrees(std::vector<ConfigurationTree>(n, kFullRoot), config);
   Cycles fast;
   for (uint64_t k = 0; k < n; ++k) fast.push_back(10 + 4 * k);
   REQUIRE(unlimited.arrivalCycles == fast);
@@ -823,7 +824,7 @@ TEST_CASE("A saturated link moves R bytes per cycle", "[rtu]") {
     RtuConfig paced = config;
     (output ? paced.hostOutput : paced.hostInput).bytesPerCycle = 3.0;
     INFO(describe(paced));
-    const RtuRun run = runTrees(std::vector<Tree>(n, kFullRoot), paced);
+    const RtuRun run = runTrees(std::vector<ConfigurationTree>(n, kFullRoot), paced);
     REQUIRE(run.arrivalCycles.size() == n);
     for (size_t i = 1; i < run.arrivalCycles.size(); ++i)
       CHECK(run.arrivalCycles[i] - run.arrivalCycles[i - 1] >= 10);

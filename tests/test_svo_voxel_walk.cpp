@@ -26,7 +26,7 @@ constexpr double kStep = 1.0 / 65536.0;  // Q16.16
 constexpr int kDepth = 7;                // of the procedural scenes
 
 // Hand-built images: index = word address.
-struct Expected {
+struct VoxelWalkExpected {
   bool hit;
   double t = 0.0;
   int axis = 0;
@@ -39,7 +39,7 @@ struct Expected {
 // hand derivation is checked too). `direction` is the exact line; it is also given to the golden
 // model, whose t is along the normalised direction: the walk gets the same normalised line.
 void checkHandCase(const std::vector<uint32_t>& words, uint32_t root, glm::dvec3 origin,
-                   glm::dvec3 direction, const Expected& expected) {
+                   glm::dvec3 direction, const VoxelWalkExpected& expected) {
   const WordMemory memory(words);
   const double length =
       std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
@@ -142,7 +142,7 @@ TEST_CASE("Voxel walk: refuses a zero direction and a cycle of child pointers", 
 
 namespace {
 
-struct Agreement {
+struct VoxelWalkAgreement {
   size_t rays = 0, oracleHits = 0, goldenHits = 0;
   long farPointers = 0;  // far words the walks read
   size_t agree = 0;      // both miss, or both hit the same voxel with t within tolerance
@@ -203,13 +203,13 @@ bool reproduced(const WordMemory& memory, uint32_t root, const Ray& ray,
   return false;
 }
 
-Agreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays) {
+VoxelWalkAgreement compareWithGolden(const SvoBuild& build, const std::vector<Ray>& rays) {
   const WordMemory memory = build.image.memory();
   const uint32_t root = build.image.root;
   GoldenModel golden(memory, GoldenConfig{});
   ReferenceModel reference(memory, kDefaultDirectionEpsilon);
   const FixedFormat format = golden.config().format;
-  Agreement a;
+  VoxelWalkAgreement a;
   for (const Ray& ray : rays) {
     const ReferenceResult exact = reference.trace(ray, root);
     const TValueRecord job = makeTValueRecord(0, ray, root, kDefaultDirectionEpsilon);
@@ -299,7 +299,7 @@ void KindFixture<SvoKind>::checkOracle() {
   long farPointers = 0;
   for (const std::string& name : proceduralSceneNames()) {
     const SvoBuild build = buildSvo(*makeProceduralScene(name, kDepth));
-    const Agreement a = compareWithGolden(build, rays);
+    const VoxelWalkAgreement a = compareWithGolden(build, rays);
     farPointers += a.farPointers;
     INFO(name << " depth " << kDepth << " (" << build.stats.describe() << "), " << a.rays
               << " rays: " << a.oracleHits << " walk hits, " << a.goldenHits

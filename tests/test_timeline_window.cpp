@@ -23,14 +23,14 @@
 namespace rtu {
 namespace {
 
-struct Frame {
+struct WindowFrame {
   SvoBuild build;
   std::vector<HostRecord> records;
   WordMemory memory() const { return build.image.memory(); }
 };
 
-Frame makeFrame(int width, int height) {
-  Frame f{buildSvo(*makeProceduralScene("sphere", 6)), {}};
+WindowFrame makeFrame(int width, int height) {
+  WindowFrame f{buildSvo(*makeProceduralScene("sphere", 6)), {}};
   Camera camera;
   camera.width = width;
   camera.height = height;
@@ -75,7 +75,7 @@ constexpr uint64_t kPeriodPs = 10000;  // 100 MHz, the default clock
 }  // namespace
 
 TEST_CASE("A windowed timeline equals the one that heard the whole run", "[timeline]") {
-  const Frame f = makeFrame(32, 24);
+  const WindowFrame f = makeFrame(32, 24);
   const RtuConfig base = cachedFourCores();
   const uint64_t total = simulateRtu(f.memory(), f.records, base).totalCycles;
   REQUIRE(total > 3000);
@@ -101,7 +101,7 @@ TEST_CASE("A windowed timeline equals the one that heard the whole run", "[timel
 // The run stops once the window and its rays have ended: bounded in simulated cycles, not in
 // wall time. A flush interval (4096 cycles) and the window's longest ray may follow the window.
 TEST_CASE("A run that only counts a windowed timeline stops soon after the window", "[timeline]") {
-  const Frame f = makeFrame(96, 72);
+  const WindowFrame f = makeFrame(96, 72);
   RtuConfig config = cachedFourCores();
   const RtuRun full = simulateRtu(f.memory(), f.records, config);
   const uint64_t from = 1000, to = 1400;

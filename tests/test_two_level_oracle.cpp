@@ -4,13 +4,13 @@
 // (double) placement. Four instances of spider.obj overlap, rotated about every axis, one scaled
 // by 1/2 and one non-uniformly.
 //
-// Agreement is test_bvh_oracle.cpp's rule (both miss; the same instance and triangle; or two hits
-// within 4 float32 ulp of t). A disagreement is explained when the ray's line passes within the
-// bound below of an edge of a disputed triangle. The mesh traversal's own float32 bound,
-// 4 ulp of its scale (the mesh's largest coordinate or the model-space origin's), is in model
-// units and grows by the instance's largest scale in the world. The transform adds its own: the
-// golden traces toModelSpace's float32 ray, not the exact inverse image of the world ray. With T,
-// R^T and 1/S each rounded once (relative 2^-24), v = o - T rounded (2^-24 |v|, plus 2^-24 |T|
+// TwoLevelAgreement is test_bvh_oracle.cpp's BvhAgreement rule (both miss; the same instance and
+// triangle; or two hits within 4 float32 ulp of t). A disagreement is explained when the ray's line
+// passes within the bound below of an edge of a disputed triangle. The mesh traversal's own float32
+// bound, 4 ulp of its scale (the mesh's largest coordinate or the model-space origin's), is in
+// model units and grows by the instance's largest scale in the world. The transform adds its own:
+// the golden traces toModelSpace's float32 ray, not the exact inverse image of the world ray. With
+// T, R^T and 1/S each rounded once (relative 2^-24), v = o - T rounded (2^-24 |v|, plus 2^-24 |T|
 // from T), each row's dot product of 2 products and 2 sums (3 2^-24 |v|, the row being a unit
 // vector) and the scale's product (2^-24), every model-space origin component is within
 // (1 + 1 + 1 + 3 + 1 + 1) 2^-24 |v| + 2^-24 |T| of exact, scaled; over 3 components and back in
@@ -59,7 +59,7 @@ std::vector<BvhInstance> spiderInstances(const Aabb<double>& box, double shift) 
           at({-0.5, 0.3, 0}, {0, -60, 10}, {1.5, 0.75, 1.25})};
 }
 
-struct Agreement {
+struct TwoLevelAgreement {
   int same = 0, ties = 0, explained = 0, unexplained = 0;
   double worstSameT = 0;  // the largest relative t difference of agreeing hits
   int disagreements() const { return explained + unexplained; }
@@ -76,9 +76,9 @@ class TwoLevelOracleCheck {
 
   const TriangleMesh& world() const { return world_; }
 
-  Agreement compare(const std::vector<Ray>& rays) const {
+  TwoLevelAgreement compare(const std::vector<Ray>& rays) const {
     TwoLevelTraversal<WatertightIntersector> traversal(bvh_);
-    Agreement agreement;
+    TwoLevelAgreement agreement;
     for (const Ray& given : rays) {
       const glm::vec3 o(given.origin), d(given.direction);
       const Ray ray{glm::dvec3(o), glm::dvec3(d)};  // both sides trace the float32 ray
@@ -95,7 +95,7 @@ class TwoLevelOracleCheck {
   }
 
   void classify(const TwoLevelResult& result, const std::optional<OracleHit>& oracle,
-                const Ray& ray, Agreement& agreement) const {
+                const Ray& ray, TwoLevelAgreement& agreement) const {
     if (result.hit == oracle.has_value() && (!oracle || flatIndex(result) == oracle->triangle)) {
       ++agreement.same;
       if (oracle)
@@ -156,7 +156,7 @@ TEST_CASE("Two-level BVH agrees with the oracle over the flattened spiders", "[t
   std::vector<Ray> rays = viewRays(world, 4, 32, 32);
   const std::vector<Ray> random = randomRays(world, 1000, 3);
   rays.insert(rays.end(), random.begin(), random.end());
-  const Agreement agreement = check.compare(rays);
+  const TwoLevelAgreement agreement = check.compare(rays);
   INFO(builder << ": same " << agreement.same << " ties " << agreement.ties << " explained "
                << agreement.explained << " worst relative t " << agreement.worstSameT);
   CHECK(agreement.unexplained == 0);
@@ -164,7 +164,7 @@ TEST_CASE("Two-level BVH agrees with the oracle over the flattened spiders", "[t
   CHECK(agreement.disagreements() <= 5);
   CHECK(agreement.worstSameT < 0x1.0p-14);  // measured 1.5e-5, on a grazing ray
   SECTION("rays aimed at the world's vertices and edges: none unexplained") {
-    const Agreement aimed = check.compare(aimedRays(check.world(), 1000, 4));
+    const TwoLevelAgreement aimed = check.compare(aimedRays(check.world(), 1000, 4));
     INFO(builder << " aimed: same " << aimed.same << " ties " << aimed.ties << " explained "
                  << aimed.explained);
     CHECK(aimed.unexplained == 0);
@@ -181,7 +181,7 @@ TEST_CASE("Two-level BVH: the next frame's placements, the same mesh image", "[t
   bvh.place(spiderInstances(box, 0.3 * box.extent().x));  // every instance moved along x
   CHECK(bvh.meshes()[0].image.words.data() == image);
   const TwoLevelOracleCheck check(mesh, bvh);
-  const Agreement agreement = check.compare(viewRays(meshBounds(check.world()), 2, 32, 32));
+  const TwoLevelAgreement agreement = check.compare(viewRays(meshBounds(check.world()), 2, 32, 32));
   INFO("same " << agreement.same << " explained " << agreement.explained);
   CHECK(agreement.unexplained == 0);
   CHECK(agreement.same > 2000);
