@@ -71,6 +71,16 @@ PY
 head -1 fps.csv | grep -q '^width,height,cores,rays,total_cycles,cycles_per_ray,frame_ms,fps,limit' \
   || fail "fps CSV columns"
 [[ $(wc -l <fps.csv) -eq 5 ]] || fail "fps row count"
+# The resource estimate's columns after the error column, as sweep's after its statistics: the
+# caches of the default (ideal) memory are none, so the block RAMs grow with the cores' stacks.
+"$python" - fps.csv <<'PY' || fail "fps resource columns"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+header = next(csv.reader(open(sys.argv[1])))
+assert header[header.index("error") + 1] == "memory_bits", header
+two, eight = (next(r for r in rows if r["cores"] == c and r["width"] == "24") for c in ("2", "8"))
+assert int(eight["memory_bits"]) > int(two["memory_bits"]) > 0, (two["memory_bits"], eight["memory_bits"])
+PY
 "$rtusim" render --scene sphere --depth 5 --width 32 --height 18 --cores 8 --stats r.json >/dev/null
 cycles=$("$python" -c 'import json; print(json.load(open("r.json"))["statistics"]["total_cycles"])')
 grep -q "^32,18,8,576,$cycles," fps.csv || fail "fps row differs from render ($cycles cycles)"

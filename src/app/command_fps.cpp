@@ -11,6 +11,7 @@
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
 #include "base/output_file.h"
+#include "explore/architecture_resources.h"
 #include "explore/exploration_run.h"
 #include "explore/raypipe_row.h"
 #include "explore/sweep_workers.h"
@@ -121,6 +122,7 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
   std::vector<std::string> header = {"width", "height", "cores"};
   for (const std::string& column : statisticsColumns()) header.push_back(column);
   header.push_back("error");
+  for (const std::string& column : resourceColumns()) header.push_back(column);
   file << csvLine(header);
   for (const nlohmann::ordered_json& row : rows) {
     const auto& config = row["config"];
@@ -131,6 +133,7 @@ void writeCsv(const std::vector<nlohmann::ordered_json>& rows, const std::string
                                        raypipeRow(config) ? "" : coresOf(config)};
     for (const std::string& value : statisticsValues(row)) fields.push_back(value);
     fields.push_back(row["error"].get<std::string>());
+    for (const std::string& value : resourceValues(row)) fields.push_back(value);
     file << csvLine(fields);
   }
   output.commit();
