@@ -9,7 +9,6 @@
 #include "app/kind_outputs.h"
 #include "kind_app_plugins.h"
 #include "kinds/core_result.h"
-#include "kinds/svo/ray_setup.h"
 #include "rtu/host_memory.h"
 #include "run/model_run.h"
 
@@ -84,7 +83,10 @@ void checkFrameFits(const RunConfig& settings, bool keepPixels, bool traced) {
 }
 
 FrameStream::FrameStream(const RunConfig& settings, const FrameScene& scene, bool keepPixels)
-    : settings_(settings), scene_(scene), tally_(tallyOf(settings, scene)) {
+    : settings_(settings),
+      scene_(scene),
+      makeRecord_(frameRecordMaker(settings.rtu.core)),
+      tally_(tallyOf(settings, scene)) {
   if (recordedWorkload(settings)) {
     recorded_ = frameRecords(scene, settings);
   } else {
@@ -118,10 +120,7 @@ HostRecord FrameStream::make(uint64_t index) {
   const uint64_t width = static_cast<uint64_t>(camera.width);
   const Ray ray =
       camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width));
-  const uint32_t id = static_cast<uint32_t>(index);
-  if (std::holds_alternative<TValueRecord>(sample_))
-    return makeTValueRecord(id, ray, scene_.entry, settings_.epsilon);
-  return makeRayRecord(id, ray, scene_.entry);
+  return makeRecord_(scene_, settings_, static_cast<uint32_t>(index), ray);
 }
 
 void FrameStream::take(const CoreKindResult& result) {

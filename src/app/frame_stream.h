@@ -61,6 +61,7 @@ class FrameStream {
 
   const RunConfig& settings_;
   const FrameScene& scene_;
+  FrameRecordMaker makeRecord_;  // the kind's record of a primary ray (KindScene<Kind>::record)
   std::unique_ptr<Tally> tally_;
   std::optional<std::vector<HostRecord>> recorded_;  // a recorded workload's
   HostRecord sample_;                                // record 0 of the frame, made beforehand

@@ -71,6 +71,12 @@ std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& s
   });
 }
 
+FrameRecordMaker frameRecordMaker(const std::string& core) {
+  return withCoreKind(core, [](auto kind) -> FrameRecordMaker {
+    return &KindScene<decltype(kind)>::record;
+  });
+}
+
 std::string frameSceneKey(const RunConfig& settings) {
   const SceneSpec& spec = settings.scene;
   const AccelSpec& accel = settings.accel;

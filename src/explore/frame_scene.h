@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "config/run_config.h"
+#include "geometry/ray.h"
 #include "geometry/triangle_mesh.h"
 #include "kinds/registry.h"
 #include "rtu/model_transform.h"
@@ -62,6 +63,12 @@ bool recordedWorkload(const RunConfig& settings);
 // when `settings` chooses another kind than the scene's, and, for the SVO kind on a timed model,
 // when the tree is deeper than the stack (unless overflow is allowed).
 std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& settings);
+
+// The kind's record of one primary ray (id, world-space ray) on its scene, for the kind named
+// `core`: what frameRecords holds for a camera's pixel, made one at a time.
+using FrameRecordMaker = HostRecord (*)(const FrameScene& scene, const RunConfig& settings,
+                                        uint32_t id, const Ray& ray);
+FrameRecordMaker frameRecordMaker(const std::string& core);
 
 // What decides which scene is built for a run, as text (the scene, the kind, its build settings):
 // runs with the same key share one FrameScene.

@@ -8,7 +8,10 @@
 //                ("bvh", "kdtree"), or nullptr for a kind built otherwise (svo);
 //   build        (kStructure only) that structure from a mesh, as a memory image;
 //   load         the frame's scene (FrameScene) under a run's settings;
-//   records      the host records of the camera's frame on that scene;
+//   records      the host records of the camera's frame on that scene (its checks, then `record`
+//                of each pixel's primary ray);
+//   record       the host record of one primary ray (id, world-space ray) on that scene, which a
+//                frame streamed as it runs makes when the run asks (app/frame_stream.h);
 //   buildKey     the kind's own settings that change its scene (frameSceneKey).
 // A triangle kind derives from TriangleKindScene, which builds its structure, puts a model header
 // after it and aims the camera's world-space rays at the header; it may hide `accelSpec` (the
@@ -27,6 +30,18 @@ namespace rtu {
 
 template <class Kind>
 struct KindScene;
+
+// The host records of the camera's frame by `Scene::record`, in pixel order (ids the pixel
+// indices).
+template <class Scene>
+std::vector<HostRecord> frameRecordsOf(const FrameScene& scene, const RunConfig& settings) {
+  const std::vector<Ray> rays = frameRays(settings.camera);
+  std::vector<HostRecord> records;
+  records.reserve(rays.size());
+  for (size_t id = 0; id < rays.size(); ++id)
+    records.push_back(Scene::record(scene, settings, static_cast<uint32_t>(id), rays[id]));
+  return records;
+}
 
 template <class Kind>
 struct TriangleKindScene {
@@ -61,8 +76,11 @@ struct TriangleKindScene {
     return scene;
   }
   static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings) {
-    const std::vector<RayRecord> rays = makeFrameRayRecords(settings.camera, scene.entry);
-    return {rays.begin(), rays.end()};
+    return frameRecordsOf<KindScene<Kind>>(scene, settings);
+  }
+  // A world-space ray record against the model header.
+  static HostRecord record(const FrameScene& scene, const RunConfig&, uint32_t id, const Ray& ray) {
+    return makeRayRecord(id, ray, scene.entry);
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "kinds/svo/ray_setup.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/stack_check.h"
 #include "kinds/svo/svo_validator.h"
@@ -27,9 +28,12 @@ std::vector<HostRecord> KindScene<SvoKind>::records(const FrameScene& scene,
   checkNeededFrames({scene.entry}, {scene.stackNeeded},
                     settings.rtu.coreConfig<SvoKind>().stackFrames, settings.allowStackOverflow,
                     sceneSource(settings.scene));
-  const std::vector<TValueRecord> jobs =
-      makeFrameJobs(settings.camera, scene.entry, settings.epsilon);
-  return {jobs.begin(), jobs.end()};
+  return frameRecordsOf<KindScene<SvoKind>>(scene, settings);
+}
+
+HostRecord KindScene<SvoKind>::record(const FrameScene& scene, const RunConfig& settings,
+                                      uint32_t id, const Ray& ray) {
+  return makeTValueRecord(id, ray, scene.entry, settings.epsilon);
 }
 
 }  // namespace rtu

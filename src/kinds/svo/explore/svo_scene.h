@@ -17,6 +17,9 @@ struct KindScene<SvoKind> {
   static constexpr const char* kStructure = nullptr;
   static FrameScene load(const RunConfig& settings);
   static std::vector<HostRecord> records(const FrameScene& scene, const RunConfig& settings);
+  // The thesis' t-value record of the ray against the octree (its entry).
+  static HostRecord record(const FrameScene& scene, const RunConfig& settings, uint32_t id,
+                           const Ray& ray);
   static std::string buildKey(const RunConfig&) { return ""; }
 };
 
