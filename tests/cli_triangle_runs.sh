@@ -4,8 +4,9 @@
 # over `core` gives each kind's row its own counters, and a kind's settings in it are reported as
 # without effect in the other kind's rows; a sampled BVH row estimates the full run's cycles;
 # fidelity measures the BVH's modes against its SystemC run (exact modes equal golden); animate
-# refuses a triangle core by name, and replay an SVO image on one (cli_triangle_replay.sh runs
-# its triangle records).
+# runs the two-level BVH on the bvh core (golden and ca on the same cycles) and refuses the other
+# triangle cores by name; replay refuses an SVO image on one (cli_triangle_replay.sh runs its
+# triangle records).
 # Usage: cli_triangle_runs.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -87,9 +88,43 @@ for mode in ("systemc", "recurrence", "lt q100"):
 assert float(modes["recurrence"]["total_cycles_error"]) == 0, modes["recurrence"]
 PY
 
-touch anim.toml
-expect_error "animate --core bvh: animated scenes run on the svo core only" \
-  "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim
+# animate on the BVH core: the two-level BVH, its top level rebuilt per frame (golden and ca agree
+# on every frame's cycles at ideal memory: the recurrence is exact there).
+cat >anim.toml <<'TOML'
+width = 48
+height = 32
+frames = 3
+frame_rate = 4
+[models.ball]
+procedural = "sphere"
+depth = 4
+[[instances]]
+model = "ball"
+keys = [{ time = 0, translation = [-0.6, 0, 0], scale = 0.5 }, { time = 0.5, translation = [0.6, 0, 0] }]
+[[instances]]
+model = "ball"
+keys = [{ time = 0, translation = [0, 0.4, 0.5], scale = [0.4, 0.2, 0.4], rotation_deg = [0, 0, 30] }]
+[camera]
+keys = [{ time = 0, position = [0, 0.5, -3], look_at = [0, 0, 0] }]
+TOML
+for model in golden ca; do
+  "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim_$model --model $model \
+    --cores 4 >anim_$model.txt || fail "animate --core bvh --model $model: $(cat anim_$model.txt)"
+  grep -q "top level   .* us mean build per frame" anim_$model.txt || fail "$(cat anim_$model.txt)"
+done
+python3 - anim_golden/frames.csv anim_ca/frames.csv <<'PY' || fail "animate --core bvh: golden and ca"
+import csv, sys
+golden, ca = (list(csv.DictReader(open(p))) for p in sys.argv[1:])
+assert len(golden) == 3 and len(ca) == 3, (golden, ca)
+for g, c in zip(golden, ca):
+    assert g["cycles"] == c["cycles"] and g["hits"] == c["hits"], (g, c)
+    assert int(g["hits"]) > 0 and int(g["top_nodes"]) == 3 and float(g["top_build_s"]) > 0, g
+    assert int(g["instances_entered"]) > 0, g
+PY
+expect_error "animate --core bih: animated scenes run on the svo core (the scene manager) or the bvh core" \
+  "$rtusim" animate --core bih --scene-file anim.toml --out-dir anim
+expect_error "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene manager's" \
+  "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim --no-hit-buffer
 expect_error "replay --core bvh: --svo is the SVO core's image" \
   "$rtusim" replay --core bvh --svo missing.svo --rays missing.bin --out out.bin
 echo "triangle runs: ok"

@@ -20,6 +20,7 @@
 #include "explore/animation_workers.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
+#include "kinds/bvh/app/two_level_animate.h"
 #include "run/lt_simulation.h"
 #include "run/statistics_output.h"
 #include "scene/model_cache.h"
@@ -121,18 +122,43 @@ void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
     std::cout << "wrote       " << animation.path << " (" << animation.tool << ")\n";
 }
 
-// An animated scene's models are octrees, merged per ray by the SVO scene manager: a triangle core
-// would need the two-level BVH rebuilt per frame (issue 28), which animate does not build yet.
-void refuseTriangleCores(const RtuConfig& rtu) {
-  if (rtu.core != SvoKind::kName)
+// An animated scene's models are octrees, merged per ray by the SVO scene manager, on the svo core;
+// on the bvh core, the two-level BVH (kinds/bvh/app/two_level_animate.h). The BIH and k-d cores
+// have no two-level structure.
+void refuseOtherCores(const RtuConfig& rtu) {
+  if (rtu.core != SvoKind::kName && rtu.core != BvhKind<>::kName)
     throw std::invalid_argument("animate --core " + rtu.core +
-                                ": animated scenes run on the svo core only; the " + rtu.core +
-                                " core needs a two-level BVH rebuilt per frame, not modelled yet");
+                                ": animated scenes run on the svo core (the scene manager) or the "
+                                "bvh core (the two-level BVH); the " +
+                                rtu.core + " core has no two-level structure");
 }
 
-void animate(const AnimateOptions& options, const RtuConfig& rtu) {
-  refuseTriangleCores(rtu);
-  if (options.model == "lt") refuseForLooselyTimedScenes(rtu);
+// The SVO scene manager's options that the two-level BVH has none of.
+void refuseSceneManagerOptions(const AnimateOptions& options) {
+  if (options.noHitBuffer || options.traceAll || options.workers > 0)
+    throw std::invalid_argument(
+        "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene "
+        "manager's; the two-level BVH traces every pixel in one process");
+}
+
+void animateTwoLevel(const AnimateOptions& options, const SceneDescription& scene,
+                     const RunConfig& settings) {
+  TwoLevelAnimateRequest request{&scene, &settings, parseModelKind(options.model),
+                                 options.csvPath(),
+                                 [&options](int frame) { return options.framePath(frame); }};
+  const std::vector<std::string> framePaths = animateTwoLevel(request);
+  std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
+            << framePaths.back().substr(options.outDir.size() + 1) << ", " << options.csvPath()
+            << "\n";
+  writeExtras(options, scene, framePaths);
+}
+
+void animate(const AnimateOptions& options, const RunConfig& settings) {
+  const RtuConfig& rtu = settings.rtu;
+  refuseOtherCores(rtu);
+  const bool twoLevel = rtu.core == BvhKind<>::kName;
+  if (twoLevel) refuseSceneManagerOptions(options);
+  if (options.model == "lt" && !twoLevel) refuseForLooselyTimedScenes(rtu);
   const SceneDescription scene = readSceneFile(options.sceneFile, options.overrides);
   std::filesystem::create_directories(options.outDir);
   checkOutputPaths({{"--csv", options.csvPath()}, {"--out-dir", options.framePath(0)}},
@@ -141,6 +167,7 @@ void animate(const AnimateOptions& options, const RtuConfig& rtu) {
   std::printf("scene       %s: %zu models, %zu instances, %d frames of %dx%d at %.3g frames/s\n",
               scene.path.c_str(), scene.models.size(), scene.instances.size(), scene.frames,
               scene.width, scene.height, scene.frameRate);
+  if (twoLevel) return animateTwoLevel(options, scene, settings);
   const std::vector<SceneModel> models =
       loadModels(scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
 
@@ -220,9 +247,8 @@ void addAnimateCommand(CLI::App& app) {
                     "no culling and no early termination: every instance for every ray");
   command->callback([options, request] {
     const Configuration configuration = request->resolve();
-    const RtuConfig& rtu = configuration.values().rtu;
-    validate(rtu);
-    animate(*options, rtu);
+    validate(configuration.values().rtu);
+    animate(*options, configuration.values());
   });
 }
 

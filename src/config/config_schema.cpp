@@ -452,6 +452,13 @@ void addBvhSettings(std::vector<Setting>& schema) {
       "BVH and k-d: the triangle unit's initiation interval, cycles between two tests' issues",
       &BvhCycles::triangleInterval, &KdCycles::triangleInterval));
   schema.push_back(integer(
+      "core.transform.latency", "--transform-latency", "cycles", 1, kMaxBvhUnitCycles,
+      kUseArithmetic,
+      "BVH: cycles of XFORM, a two-level BVH's move of the ray into an instance's mesh space "
+      "(animate --core bvh)",
+      [](C& c) -> uint32_t& { return c.rtu.coreConfig<BvhKind<>>().cycles.transformLatency; }));
+  schema.back().ignoredBecause = ignoredUnlessCore({BvhKind<>::kName});
+  schema.push_back(integer(
       "core.triangle.shared_by", "--triangle-shared-by", "cores", 1, kMaxCores, kUseModel,
       "BVH, BIH and k-d: cores sharing one ray/triangle unit, round-robin (1: a unit per core; "
       "at most the core count)",

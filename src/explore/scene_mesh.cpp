@@ -10,16 +10,6 @@
 namespace rtu {
 namespace {
 
-// A model's triangles in its cube.
-TriangleMesh modelTriangles(const ModelDescription& model) {
-  try {
-    const TriangleScene triangles = loadTriangleScene(model.source, MeshDefectPolicy::Drop);
-    return placedMesh(triangles.mesh, framePlacement(model.source, triangles.mesh));
-  } catch (const std::exception& error) {
-    throw std::runtime_error("model '" + model.name + "': " + error.what());
-  }
-}
-
 void append(TriangleMesh& to, const TriangleMesh& mesh) {
   const auto base = static_cast<uint32_t>(to.vertices.size());
   to.vertices.insert(to.vertices.end(), mesh.vertices.begin(), mesh.vertices.end());
@@ -29,9 +19,18 @@ void append(TriangleMesh& to, const TriangleMesh& mesh) {
 
 }  // namespace
 
+TriangleMesh sceneModelMesh(const ModelDescription& model) {
+  try {
+    const TriangleScene triangles = loadTriangleScene(model.source, MeshDefectPolicy::Drop);
+    return placedMesh(triangles.mesh, framePlacement(model.source, triangles.mesh));
+  } catch (const std::exception& error) {
+    throw std::runtime_error("model '" + model.name + "': " + error.what());
+  }
+}
+
 SceneMesh sceneMesh(const SceneDescription& scene, double time) {
   std::vector<TriangleMesh> models;
-  for (const ModelDescription& model : scene.models) models.push_back(modelTriangles(model));
+  for (const ModelDescription& model : scene.models) models.push_back(sceneModelMesh(model));
   SceneMesh out;
   for (const InstanceDescription& instance : scene.instances)
     append(out.mesh, placedMesh(models.at(instance.model), instance.placement.at(time)));

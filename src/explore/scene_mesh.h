@@ -18,6 +18,11 @@ struct SceneMesh {
   Camera camera;      // at `time`, the file's frame size
 };
 
+// A model's triangles in its cube (the mesh fitted as the voxelizer fits it, a voxel scene's
+// faces); throws what loading them throws, naming the model. The two-level BVH's meshes
+// (kinds/bvh/explore/two_level_animation.h).
+TriangleMesh sceneModelMesh(const ModelDescription& model);
+
 // Throws what loading a model's triangles throws (an .svo model holds none), naming the model;
 // degenerate and duplicate triangles of a model's mesh are dropped.
 SceneMesh sceneMesh(const SceneDescription& scene, double time);

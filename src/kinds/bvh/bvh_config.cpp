@@ -42,6 +42,7 @@ void BvhConfig::validate() const {
   checkRange("core.box.latency", cycles.boxLatency, 1, kMaxBvhUnitCycles);
   checkRange("core.triangle.latency", cycles.triangleLatency, 1, kMaxBvhUnitCycles);
   checkRange("core.triangle.interval", cycles.triangleInterval, 1, kMaxBvhUnitCycles);
+  checkRange("core.transform.latency", cycles.transformLatency, 1, kMaxBvhUnitCycles);
   if (cycles.triangleInterval > cycles.triangleLatency)
     throw std::invalid_argument(
         "core.triangle.interval (" + std::to_string(cycles.triangleInterval) +

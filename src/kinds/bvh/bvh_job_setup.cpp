@@ -5,6 +5,7 @@
 #include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_intersectors.h"
 #include "kinds/bvh/langr_node.h"
+#include "kinds/bvh/two_level_image.h"
 
 namespace rtu {
 
@@ -15,8 +16,10 @@ BvhJobSetup::Model BvhJobSetup::readModel(uint32_t address) const {
                      kBvhMagic, kBvhKind, "BVH");
   const BvhSections sections = sectionsOf(decodeHeader(entry.header.data()));
   const uint32_t root = entry.model.root;
+  const uint32_t instances = entry.header[kBvhInstanceBaseWord];
   return Model{entry.model,
-               BvhSections{root + sections.nodes, root + sections.refs, root + sections.triangles}};
+               BvhSections{root + sections.nodes, root + sections.refs, root + sections.triangles},
+               instances != 0 ? root + instances : 0};
 }
 
 JobSetUp<BvhJob> BvhJobSetup::setUp(const RayRecord& record) {
@@ -29,8 +32,8 @@ JobSetUp<BvhJob> BvhJobSetup::setUp(const RayRecord& record) {
   // A ray with a span leaves a surface: it starts kBvhSpanTMin along; an any-hit ray ends at t = 1.
   const bool anyHit = record.span == RaySpan::AnyHit;
   const float tMin = record.span == RaySpan::Line ? 0.0f : kBvhSpanTMin;
-  set.job =
-      BvhJob{makeBvhRay(origin, direction, tMin, anyHit ? 1.0f : INFINITY), model.image, anyHit};
+  set.job = BvhJob{makeBvhRay(origin, direction, tMin, anyHit ? 1.0f : INFINITY), model.image,
+                   anyHit, model.instances};
   return set;
 }
 

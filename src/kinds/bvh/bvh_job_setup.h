@@ -12,6 +12,9 @@
 // epsilon of a renderer's secondary rays, in units of the direction: 2^-16 of a shadow ray's
 // length, 2^-16 world units for a unit direction, some hundred float32 steps of coordinates
 // near 1); an any-hit ray ends at t = 1 and at its first hit (bvh_traversal.h).
+//
+// An image whose header word 11 is not 0 is a two-level BVH's top level (two_level_image.h): the
+// word is its instance records' address relative to the image, and the jobs are two-level.
 
 #include <cstdint>
 
@@ -39,7 +42,8 @@ class BvhJobSetup {
  private:
   struct Model {
     ModelTransform transform;
-    BvhSections image;  // word addresses in the memory
+    BvhSections image;       // word addresses in the memory
+    uint32_t instances = 0;  // a two-level image's instance records (two_level_image.h), or 0
   };
   Model readModel(uint32_t address) const;
 

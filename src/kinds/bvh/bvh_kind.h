@@ -30,8 +30,9 @@ using BvhResult = TriangleResult<float, BvhRayCounts>;
 
 // The trace's names of BvhState's codes, then BLOCKED.
 inline const std::vector<std::string> kBvhStateNames{
-    "IDLE", "ROOT0", "ROOT1", "ROOT_TEST", "LEFT0", "LEFT1", "RIGHT0", "RIGHT1", "DECIDE",
-    "REF",  "TRI0",  "TRI1",  "TRI2",      "TEST",  "POP",   "OUT",    "BLOCKED"};
+    "IDLE",   "ROOT0", "ROOT1", "ROOT_TEST", "LEFT0", "LEFT1", "RIGHT0", "RIGHT1",
+    "DECIDE", "REF",   "TRI0",  "TRI1",      "TRI2",  "TEST",  "INST0",  "INST1",
+    "INST2",  "INST3", "INST4", "XFORM",     "POP",   "OUT",   "BLOCKED"};
 
 template <class Intersector = SelectedIntersector>
 struct BvhKind : TriangleResultQueries<BvhResult, BvhCounters> {

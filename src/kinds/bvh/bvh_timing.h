@@ -10,6 +10,9 @@
 //                      what POP skips). A leaf of k triangles so spends (k-1) interval + latency in
 //                      TEST; its fetches (REF, TRI0-2: one memory port, one state at a time) come
 //                      between the issues and are not overlapped.
+//   XFORM              `transformLatency`: a two-level BVH's move of the ray into an instance's
+//                      mesh space (rtu/model_transform.h: a subtract, three rounds of multiply and
+//                      add, a scale), one pipelined unit per core as the job manager's ray stages
 // Seed 004's unit takes 41 cycles at one test a cycle; the defaults, 1, are the golden
 // traversal's one cycle a state. docs/cycle-semantics.md, "The BVH core", works a leaf out.
 
@@ -21,6 +24,7 @@ struct BvhCycles {
   uint32_t boxLatency = 1;
   uint32_t triangleLatency = 1;
   uint32_t triangleInterval = 1;
+  uint32_t transformLatency = 1;
 };
 
 }  // namespace rtu

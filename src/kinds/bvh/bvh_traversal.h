@@ -23,10 +23,25 @@
 //   REF            the leaf's next triangle reference (1 word)
 //   TRI0-TRI2      the triangle's 12 words
 //   TEST           the triangle test; the leaf's last -> POP; an any-hit ray's hit -> OUT
+//   INST0-INST4    two-level only (a top level's leaf, BvhJob::instances): the instance's
+//                  20-word record (two_level_image.h), 5 accesses
+//   XFORM          two-level only: the world ray into the instance's mesh space (the shared
+//                  float32 transform, rtu/model_transform.h: t keeps the world ray's units), then
+//                  the mesh's BVH from its root (ROOT0) with [tMin, the nearest hit so far]
 //   POP            OUT when the stack is empty; otherwise the newest entry, skipped (POP again)
-//                  when it begins beyond the nearest hit
+//                  when it begins beyond the nearest hit. In a mesh of a two-level BVH, when the
+//                  mesh's own entries are used up: back to the world ray and the top level's
+//                  leaf (its next instance, or POP again), in the same cycle
 // A node reached from DECIDE or POP is entered without another fetch: its child or leaf words
 // came with its parent's fetch (or the stack entry).
+//
+// Two levels (docs/triangles.md, "Two-level BVH in the core"): a job whose `instances` is set
+// walks a top-level BVH (its references name instances) by the same states; a top-level leaf's
+// REF reads an instance index, INST0-4 its record, XFORM moves the ray, and the mesh is traversed
+// on the same stack; the level is a register (the stack's entries below the mesh's are the top
+// level's, counted so that a push onto a full stack, which drops the oldest, drops top-level ones
+// first). A hit triangle's id is its mesh id plus the instance's primitive base (record word 15),
+// so that it names the triangle in the frame's instances concatenated.
 
 #include <algorithm>
 #include <array>
@@ -39,6 +54,7 @@
 #include "kinds/bvh/bvh_image.h"
 #include "kinds/bvh/bvh_ray.h"
 #include "kinds/bvh/bvh_timing.h"
+#include "rtu/model_header.h"
 #include "rtu/traversal_stack.h"
 
 namespace rtu {
@@ -58,9 +74,22 @@ enum class BvhState : uint8_t {
   Tri1,
   Tri2,
   Test,
+  Inst0,
+  Inst1,
+  Inst2,
+  Inst3,
+  Inst4,
+  Xform,
   Pop,
   Out
 };
+
+// A two-level BVH's instance record (two_level_image.h): 20 words, 5 accesses.
+//   0..14   the inverse placement as a model header's words 0-14 (rtu/model_header.h)
+//   15      primitive base: added to a hit triangle's id in the mesh
+//   16..18  the mesh's sections (BvhSections: nodes, refs, triangles), word addresses
+//   19      0
+constexpr uint32_t kBvhInstanceWords = 20;
 
 // Which of two hit children the traversal enters first; the other is pushed.
 enum class ChildOrder : uint8_t {
@@ -82,6 +111,9 @@ struct BvhJob {
   BvhRay ray;
   BvhSections image;
   bool anyHit = false;  // ends at its first hit within [tMin, tMax] (rtu/ray_span.h)
+  // Two-level: the word address of the instance records (image` is then the top level, whose
+  // references name instances); 0 for a one-level BVH.
+  uint32_t instances = 0;
 };
 
 // What one ray's traversal counted.
@@ -90,15 +122,16 @@ struct BvhRayCounts {
   uint32_t boxTests = 0;
   uint32_t triangleTests = 0;
   uint32_t pushes = 0, pops = 0;
-  uint32_t dropped = 0;   // stack entries lost to a push onto a full stack
-  uint32_t accesses = 0;  // memory accesses, kWordsPerRead words each
-  uint32_t anyHit = 0;    // 1 for an any-hit ray
-  uint32_t occluded = 0;  // 1 for an any-hit ray that hit
+  uint32_t dropped = 0;    // stack entries lost to a push onto a full stack
+  uint32_t accesses = 0;   // memory accesses, kWordsPerRead words each
+  uint32_t anyHit = 0;     // 1 for an any-hit ray
+  uint32_t occluded = 0;   // 1 for an any-hit ray that hit
+  uint32_t instances = 0;  // instances entered (XFORM), two-level only
 
   bool operator==(const BvhRayCounts& o) const {
     return nodes == o.nodes && boxTests == o.boxTests && triangleTests == o.triangleTests &&
            pushes == o.pushes && pops == o.pops && dropped == o.dropped && accesses == o.accesses &&
-           anyHit == o.anyHit && occluded == o.occluded;
+           anyHit == o.anyHit && occluded == o.occluded && instances == o.instances;
   }
 };
 
@@ -116,6 +149,9 @@ class BvhTraversal {
     ray_ = job.ray;
     image_ = job.image;
     anyHit_ = job.anyHit;
+    top_ = TopRegisters{job.ray, job.image, job.instances};
+    inMesh_ = false;
+    primitiveBase_ = 0;
     intersector_.prepare(ray_);
     stack_.clear();
     counts_ = {};
@@ -133,6 +169,7 @@ class BvhTraversal {
     switch (state_) {
       case BvhState::RootTest:
       case BvhState::Decide: return cycles_.boxLatency;
+      case BvhState::Xform: return cycles_.transformLatency;
       case BvhState::Test:
         // An any-hit ray waits for every test's result: a hit ends it.
         return refsLeft_ > 1 && !anyHit_ ? cycles_.triangleInterval : cycles_.triangleLatency;
@@ -151,7 +188,12 @@ class BvhTraversal {
       case BvhState::Ref:
       case BvhState::Tri0:
       case BvhState::Tri1:
-      case BvhState::Tri2: return true;
+      case BvhState::Tri2:
+      case BvhState::Inst0:
+      case BvhState::Inst1:
+      case BvhState::Inst2:
+      case BvhState::Inst3:
+      case BvhState::Inst4: return true;
       default: return false;
     }
   }
@@ -169,6 +211,13 @@ class BvhTraversal {
       case BvhState::Tri0: return triangleAddress();
       case BvhState::Tri1: return triangleAddress() + 4;
       case BvhState::Tri2: return triangleAddress() + 8;
+      case BvhState::Inst0:
+      case BvhState::Inst1:
+      case BvhState::Inst2:
+      case BvhState::Inst3:
+      case BvhState::Inst4:
+        return top_.instances + triangle_ * kBvhInstanceWords +
+               4 * (static_cast<uint32_t>(state_) - static_cast<uint32_t>(BvhState::Inst0));
       default: return 0;
     }
   }
@@ -207,7 +256,7 @@ class BvhTraversal {
       case BvhState::Decide: decide(); break;
       case BvhState::Ref:
         triangle_ = readWord(memoryAddress());
-        state_ = BvhState::Tri0;
+        state_ = atTopLevel() ? BvhState::Inst0 : BvhState::Tri0;
         break;
       case BvhState::Tri0:
         readTriangle(readWord, 0);
@@ -222,6 +271,12 @@ class BvhTraversal {
         state_ = BvhState::Test;
         break;
       case BvhState::Test: test(); break;
+      case BvhState::Inst0:
+      case BvhState::Inst1:
+      case BvhState::Inst2:
+      case BvhState::Inst3:
+      case BvhState::Inst4: readInstance(readWord); break;
+      case BvhState::Xform: transform(); break;
       case BvhState::Pop: pop(); break;
       default: throw std::logic_error("BVH traversal stepped while idle or done");
     }
@@ -277,8 +332,63 @@ class BvhTraversal {
   void testRoot() {
     if (slab(Layout::box(current_)).hit)
       enter(current_[6], current_[7]);
+    else if (inMesh_)
+      leaveMesh();
     else
       state_ = BvhState::Out;
+  }
+
+  bool atTopLevel() const { return top_.instances != 0 && !inMesh_; }
+
+  template <class ReadWord>
+  void readInstance(ReadWord& readWord) {
+    const uint32_t offset = memoryAddress() - top_.instances - triangle_ * kBvhInstanceWords;
+    for (uint32_t i = 0; i < kWordsPerRead; ++i)
+      instanceWords_[offset + i] = readWord(memoryAddress() + i);
+    state_ = static_cast<BvhState>(static_cast<uint32_t>(state_) + 1);  // INST4 -> XFORM
+  }
+
+  // XFORM: the world ray into the instance's mesh space; the mesh from its root. The top level's
+  // leaf goes on with its next reference when the mesh is done (leaveMesh).
+  void transform() {
+    ModelHeaderWords header{};
+    std::copy_n(instanceWords_.begin(), kModelHeaderWords, header.begin());
+    const ModelHeader placement = decodeModelHeader(header);
+    RayRecord world;
+    for (int k = 0; k < 3; ++k) {
+      world.origin[k] = top_.ray.origin[k];
+      world.direction[k] = top_.ray.direction[k];
+    }
+    const ModelSpaceRay model = toModelSpace(world, placement);
+    ray_ = makeBvhRay(Vec3<float>(model.origin[0], model.origin[1], model.origin[2]),
+                      Vec3<float>(model.direction[0], model.direction[1], model.direction[2]),
+                      top_.ray.tMin, tBest_);
+    intersector_.prepare(ray_);
+    image_ = BvhSections{instanceWords_[16], instanceWords_[17], instanceWords_[18]};
+    primitiveBase_ = instanceWords_[15];
+    top_.nextRef = nextRef_ + 1;
+    top_.refsLeft = refsLeft_ - 1;
+    top_.entries = stack_.size();
+    inMesh_ = true;
+    ++counts_.instances;
+    state_ = BvhState::Root0;
+  }
+
+  // Back to the world ray and the top level's leaf.
+  void leaveMesh() {
+    inMesh_ = false;
+    ray_ = top_.ray;
+    intersector_.prepare(ray_);
+    image_ = top_.image;
+    nextRef_ = top_.nextRef;
+    refsLeft_ = top_.refsLeft;
+    state_ = refsLeft_ > 0 ? BvhState::Ref : BvhState::Pop;
+  }
+
+  void push(const Entry& entry) {
+    // A full stack drops its oldest entry: the top level's, while a mesh's are above them.
+    if (stack_.size() == stack_.capacity() && top_.entries > 0) --top_.entries;
+    stack_.push(entry);
   }
 
   // Goes into the node whose child or leaf words are `word6`, `word7`.
@@ -300,7 +410,7 @@ class BvhTraversal {
       const bool leftFirst = leftBeforeRight(l, r);
       const Words& near = leftFirst ? left_ : right_;
       const Words& far = leftFirst ? right_ : left_;
-      stack_.push(Entry{far[6], far[7], leftFirst ? r.tEntry : l.tEntry});
+      push(Entry{far[6], far[7], leftFirst ? r.tEntry : l.tEntry});
       ++counts_.pushes;
       enter(near[6], near[7]);
     } else if (l.hit || r.hit) {
@@ -334,7 +444,7 @@ class BvhTraversal {
       tBest_ = found->t;
       u_ = found->u;
       v_ = found->v;
-      primitive_ = triangleWords_[9];
+      primitive_ = triangleWords_[9] + primitiveBase_;
     }
     ++nextRef_;
     state_ = --refsLeft_ > 0 ? BvhState::Ref : BvhState::Pop;
@@ -345,6 +455,10 @@ class BvhTraversal {
   }
 
   void pop() {
+    if (inMesh_ && stack_.size() == top_.entries) {
+      leaveMesh();
+      return;
+    }
     if (stack_.empty()) {
       state_ = BvhState::Out;
       return;
@@ -353,6 +467,16 @@ class BvhTraversal {
     ++counts_.pops;
     if (entry.tEntry <= tBest_) enter(entry.word6, entry.word7);  // else POP again
   }
+
+  // The top level's registers while a mesh is traversed: the world ray, the top level's image, its
+  // leaf's next reference and count, and its entries at the bottom of the stack.
+  struct TopRegisters {
+    BvhRay ray;
+    BvhSections image;
+    uint32_t instances = 0;
+    uint32_t nextRef = 0, refsLeft = 0;
+    int entries = 0;
+  };
 
   RingStack<Entry> stack_;
   ChildOrder order_;
@@ -365,6 +489,10 @@ class BvhTraversal {
   Words current_{}, left_{}, right_{};
   uint32_t nextRef_ = 0, refsLeft_ = 0, triangle_ = 0;
   std::array<uint32_t, kBvhTriangleWords> triangleWords_{};
+  std::array<uint32_t, kBvhInstanceWords> instanceWords_{};
+  TopRegisters top_;
+  bool inMesh_ = false;
+  uint32_t primitiveBase_ = 0;
   bool hit_ = false;
   float tBest_ = 0, u_ = 0, v_ = 0;
   uint32_t primitive_ = 0;

@@ -26,8 +26,12 @@ ModelTransform instanceTransform(const BvhInstance& instance, size_t index, size
 }  // namespace
 
 MeshBvh meshBvh(const BuildTree& tree, const TriangleMesh& mesh) {
+  return meshBvh(layOut(tree, mesh));
+}
+
+MeshBvh meshBvh(BvhImage image) {
   MeshBvh bvh;
-  bvh.image = layOut(tree, mesh);
+  bvh.image = std::move(image);
   const BvhImageView view(bvh.image.words);
   bvh.sections = sectionsOf(view.header());
   bvh.rootBox = view.node(0).box;

@@ -38,6 +38,8 @@ struct MeshBvh {
 
 // The image of `tree` over `mesh` (any builder's tree), with its sections and root box.
 MeshBvh meshBvh(const BuildTree& tree, const TriangleMesh& mesh);
+// A built image's sections and root box (throws std::out_of_range as BvhImageView).
+MeshBvh meshBvh(BvhImage image);
 
 struct BvhInstance {
   uint32_t mesh = 0;  // index into the two-level BVH's meshes

@@ -1,0 +1,94 @@
+#include "kinds/bvh/app/two_level_animate.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "app/frame_images.h"
+#include "base/output_file.h"
+#include "explore/exploration_run.h"
+#include "kinds/bvh/explore/two_level_animation.h"
+#include "run/statistics_output.h"
+
+namespace rtu {
+namespace {
+
+const glm::dvec3 kBackground{0.10, 0.10, 0.12};
+
+std::vector<float> shade(const TwoLevelAnimation& animation, const TwoLevelFrame& frame,
+                         const SceneDescription& scene) {
+  std::vector<float> rgb;
+  rgb.reserve(frame.results.size() * 3);
+  for (size_t i = 0; i < frame.results.size(); ++i) {
+    const BvhResult& hit = frame.results[i];
+    glm::dvec3 colour = kBackground;
+    if (hit.hit) {
+      const int x = static_cast<int>(i % scene.width), y = static_cast<int>(i / scene.width);
+      const double light = 0.2 + 0.8 * animation.facing(frame.camera, x, y, hit);
+      colour = scene.instances.at(animation.instanceOf(hit.primitive)).colour * light;
+    }
+    for (int k = 0; k < 3; ++k) rgb.push_back(static_cast<float>(colour[k]));
+  }
+  return rgb;
+}
+
+void printFrame(const TwoLevelFrameStatistics& f) {
+  std::printf("frame %4d  top level %llu instances, %llu nodes, SAH %.3f (seed %.3f), built in "
+              "%.1f us; %llu cycles, %.3f ms, %.1f frames/s\n",
+              f.frame, static_cast<unsigned long long>(f.instances),
+              static_cast<unsigned long long>(f.topNodes), f.topSah, f.topSahSeed,
+              f.topBuildSeconds * 1e6, static_cast<unsigned long long>(f.cycles), f.frameMs(),
+              f.framesPerSecond());
+}
+
+void printSummary(const std::vector<TwoLevelFrameStatistics>& frames, double seconds) {
+  double build = 0, buildMax = 0, cycles = 0, perRay = 0;
+  for (const TwoLevelFrameStatistics& f : frames) {
+    build += f.topBuildSeconds;
+    buildMax = std::max(buildMax, f.topBuildSeconds);
+    cycles += static_cast<double>(f.cycles);
+    perRay += f.instancesPerRay();
+  }
+  const double n = static_cast<double>(frames.size()), clock = frames.front().clockMhz;
+  std::printf("top level   %.1f us mean build per frame (max %.1f us)\n", 1e6 * build / n,
+              1e6 * buildMax);
+  std::printf("frames      %zu, %.3f ms mean frame time at %.0f MHz (%.1f frames/s); %.2f "
+              "instances entered per ray\n",
+              frames.size(), cycles / n / (clock * 1e3), clock,
+              cycles > 0 ? clock * 1e6 * n / cycles : 0.0, perRay / n);
+  std::printf("host        %.2f s\n", seconds);
+}
+
+}  // namespace
+
+std::vector<std::string> animateTwoLevel(const TwoLevelAnimateRequest& request) {
+  const SceneDescription& scene = *request.scene;
+  TwoLevelAnimationOptions options;
+  options.accel = request.settings->accel;
+  options.model = request.model;
+  options.rtu = request.settings->rtu;
+  const auto start = std::chrono::steady_clock::now();
+  TwoLevelAnimation animation(scene, options);
+  for (size_t m = 0; m < animation.meshes().size(); ++m)
+    std::printf("model       %s: %zu triangles, mesh BVH (%s) built once in %.3f s\n",
+                scene.models[m].name.c_str(), animation.meshes()[m].triangles.size(),
+                options.accel.builder.c_str(), animation.meshBuildSeconds()[m]);
+  OutputFile csvFile(request.csvPath);
+  std::ostream& csv = csvFile.stream();
+  csv << csvLine(statisticsHeader<TwoLevelFrameStatistics>());
+  std::vector<TwoLevelFrameStatistics> frames;
+  std::vector<std::string> paths;
+  for (int frame = 0; frame < scene.frames; ++frame) {
+    const TwoLevelFrame rendered = animation.render(frame);
+    paths.push_back(request.framePath(frame));
+    writeRgbImage(paths.back(), scene.width, scene.height, shade(animation, rendered, scene));
+    frames.push_back(rendered.statistics);
+    csv << csvLine(statisticsFields(rendered.statistics, "%.6g"));
+    printFrame(rendered.statistics);
+  }
+  csvFile.commit();
+  printSummary(frames,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return paths;
+}
+
+}  // namespace rtu

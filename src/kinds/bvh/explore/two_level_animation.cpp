@@ -1,0 +1,168 @@
+#include "kinds/bvh/explore/two_level_animation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "explore/accel_build.h"
+#include "explore/scene_mesh.h"
+#include "kinds/bvh/bvh_quality.h"
+#include "kinds/core_result.h"
+#include "run/rtu_simulation.h"
+
+namespace rtu {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TwoLevelBvh buildMeshes(const std::vector<TriangleMesh>& meshes, const AccelSpec& spec,
+                        const RtuConfig& rtu, std::vector<double>& seconds) {
+  std::vector<MeshBvh> built;
+  for (const TriangleMesh& mesh : meshes) {
+    const AccelBuild build = buildAccel(mesh, spec, rtu);
+    seconds.push_back(build.quality.buildSeconds);
+    built.push_back(meshBvh(BvhImage{build.words}));
+  }
+  return TwoLevelBvh(std::move(built));
+}
+
+std::vector<TriangleMesh> loadMeshes(const SceneDescription& scene) {
+  std::vector<TriangleMesh> meshes;
+  for (const ModelDescription& model : scene.models) meshes.push_back(sceneModelMesh(model));
+  return meshes;
+}
+
+AccelSpec bvhSpec(AccelSpec spec) {
+  spec.structure = "bvh";
+  return spec;
+}
+
+const RtuConfig& checkedBvh(const RtuConfig& rtu) {
+  if (rtu.core != BvhKind<>::kName)
+    throw std::invalid_argument("the two-level BVH runs on the bvh core, not " + rtu.core);
+  return rtu;
+}
+
+}  // namespace
+
+const StatisticGroup<TwoLevelFrameStatistics>& TwoLevelFrameStatistics::declaration() {
+  using F = TwoLevelFrameStatistics;
+  static const StatisticGroup<F> group =
+      StatisticGroup<F>("a frame of a two-level BVH animation: the columns of animate's CSV")
+          .setting(Statistic("frame", "", "the frame's number"), &F::frame)
+          .setting(Statistic("time_s", "s", "the frame's time in the animation"), &F::time)
+          .count(Statistic("pixels", "pixels", "the frame's pixels, one ray each"), &F::pixels)
+          .count(Statistic("hits", "rays", "pixels whose ray hit an instance"), &F::hits)
+          .count(Statistic("instances", "instances", "instances placed in the frame"),
+                 &F::instances)
+          .real(Statistic("top_build_s", "s",
+                          "the top level's build over the instances' world boxes, wall clock"),
+                &F::topBuildSeconds)
+          .count(Statistic("top_nodes", "nodes", "the top level's nodes"), &F::topNodes)
+          .real(Statistic("top_sah", "", "the top level's SAH, unit costs"), &F::topSah)
+          .real(Statistic("top_sah_seed", "", "the top level's SAH, seed 003's costs"),
+                &F::topSahSeed)
+          .count(Statistic("instances_entered", "instances",
+                           "instances the rays entered (XFORM states)"),
+                 &F::instancesEntered)
+          .derived(Statistic("instances_per_ray", "instances", "instances entered per ray"),
+                   &F::instancesPerRay)
+          .count(Statistic("nodes_visited", "nodes", "node records fetched, both levels"),
+                 &F::nodesVisited)
+          .count(Statistic("triangle_tests", "tests", "ray/triangle tests"), &F::triangleTests)
+          .count(Statistic("traversal_cycles", "cycles", "the rays' costs summed"),
+                 &F::traversalCycles)
+          .count(Statistic("cycles", "cycles",
+                           "the frame's total on the RTU (recurrence or simulated)"),
+                 &F::cycles)
+          .derived(Statistic("frame_ms", "ms", "the frame's time at the clock"), &F::frameMs)
+          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
+                   &F::framesPerSecond)
+          .real(Statistic("host_s", "s", "host time the frame took"), &F::hostSeconds)
+          .setting(Statistic("clock_mhz", "MHz", "the clock of frame_ms and fps").notAColumn(),
+                   &F::clockMhz);
+  return group;
+}
+
+TwoLevelAnimation::TwoLevelAnimation(const SceneDescription& scene,
+                                     TwoLevelAnimationOptions options)
+    : scene_(scene),
+      options_(std::move(options)),
+      meshes_(loadMeshes(scene)),
+      bvh_(buildMeshes(meshes_, bvhSpec(options_.accel), checkedBvh(options_.rtu), meshSeconds_)),
+      image_(bvh_) {
+  uint32_t base = 0;
+  for (const InstanceDescription& instance : scene.instances) {
+    primitiveBases_.push_back(base);
+    base += static_cast<uint32_t>(meshes_.at(instance.model).triangles.size());
+  }
+}
+
+std::vector<BvhInstance> TwoLevelAnimation::placements(double time) const {
+  std::vector<BvhInstance> instances;
+  for (const InstanceDescription& instance : scene_.instances)
+    instances.push_back(
+        BvhInstance{static_cast<uint32_t>(instance.model), instance.placement.at(time)});
+  return instances;
+}
+
+TwoLevelFrame TwoLevelAnimation::render(int frame) {
+  const auto start = std::chrono::steady_clock::now();
+  const double time = scene_.timeOf(frame);
+  TwoLevelFrame out;
+  TwoLevelFrameStatistics& statistics = out.statistics;
+  std::vector<BvhInstance> instances = placements(time);
+  const auto buildStart = std::chrono::steady_clock::now();
+  bvh_.place(std::move(instances));
+  statistics.topBuildSeconds = secondsSince(buildStart);
+  image_.writeFrame(bvh_);
+  const AccelQuality quality = measureQuality(bvh_.topLevel().tree, SahCosts{1.0, 2.0});
+  statistics.topNodes = quality.nodes;
+  statistics.topSah = quality.sah;
+  statistics.topSahSeed = quality.sahSeed;
+  out.camera = scene_.camera.at(time, scene_.width, scene_.height);
+  const std::vector<RayRecord> rays = makeFrameRayRecords(out.camera, image_.worldHeader());
+  const RtuRun run = runModel(options_.model, image_.memory(),
+                              std::vector<HostRecord>(rays.begin(), rays.end()), options_.rtu);
+  out.results = resultsOfKind<BvhKind<>>(resultsInJobOrder(run));
+  for (const BvhResult& result : out.results) {
+    statistics.hits += result.hit;
+    statistics.instancesEntered += result.counts.instances;
+    statistics.nodesVisited += result.counts.nodes;
+    statistics.triangleTests += result.counts.triangleTests;
+    statistics.traversalCycles += result.cost;
+  }
+  statistics.frame = frame;
+  statistics.time = time;
+  statistics.pixels = rays.size();
+  statistics.instances = scene_.instances.size();
+  statistics.cycles = run.totalCycles;
+  statistics.clockMhz = options_.rtu.clockMhz;
+  statistics.hostSeconds = secondsSince(start);
+  return out;
+}
+
+size_t TwoLevelAnimation::instanceOf(uint32_t primitive) const {
+  return static_cast<size_t>(
+      std::upper_bound(primitiveBases_.begin(), primitiveBases_.end(), primitive) -
+      primitiveBases_.begin() - 1);
+}
+
+double TwoLevelAnimation::facing(const Camera& camera, int x, int y, const BvhResult& hit) const {
+  const size_t instance = instanceOf(hit.primitive);
+  const BvhInstance& placed = bvh_.topLevel().instances.at(instance);
+  const TriangleMesh& mesh = meshes_.at(placed.mesh);
+  const auto& triangle = mesh.triangles.at(hit.primitive - primitiveBases_[instance]);
+  const glm::dvec3 a = mesh.vertices[triangle[0]], b = mesh.vertices[triangle[1]],
+                   c = mesh.vertices[triangle[2]];
+  const ModelPlacement& p = placed.placement;
+  const glm::dvec3 normal = p.rotation * (glm::cross(b - a, c - a) / p.scale);
+  const glm::dvec3 direction = camera.primaryRay(x, y).direction;
+  const double length = glm::length(normal) * glm::length(direction);
+  return length > 0 ? std::abs(glm::dot(normal, direction)) / length : 0.0;
+}
+
+}  // namespace rtu

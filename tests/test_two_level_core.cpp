@@ -1,0 +1,167 @@
+// The BVH core's two-level traversal (kinds/bvh/bvh_traversal.h, "Two levels") over the two-level
+// memory image (kinds/bvh/two_level_image.h) against the two-level golden walk
+// (kinds/bvh/two_level_traversal.h), which shares the mesh traversal but walks the top level and
+// moves the ray apart from the core; and through the job set-up of world-space ray records and the
+// cycle-accurate RTU. Four overlapping instances of spider.obj (test_two_level_oracle.cpp's), two
+// frames of placements over the same mesh images.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "bvh_meshes.h"
+#include "geometry/ray_sets.h"
+#include "kinds/bvh/bvh_kind.h"
+#include "kinds/bvh/langr_builder.h"
+#include "kinds/bvh/sah_builder.h"
+#include "kinds/bvh/two_level_image.h"
+#include "kinds/bvh/two_level_traversal.h"
+#include "kinds/core_result.h"
+#include "rtu/golden_shell.h"
+#include "run/rtu_simulation.h"
+
+namespace rtu {
+namespace {
+
+using Kind = BvhKind<WatertightIntersector>;
+
+std::vector<BvhInstance> instances(const Aabb<double>& box, double shift) {
+  const glm::dvec3 e = box.extent();
+  const auto at = [&](glm::dvec3 offset, glm::dvec3 degrees, glm::dvec3 scale) {
+    return BvhInstance{0, ModelPlacement{offset * e + glm::dvec3(shift, 0, 0),
+                                         rotationFromEulerDegrees(degrees), scale}};
+  };
+  return {at({0, 0, 0}, {0, 0, 0}, glm::dvec3(1)), at({0.6, 0, 0.1}, {0, 30, 0}, glm::dvec3(1)),
+          at({0.1, 0.2, 0.5}, {20, 0, 45}, glm::dvec3(0.5)),
+          at({-0.5, 0.3, 0}, {0, -60, 10}, {1.5, 0.75, 1.25})};
+}
+
+std::vector<RayRecord> worldRays(const TwoLevelBvh& bvh, uint32_t modelAddress) {
+  Aabb<double> world;
+  for (const Aabb<double>& box : bvh.topLevel().worldBoxes) world.grow(box);
+  std::vector<Ray> rays = viewRays(world, 3, 16, 16);
+  const std::vector<Ray> random = randomRays(world, 300, 5);
+  rays.insert(rays.end(), random.begin(), random.end());
+  std::vector<RayRecord> records;
+  for (const Ray& ray : rays) {
+    const glm::vec3 o(ray.origin), d(ray.direction);
+    records.push_back(RayRecord{
+        static_cast<uint32_t>(records.size()), {o.x, o.y, o.z}, {d.x, d.y, d.z}, modelAddress});
+  }
+  return records;
+}
+
+BvhRay bvhRay(const RayRecord& r) {
+  return makeBvhRay(Vec3<float>(r.origin[0], r.origin[1], r.origin[2]),
+                    Vec3<float>(r.direction[0], r.direction[1], r.direction[2]), 0.0f, INFINITY);
+}
+
+// The core's result equals the golden walk's: hit, t, u, v bit for bit, the triangle as its index
+// in the instances concatenated, and the counts of both levels summed.
+void checkSame(const BvhResult& core, const TwoLevelResult& golden, uint32_t meshTriangles) {
+  REQUIRE(core.hit == golden.hit);
+  CHECK(core.counts.nodes == golden.counts.top.nodes + golden.counts.mesh.nodes);
+  CHECK(core.counts.boxTests == golden.counts.top.boxTests + golden.counts.mesh.boxTests);
+  CHECK(core.counts.triangleTests == golden.counts.mesh.triangleTests);
+  CHECK(core.counts.instances == golden.counts.top.instances);
+  if (!golden.hit) return;
+  CHECK(core.t == golden.t);
+  CHECK(core.u == golden.u);
+  CHECK(core.v == golden.v);
+  CHECK(core.primitive == golden.instance * meshTriangles + golden.primitive);
+}
+
+}  // namespace
+
+TEST_CASE("Two-level BVH core equals the two-level golden walk over two frames", "[two_level]") {
+  const TriangleMesh& mesh = assimpObjModel("spider.obj");
+  const Aabb<double> box = meshBounds(mesh);
+  std::vector<MeshBvh> meshes;
+  meshes.push_back(meshBvh(buildLangr(mesh).tree, mesh));
+  TwoLevelBvh bvh(std::move(meshes));
+  TwoLevelImage image(bvh);
+  const auto triangles = static_cast<uint32_t>(mesh.triangles.size());
+  int hits = 0, rays = 0;
+  for (const double shift : {0.0, 0.3 * box.extent().x}) {
+    bvh.place(instances(box, shift));
+    image.writeFrame(bvh);
+    TwoLevelTraversal<WatertightIntersector> golden(bvh);
+    GoldenShell<Kind> core(image.memory(), Kind::Config{});
+    for (const RayRecord& record : worldRays(bvh, image.worldHeader())) {
+      BvhResult result;
+      core.run(record.id, image.job(bvhRay(record)), result);
+      const TwoLevelResult expected = golden.trace(record, 0, INFINITY);
+      checkSame(result, expected, triangles);
+      hits += expected.hit;
+      ++rays;
+    }
+  }
+  CHECK(hits > rays / 4);
+}
+
+TEST_CASE("Two-level BVH core: ray records through the job set-up and the cycle-accurate RTU",
+          "[two_level]") {
+  const TriangleMesh& mesh = assimpObjModel("spider.obj");
+  std::vector<MeshBvh> meshes;
+  meshes.push_back(meshBvh(buildLangr(mesh).tree, mesh));
+  TwoLevelBvh bvh(std::move(meshes));
+  bvh.place(instances(meshBounds(mesh), 0));
+  TwoLevelImage image(bvh);
+  image.writeFrame(bvh);
+  const std::vector<RayRecord> rays = worldRays(bvh, image.worldHeader());
+  RtuConfig config;
+  config.core = Kind::kName;
+  config.cores = 4;
+  config.coreConfig<BvhKind<>>().triangleTest = TriangleTest::Watertight;
+  config.coreConfig<BvhKind<>>().cycles = BvhCycles{2, 5, 1, 3};
+  const std::vector<HostRecord> records(rays.begin(), rays.end());
+  const std::vector<BvhResult> simulated =
+      resultsOfKind<BvhKind<>>(resultsInJobOrder(simulateRtu(image.memory(), records, config)));
+  REQUIRE(simulated.size() == rays.size());
+  BvhKind<>::Setup setup(image.memory(), JobManagerTiming{}, config.coreConfig<BvhKind<>>());
+  GoldenShell<BvhKind<>> core(image.memory(), config.coreConfig<BvhKind<>>());
+  TwoLevelTraversal<WatertightIntersector> golden(bvh);
+  int transformStates = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const JobSetUp<BvhJob> set = setup.setUp(rays[i]);
+    CHECK(set.job.instances != 0);
+    BvhResult result;
+    core.run(set.idWord, set.job, result);
+    CHECK(simulated[i] == result);
+    checkSame(result, golden.trace(rays[i], 0, INFINITY),
+              static_cast<uint32_t>(mesh.triangles.size()));
+    transformStates += result.counts.instances;
+  }
+  CHECK(transformStates > 0);
+}
+
+TEST_CASE("Two-level BVH core: an instance's states and cycles by hand", "[two_level]") {
+  // One instance of a one-triangle mesh, moved 5 along z; the ray along z from the origin hits it
+  // at t = 5. Box latency 2, triangle latency 5, transform latency 3. Top level (a root leaf):
+  // ROOT0, ROOT1 (2), ROOT_TEST (2), REF (1), INST0-4 (5), XFORM (3); the mesh (a root leaf):
+  // ROOT0, ROOT1 (2), ROOT_TEST (2), REF, TRI0-2 (4), TEST (the leaf's last: 5), POP (the mesh's
+  // entries used up: back to the top level, whose leaf is done, 1), POP (empty: OUT, 1). 28.
+  TriangleMesh mesh;
+  mesh.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 2}};
+  std::vector<MeshBvh> meshes;
+  meshes.push_back(meshBvh(buildSah(mesh).tree, mesh));
+  TwoLevelBvh bvh(std::move(meshes));
+  bvh.place({BvhInstance{0, ModelPlacement{glm::dvec3(0, 0, 5), glm::dmat3(1.0), glm::dvec3(1)}}});
+  TwoLevelImage image(bvh);
+  image.writeFrame(bvh);
+  BvhConfig config;
+  config.cycles = BvhCycles{2, 5, 1, 3};
+  GoldenShell<Kind> core(image.memory(), config);
+  const RayRecord record{0, {0, 0, 0}, {0, 0, 1}, image.worldHeader()};
+  BvhResult result;
+  core.run(0, image.job(bvhRay(record)), result);
+  CHECK(result.hit);
+  CHECK(result.t == 5.0f);
+  CHECK(result.primitive == 0);
+  CHECK(result.counts.instances == 1);
+  CHECK(result.counts.nodes == 2);
+  CHECK(result.counts.accesses == 2 + 1 + 5 + 2 + 1 + 3);
+  CHECK(result.cost == 28u);
+}
+
+}  // namespace rtu
