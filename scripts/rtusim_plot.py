@@ -115,16 +115,26 @@ def command_best(args):
 
 
 def command_frames(args):
-    """Frame rate over an animation (`rtusim animate --csv`), with the share of rays the hit
-    buffer saved and the jobs per traced ray beneath."""
+    """Frame rate over an animation (`rtusim animate --csv`), beneath it the share of rays the hit
+    buffer saved and the jobs per traced ray (the SVO scene manager's CSV), or the top level's
+    build time and the instances entered per ray (the two-level BVH's, `--core bvh`)."""
     plt = plotting()
     try:
         with open(args.csv, newline="", encoding="utf-8") as handle:
             rows = list(csv.DictReader(handle))
         frames = [int(row["frame"]) for row in rows]
         fps = [float(row["fps"]) for row in rows]
-        saved = [100.0 * float(row["rays_saved"]) / max(1.0, float(row["pixels"])) for row in rows]
-        jobs = [float(row["jobs_per_ray"]) for row in rows]
+        two_level = bool(rows) and "top_build_s" in rows[0]
+        if two_level:
+            lower = ([1e6 * float(row["top_build_s"]) for row in rows],
+                     "top level's build (µs)", "build µs", None)
+            upper = ([float(row["instances_per_ray"]) for row in rows],
+                     "instances entered per ray", "instances/ray")
+        else:
+            lower = ([100.0 * float(row["rays_saved"]) / max(1.0, float(row["pixels"]))
+                      for row in rows], "rays saved by the hit buffer (%)", "saved %", 100)
+            upper = ([float(row["jobs_per_ray"]) for row in rows], "jobs per traced ray",
+                     "jobs/ray")
     except (OSError, KeyError, ValueError) as error:
         raise InputError("%s: not an animate CSV (%s)" % (args.csv, error))
     if not rows:
@@ -135,12 +145,12 @@ def command_frames(args):
     top.set_ylabel("frames/s at the clock")
     top.set_title("frame rate over the animation")
     top.set_ylim(bottom=0)
-    bottom.plot(frames, saved, color="tab:green", label="rays saved by the hit buffer (%)")
-    bottom.set_ylabel("saved %")
-    bottom.set_ylim(0, 100)
+    bottom.plot(frames, lower[0], color="tab:green", label=lower[1])
+    bottom.set_ylabel(lower[2])
+    bottom.set_ylim(0, lower[3])
     twin = bottom.twinx()
-    twin.plot(frames, jobs, color="tab:orange", label="jobs per traced ray")
-    twin.set_ylabel("jobs/ray")
+    twin.plot(frames, upper[0], color="tab:orange", label=upper[1])
+    twin.set_ylabel(upper[2])
     twin.set_ylim(bottom=0)
     bottom.set_xlabel("frame")
     lines = bottom.get_lines() + twin.get_lines()

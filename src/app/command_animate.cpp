@@ -141,8 +141,8 @@ void refuseSceneManagerOptions(const AnimateOptions& options) {
         "manager's; the two-level BVH traces every pixel in one process");
 }
 
-void animateTwoLevel(const AnimateOptions& options, const SceneDescription& scene,
-                     const RunConfig& settings) {
+void runTwoLevel(const AnimateOptions& options, const SceneDescription& scene,
+                 const RunConfig& settings) {
   TwoLevelAnimateRequest request{&scene, &settings, parseModelKind(options.model),
                                  options.csvPath(),
                                  [&options](int frame) { return options.framePath(frame); }};
@@ -167,7 +167,7 @@ void animate(const AnimateOptions& options, const RunConfig& settings) {
   std::printf("scene       %s: %zu models, %zu instances, %d frames of %dx%d at %.3g frames/s\n",
               scene.path.c_str(), scene.models.size(), scene.instances.size(), scene.frames,
               scene.width, scene.height, scene.frameRate);
-  if (twoLevel) return animateTwoLevel(options, scene, settings);
+  if (twoLevel) return runTwoLevel(options, scene, settings);
   const std::vector<SceneModel> models =
       loadModels(scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
 

@@ -1,5 +1,6 @@
 #include "kinds/bvh/app/two_level_animate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 

@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+
+#include <glm/geometric.hpp>
 
 #include "explore/accel_build.h"
 #include "explore/scene_mesh.h"
