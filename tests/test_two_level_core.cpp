@@ -37,7 +37,10 @@ std::vector<BvhInstance> instances(const Aabb<double>& box, double shift) {
 
 std::vector<RayRecord> worldRays(const TwoLevelBvh& bvh, uint32_t modelAddress) {
   Aabb<double> world;
-  for (const Aabb<double>& box : bvh.topLevel().worldBoxes) world.grow(box);
+  for (const Aabb<double>& box : bvh.topLevel().worldBoxes) {
+    world.grow(box.lower);
+    world.grow(box.upper);
+  }
   std::vector<Ray> rays = viewRays(world, 3, 16, 16);
   const std::vector<Ray> random = randomRays(world, 300, 5);
   rays.insert(rays.end(), random.begin(), random.end());
