@@ -69,10 +69,10 @@ TEST_CASE("Two-level BVH animation equals the flattened frame on hits and t", "[
     }
     INFO("frame " << frame << ": hits " << hits << ", hit/miss differ " << differ
                   << ", other triangle " << otherTriangle << ", worst relative t " << worstT);
-    CHECK(hits > 500);
-    CHECK(differ <= 2);
-    CHECK(otherTriangle <= hits / 50);  // ties between coplanar voxel faces, edges
-    CHECK(worstT < 0x1p-16);
+    CHECK(hits > 400);          // measured 553 and 511
+    CHECK(differ <= 2);         // measured 0
+    CHECK(otherTriangle <= 2);  // measured 0
+    CHECK(worstT < 0x1p-19);    // measured 4.3e-7
     const TwoLevelFrameStatistics& s = twoLevel.statistics;
     CHECK(s.instances == 3);
     CHECK(s.topNodes == 5);  // leaves of one instance: 3 leaves, 2 inner nodes
