@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "explore/animation_run.h"
 #include "explore/exploration_run.h"
+#include "kinds/bvh/explore/two_level_animation.h"
 #include "raypipe/raypipe_statistics.h"
 #include "run/rtu_statistics.h"
 #include "run/sampled_run.h"
@@ -27,6 +28,9 @@ void listAllStatistics(std::ostream& out) {
   out << "\n";
   listStatistics(out, "# " + FrameStatistics::declaration().title(),
                  FrameStatistics::declaration().statistics());
+  out << "\n";
+  listStatistics(out, "# " + TwoLevelFrameStatistics::declaration().title() + " (--core bvh)",
+                 TwoLevelFrameStatistics::declaration().statistics());
   out << "\n";
   listStatistics(out, "# " + RaypipeStatistics::declaration().title(),
                  RaypipeStatistics::declaration().statistics());
