@@ -111,7 +111,7 @@ struct BvhJob {
   BvhRay ray;
   BvhSections image;
   bool anyHit = false;  // ends at its first hit within [tMin, tMax] (rtu/ray_span.h)
-  // Two-level: the word address of the instance records (image` is then the top level, whose
+  // Two-level: the word address of the instance records (`image` is then the top level, whose
   // references name instances); 0 for a one-level BVH.
   uint32_t instances = 0;
 };
