@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/frame_images.h"
 #include "app/input_file_check.h"
+#include "app/kind_animation.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/scene_shading.h"
@@ -20,7 +21,7 @@
 #include "explore/animation_workers.h"
 #include "explore/exploration_run.h"
 #include "explore/sweep_workers.h"
-#include "kinds/bvh/app/two_level_animate.h"
+#include "kind_app_plugins.h"
 #include "run/lt_simulation.h"
 #include "run/statistics_output.h"
 #include "scene/model_cache.h"
@@ -122,43 +123,49 @@ void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
     std::cout << "wrote       " << animation.path << " (" << animation.tool << ")\n";
 }
 
-// An animated scene's models are octrees, merged per ray by the SVO scene manager, on the svo core;
-// on the bvh core, the two-level BVH (kinds/bvh/app/two_level_animate.h). The BIH and k-d cores
-// have no two-level structure.
-void refuseOtherCores(const RtuConfig& rtu) {
-  if (rtu.core != SvoKind::kName && rtu.core != BvhKind<>::kName)
-    throw std::invalid_argument("animate --core " + rtu.core +
-                                ": animated scenes run on the svo core (the scene manager) or the "
-                                "bvh core (the two-level BVH); the " +
-                                rtu.core + " core has no two-level structure");
+// Runs the animation of a kind with its own (KindAnimation<Kind>), and returns true; false on the
+// svo core, whose models' octrees the scene manager below merges per ray. Any other kind is
+// refused, naming it.
+bool animateWithKind(const AnimateOptions& options, const SceneDescription& scene,
+                     const RunConfig& settings) {
+  if (settings.rtu.core == SvoKind::kName) return false;
+  withCoreKind(settings.rtu.core, [&](auto kind) {
+    using Animation = KindAnimation<decltype(kind)>;
+    if constexpr (Animation::kAnimates) {
+      AnimationRequest request{&scene, &settings, parseModelKind(options.model), options.csvPath(),
+                               [&options](int frame) { return options.framePath(frame); }};
+      const std::vector<std::string> framePaths = Animation::run(request);
+      std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
+                << framePaths.back().substr(options.outDir.size() + 1) << ", " << options.csvPath()
+                << "\n";
+      writeExtras(options, scene, framePaths);
+    } else {
+      throw std::invalid_argument("animate --core " + settings.rtu.core +
+                                  ": animated scenes run on the svo core (the scene manager) or "
+                                  "a core with its own animation (bvh: the two-level BVH); the " +
+                                  settings.rtu.core + " core has none");
+    }
+  });
+  return true;
 }
 
-// The SVO scene manager's options that the two-level BVH has none of.
-void refuseSceneManagerOptions(const AnimateOptions& options) {
-  if (options.noHitBuffer || options.traceAll || options.workers > 0)
-    throw std::invalid_argument(
-        "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene "
-        "manager's; the two-level BVH traces every pixel in one process");
-}
-
-void runTwoLevel(const AnimateOptions& options, const SceneDescription& scene,
-                 const RunConfig& settings) {
-  TwoLevelAnimateRequest request{&scene, &settings, parseModelKind(options.model),
-                                 options.csvPath(),
-                                 [&options](int frame) { return options.framePath(frame); }};
-  const std::vector<std::string> framePaths = animateTwoLevel(request);
-  std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
-            << framePaths.back().substr(options.outDir.size() + 1) << ", " << options.csvPath()
-            << "\n";
-  writeExtras(options, scene, framePaths);
+// The checks before any work: a kind with its own animation refuses the options it has no use for.
+void refuseUnusedOptions(const AnimateOptions& options, const RunConfig& settings) {
+  const std::string& core = settings.rtu.core;
+  if (core == SvoKind::kName) {
+    if (options.model == "lt") refuseForLooselyTimedScenes(settings.rtu);
+    return;
+  }
+  withCoreKind(core, [&options](auto kind) {
+    using Animation = KindAnimation<decltype(kind)>;
+    if constexpr (Animation::kAnimates)
+      Animation::refuse({options.noHitBuffer, options.traceAll, options.workers > 0});
+  });
 }
 
 void animate(const AnimateOptions& options, const RunConfig& settings) {
   const RtuConfig& rtu = settings.rtu;
-  refuseOtherCores(rtu);
-  const bool twoLevel = rtu.core == BvhKind<>::kName;
-  if (twoLevel) refuseSceneManagerOptions(options);
-  if (options.model == "lt" && !twoLevel) refuseForLooselyTimedScenes(rtu);
+  refuseUnusedOptions(options, settings);
   const SceneDescription scene = readSceneFile(options.sceneFile, options.overrides);
   std::filesystem::create_directories(options.outDir);
   checkOutputPaths({{"--csv", options.csvPath()}, {"--out-dir", options.framePath(0)}},
@@ -167,7 +174,7 @@ void animate(const AnimateOptions& options, const RunConfig& settings) {
   std::printf("scene       %s: %zu models, %zu instances, %d frames of %dx%d at %.3g frames/s\n",
               scene.path.c_str(), scene.models.size(), scene.instances.size(), scene.frames,
               scene.width, scene.height, scene.frameRate);
-  if (twoLevel) return runTwoLevel(options, scene, settings);
+  if (animateWithKind(options, scene, settings)) return;
   const std::vector<SceneModel> models =
       loadModels(scene, options.cacheDir.empty() ? defaultModelCacheDirectory() : options.cacheDir);
 

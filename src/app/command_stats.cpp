@@ -3,9 +3,11 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/kind_animation.h"
 #include "explore/animation_run.h"
 #include "explore/exploration_run.h"
-#include "kinds/bvh/explore/two_level_animation.h"
+#include "kind_app_plugins.h"
+#include "kinds/registry.h"
 #include "raypipe/raypipe_statistics.h"
 #include "run/rtu_statistics.h"
 #include "run/sampled_run.h"
@@ -29,9 +31,13 @@ void listAllStatistics(std::ostream& out) {
   listStatistics(out, "# " + FrameStatistics::declaration().title(),
                  FrameStatistics::declaration().statistics());
   out << "\n";
-  listStatistics(out, "# " + TwoLevelFrameStatistics::declaration().title() + " (--core bvh)",
-                 TwoLevelFrameStatistics::declaration().statistics());
-  out << "\n";
+  forEachCoreKind([&out](auto kind) {
+    using Animation = KindAnimation<decltype(kind)>;
+    if constexpr (Animation::kAnimates) {
+      Animation::listStatistics(out);
+      out << "\n";
+    }
+  });
   listStatistics(out, "# " + RaypipeStatistics::declaration().title(),
                  RaypipeStatistics::declaration().statistics());
   out << "\n# the statistics columns of fps --csv and sweep --out (CSV)\n"

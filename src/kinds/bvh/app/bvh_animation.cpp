@@ -1,8 +1,9 @@
-#include "kinds/bvh/app/two_level_animate.h"
+#include "kinds/bvh/app/bvh_animation.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <stdexcept>
 
 #include "app/frame_images.h"
 #include "base/output_file.h"
@@ -61,7 +62,19 @@ void printSummary(const std::vector<TwoLevelFrameStatistics>& frames, double sec
 
 }  // namespace
 
-std::vector<std::string> animateTwoLevel(const TwoLevelAnimateRequest& request) {
+void KindAnimation<BvhKind<>>::refuse(const AnimationOptionsUsed& options) {
+  if (options.noHitBuffer || options.traceAll || options.workers)
+    throw std::invalid_argument(
+        "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene "
+        "manager's; the two-level BVH traces every pixel in one process");
+}
+
+void KindAnimation<BvhKind<>>::listStatistics(std::ostream& out) {
+  rtu::listStatistics(out, "# " + TwoLevelFrameStatistics::declaration().title() + " (--core bvh)",
+                      TwoLevelFrameStatistics::declaration().statistics());
+}
+
+std::vector<std::string> KindAnimation<BvhKind<>>::run(const AnimationRequest& request) {
   const SceneDescription& scene = *request.scene;
   TwoLevelAnimationOptions options;
   options.accel = request.settings->accel;
