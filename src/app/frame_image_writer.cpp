@@ -10,16 +10,17 @@ namespace rtu {
 
 FrameImageWriter::FrameImageWriter(const Camera& camera, FrameImagePaths paths)
     : camera_(camera), paths_(std::move(paths)) {
-  if (!paths_.shaded.empty()) {
-    shaded_ = std::make_unique<RowImage>(paths_.shaded, camera.width, camera.height, 3, false);
+  if (!paths_.image.empty()) {
+    shaded_ = std::make_unique<RowImage>(paths_.image, camera.width, camera.height, 3, false);
     shadedRow_.resize(static_cast<size_t>(camera.width) * 3);
   }
-  if (!paths_.depth.empty()) depth_.assign(camera.pixelCount(), depthSample(FramePixel{}));
-  if (!paths_.cost.empty()) cost_.assign(camera.pixelCount(), CostSample{});
+  if (!paths_.depthImage.empty()) depth_.assign(camera.pixelCount(), depthSample(FramePixel{}));
+  if (!paths_.costImage.empty()) cost_.assign(camera.pixelCount(), CostSample{});
 }
 
 size_t FrameImageWriter::bytesPerPixel(const FrameImagePaths& paths) {
-  return (paths.depth.empty() ? 0 : sizeof(float)) + (paths.cost.empty() ? 0 : sizeof(CostSample));
+  return (paths.depthImage.empty() ? 0 : sizeof(float)) +
+         (paths.costImage.empty() ? 0 : sizeof(CostSample));
 }
 
 void FrameImageWriter::place(uint32_t id, const FramePixel& pixel) {
@@ -65,8 +66,8 @@ void FrameImageWriter::finish() {
     while (nextRow_ < camera_.height) writeFrontRow();
     shaded_->commit();
   }
-  if (!paths_.depth.empty()) writeDepthImage(camera_, depth_, paths_.depth);
-  if (!paths_.cost.empty()) writeCostImage(camera_, cost_, paths_.cost);
+  if (!paths_.depthImage.empty()) writeDepthImage(camera_, depth_, paths_.depthImage);
+  if (!paths_.costImage.empty()) writeCostImage(camera_, cost_, paths_.costImage);
 }
 
 }  // namespace rtu

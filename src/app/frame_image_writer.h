@@ -19,10 +19,11 @@
 
 namespace rtu {
 
-// The paths of the images, empty for those not asked.
+// The images `render` writes of any architecture's frame: their paths, empty for those not
+// asked.
 struct FrameImagePaths {
-  std::string shaded, depth, cost;
-  bool any() const { return !shaded.empty() || !depth.empty() || !cost.empty(); }
+  std::string image, depthImage, costImage;
+  bool any() const { return !image.empty() || !depthImage.empty() || !costImage.empty(); }
 };
 
 class FrameImageWriter final : public PixelSink {

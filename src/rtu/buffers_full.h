@@ -9,27 +9,36 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <functional>
-#include <queue>
-#include <utility>
-#include <vector>
+#include <deque>
 
 namespace rtu {
 
 class BuffersFull {
  public:
-  void started(uint64_t handover) { events_.emplace(handover, kStart); }
-  void ended(uint64_t drain) { events_.emplace(drain + 1, kEnd); }
+  // Handovers come nearly in cycle order: each is put in its place from the back.
+  void started(uint64_t handover) {
+    auto place = starts_.end();
+    while (place != starts_.begin() && *(place - 1) > handover) --place;
+    starts_.insert(place, handover);
+  }
+  // Drains come in cycle order.
+  void ended(uint64_t drain) { ends_.push_back(drain + 1); }
 
-  // No start or end before `cycle` is still to come: those before it are counted.
+  // No start or end before `cycle` is still to come: those before it are counted, in cycle
+  // order, ends before starts in one cycle.
   void settleBefore(uint64_t cycle) {
-    while (!events_.empty() && events_.top().first < cycle) {
-      if (events_.top().second == kEnd) {
+    for (;;) {
+      const bool end = !ends_.empty() && ends_.front() < cycle &&
+                       (starts_.empty() || ends_.front() <= starts_.front());
+      if (end) {
         --full_;
-      } else {
+        ends_.pop_front();
+      } else if (!starts_.empty() && starts_.front() < cycle) {
         most_ = std::max(most_, ++full_);
+        starts_.pop_front();
+      } else {
+        return;
       }
-      events_.pop();
     }
   }
 
@@ -40,10 +49,7 @@ class BuffersFull {
   }
 
  private:
-  static constexpr int kEnd = 0, kStart = 1;  // in one cycle, ends come first
-  using Event = std::pair<uint64_t, int>;     // (cycle, kind)
-
-  std::priority_queue<Event, std::vector<Event>, std::greater<>> events_;
+  std::deque<uint64_t> starts_, ends_;  // cycles not yet counted, each in order
   uint64_t full_ = 0, most_ = 0;
 };
 

@@ -151,13 +151,16 @@ class Recurrence {
       const JobTiming job = jobAt_(i);
       JobCycles cycles = enterPipeline(i, job);
       dispatch(cycles, job.cost);
-      buffersFull_.settleBefore(settledBefore());
+      // Now and then: the cycles settled cost a look at every core.
+      if (i % kSettleEvery == kSettleEvery - 1) buffersFull_.settleBefore(settledBefore());
     }
     while (!drains_.empty()) drainNext();  // drains come in cycle order
     return RecurrenceTotals{jobs_ == 0 ? 0 : lastDrainCycle_ + 1, buffersFull_.most()};
   }
 
  private:
+  static constexpr size_t kSettleEvery = 64;  // jobs
+
   // A job in the job manager's pipeline: entered, not yet dispatched when a later job entered.
   struct InPipeline {
     uint64_t pending, dispatch;
