@@ -163,7 +163,7 @@ TEST_CASE("An output's temporary file names this host and process", "[output_fil
   CHECK(name.size() == prefix.size() + 6 + 4);  // six random characters, ".png"
 }
 
-TEST_CASE("A temporary file left by an ended process is removed by the next output to its path; "
+TEST_CASE("A temporary file left by an ended process is removed by the next output to its path\\, "
           "others stay",
           "[output_file]") {
   Folder folder;
