@@ -2,6 +2,8 @@
 // cause and never removes a path the program did not create.
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 
@@ -127,4 +129,57 @@ TEST_CASE("An output file that cannot be created names the file and the cause", 
   const std::string path = folder.file("missing/out.png");
   CHECK_THROWS_WITH(rtu::OutputFile(path), Contains("cannot create '" + path + "'") &&
                                                Contains("No such file or directory"));
+}
+
+namespace {
+
+// A pid that no process has: a child's, once it has ended and been waited for.
+pid_t endedPid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+std::string hostOfThisMachine() {
+  char name[256] = {};
+  ::gethostname(name, sizeof name - 1);
+  std::string host(name);
+  for (char& c : host)
+    if (c == '/' || c == '-') c = '_';
+  return host;
+}
+
+}  // namespace
+
+TEST_CASE("An output's temporary file names this host and process", "[output_file]") {
+  Folder folder;
+  rtu::OutputFile file(folder.file("frame.png"));
+  const std::string name = fs::path(file.writePath()).filename().string();
+  const std::string prefix =
+      ".frame.part-" + hostOfThisMachine() + "-" + std::to_string(::getpid()) + "-";
+  CHECK(name.rfind(prefix, 0) == 0);
+  CHECK(name.size() == prefix.size() + 6 + 4);  // six random characters, ".png"
+}
+
+TEST_CASE("A temporary file left by an ended process is removed by the next output to its path\\, "
+          "others stay",
+          "[output_file]") {
+  Folder folder;
+  const std::string host = hostOfThisMachine();
+  const std::string stale =
+      folder.file(".out.part-" + host + "-" + std::to_string(endedPid()) + "-a1b2c3.csv");
+  const std::string running =
+      folder.file(".out.part-" + host + "-" + std::to_string(::getppid()) + "-d4e5f6.csv");
+  const std::string otherHost =
+      folder.file(".out.part-elsewhere-" + std::to_string(endedPid()) + "-g7h8i9.csv");
+  const std::string otherOutput =
+      folder.file(".other.part-" + host + "-" + std::to_string(endedPid()) + "-j1k2l3.csv");
+  const std::string notOurs = folder.file(".out.part-notes.csv");
+  for (const std::string& path : {stale, running, otherHost, otherOutput, notOurs}) writeOld(path);
+  rtu::writeTextFile(folder.file("out.csv"), "new");
+  CHECK_FALSE(fs::exists(stale));
+  for (const std::string& path : {running, otherHost, otherOutput, notOurs})
+    CHECK(contents(path) == "old");
 }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "app/frame_image_writer.h"
 #include "app/frame_images.h"
 #include "app/frame_outputs.h"
 #include "app/frame_stream.h"
@@ -146,29 +147,39 @@ void renderPasses(const FrameScene& scene, const Configuration& configuration,
               << " cycles\n";
 }
 
-// The frame of the run's kind (explore/frame_scene.h) on the chosen model, and its passes; its
-// pixels when images or passes read them.
-std::optional<RenderedFrame> renderFrame(const Configuration& configuration,
-                                         const RenderOptions& options) {
+// The frame of the run's kind (explore/frame_scene.h) on the chosen model, its passes and its
+// images: written as the results leave the run, or, when secondary passes shade them, from the
+// frame's pixels held for the passes.
+void renderFrame(const Configuration& configuration, const RenderOptions& options) {
   const RunConfig& settings = configuration.values();
   const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
   if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
     throw std::invalid_argument("--passes " + settings.rayPasses +
                                 ": secondary passes need the svo core and the camera's frame");
-  // Pixels are held only for what reads them: images and secondary passes.
-  const bool keepPixels = options.wantsImages() || passes.size() > 1;
+  // Pixels are held only for secondary passes, which read them all.
+  const bool keepPixels = passes.size() > 1;
+  const FrameImagePaths imagePaths{options.image, options.depthImage, options.costImage};
+  const bool streamImages = !keepPixels && imagePaths.any();
   const RtuConfig traced = options.outputs.traced(settings.rtu);
-  checkFrameFits(settings, keepPixels, traced.trace || traced.timeline.wanted());
-  FrameStream stream(settings, scene, keepPixels);
+  checkFrameFits(settings, keepPixels,
+                 streamImages ? FrameImageWriter::bytesPerPixel(imagePaths) : 0,
+                 traced.trace || traced.timeline.wanted());
+  std::optional<FrameImageWriter> images;
+  if (streamImages) images.emplace(settings.camera, imagePaths);
+  FrameStream stream(settings, scene, keepPixels, images ? &*images : nullptr);
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
             << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
   uint64_t cycles = 0;
   traceFrame(scene, stream, configuration, options, cycles);
-  std::optional<RenderedFrame> frame = stream.takeFrame();
-  if (passes.size() > 1) renderPasses(scene, configuration, options, passes, cycles, *frame);
-  return frame;
+  if (images) images->finish();
+  if (!keepPixels) return;
+  RenderedFrame frame = *stream.takeFrame();
+  renderPasses(scene, configuration, options, passes, cycles, frame);
+  if (!options.image.empty()) writeShadedImage(frame, options.image);
+  if (!options.depthImage.empty()) writeDepthImage(frame, options.depthImage);
+  if (!options.costImage.empty()) writeCostImage(frame, options.costImage);
 }
 
 }  // namespace
@@ -215,10 +226,7 @@ void addRenderCommand(CLI::App& app) {
     if (settings.model != ModelKind::Golden) validate(options->outputs.traced(settings.rtu));
     checkOutputPaths(options->outputPaths(), inputPaths(settings));
     options->checkImageFormats();
-    const std::optional<RenderedFrame> rendered = renderFrame(configuration, *options);
-    if (!options->image.empty()) writeShadedImage(*rendered, options->image);
-    if (!options->depthImage.empty()) writeDepthImage(*rendered, options->depthImage);
-    if (!options->costImage.empty()) writeCostImage(*rendered, options->costImage);
+    renderFrame(configuration, *options);
     for (const std::string* path : {&options->image, &options->depthImage, &options->costImage})
       if (!path->empty()) std::cout << "wrote       " << *path << "\n";
   });

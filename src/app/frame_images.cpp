@@ -11,6 +11,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "app/row_image.h"
 #include "base/output_file.h"
 #include "base/plugin_loader.h"
 
@@ -25,8 +26,10 @@ using Pixel = glm::vec3;
 constexpr const char* kImagesModule = "librtusim_images.so";
 constexpr const char* kImagesPurpose = "needed to write images";
 
-void writeImage(const std::string& path, int width, int height, int channels,
-                const std::vector<float>& data, bool floatFile) {
+}  // namespace
+
+void writeImageFile(const std::string& path, int width, int height, int channels,
+                    const std::vector<float>& data, bool floatFile) {
   using WriteFunction = const char*(const char*, const char*, int, int, int, const float*, int,
                                     const unsigned char**, size_t*);
   static WriteFunction* const write =
@@ -41,8 +44,6 @@ void writeImage(const std::string& path, int width, int height, int channels,
     file.stream().write(reinterpret_cast<const char*>(bytes), static_cast<std::streamsize>(size));
   file.commit();
 }
-
-}  // namespace
 
 void checkImageFormat(const std::string& option, const std::string& path) {
   using CheckFunction = const char*(const char*);
@@ -155,26 +156,17 @@ class TextPainter {
 
 // ---- Shading. ----------------------------------------------------------------------------------
 
-void writeRgb(const RenderedFrame& frame, const std::string& path,
-              Pixel (*shade)(const RenderedFrame&, size_t)) {
-  Canvas canvas(frame.camera.width, frame.camera.height, Pixel(0.0f));
-  for (size_t i = 0; i < frame.pixels.size(); ++i)
-    canvas.set(static_cast<int>(i % frame.camera.width), static_cast<int>(i / frame.camera.width),
-               shade(frame, i));
-  writeImage(path, canvas.width, canvas.height, 3, canvas.rgb, false);
-}
+}  // namespace
 
 bool isFloatFormat(const std::string& path) {
   const std::string extension = path.substr(path.find_last_of('.') + 1);
   return extension == "exr" || extension == "tif" || extension == "tiff" || extension == "hdr";
 }
 
-Pixel shadeLambert(const RenderedFrame& frame, size_t index) {
-  const FramePixel& result = frame.pixels[index];
-  const int width = frame.camera.width;
+Pixel shadedColour(const Camera& camera, size_t index, const FramePixel& result) {
+  const int width = camera.width;
   const glm::dvec3 direction =
-      frame.camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width))
-          .direction;
+      camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width)).direction;
   if (!result.hit) return Pixel(0.08f, 0.09f, 0.12f);
   glm::dvec3 normal = glm::normalize(result.normal);
   if (glm::dot(normal, direction) > 0) normal = -normal;  // the face the ray met looks back at it
@@ -183,6 +175,8 @@ Pixel shadeLambert(const RenderedFrame& frame, size_t index) {
   return Pixel(0.86f, 0.80f, 0.68f) *
          (0.22f * result.ambientOpen + 0.78f * lambert * result.lightOpen);
 }
+
+namespace {
 
 // Matplotlib's viridis (perceptually uniform, readable in grey and by colour-blind viewers),
 // sampled at 17 points of its 256-entry table; t in [0, 1].
@@ -292,11 +286,15 @@ FramePixel svoPixel(const FixedFormat& format, const TraversalResult& result) {
 }
 
 void writeRgbImage(const std::string& path, int width, int height, const std::vector<float>& rgb) {
-  writeImage(path, width, height, 3, rgb, false);
+  writeImageFile(path, width, height, 3, rgb, false);
 }
 
 void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
-  writeRgb(frame, path, shadeLambert);
+  Canvas canvas(frame.camera.width, frame.camera.height, Pixel(0.0f));
+  for (size_t i = 0; i < frame.pixels.size(); ++i)
+    canvas.set(static_cast<int>(i % frame.camera.width), static_cast<int>(i / frame.camera.width),
+               shadedColour(frame.camera, i, frame.pixels[i]));
+  writeImageFile(path, canvas.width, canvas.height, 3, canvas.rgb, false);
 }
 
 void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,
@@ -310,32 +308,45 @@ void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdic
   for (size_t i = 0; i < verdicts.size(); ++i)
     canvas.set(static_cast<int>(i % camera.width), static_cast<int>(i / camera.width),
                colours[static_cast<size_t>(verdicts[i])]);
-  writeImage(path, canvas.width, canvas.height, 3, canvas.rgb, false);
+  writeImageFile(path, canvas.width, canvas.height, 3, canvas.rgb, false);
 }
 
 void writeCostImage(const RenderedFrame& frame, const std::string& path) {
-  const int width = frame.camera.width;
-  const int height = frame.camera.height;
-  CostScale scale{std::numeric_limits<uint32_t>::max(), 0};
-  for (const FramePixel& result : frame.pixels) {
-    scale.low = std::min(scale.low, result.cost);
-    scale.high = std::max(scale.high, result.cost);
-  }
-  if (frame.pixels.empty()) scale.low = scale.high = 0;
+  std::vector<CostSample> samples;
+  samples.reserve(frame.pixels.size());
+  for (const FramePixel& pixel : frame.pixels) samples.push_back(CostSample{pixel.cost, pixel.hit});
+  writeCostImage(frame.camera, samples, path);
+}
 
-  // The scale strip under the frame: two ramps (hits, misses) over the frame's cost range,
-  // tick marks and labels in cycles; a legend column on the left when the frame is wide enough.
+// The frame's rows, then the scale strip under it: two ramps (hits, misses) over the frame's
+// cost range, tick marks and labels in cycles; a legend column on the left when the frame is
+// wide enough. Written row by row (only a row of the frame is coloured at a time).
+void writeCostImage(const Camera& camera, const std::vector<CostSample>& samples,
+                    const std::string& path) {
+  const int width = camera.width;
+  const int height = camera.height;
+  CostScale scale{std::numeric_limits<uint32_t>::max(), 0};
+  for (const CostSample& sample : samples) {
+    scale.low = std::min(scale.low, sample.cost);
+    scale.high = std::max(scale.high, sample.cost);
+  }
+  if (samples.empty()) scale.low = scale.high = 0;
+
   constexpr int kPad = 4, kRamp = 10, kGap = 2, kTick = 3, kStrip = 46;
   const bool withScale = width >= 96;
   const Pixel background(0.12f), ink(0.92f);
-  Canvas canvas(width, height + (withScale ? kStrip : 0), background);
-  for (size_t i = 0; i < frame.pixels.size(); ++i) {
-    const FramePixel& result = frame.pixels[i];
-    const float t = scale(result.cost);
-    canvas.set(static_cast<int>(i % width), static_cast<int>(i / width),
-               result.hit ? viridis(t) : missColour(t));
+  RowImage image(path, width, height + (withScale ? kStrip : 0), 3, false);
+  Canvas row(width, 1, background);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const CostSample& sample = samples[static_cast<size_t>(y) * width + x];
+      const float t = scale(sample.cost);
+      row.set(x, 0, sample.hit ? viridis(t) : missColour(t));
+    }
+    image.write(row.rgb.data(), 1);
   }
   if (withScale) {
+    Canvas strip(width, kStrip, background);
     const TextPainter text;
     const bool withLegend = width >= 200;
     const int legendWidth =
@@ -343,45 +354,63 @@ void writeCostImage(const RenderedFrame& frame, const std::string& path) {
                    : 0;
     const int x0 = kPad + legendWidth;
     const int rampWidth = width - kPad - x0;
-    const int hitY = height + kPad;
+    const int hitY = kPad;
     const int missY = hitY + kRamp + kGap;
     const int tickY = missY + kRamp;
     const int labelBaseline = tickY + kTick + 10;
     for (int x = 0; x < rampWidth; ++x) {
       const float t = static_cast<float>(x) / static_cast<float>(std::max(rampWidth - 1, 1));
-      canvas.fill(x0 + x, hitY, 1, kRamp, viridis(t));
-      canvas.fill(x0 + x, missY, 1, kRamp, missColour(t));
+      strip.fill(x0 + x, hitY, 1, kRamp, viridis(t));
+      strip.fill(x0 + x, missY, 1, kRamp, missColour(t));
     }
     if (withLegend) {
-      text.draw(canvas, kPad, hitY + kRamp - 1, "hit", Align::Left, ink);
-      text.draw(canvas, kPad, missY + kRamp - 1, "miss", Align::Left, ink);
-      text.draw(canvas, kPad, labelBaseline, "cycles", Align::Left, ink);
+      text.draw(strip, kPad, hitY + kRamp - 1, "hit", Align::Left, ink);
+      text.draw(strip, kPad, missY + kRamp - 1, "miss", Align::Left, ink);
+      text.draw(strip, kPad, labelBaseline, "cycles", Align::Left, ink);
     }
     for (const Label& label : scaleLabels(scale, x0, rampWidth, text)) {
-      canvas.fill(label.x, tickY, 1, kTick, ink);
-      text.draw(canvas, label.x, labelBaseline, std::to_string(label.cost), label.align, ink);
+      strip.fill(label.x, tickY, 1, kTick, ink);
+      text.draw(strip, label.x, labelBaseline, std::to_string(label.cost), label.align, ink);
     }
+    image.write(strip.rgb.data(), kStrip);
   }
-  writeImage(path, canvas.width, canvas.height, 3, canvas.rgb, false);
+  image.commit();
+}
+
+float depthSample(const FramePixel& pixel) {
+  return pixel.hit ? static_cast<float>(pixel.t) : std::numeric_limits<float>::quiet_NaN();
 }
 
 void writeDepthImage(const RenderedFrame& frame, const std::string& path) {
-  std::vector<float> depth(frame.pixels.size(), 0.0f);
+  std::vector<float> samples;
+  samples.reserve(frame.pixels.size());
+  for (const FramePixel& pixel : frame.pixels) samples.push_back(depthSample(pixel));
+  writeDepthImage(frame.camera, samples, path);
+}
+
+void writeDepthImage(const Camera& camera, const std::vector<float>& samples,
+                     const std::string& path) {
   float nearest = std::numeric_limits<float>::max();
   float farthest = std::numeric_limits<float>::lowest();
-  for (size_t i = 0; i < frame.pixels.size(); ++i) {
-    if (!frame.pixels[i].hit) continue;
-    depth[i] = static_cast<float>(frame.pixels[i].t);
-    nearest = std::min(nearest, depth[i]);
-    farthest = std::max(farthest, depth[i]);
+  for (float t : samples) {
+    if (std::isnan(t)) continue;
+    nearest = std::min(nearest, t);
+    farthest = std::max(farthest, t);
   }
   const bool floatFile = isFloatFormat(path);
-  if (!floatFile) {
-    const float range = std::max(farthest - nearest, 1e-6f);
-    for (size_t i = 0; i < depth.size(); ++i)
-      depth[i] = frame.pixels[i].hit ? 1.0f - 0.85f * (depth[i] - nearest) / range : 0.0f;
+  const float range = std::max(farthest - nearest, 1e-6f);
+  RowImage image(path, camera.width, camera.height, 1, floatFile);
+  std::vector<float> row(static_cast<size_t>(camera.width));
+  for (int y = 0; y < camera.height; ++y) {
+    for (int x = 0; x < camera.width; ++x) {
+      const float t = samples[static_cast<size_t>(y) * camera.width + x];
+      row[static_cast<size_t>(x)] = std::isnan(t) ? 0.0f
+                                    : floatFile   ? t
+                                                  : 1.0f - 0.85f * (t - nearest) / range;
+    }
+    image.write(row.data(), 1);
   }
-  writeImage(path, frame.camera.width, frame.camera.height, 1, depth, floatFile);
+  image.commit();
 }
 
 }  // namespace rtu

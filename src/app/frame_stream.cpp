@@ -18,7 +18,7 @@ namespace rtu {
 class FrameStream::Tally {
  public:
   virtual ~Tally() = default;
-  virtual void add(const CoreKindResult& result, RenderedFrame* frame) = 0;
+  virtual void add(const CoreKindResult& result, PixelSink* frame) = 0;
   virtual std::string describe() const = 0;
 };
 
@@ -28,9 +28,7 @@ template <class Kind>
 class KindTally final : public FrameStream::Tally {
  public:
   KindTally(const RunConfig& settings, const FrameScene& scene) : tally_(settings, scene) {}
-  void add(const CoreKindResult& result, RenderedFrame* frame) override {
-    tally_.add(result, frame);
-  }
+  void add(const CoreKindResult& result, PixelSink* frame) override { tally_.add(result, frame); }
   std::string describe() const override { return tally_.describe(); }
 
  private:
@@ -52,41 +50,43 @@ RunConfig onePixel(const RunConfig& settings) {
 
 }  // namespace
 
-FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, bool traced) {
+FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, size_t imageBytes,
+                                bool traced) {
   const double rays = static_cast<double>(settings.camera.pixelCount());
   FrameMemory memory;
   const auto add = [&](double bytesPerRay, const std::string& what) {
     memory.bytes += rays * bytesPerRay;
     memory.what += (memory.what.empty() ? "" : ", ") + what;
   };
-  if (keepPixels) add(sizeof(FramePixel) + 3 * sizeof(float), "the pixels images and passes read");
-  const bool timed = settings.model != ModelKind::Golden;
-  // The recurrence's seven columns per job, a result's arrival and job index, its blocked cycles.
-  if (timed && settings.model == ModelKind::LooselyTimed)
-    add(sizeof(CoreKindResult) + 9 * sizeof(uint64_t) + sizeof(uint32_t),
-        "the loosely-timed model's results and recurrence");
-  if (timed && traced)
+  if (keepPixels) add(sizeof(FramePixel) + 3 * sizeof(float), "the pixels secondary passes read");
+  if (imageBytes > 0) add(static_cast<double>(imageBytes), "the depth and cost images' samples");
+  if (settings.model != ModelKind::Golden && traced)
     add(sizeof(HostRecord) + sizeof(CoreKindResult) + 4 * sizeof(uint64_t),
         "a traced frame's records and its dry run's results");
   return memory;
 }
 
-void checkFrameFits(const RunConfig& settings, bool keepPixels, bool traced) {
-  const FrameMemory memory = estimateFrameMemory(settings, keepPixels, traced);
+void checkFrameFits(const RunConfig& settings, bool keepPixels, size_t imageBytes, bool traced) {
+  const FrameMemory memory = estimateFrameMemory(settings, keepPixels, imageBytes, traced);
   const uint64_t available = physicalMemoryBytes();
   if (memory.bytes <= static_cast<double>(available)) return;
-  throw std::runtime_error(
-      "a " + std::to_string(settings.camera.width) + "x" + std::to_string(settings.camera.height) +
-      " frame would hold about " + formatGiB(memory.bytes) + " (" + memory.what +
-      "), more than the " + formatGiB(static_cast<double>(available)) +
-      " of this machine: lower --width and --height" + (keepPixels ? " or drop the images" : ""));
+  throw std::runtime_error("a " + std::to_string(settings.camera.width) + "x" +
+                           std::to_string(settings.camera.height) + " frame would hold about " +
+                           formatGiB(memory.bytes) + " (" + memory.what + "), more than the " +
+                           formatGiB(static_cast<double>(available)) +
+                           " of this machine: lower --width and --height" +
+                           (keepPixels       ? " or drop the passes"
+                            : imageBytes > 0 ? " or drop the images"
+                                             : ""));
 }
 
-FrameStream::FrameStream(const RunConfig& settings, const FrameScene& scene, bool keepPixels)
+FrameStream::FrameStream(const RunConfig& settings, const FrameScene& scene, bool keepPixels,
+                         PixelSink* images)
     : settings_(settings),
       scene_(scene),
       makeRecord_(frameRecordMaker(settings.rtu.core)),
-      tally_(tallyOf(settings, scene)) {
+      tally_(tallyOf(settings, scene)),
+      images_(images) {
   if (recordedWorkload(settings)) {
     recorded_ = frameRecords(scene, settings);
   } else {
@@ -125,7 +125,7 @@ HostRecord FrameStream::make(uint64_t index) {
 
 void FrameStream::take(const CoreKindResult& result) {
   held_.tookOne();
-  tally_->add(result, frame_ ? &*frame_ : nullptr);
+  tally_->add(result, frame_ ? &*frame_ : images_);
 }
 
 std::string FrameStream::describe() const { return tally_->describe(); }

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,38 @@ std::string fontName() {
   std::error_code error;
   return std::filesystem::exists(dejavu, error) ? dejavu : std::string();
 }
+
+// The encoded bytes handed on as OpenImageIO writes them, in order: to the caller's checked
+// output file. A write elsewhere than at the end (a format that seeks back) fails.
+class CallbackOutput final : public OIIO::Filesystem::IOProxy {
+ public:
+  using WriteFunction = int (*)(void* context, const void* bytes, size_t size);
+
+  CallbackOutput(WriteFunction write, void* context)
+      : IOProxy("", Write), write_(write), context_(context) {}
+  const char* proxytype() const override { return "rtusim"; }
+  size_t write(const void* bytes, size_t size) override {
+    if (size > 0 && !write_(context_, bytes, size)) return 0;
+    m_pos += static_cast<int64_t>(size);
+    return size;
+  }
+  size_t pwrite(const void* bytes, size_t size, int64_t offset) override {
+    return offset == m_pos ? write(bytes, size) : 0;
+  }
+  bool seek(int64_t offset) override { return offset == m_pos; }
+  size_t size() const override { return static_cast<size_t>(m_pos); }
+
+ private:
+  WriteFunction write_;
+  void* context_;
+};
+
+// An image written row by row (rtusim_images_open).
+struct ImageRowWriter {
+  std::unique_ptr<OIIO::ImageOutput> output;
+  CallbackOutput proxy;
+  int channels;
+};
 
 }  // namespace
 
@@ -55,6 +88,51 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, const cha
       *bytes = encoded.data();
       *size = encoded.size();
     }
+    return {};
+  });
+}
+
+// Opens `path`'s format for `width` x `height` pixels of `channels` floats each, 8-bit samples,
+// written row by row as rtusim_images_write_rows hands them over: each encoded piece goes to
+// `write` (which returns 0 on a failed write) as OpenImageIO makes it. *handle is the writer to
+// pass on, and to rtusim_images_close whatever happens. Only formats that write their bytes in
+// order qualify (PNG); returns nullptr, or the error message (valid until the thread's next call).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_open(const char* path, int width, int height,
+                                                    int channels,
+                                                    int (*write)(void*, const void*, size_t),
+                                                    void* context, void** handle) {
+  *handle = nullptr;
+  return rtu::pluginCall([&]() -> std::string {
+    auto output = OIIO::ImageOutput::create(path);
+    if (!output) return "OpenImageIO: " + OIIO::geterror();
+    auto* writer = new ImageRowWriter{std::move(output), CallbackOutput(write, context), channels};
+    *handle = writer;
+    if (!writer->output->supports("ioproxy") || !writer->output->set_ioproxy(&writer->proxy))
+      return "OpenImageIO: the format of '" + std::string(path) + "' is not written row by row";
+    const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+    if (!writer->output->open(path, spec)) return "OpenImageIO: " + writer->output->geterror();
+    return {};
+  });
+}
+
+// The next `rows` rows of the image `handle` opened, top to bottom.
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write_rows(void* handle, int firstRow, int rows,
+                                                          const float* data) {
+  return rtu::pluginCall([&]() -> std::string {
+    auto* writer = static_cast<ImageRowWriter*>(handle);
+    if (!writer->output->write_scanlines(firstRow, firstRow + rows, 0, OIIO::TypeDesc::FLOAT, data))
+      return "OpenImageIO: " + writer->output->geterror();
+    return {};
+  });
+}
+
+// Closes the image (complete when `finish`) and frees the writer.
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_close(void* handle, int finish) {
+  return rtu::pluginCall([&]() -> std::string {
+    std::unique_ptr<ImageRowWriter> writer(static_cast<ImageRowWriter*>(handle));
+    if (!writer) return {};
+    if (finish && !writer->output->close()) return "OpenImageIO: " + writer->output->geterror();
+    writer.reset();
     return {};
   });
 }

@@ -20,6 +20,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/frame_image_writer.h"
 #include "app/frame_images.h"
 #include "app/output_paths.h"
 #include "app/run_outputs.h"
@@ -47,11 +48,6 @@ void checkRaypipeOnly(const RaypipeRenderOptions& options);
 
 // Throws std::invalid_argument for --model lt: the pipe has golden and its timed model only.
 void checkRaypipeModel(ModelKind model);
-
-// The images `render` writes of any architecture's frame.
-struct FrameImagePaths {
-  std::string image, depthImage, costImage;
-};
 
 // Renders the frame `configuration` describes on the ray pipe's golden model (and, with --model
 // ca, its timed model) and writes the outputs asked for: --stats, the timed frame's statistics

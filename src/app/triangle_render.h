@@ -52,7 +52,7 @@ class TriangleResults {
  public:
   explicit TriangleResults(const FrameScene& scene) : scene_(scene) {}
   template <class Distance>
-  void add(const CoreKindResult& result, RenderedFrame* frame, Distance distance) {
+  void add(const CoreKindResult& result, PixelSink* frame, Distance distance) {
     const typename Kind::Result& own = resultOfKind<Kind>(result);
     tally_.add(own);
     if (frame)

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "base/temporary_files.h"
+
 namespace rtu {
 namespace {
 
@@ -38,13 +40,6 @@ std::optional<fs::path> followLinks(const std::string& path) {
   return current;
 }
 
-// ".frame.part-XXXXXX.png" beside "frame.png": hidden, marked unfinished, its extension kept
-// for libraries that choose a format by it.
-std::string temporaryName(const fs::path& target) {
-  const fs::path name = "." + target.stem().string() + ".part-XXXXXX" + target.extension().string();
-  return (target.parent_path() / name).string();
-}
-
 // A new file's permissions as the process would create it (0666 less the umask); a replaced
 // file keeps its own.
 mode_t modeFor(const fs::file_status& existing) {
@@ -66,6 +61,8 @@ class OutputFile::Buffer : public std::streambuf {
   ~Buffer() override {
     if (fd_ >= 0) ::close(fd_);
   }
+  // The first write error (errno), or 0.
+  int error() const { return error_; }
   // Writes what is buffered and closes the file; the first error, or 0.
   int close() {
     drain();
@@ -120,10 +117,14 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
     writePath_ = target_;
     fd = ::open(target_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
   } else {
-    writePath_ = temporaryName(target);
+    removeStaleTemporaries(target);
+    writePath_ = temporaryPattern(target);
     const int suffix = static_cast<int>(target.extension().string().size());
     fd = ::mkostemps(writePath_.data(), suffix, O_CLOEXEC);
-    if (fd >= 0) ::fchmod(fd, modeFor(status));
+    if (fd >= 0) {
+      registration_ = std::make_unique<TemporaryRegistration>(writePath_);
+      ::fchmod(fd, modeFor(status));
+    }
   }
   if (fd < 0) throw std::runtime_error("cannot create '" + path + "': " + cause(errno));
   buffer_ = std::make_unique<Buffer>(fd);
@@ -132,6 +133,7 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
 
 OutputFile::~OutputFile() {
   if (!committed_ && !inPlace_) ::unlink(writePath_.c_str());
+  registration_.reset();
 }
 
 std::ostream& OutputFile::stream() { return *stream_; }
@@ -143,6 +145,11 @@ void OutputFile::commit() {
   if (!*stream_) fail("a write failed");
   if (!inPlace_ && std::rename(writePath_.c_str(), target_.c_str()) != 0) fail(cause(errno));
   committed_ = true;
+}
+
+void OutputFile::throwIfFailed() {
+  stream_->flush();
+  if (buffer_->error() != 0) fail(cause(buffer_->error()));
 }
 
 void OutputFile::fail(const std::string& reason) const {

@@ -4,13 +4,16 @@
 // always complete. A failure names the file and its cause, and never removes a path the program
 // did not create: a symbolic link is followed (the file it names is replaced, the link kept), and
 // a path that is not a regular file (a device such as /dev/full, a pipe, /dev/stdout) is written
-// in place.
+// in place. The temporary file's name and its removal after a signal or a kill are
+// temporary_files.h's.
 
 #include <iosfwd>
 #include <memory>
 #include <string>
 
 namespace rtu {
+
+class TemporaryRegistration;
 
 class OutputFile {
  public:
@@ -30,6 +33,9 @@ class OutputFile {
   // Flushes and closes, then renames the temporary file to path(). Throws std::runtime_error
   // "cannot write 'path': cause" for the first failed write, flush, close or rename.
   void commit();
+  // Throws commit()'s error for a write that failed so far, when there was one (a library's
+  // failure may come from it); else returns.
+  void throwIfFailed();
   // Throws that error with `cause` (a library's own status); the file is never renamed.
   [[noreturn]] void fail(const std::string& cause) const;
 
@@ -40,6 +46,7 @@ class OutputFile {
   bool inPlace_ = false, committed_ = false;
   std::unique_ptr<Buffer> buffer_;
   std::unique_ptr<std::ostream> stream_;
+  std::unique_ptr<TemporaryRegistration> registration_;  // removed on SIGINT, SIGTERM, SIGHUP
 };
 
 // Writes `text` to `path` through an OutputFile.

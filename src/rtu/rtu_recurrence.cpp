@@ -1,6 +1,7 @@
 #include "rtu/rtu_recurrence.h"
 
 #include <algorithm>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <queue>
@@ -9,6 +10,7 @@
 
 #include "base/modulo.h"
 #include "base/prefault.h"
+#include "rtu/buffers_full.h"
 #include "rtu/scheduler_choice.h"
 
 namespace rtu {
@@ -24,13 +26,19 @@ void RecurrenceConfig::validate() const {
 namespace {
 
 constexpr uint64_t kUnknown = std::numeric_limits<uint64_t>::max();
-constexpr size_t kNoJob = std::numeric_limits<size_t>::max();
 
 // Room for `n` values, its pages mapped at once (prefault.h): a frame's columns are large.
 template <typename T>
 void reserveMapped(std::vector<T>& column, size_t n) {
   column.reserve(n);
   prefaultCapacity(column);
+}
+
+// `n` values, their pages mapped at once.
+template <typename T>
+void sizeMapped(std::vector<T>& column, size_t n) {
+  reserveMapped(column, n);
+  column.resize(n);
 }
 
 // The result buffers and the output link: drains are found in cycle order. A buffer of core x
@@ -124,57 +132,60 @@ class Drains {
 class Recurrence {
  public:
   Recurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
-             const TraversalTimer& timer)
+             const DrainSink& drained, const TraversalTimer& timer)
       : jobs_(jobs),
         jobAt_(jobAt),
-        config_(config),
+        drained_(drained),
         timer_(timer),
-        cores_(static_cast<uint64_t>(config.cores)),
         inputLink_(config.hostInput),
         drains_(config.cores, config.hostOutput),
-        idleFrom_(cores_, 0),
-        waiting_(cores_, kNoJob),
-        waitingFrom_(cores_, 0),
-        buffered_(cores_, kNoJob),
-        lastDrain_(cores_, kUnknown),
-        choice_(config.policy, config.cores) {
-    // Columns written in job order are appended; handovers and drains come out of order.
-    for (auto* column : {&run_.acceptCycles, &run_.pendingCycles, &run_.dispatchCycles,
-                         &run_.handoverCycles, &run_.drainCycles})
-      reserveMapped(*column, jobs);
-    reserveMapped(run_.cores, jobs);
-    reserveMapped(run_.hostOrder, jobs);
-    run_.handoverCycles.resize(jobs);
-    run_.drainCycles.resize(jobs);
-  }
+        idleFrom_(static_cast<size_t>(config.cores), 0),
+        waiting_(static_cast<size_t>(config.cores)),
+        waitingFrom_(static_cast<size_t>(config.cores), 0),
+        buffered_(static_cast<size_t>(config.cores)),
+        lastDrain_(static_cast<size_t>(config.cores), kUnknown),
+        choice_(config.policy, config.cores) {}
 
-  RecurrenceRun run() {
+  RecurrenceTotals run() {
     for (size_t i = 0; i < jobs_; ++i) {
       const JobTiming job = jobAt_(i);
-      enterPipeline(i, job);
-      dispatch(i, job.cost);
+      JobCycles cycles = enterPipeline(i, job);
+      dispatch(cycles, job.cost);
+      // Now and then: the cycles settled cost a look at every core.
+      if (i % kSettleEvery == kSettleEvery - 1) buffersFull_.settleBefore(settledBefore());
     }
     while (!drains_.empty()) drainNext();  // drains come in cycle order
-    run_.totalCycles = jobs_ == 0 ? 0 : run_.drainCycles[run_.hostOrder.back()] + 1;
-    return std::move(run_);
+    return RecurrenceTotals{jobs_ == 0 ? 0 : lastDrainCycle_ + 1, buffersFull_.most()};
   }
 
  private:
+  static constexpr size_t kSettleEvery = 64;  // jobs
+
+  // A job in the job manager's pipeline: entered, not yet dispatched when a later job entered.
+  struct InPipeline {
+    uint64_t pending, dispatch;
+  };
+
   // c_i and A_i.
-  void enterPipeline(size_t i, const JobTiming& job) {
-    uint64_t accept = i == 0 ? 0 : inputLink_.nextAllowed(run_.acceptCycles[i - 1]);
+  JobCycles enterPipeline(size_t i, const JobTiming& job) {
+    uint64_t accept = i == 0 ? 0 : inputLink_.nextAllowed(lastAccept_);
     accept = std::max(accept, fetchUntil_);
-    while (inPipeline_ < i && run_.dispatchCycles[inPipeline_] <= accept) ++inPipeline_;
-    if (inPipeline_ < i && run_.pendingCycles[inPipeline_] <= accept)
-      accept = run_.dispatchCycles[inPipeline_++];  // the pipeline is held until that dispatch
+    while (!pipeline_.empty() && pipeline_.front().dispatch <= accept) pipeline_.pop_front();
+    if (!pipeline_.empty() && pipeline_.front().pending <= accept) {
+      accept = pipeline_.front().dispatch;  // the pipeline is held until that dispatch
+      pipeline_.pop_front();
+    }
     uint64_t stalls = 0;
-    for (size_t k = inPipeline_; k < i; ++k)
-      stalls += run_.dispatchCycles[k] - run_.pendingCycles[k];
+    for (const InPipeline& k : pipeline_) stalls += k.dispatch - k.pending;
     uint64_t pending = accept + job.pipelineCycles + stalls;
-    if (i > 0) pending = std::max(pending, run_.dispatchCycles[i - 1] + 1);
+    if (i > 0) pending = std::max(pending, lastDispatch_ + 1);
     if (job.headerFetch > 0) fetchUntil_ = accept + 1 + job.headerFetch;
-    run_.acceptCycles.push_back(accept);
-    run_.pendingCycles.push_back(pending);
+    lastAccept_ = accept;
+    JobCycles cycles;
+    cycles.job = i;
+    cycles.accept = accept;
+    cycles.pending = pending;
+    return cycles;
   }
 
   // What the recurrence knows of the cores, as the policy's query (scheduler_choice.h): every
@@ -193,32 +204,34 @@ class Recurrence {
   };
 
   // D_i and the core, then the core's handover if its result buffer is free.
-  void dispatch(size_t i, uint64_t cost) {
-    uint64_t cycle = run_.pendingCycles[i];
+  void dispatch(JobCycles& cycles, uint64_t cost) {
+    uint64_t cycle = cycles.pending;
     CoreQuery query{*this};
     const int core = choice_.choose(query, cycle);
     choice_.dispatched(core);
-    run_.dispatchCycles.push_back(cycle);
-    run_.cores.push_back(core);
-    const uint64_t traversal = timer_ ? timer_(i, core, cycle + 1) : cost;  // W_i
+    cycles.dispatch = cycle;
+    cycles.core = core;
+    pipeline_.push_back(InPipeline{cycles.pending, cycle});
+    lastDispatch_ = cycle;
+    const uint64_t traversal = timer_ ? timer_(cycles.job, core, cycle + 1) : cost;  // W_i
     const size_t c = static_cast<size_t>(core);
-    waiting_[c] = i;
+    waiting_[c] = cycles;
     waitingFrom_[c] = cycle + 1 + traversal;
     idleFrom_[c] = kUnknown;
-    if (buffered_[c] == kNoJob) handOver(core);
+    if (!buffered_[c]) handOver(core);
   }
 
   // The waiting result of `core` moves into its (free) buffer.
   void handOver(int core) {
     const size_t c = static_cast<size_t>(core);
-    const size_t job = waiting_[c];
+    JobCycles& job = *waiting_[c];
     const uint64_t out = waitingFrom_[c];
-    const uint64_t handover = lastDrain_[c] == kUnknown ? out : std::max(out, lastDrain_[c] + 1);
-    run_.handoverCycles[job] = handover;
-    idleFrom_[c] = handover + 1;
-    waiting_[c] = kNoJob;
+    job.handover = lastDrain_[c] == kUnknown ? out : std::max(out, lastDrain_[c] + 1);
+    idleFrom_[c] = job.handover + 1;
+    buffersFull_.started(job.handover);
+    drains_.add(core, job.handover + 1);
     buffered_[c] = job;
-    drains_.add(core, handover + 1);
+    waiting_[c].reset();
   }
 
   // Every drain before `cycle`: those decide which cores are idle by then. Later jobs cannot add
@@ -232,37 +245,75 @@ class Recurrence {
     const auto [cycle, core] = drain;
     const size_t c = static_cast<size_t>(core);
     drains_.take(drain);
-    run_.drainCycles[buffered_[c]] = cycle;
-    run_.hostOrder.push_back(buffered_[c]);
-    buffered_[c] = kNoJob;
+    JobCycles job = *buffered_[c];
+    buffered_[c].reset();
+    job.drain = cycle;
     lastDrain_[c] = cycle;
-    if (waiting_[c] != kNoJob) handOver(core);
+    lastDrainCycle_ = cycle;
+    buffersFull_.ended(cycle);
+    drained_(job);
+    if (waiting_[c]) handOver(core);
+  }
+
+  // No handover or drain still to come is before this cycle: later jobs hand over after their
+  // dispatch, waiting results no earlier than they are out, and drains come in cycle order.
+  uint64_t settledBefore() const {
+    uint64_t before = lastDispatch_ + 1;
+    if (lastDrainCycle_ != kUnknown) before = std::min(before, lastDrainCycle_ + 1);
+    for (size_t c = 0; c < waiting_.size(); ++c)
+      if (waiting_[c]) before = std::min(before, waitingFrom_[c]);
+    return before;
   }
 
   const size_t jobs_;
   const JobSource& jobAt_;
-  const RecurrenceConfig& config_;
+  const DrainSink& drained_;
   const TraversalTimer& timer_;
-  const uint64_t cores_;
   HostLinkPacer inputLink_;
   Drains drains_;
   std::vector<uint64_t> idleFrom_;  // per core: idle from this cycle on (kUnknown: not yet known)
-  std::vector<size_t> waiting_;     // per core: job whose result waits in the core (kNoJob: none)
-  std::vector<uint64_t> waitingFrom_;  // ... from this cycle, D_i + 1 + W_i
-  std::vector<size_t> buffered_;       // per core: job whose result is in the result buffer
+  std::vector<std::optional<JobCycles>> waiting_;   // per core: the job whose result waits in it
+  std::vector<uint64_t> waitingFrom_;               // ... from this cycle, D_i + 1 + W_i
+  std::vector<std::optional<JobCycles>> buffered_;  // per core: the job in its result buffer
   std::vector<uint64_t> lastDrain_;
-  uint64_t fetchUntil_ = 0;
-  size_t inPipeline_ = 0;  // the oldest job not yet dispatched when the current one entered
+  std::deque<InPipeline> pipeline_;  // from the oldest job still undispatched when the last entered
+  uint64_t lastAccept_ = 0, lastDispatch_ = 0, fetchUntil_ = 0, lastDrainCycle_ = kUnknown;
   SchedulerChoice choice_;
-  RecurrenceRun run_;
+  BuffersFull buffersFull_;
 };
 
 }  // namespace
 
+RecurrenceTotals streamRecurrence(size_t jobs, const JobSource& jobAt,
+                                  const RecurrenceConfig& config, const DrainSink& drained,
+                                  const TraversalTimer& timer) {
+  config.validate();
+  return Recurrence(jobs, jobAt, config, drained, timer).run();
+}
+
 RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
                             const TraversalTimer& timer) {
-  config.validate();
-  return Recurrence(jobs, jobAt, config, timer).run();
+  RecurrenceRun run;
+  for (auto* column : {&run.acceptCycles, &run.pendingCycles, &run.dispatchCycles,
+                       &run.handoverCycles, &run.drainCycles})
+    sizeMapped(*column, jobs);
+  sizeMapped(run.cores, jobs);
+  reserveMapped(run.hostOrder, jobs);
+  const RecurrenceTotals totals = streamRecurrence(
+      jobs, jobAt, config,
+      [&run](const JobCycles& job) {
+        run.acceptCycles[job.job] = job.accept;
+        run.pendingCycles[job.job] = job.pending;
+        run.dispatchCycles[job.job] = job.dispatch;
+        run.cores[job.job] = job.core;
+        run.handoverCycles[job.job] = job.handover;
+        run.drainCycles[job.job] = job.drain;
+        run.hostOrder.push_back(job.job);
+      },
+      timer);
+  run.totalCycles = totals.totalCycles;
+  run.resultBuffersMaxFull = totals.resultBuffersMaxFull;
+  return run;
 }
 
 RecurrenceRun runRecurrence(const std::vector<JobTiming>& jobs, const RecurrenceConfig& config,

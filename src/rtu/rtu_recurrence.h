@@ -21,7 +21,10 @@
 //   total cycles = the last drain + 1.
 //
 // Cost follows the jobs: every step is a few operations per job, except the cycle-by-cycle
-// search of cfa and fa while no core is idle.
+// search of cfa and fa while no core is idle. Memory follows the jobs in flight: the recurrence
+// holds the jobs in the job manager's pipeline and a waiting and a buffered result per core, and
+// tells each job's cycles when its result drains (streamRecurrence); a run's columns are the
+// caller's to keep (runRecurrence keeps them).
 
 #include <cstdint>
 #include <functional>
@@ -47,6 +50,21 @@ struct RecurrenceConfig {
   void validate() const;
 };
 
+// One job's cycles, told when its result drains (in the host's order).
+struct JobCycles {
+  size_t job = 0;
+  uint64_t accept = 0, pending = 0, dispatch = 0;
+  int core = 0;
+  uint64_t handover = 0, drain = 0;
+};
+using DrainSink = std::function<void(const JobCycles&)>;
+
+// What the recurrence finds over the whole run.
+struct RecurrenceTotals {
+  uint64_t totalCycles = 0;
+  uint64_t resultBuffersMaxFull = 0;  // the most result buffers full at once (buffers_full.h)
+};
+
 struct RecurrenceRun {
   // Per job index.
   std::vector<uint64_t> acceptCycles;    // host -> job manager handshake
@@ -57,6 +75,7 @@ struct RecurrenceRun {
   std::vector<uint64_t> drainCycles;     // result manager -> host handshake
   std::vector<size_t> hostOrder;         // job indices in the order the host received them
   uint64_t totalCycles = 0;
+  uint64_t resultBuffersMaxFull = 0;
 };
 
 // The jobs, asked for in order, each once: a caller can set a job up when the recurrence reaches
@@ -69,7 +88,12 @@ using JobSource = std::function<JobTiming(size_t job)>;
 // job was asked from the JobSource and before the next one is.
 using TraversalTimer = std::function<uint64_t(size_t job, int core, uint64_t initCycle)>;
 
-// With `timer`, W_i comes from it and the jobs' `cost` is not read.
+// With `timer`, W_i comes from it and the jobs' `cost` is not read. Each job's cycles go to
+// `drained` as its result drains; nothing per job is kept.
+RecurrenceTotals streamRecurrence(size_t jobs, const JobSource& jobAt,
+                                  const RecurrenceConfig& config, const DrainSink& drained,
+                                  const TraversalTimer& timer = {});
+// The same, every job's cycles kept in columns.
 RecurrenceRun runRecurrence(size_t jobs, const JobSource& jobAt, const RecurrenceConfig& config,
                             const TraversalTimer& timer = {});
 RecurrenceRun runRecurrence(const std::vector<JobTiming>& jobs, const RecurrenceConfig& config,

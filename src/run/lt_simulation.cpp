@@ -8,7 +8,7 @@
 
 #include "kinds/registry.h"
 #include "run/analytic_run.h"
-#include "run/recurrence_results.h"
+#include "run/recurrence_statistics.h"
 #include "sim/kernel/sc_kernel.h"
 #include "sim/lt/lt_top.h"
 
@@ -27,11 +27,8 @@ std::optional<std::string> whyNotLooselyTimed(const RtuConfig& config) {
 
 namespace {
 
-// The run of a simulated top: its timing, results and the memory's counts.
-RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
-  RtuRun run = recurrenceResults(top.takeTiming(), top.takeResults(), top.takeBlocked(), config);
-  RtuStatistics& stats = run.statistics;
-  stats.model = "lt";
+// The memory's counts and the cores' stalls of a simulated top.
+void addMemoryCounts(const LtTopBase& top, RtuStatistics& stats) {
   stats.idealMemory = top.idealMemory();
   // The recurrence took a test's wait for its shared unit as the core's handover (the cycles
   // from dispatch to hand-over beyond cost and blocked): moved to the stalls.
@@ -44,6 +41,37 @@ RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
     stats.l1 = top.l1Statistics();
     stats.l2 = top.l2Statistics();
   }
+}
+
+// The run's cycles and statistics, each result handed to `arrived` as it reaches the host; the
+// results are the caller's to keep.
+RtuRun ltRun(const WordMemory& memory, const RecordSource& records, const RtuConfig& config,
+             const LtArrival& arrived, const RunProgress& progress) {
+  validate(config);
+  checkCoreTakes(config.core, records);
+  if (const auto why = whyNotLooselyTimed(config))
+    throw std::invalid_argument("--model lt does not apply: " + *why);
+  freshKernel();
+  const auto start = std::chrono::steady_clock::now();
+  RecurrenceStatistics statistics(config);
+  const LtArrival counted = [&](const JobCycles& cycles, const CoreKindResult& result,
+                                uint32_t blocked) {
+    statistics.add(cycles, result, blocked);
+    arrived(cycles, result, blocked);
+  };
+  RtuRun run;
+  // The cores' kind, chosen once: the top is a template over it.
+  withCoreKind(config.core, [&](auto kind) {
+    auto top = std::make_unique<LtTop<decltype(kind)>>("rtu", config, memory, records, counted);
+    simulate();
+    run.totalCycles = top->totals().totalCycles;
+    run.statistics = statistics.finish(top->totals());
+    addMemoryCounts(*top, run.statistics);
+  });
+  run.statistics.model = "lt";
+  if (progress) progress(records.size(), records.size());
+  run.statistics.hostSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 
@@ -51,22 +79,34 @@ RtuRun runOf(LtTopBase& top, const RtuConfig& config) {
 
 RtuRun runLooselyTimed(const WordMemory& memory, const RecordSource& records,
                        const RtuConfig& config, const RunProgress& progress) {
-  validate(config);
-  checkCoreTakes(config.core, records);
-  if (const auto why = whyNotLooselyTimed(config))
-    throw std::invalid_argument("--model lt does not apply: " + *why);
-  freshKernel();
-  const auto start = std::chrono::steady_clock::now();
-  // The cores' kind, chosen once: the top is a template over it.
-  RtuRun run = withCoreKind(config.core, [&](auto kind) {
-    auto top = std::make_unique<LtTop<decltype(kind)>>("rtu", config, memory, records);
-    simulate();
-    return runOf(*top, config);
-  });
-  if (progress) progress(records.size(), records.size());
-  run.statistics.hostSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::vector<CoreKindResult> results;
+  std::vector<uint64_t> jobIndices, arrivalCycles;
+  std::vector<uint32_t> blockedCycles;
+  RtuRun run = ltRun(
+      memory, records, config,
+      [&](const JobCycles& cycles, const CoreKindResult& result, uint32_t blocked) {
+        results.push_back(result);
+        jobIndices.push_back(cycles.job);
+        arrivalCycles.push_back(cycles.drain);
+        blockedCycles.push_back(blocked);
+      },
+      progress);
+  run.results = std::move(results);
+  run.jobIndices = std::move(jobIndices);
+  run.arrivalCycles = std::move(arrivalCycles);
+  run.blockedCycles = std::move(blockedCycles);
   return run;
+}
+
+RtuRun streamLooselyTimed(const WordMemory& memory, const RecordSource& records,
+                          const RtuConfig& config, const ResultTaker& take,
+                          const RunProgress& progress) {
+  return ltRun(
+      memory, records, config,
+      [&take](const JobCycles& cycles, const CoreKindResult& result, uint32_t) {
+        take(cycles.job, result);
+      },
+      progress);
 }
 
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TValueRecord>& jobs,

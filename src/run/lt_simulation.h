@@ -21,5 +21,10 @@ RtuRun runLooselyTimed(const WordMemory& memory, const RecordSource& records,
                        const RtuConfig& config, const RunProgress& progress = {});
 RtuRun runLooselyTimed(const WordMemory& memory, const std::vector<TValueRecord>& jobs,
                        const RtuConfig& config, const RunProgress& progress = {});
+// A run that streams (kinds/host_stream.h), as streamRtu: each result handed to `take` as it
+// reaches the host, none kept; the model holds the jobs in flight (lt_top.h), not the frame.
+RtuRun streamLooselyTimed(const WordMemory& memory, const RecordSource& records,
+                          const RtuConfig& config, const ResultTaker& take,
+                          const RunProgress& progress = {});
 
 }  // namespace rtu

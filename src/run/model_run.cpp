@@ -72,7 +72,7 @@ RtuRun runFrame(ModelKind model, const WordMemory& memory, const RecordSource& r
       return handedOver(runGoldenTimed(memory, records.all(), config), take);
     }
     case ModelKind::LooselyTimed:
-      return handedOver(runLooselyTimed(memory, records, config, progress), take);
+      return streamLooselyTimed(memory, records, config, take, progress);
     case ModelKind::CycleAccurate: break;
   }
   return streamRtu(memory, records, config, take, progress);

@@ -15,7 +15,8 @@ namespace rtu {
 // `results` and `blocked` by job index; `blocked` (cycles BLOCKED on memory, W_i = cost +
 // blocked) empty for ideal memory. The statistics' model, memory counts and host seconds are the
 // caller's to fill.
-// Taken by value: the columns are rearranged in place (callers move them in).
+// Taken by value: the columns are rearranged in place (callers move them in). The loosely-timed
+// model, which keeps no columns, counts through RecurrenceStatistics (recurrence_statistics.h).
 RtuRun recurrenceResults(RecurrenceRun timing, std::vector<CoreKindResult> results,
                          std::vector<uint32_t> blocked, const RtuConfig& config);
 

@@ -3,21 +3,18 @@
 #include <stdexcept>
 #include <string>
 
-#include "base/prefault.h"
-
 namespace rtu {
 
 LtTopBase::LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-                     RecordSource records, uint32_t accessBytes)
+                     RecordSource records, LtArrival arrived, uint32_t accessBytes)
     : sc_core::sc_module(name),
       config_(config),
       records_(std::move(records)),
+      arrived_(std::move(arrived)),
       memory_(memory),
       accessBytes_(accessBytes),
       time_(CycleClock::atMegahertz(config.clockMhz)),
       setup_(makeCoreJobSetup(config.core, memory, config.jobManager, config.coreConfigs)) {
-  results_.reserve(records_.size());
-  prefaultCapacity(results_);  // a frame's results are tens of MB: mapped at once
   tlm_utils::tlm_quantumkeeper::set_global_quantum(time_.period() *
                                                    static_cast<double>(config.ltQuantum));
   stalls_.assign(static_cast<size_t>(config.cores), 0);
@@ -53,14 +50,13 @@ void LtTopBase::bindCore(tlm::tlm_initiator_socket<>& socket) {
 
 // The recurrence asks for each record in host order: the job manager sets it up then (model
 // headers are read by the first ray against them), and the recurrence calls traverse() at its
-// dispatch, before it asks for the next.
+// dispatch, before it asks for the next; each result goes to the host as the recurrence drains it.
 void LtTopBase::drive() {
-  blocked_.reserve(records_.size());
-  prefaultCapacity(blocked_);
   quantum_.reset();
-  timing_ = runRecurrence(
+  totals_ = streamRecurrence(
       records_.size(), [this](size_t job) { return setUp(job); },
       RecurrenceConfig{config_.cores, config_.scheduler, config_.hostInput, config_.outputLink()},
+      [this](const JobCycles& cycles) { drained(cycles); },
       [this](size_t job, int core, uint64_t initCycle) { return traverse(job, core, initCycle); });
 }
 
@@ -73,15 +69,25 @@ JobTiming LtTopBase::setUp(size_t job) {
 // Dispatches come in cycle order: the thread's local time is the latest, synchronised with the
 // kernel once it runs a quantum ahead. They come in job order too, each right after its set-up.
 uint64_t LtTopBase::traverse(size_t job, int core, uint64_t initCycle) {
-  if (job != blocked_.size()) throw std::logic_error("LtTop: jobs must be dispatched in order");
+  if (job != firstInFlight_ + inFlight_.size())
+    throw std::logic_error("LtTop: jobs must be dispatched in order");
   quantum_.set(time_.delayTo(initCycle));
   if (quantum_.need_sync()) quantum_.sync();
   // Later jobs are dispatched no earlier: their tests come after this one's first state.
   if (LtTriangleUnit* unit = triangleUnitOf(core)) unit->issues.forgetBefore(initCycle);
   const LtTraversal traversal = traverseOn(core, current_, initCycle);
-  blocked_.push_back(traversal.blocked);
+  inFlight_.back().blocked = traversal.blocked;
   stalls_[static_cast<size_t>(core)] += traversal.stalled;
   return traversal.cycles;
+}
+
+// Results drain out of job order: each is handed on at once, and the oldest are let go of once
+// every one before them has drained.
+void LtTopBase::drained(const JobCycles& cycles) {
+  InFlight& job = inFlight_[cycles.job - firstInFlight_];
+  arrived_(cycles, job.result, job.blocked);
+  job.drained = true;
+  for (; !inFlight_.empty() && inFlight_.front().drained; ++firstInFlight_) inFlight_.pop_front();
 }
 
 std::vector<CacheStats> LtTopBase::l1Statistics() const {

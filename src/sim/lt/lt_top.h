@@ -13,6 +13,9 @@
 // shared L2 and DRAM see one traversal's reads after another's, out of cycle order by up to a
 // traversal, and take them in their out-of-order form (src/sim/memory/resource_booking.h).
 
+#include <cstdint>
+#include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -36,15 +39,19 @@
 
 namespace rtu {
 
+// Told each job's result as it reaches the host, in the host's order: its cycles, the result and
+// its cycles BLOCKED on memory.
+using LtArrival =
+    std::function<void(const JobCycles& cycles, const CoreKindResult& result, uint32_t blocked)>;
+
 // What does not depend on the cores' kind: the memory targets, the job set-up, the recurrence and
-// the quantum. The cores are LtTop's, reached once per dispatch through traverseOn.
+// the quantum. The cores are LtTop's, reached once per dispatch through traverseOn. A job's
+// result is held from its traversal until it drains to the host (`arrived`): the top holds the
+// jobs in flight, not the frame.
 class LtTopBase : public sc_core::sc_module {
  public:
-  // After the simulation, taken once: the cycles, and by job index each job's result and blocked
-  // cycles.
-  RecurrenceRun takeTiming() { return std::move(timing_); }
-  std::vector<CoreKindResult> takeResults() { return std::move(results_); }
-  std::vector<uint32_t> takeBlocked() { return std::move(blocked_); }
+  // After the simulation: the cycles and the result buffers' most.
+  const RecurrenceTotals& totals() const { return totals_; }
   // Per core, the cycles its tests waited for a shared triangle unit.
   const std::vector<uint64_t>& unitStalls() const { return stalls_; }
   bool idealMemory() const { return rom_ != nullptr; }
@@ -55,7 +62,7 @@ class LtTopBase : public sc_core::sc_module {
   // `records` must outlive the top; `accessBytes` is a core's access (what the ROM and an L1
   // serve).
   LtTopBase(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-            RecordSource records, uint32_t accessBytes);
+            RecordSource records, LtArrival arrived, uint32_t accessBytes);
 
   // Binds a core's socket to its memory: the ROM, or an L1 of its own in front of the L2.
   void bindCore(tlm::tlm_initiator_socket<>& socket);
@@ -67,19 +74,28 @@ class LtTopBase : public sc_core::sc_module {
   // The next job's result, of `Kind`, for its core to write.
   template <class Kind>
   typename Kind::Result& nextResult() {
-    return emplaceBackResult<Kind>(results_);
+    return inFlight_.emplace_back().result.template emplace<typename Kind::Result>();
   }
 
   // Runs `job` on core `core` from its first state in `initCycle`, writing nextResult().
   virtual LtTraversal traverseOn(int core, const CoreJob& job, uint64_t initCycle) = 0;
 
  private:
+  // A job's result from its traversal until it drains.
+  struct InFlight {
+    CoreKindResult result;
+    uint32_t blocked = 0;
+    bool drained = false;
+  };
+
   void drive();
   JobTiming setUp(size_t job);
   uint64_t traverse(size_t job, int core, uint64_t initCycle);
+  void drained(const JobCycles& cycles);
 
   const RtuConfig& config_;
   const RecordSource records_;  // a vector's outlives the top
+  const LtArrival arrived_;
   WordMemory memory_;
   uint32_t accessBytes_;
   LtTime time_;
@@ -90,9 +106,9 @@ class LtTopBase : public sc_core::sc_module {
   std::unique_ptr<LtL2Cache> l2_;
   std::unique_ptr<LtDram> dram_;
   CoreJob current_;  // the job set up last
-  RecurrenceRun timing_;
-  std::vector<CoreKindResult> results_;
-  std::vector<uint32_t> blocked_;
+  RecurrenceTotals totals_;
+  std::deque<InFlight> inFlight_;  // jobs from firstInFlight_ on, up to the last dispatched
+  size_t firstInFlight_ = 0;
   std::vector<LtTriangleUnit> units_;  // shared triangle units, by group (none: a unit a core)
   std::vector<uint64_t> stalls_;       // per core
 };
@@ -102,8 +118,9 @@ class LtTop final : public LtTopBase {
  public:
   // `records` must outlive the top.
   LtTop(sc_core::sc_module_name name, const RtuConfig& config, WordMemory memory,
-        RecordSource records)
-      : LtTopBase(name, config, memory, std::move(records), 4 * Kind::kWordsPerRead),
+        RecordSource records, LtArrival arrived)
+      : LtTopBase(name, config, memory, std::move(records), std::move(arrived),
+                  4 * Kind::kWordsPerRead),
         behaviour_(Kind::behaviour(config.coreConfig<Kind>())) {
     for (int i = 0; i < config.cores; ++i) {
       cores_.push_back(std::make_unique<LtCore<Kind>>(("core_" + std::to_string(i)).c_str(),

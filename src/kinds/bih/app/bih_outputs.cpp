@@ -20,7 +20,7 @@ KindOutputs<BihKind<>>::Tally::Tally(const RunConfig& settings, const FrameScene
       results_(scene) {}
 
 // A BIH result's t is in grid units: its pixel takes the world `distance`.
-void KindOutputs<BihKind<>>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+void KindOutputs<BihKind<>>::Tally::add(const CoreKindResult& result, PixelSink* frame) {
   results_.add(result, frame, [](const BihResult& own) { return own.distance; });
 }
 

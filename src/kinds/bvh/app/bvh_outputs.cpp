@@ -16,7 +16,7 @@ std::string KindOutputs<BvhKind<>>::core(const RunConfig& settings) {
 
 KindOutputs<BvhKind<>>::Tally::Tally(const RunConfig&, const FrameScene& scene) : results_(scene) {}
 
-void KindOutputs<BvhKind<>>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+void KindOutputs<BvhKind<>>::Tally::add(const CoreKindResult& result, PixelSink* frame) {
   results_.add(result, frame, [](const BvhResult& own) { return own.t; });
 }
 

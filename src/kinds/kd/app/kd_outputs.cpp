@@ -16,7 +16,7 @@ std::string KindOutputs<KdKind>::core(const RunConfig& settings) {
 
 KindOutputs<KdKind>::Tally::Tally(const RunConfig&, const FrameScene& scene) : results_(scene) {}
 
-void KindOutputs<KdKind>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+void KindOutputs<KdKind>::Tally::add(const CoreKindResult& result, PixelSink* frame) {
   results_.add(result, frame, [](const KdResult& own) { return own.t; });
 }
 

@@ -15,7 +15,7 @@ struct KindOutputs<KdKind> {
   class Tally {
    public:
     Tally(const RunConfig& settings, const FrameScene& scene);
-    void add(const CoreKindResult& result, RenderedFrame* frame);
+    void add(const CoreKindResult& result, PixelSink* frame);
     std::string describe() const;
 
    private:

@@ -14,7 +14,7 @@ KindOutputs<SvoKind>::Tally::Tally(const RunConfig& settings, const FrameScene&)
     : format_(settings.rtu.coreConfig<SvoKind>().format) {}
 
 // The thesis' report (ResultSummary) and pixels (svoPixel).
-void KindOutputs<SvoKind>::Tally::add(const CoreKindResult& result, RenderedFrame* frame) {
+void KindOutputs<SvoKind>::Tally::add(const CoreKindResult& result, PixelSink* frame) {
   const TraversalResult& own = svoResult(result);
   summary_.add(own);
   if (frame) frame->place(own.id(), svoPixel(format_, own));
