@@ -32,7 +32,8 @@ def value(row, key):
 
 def load(folder):
     """{scene: {"heading": ..., "rows": [(label, part, row)]}}: the common rows, then the seeds';
-    a BIH row run smaller (the sets common-bih and seed-bih) is labelled with its size."""
+    a BIH row run smaller (the sets common-bih and seed-bih) is labelled with its size, and left
+    out of the plots, whose frame rates are all at the study's size."""
     scenes = {}
     for scene, _ in SCENES:
         for part in ("common", "common-bih", "seed", "seed-bih"):
@@ -49,7 +50,7 @@ def load(folder):
                     continue
                 label = row["architecture"] if part.startswith("common") else "%s (%s)" % (
                     row["architecture"], row.get("preset") or "default")
-                entry["rows"].append((label + size, part.split("-")[0], row))
+                entry["rows"].append((label + size, part, row))
     return scenes
 
 
@@ -146,7 +147,7 @@ def pareto_plot(scenes, resource, title, path):
         points = []
         for label, part, row in scenes[scene]["rows"]:
             x, y = value(row, resource), value(row, "fps")
-            if x is None or y is None:
+            if x is None or y is None or part.endswith("-bih"):
                 continue
             points.append((x, y, label))
             ax.scatter([x], [y], color=COLOURS[row["architecture"]],
@@ -160,7 +161,7 @@ def pareto_plot(scenes, resource, title, path):
         ax.set_ylabel("frames/s")
         ax.grid(alpha=0.3)
     fig.suptitle(title + " (circles: common configuration, squares: the seed's; grey: the "
-                 "Pareto front)", fontsize=10)
+                 "Pareto front, its points ringed)", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
     plt.close(fig)

@@ -11,7 +11,7 @@
 #   bench/comparison_study.sh [OUT] [WIDTH] [HEIGHT] [SCENE ...]
 # Scenes: bunny00 armadillo ChineseDragon-10kv refined_elephant room default (the scene file).
 # A set whose JSON file exists is not run again (delete it to re-run). SLOW_BIH: the scenes
-# whose BIH rows run at a quarter of the size (default: default).
+# whose BIH rows run at a quarter of the size (default: "default room").
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rtusim=${RTUSIM:-$root/build/rtusim}
@@ -34,9 +34,10 @@ scene_flags() {
 }
 
 # Where the BIH core's rows would take too long at the full size (on the scene file's frame, 31
-# times the BVH's cycles: over 20 minutes a row on the shared build machine), they run at a
-# quarter of it in each direction, in the sets common-bih and seed-bih.
-slow_bih=${SLOW_BIH-default}
+# times the BVH's cycles: over 20 minutes a row on the shared build machine; on the room's 1.4
+# million voxel faces over 7), they run at a quarter of it in each direction, in the sets
+# common-bih and seed-bih.
+slow_bih=${SLOW_BIH-default room}
 
 # compare SCENE SET WIDTH HEIGHT ARCHITECTURES: one compare into OUT/SCENE-SET.json.
 run() {
