@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 SCENES = [("bunny00", "bunny"), ("armadillo", "armadillo"), ("ChineseDragon-10kv", "dragon"),
-          ("refined_elephant", "elephant"), ("room", "room (inside)"),
+          ("refined_elephant", "elephant"), ("room", "room"),
           ("default", "scenes/default.toml")]
 ARCHITECTURES = ["svo", "bvh", "bih", "kd", "raypipe"]
 COLOURS = {"svo": "tab:green", "bvh": "tab:blue", "bih": "tab:red", "kd": "tab:orange",
