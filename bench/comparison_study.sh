@@ -34,7 +34,7 @@ scene_flags() {
 }
 
 # Where the BIH core's rows would take too long at the full size (on the scene file's frame, 31
-# times the BVH's cycles: 12 to 20 minutes a row on the shared build machine; on the room's 1.4
+# times the BVH's cycles: over 20 minutes a row on the loaded build machine; on the room's 1.4
 # million voxel faces over 7), they run at a quarter of it in each direction, in the sets
 # common-bih and seed-bih.
 slow_bih=${SLOW_BIH-default room}
