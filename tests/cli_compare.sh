@@ -3,7 +3,8 @@
 # fps row of its configuration (statistics equal to `rtusim fps` run alone, the host's seconds
 # aside); the SVO and the triangle architectures trace the same surface (each against the float64
 # reference over the voxel faces: hit/miss disagreements counted and bounded); the outputs (CSV,
-# JSON, HTML with its plots and difference images); bad inputs refused before any work.
+# JSON, HTML with its plots and difference images); bad inputs refused before any work; a scene
+# file's frame, its SVO built once into the cache and read back by the next run.
 # Usage: cli_compare.sh path/to/rtusim
 set -euo pipefail
 rtusim=$1
@@ -28,8 +29,10 @@ for arch in svo bvh bih kd raypipe; do
 done
 "$rtusim" fps --preset cached --scene sphere --depth 5 --resolutions 48x32 --cores 16 \
   --csv svo.csv >/dev/null 2>&1
-"$rtusim" fps --preset cached --core kd --scene sphere --depth 5 --resolutions 48x32 --cores 16 \
-  --csv kd.csv >/dev/null 2>&1
+for core in bvh bih kd; do
+  "$rtusim" fps --preset cached --core $core --index wide --scene sphere --depth 5 \
+    --resolutions 48x32 --cores 16 --csv $core.csv >/dev/null 2>&1
+done
 "$rtusim" fps --architecture raypipe --index wide --scene sphere --depth 5 --resolutions 48x32 \
   --csv raypipe.csv >/dev/null 2>&1
 
@@ -45,7 +48,7 @@ def same(a, b):
     for s in (a, b):
         s.pop("simulation")
     return a == b
-for arch in ("svo", "kd", "raypipe"):
+for arch in ("svo", "bvh", "bih", "kd", "raypipe"):
     alone = json.loads(open(arch + ".jsonl").readline())
     assert same(rows[arch]["row"]["statistics"], alone["statistics"]), arch
 # The figures are the row's: frame cycles, rate, per-ray counts from the kind's own counters.
@@ -94,5 +97,32 @@ csv_row = {r["architecture"]: r for r in table}
 assert csv_row["svo"]["fps_per_dsp48e"] == "" and csv_row["raypipe"]["bram18k"] == "82", csv_row
 report = open(sys.argv[3]).read()
 assert report.count("data:image/png;base64") == 6 + 5, report.count("data:image/png;base64")
+PY
+# A scene file: its frame 0 flattened into one mesh for the triangle architectures and voxelized
+# for the SVO at the footprint's depth, that SVO kept in the cache so a second run reads it back.
+scene_file=(--scene-file "$here/../scenes/procedural.toml" --width 48 --height 27)
+"$rtusim" compare "${scene_file[@]}" --architectures svo,bvh --cache-dir cache -j 1 \
+  --json file.json >file.txt 2>file.err || fail "compare --scene-file: $(cat file.txt file.err)"
+grep -q "SVO of frame 0 at depth [0-9]* built and cached in cache/" file.txt ||
+  fail "the frame's SVO was not built into the cache: $(cat file.txt)"
+"$rtusim" compare "${scene_file[@]}" --architectures svo --cache-dir cache -j 1 \
+  --json again.json >again.txt 2>&1 || fail "compare --scene-file again: $(cat again.txt)"
+grep -q "SVO of frame 0 at depth [0-9]* read from cache/" again.txt ||
+  fail "the second run voxelized the frame again: $(cat again.txt)"
+python3 - file.json again.json <<'PY' || fail "compare --scene-file's rows"
+import json, sys
+first, again = (json.load(open(p)) for p in sys.argv[1:])
+rows = {r["architecture"]: r for r in first["rows"]}
+assert all(r["status"] == "ok" for r in rows.values()), rows
+assert (first["width"], first["height"]) == (48, 27), first
+# The cached image is the one built: the same frame, cycle for cycle.
+svo, cached = rows["svo"], again["rows"][0]
+assert svo["row"]["statistics"]["total_cycles"] == cached["row"]["statistics"]["total_cycles"]
+assert svo["image_bytes"] == cached["image_bytes"]
+# The same surface: the BVH finds the reference's hits; the SVO's voxels stand at most a voxel
+# proud of it, so only silhouette pixels differ.
+bvh, voxels = rows["bvh"]["agreement"], svo["agreement"]
+assert bvh["hit_miss_differ"] == 0 and bvh["both_hit"] > 500, bvh
+assert voxels["hit_miss_differ"] <= 0.05 * bvh["both_hit"], voxels
 PY
 echo "compare: ok"

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -60,9 +61,9 @@ bool sameVoxels(const VoxelSource& a, const VoxelSource& b) {
   return same;
 }
 
-TEST_CASE("scenes: the five scenes by name, bad names and depths are refused", "[scenes]") {
+TEST_CASE("scenes: the six scenes by name, bad names and depths are refused", "[scenes]") {
   CHECK(proceduralSceneNames() ==
-        std::vector<std::string>{"sphere", "shell", "menger", "terrain", "noise"});
+        std::vector<std::string>{"sphere", "shell", "menger", "terrain", "noise", "room"});
   for (const std::string& name : proceduralSceneNames()) {
     CHECK(makeProceduralScene(name, 1)->depth() == 1);
     CHECK(makeProceduralScene(name, 16)->depth() == 16);
@@ -71,7 +72,7 @@ TEST_CASE("scenes: the five scenes by name, bad names and depths are refused", "
   }
   CHECK_THROWS_WITH(makeProceduralScene("cube", 4),
                     Catch::Contains("'cube'") &&
-                        Catch::Contains("sphere, shell, menger, terrain, noise"));
+                        Catch::Contains("sphere, shell, menger, terrain, noise, room"));
 }
 
 TEST_CASE("scenes: never Mixed for a voxel, never wrong for a node", "[scenes]") {
@@ -231,6 +232,27 @@ TEST_CASE("scenes: noise is seeded white noise of density 1/32", "[scenes]") {
   CHECK(density == Approx(1.0 / 32).epsilon(0.05));
   CHECK(sameVoxels(*noise, *makeProceduralScene("noise", depth, 4)));
   CHECK_FALSE(sameVoxels(*noise, *makeProceduralScene("noise", depth, 5)));
+}
+
+TEST_CASE("scenes: room has walls an eighth thick, its front open, furniture inside", "[scenes]") {
+  const int depth = 5;  // voxels 1/16 wide, centres at (2v + 1) / 32 - 1
+  const auto room = makeProceduralScene("room", depth);
+  const uint32_t last = (1u << depth) - 1;
+  // Floor, ceiling, side and back walls span [-1, -0.875] and [0.875, 1]: the outer two layers
+  // but the front's (z = -1), which is open.
+  forEachVoxel(*room, OctreeNode{}, [&](uint32_t x, uint32_t y, uint32_t z) {
+    const bool wall = std::min(x, y) < 2 || std::max({x, y, z}) > last - 2;
+    if (wall) REQUIRE(solid(*room, x, y, z));
+  });
+  CHECK_FALSE(solid(*room, 16, 16, 0));   // the open front
+  CHECK_FALSE(solid(*room, 16, 2, 16));   // centre y -0.84375: just above the floor
+  CHECK_FALSE(solid(*room, 16, 16, 8));   // (0.03125, 0.03125, -0.46875): open air
+  CHECK(solid(*room, 16, 10, 20));        // (0.03125, -0.34375, 0.28125): the table top
+  CHECK_FALSE(solid(*room, 16, 9, 20));   // y -0.40625: under it
+  CHECK(solid(*room, 16, 25, 21));        // (0.03125, 0.59375, 0.34375): in the lamp, r 0.125
+  CHECK_FALSE(solid(*room, 16, 28, 21));  // y 0.78125: above it
+  CHECK(solid(*room, 16, 10, 14));        // (0.03125, -0.34375, -0.09375): the chair's back
+  CHECK_FALSE(solid(*room, 16, 10, 13));  // z -0.15625: behind it
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -34,6 +35,7 @@
 #include "explore/scene_mesh.h"
 #include "explore/sweep_workers.h"
 #include "kinds/svo/voxel_faces.h"
+#include "scene/model_cache.h"
 
 namespace rtu {
 namespace {
@@ -56,6 +58,7 @@ constexpr int kMaxFootprintDepth = 12;
 struct CompareOptions {
   std::vector<std::string> architectures = allArchitectures();
   std::string sceneFile, csv, json, html, images;
+  std::string cacheDir = defaultModelCacheDirectory();
   int workers = defaultWorkerCount();
 };
 
@@ -149,6 +152,24 @@ void flattenSceneFile(const std::string& path, const std::string& folder, Config
   shared.sceneCamera = scene.camera;
   shared.sceneCamera->width = base.values().camera.width;
   shared.sceneCamera->height = base.values().camera.height;
+}
+
+// A scene file's frame voxelized at `depth` for the SVO, kept in the model cache of `rtusim
+// animate` (scene/model_cache.h, --cache-dir: named by a hash of the flattened mesh and the
+// depth), so the next compare of the same frame reads it back instead of voxelizing it again; its
+// path.
+std::string cachedFrameSvo(const std::string& mesh, int depth, const std::string& directory) {
+  ModelDescription frame{"frame 0", {}};
+  frame.source.meshFile = mesh;
+  frame.source.depth = depth;
+  const std::string path = directory + "/" + modelCacheKey(frame) + ".svo";
+  const auto start = std::chrono::steady_clock::now();
+  const SceneModel model = loadSceneModel(frame, directory);
+  std::cout << "compare: the SVO of frame 0 at depth " << depth << " "
+            << (model.fromCache ? "read from " : "built and cached in ") << path << " ("
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s)\n";
+  return path;
 }
 
 // The frame's camera at `depth`: a scene file's moves with its mesh into the cube.
@@ -352,6 +373,15 @@ void runCompare(const ConfigRequest& request, const CompareOptions& options) {
     configurations.push_back(targets.back().configuration);
   }
   checkSettingsHaveEffect(configurations, request.uses, request.command);
+  // Checked: now the long work. A scene file's SVO row reads its frame's image from the cache.
+  for (CompareTarget& target : targets)
+    if (target.name == SvoKind::kName && !options.sceneFile.empty()) {
+      Configuration& configuration = target.configuration;
+      const std::string svo =
+          cachedFrameSvo(configuration.values().scene.meshFile, depth, options.cacheDir);
+      configuration.set("mesh", "", ConfigSource::Preset);
+      configuration.set("svo", svo, ConfigSource::Preset);
+    }
   traceReference(base.values(), triangles, shared);
   for (CompareTarget& target : targets)
     if (target.name == kRaypipe && mesh) moveRaypipeCamera(target, shared.placement);
@@ -413,6 +443,8 @@ void addCompareCommand(CLI::App& app) {
   command->add_option("--scene-file", options->sceneFile,
                       "an animated scene file (TOML): its first frame flattened into one mesh, "
                       "its camera and frame size");
+  command->add_option("--cache-dir", options->cacheDir,
+                      "where a scene file's SVO is kept (default: ~/.cache/rtusim/models)");
   command->add_option("--csv", options->csv, "one row per architecture");
   command->add_option("--json", options->json, "the rows in full, each with its fps row");
   command->add_option("--html", options->html,

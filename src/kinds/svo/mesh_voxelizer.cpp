@@ -144,12 +144,12 @@ bool MeshVoxelizer::overlaps(uint32_t triangleIndex, const glm::dvec3& lower,
   return planeAndEdgeAxesOverlap(triangle.vertices, 0.5 * (lower + upper), 0.5 * (upper - lower));
 }
 
-// The builder classifies depth first, so the nearest cached ancestor is normally the parent.
-// Any other call order still works, only with longer candidate lists.
+// The parent's triangles, classified first when the parent is not the one cached at its level:
+// the builder classifies depth first, so that is rare; the size estimate's level-by-level walk
+// takes a node's eight children in turn, so the parent is found once for them (and not, as
+// when falling back to every triangle, 16,384 nodes a level times every triangle of the mesh).
 const std::vector<uint32_t>& MeshVoxelizer::candidatesFor(const OctreeNode& node) const {
-  for (int level = node.level - 1; level >= 0; --level)
-    if (isAncestorOrSelf(cache_[level].node, node)) return cache_[level].triangles;
-  return allTriangles_;
+  return node.level == 0 ? allTriangles_ : overlappingTriangles(node.parent());
 }
 
 const std::vector<uint32_t>& MeshVoxelizer::overlappingTriangles(const OctreeNode& node) const {

@@ -55,7 +55,7 @@ class MeshVoxelizer : public VoxelSource {
   };
 
   bool overlaps(uint32_t triangleIndex, const glm::dvec3& lower, const glm::dvec3& upper) const;
-  // Triangles that may overlap `node`: those of its nearest cached ancestor, else all.
+  // Triangles that may overlap `node`: its parent's (all for the root).
   const std::vector<uint32_t>& candidatesFor(const OctreeNode& node) const;
   // Triangles that overlap `node`, from the cache or computed into it.
   const std::vector<uint32_t>& overlappingTriangles(const OctreeNode& node) const;

@@ -287,6 +287,103 @@ class Terrain : public Scene {
   std::vector<std::vector<HeightRange>> pyramid_;
 };
 
+// A room (issue 30's interior-like scene): floor, ceiling, back and side walls an eighth of the
+// cube thick, the front (z = -1) open, with a table on four legs, a chair, a cabinet, shelves, two
+// pillars and three balls. Open so that a camera just outside the root cube sees the inside: the
+// SVO traversal finds the first voxel from where a ray's line enters the cube, so a camera inside
+// it would see what lies behind it. Solid where the voxel centre lies in one of its boxes or
+// balls; every bound is a multiple of 1/32, so every comparison is exact, as above.
+class Room : public Scene {
+ public:
+  explicit Room(int depth) : Scene(depth) {}
+
+  // Full when one part holds every voxel centre of the node, Empty when none holds any.
+  Occupancy classify(const OctreeNode& node) const override {
+    std::array<Range, 3> centres;
+    const std::array<uint32_t, 3> cells = {node.x, node.y, node.z};
+    for (int axis = 0; axis < 3; ++axis) {
+      const VoxelSpan voxels = span(cells[axis], node.level);
+      centres[axis] = {centre(voxels.first), centre(voxels.last)};
+    }
+    bool some = false;
+    for (const Part& part : kParts) {
+      const Occupancy occupancy = part.classify(centres);
+      if (occupancy == Occupancy::Full) return Occupancy::Full;
+      some = some || occupancy == Occupancy::Mixed;
+    }
+    return some ? Occupancy::Mixed : Occupancy::Empty;
+  }
+
+ private:
+  struct Range {
+    double lo, hi;
+  };
+  // A box (radius 0) or a ball (radius > 0, centred on box.lo).
+  struct Part {
+    std::array<Range, 3> box;
+    double radius;
+
+    Occupancy classify(const std::array<Range, 3>& centres) const {
+      return radius > 0 ? classifyBall(centres) : classifyBox(centres);
+    }
+    Occupancy classifyBox(const std::array<Range, 3>& centres) const {
+      bool inside = true;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (centres[axis].hi < box[axis].lo || centres[axis].lo > box[axis].hi)
+          return Occupancy::Empty;
+        inside = inside && centres[axis].lo >= box[axis].lo && centres[axis].hi <= box[axis].hi;
+      }
+      return inside ? Occupancy::Full : Occupancy::Mixed;
+    }
+    Occupancy classifyBall(const std::array<Range, 3>& centres) const {
+      double nearest2 = 0;
+      double farthest2 = 0;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double lo = centres[axis].lo - box[axis].lo;
+        const double hi = centres[axis].hi - box[axis].lo;
+        nearest2 += square(lo > 0 ? lo : hi < 0 ? -hi : 0.0);
+        farthest2 += square(std::max(-lo, hi));
+      }
+      if (nearest2 > square(radius)) return Occupancy::Empty;
+      return farthest2 <= square(radius) ? Occupancy::Full : Occupancy::Mixed;
+    }
+    static double square(double value) { return value * value; }
+  };
+  static constexpr Part box(Range x, Range y, Range z) { return {{x, y, z}, 0}; }
+  static constexpr Part ball(double x, double y, double z, double radius) {
+    return {{Range{x, x}, Range{y, y}, Range{z, z}}, radius};
+  }
+
+  static constexpr double kWall = 0.875;  // the walls' inner faces
+  static const std::array<Part, 23> kParts;
+};
+
+const std::array<Room::Part, 23> Room::kParts = {{
+    box({-1, 1}, {-1, -kWall}, {-1, 1}),                        // floor
+    box({-1, 1}, {kWall, 1}, {-1, 1}),                          // ceiling
+    box({-1, -kWall}, {-1, 1}, {-1, 1}),                        // left wall
+    box({kWall, 1}, {-1, 1}, {-1, 1}),                          // right wall
+    box({-1, 1}, {-1, 1}, {kWall, 1}),                          // back wall
+    box({-0.375, 0.375}, {-0.375, -0.3125}, {0.125, 0.625}),    // table top
+    box({-0.375, -0.3125}, {-kWall, -0.375}, {0.125, 0.1875}),  // its legs
+    box({0.3125, 0.375}, {-kWall, -0.375}, {0.125, 0.1875}),
+    box({-0.375, -0.3125}, {-kWall, -0.375}, {0.5625, 0.625}),
+    box({0.3125, 0.375}, {-kWall, -0.375}, {0.5625, 0.625}),
+    box({-0.125, 0.125}, {-0.5625, -0.5}, {-0.125, 0.0625}),       // chair seat
+    box({-0.125, 0.125}, {-0.5, -0.1875}, {-0.125, -0.0625}),      // its back
+    box({-0.125, -0.0625}, {-kWall, -0.5625}, {-0.125, -0.0625}),  // two of its legs
+    box({0.0625, 0.125}, {-kWall, -0.5625}, {-0.125, -0.0625}),
+    box({-kWall, -0.625}, {-kWall, 0.25}, {0.25, 0.75}),  // cabinet
+    box({-0.5, 0.25}, {-0.25, -0.21875}, {0.75, kWall}),  // shelves
+    box({-0.5, 0.25}, {0, 0.03125}, {0.75, kWall}),
+    box({-0.5, 0.25}, {0.25, 0.28125}, {0.75, kWall}),
+    box({0.5, 0.625}, {-kWall, kWall}, {0.5, 0.625}),  // pillars
+    box({0.5, 0.625}, {-kWall, kWall}, {-0.25, -0.125}),
+    ball(0, 0.625, 0.375, 0.125),          // lamp
+    ball(0.125, -0.1875, 0.375, 0.125),    // ball on the table
+    ball(-0.375, -0.6875, -0.25, 0.1875),  // ball on the floor
+}};
+
 // Each voxel is solid with probability 1/32. Nodes above the voxels are left to the builder.
 class WhiteNoise : public Scene {
  public:
@@ -309,7 +406,7 @@ struct SceneEntry {
   std::unique_ptr<VoxelSource> (*make)(int depth, uint64_t seed);
 };
 
-const std::array<SceneEntry, 5> kScenes = {{
+const std::array<SceneEntry, 6> kScenes = {{
     {"sphere",
      [](int depth, uint64_t) -> std::unique_ptr<VoxelSource> {
        return std::make_unique<RadialBand>(depth, 0.0, kSphereRadius);
@@ -330,6 +427,10 @@ const std::array<SceneEntry, 5> kScenes = {{
     {"noise",
      [](int depth, uint64_t seed) -> std::unique_ptr<VoxelSource> {
        return std::make_unique<WhiteNoise>(depth, seed);
+     }},
+    {"room",
+     [](int depth, uint64_t) -> std::unique_ptr<VoxelSource> {
+       return std::make_unique<Room>(depth);
      }},
 }};
 

@@ -6,6 +6,7 @@
 //   menger   Menger sponge filling the whole cube, as many iterations as 2^depth voxels resolve
 //   terrain  solid below a seeded fractal value-noise height field over x/z, y up
 //   noise    each voxel solid with probability 1/32, from a hash of (x, y, z, seed)
+//   room     a room with furniture, open at z = -1 (--camera 0,0.3,-1.1 --look-at 0,-0.45,0.6)
 // The seed only changes terrain and noise. Each scene answers whole octree nodes Empty or Full
 // where it can tell cheaply and never wrongly; see VoxelSource.
 

@@ -21,7 +21,8 @@ struct OctreeNode {
   OctreeNode child(int slot) const {
     return {level + 1, 2 * x + (slot & 1), 2 * y + (slot >> 1 & 1), 2 * z + (slot >> 2 & 1)};
   }
-  double size() const { return 2.0 / static_cast<double>(1u << level); }  // edge length
+  OctreeNode parent() const { return {level - 1, x >> 1, y >> 1, z >> 1}; }  // level > 0
+  double size() const { return 2.0 / static_cast<double>(1u << level); }     // edge length
   glm::dvec3 lower() const { return glm::dvec3(x, y, z) * size() - 1.0; }
   glm::dvec3 upper() const { return lower() + size(); }
   glm::dvec3 centre() const { return lower() + 0.5 * size(); }
