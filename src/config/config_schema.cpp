@@ -635,8 +635,9 @@ void addRaypipeSettings(std::vector<Setting>& schema) {
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, camera = kUseCamera;
   constexpr double kMaxFifo = 1 << 20;
   std::vector<Setting> added;
-  added.push_back(integer("raypipe.traversal_units", "", "units", 1, 64, model,
-                          "ray pipe: traversal units (seed 001's final build: 1)",
+  added.push_back(integer("raypipe.traversal_units", "", "units", 1, 2, model,
+                          "ray pipe: traversal units (seed 001's final build: 1; its "
+                          "raypipe_2trav.sv: 2)",
                           [](C& c) -> int& { return c.raypipe.traversalUnits; }));
   added.push_back(integer("raypipe.short_stack_depth", "--short-stack-depth", "entries", 1, 7,
                           arith,
