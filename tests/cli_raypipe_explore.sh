@@ -99,9 +99,19 @@ assert rows["rtu"]["answered_by"] == "systemc" and rows["raypipe"]["answered_by"
 assert all(r["status"] == "ok" and r["rays"] == "1200" for r in rows.values()), rows
 PY
 # A setting the timed model refuses is an invalid row, refused before it runs.
-expect_error "1 rows failed, the first: raypipe.traversal_units" "$rtusim" sweep \
-  --preset trayracer "${scene[@]}" --level 0 --grid raypipe.traversal_units=1,2 --out units.csv -j 1
-grep -q '"status":"invalid"' units.jsonl || fail "traversal_units=2 is not an invalid row"
+expect_error "1 rows failed, the first: raypipe.cache" "$rtusim" sweep \
+  --preset trayracer "${scene[@]}" --level 0 --grid raypipe.cache=block_ram,set_associative \
+  --out caches.csv -j 1
+grep -q '"status":"invalid"' caches.jsonl || fail "cache=set_associative is not an invalid row"
+# Two traversal units (raypipe_2trav.sv): a row of its own, the same rays.
+"$rtusim" sweep --preset trayracer "${scene[@]}" --level 0 --grid raypipe.traversal_units=1,2 \
+  --out units.csv -j 1 >/dev/null || fail "traversal_units=1,2"
+python3 - units.csv <<'PY' || fail "traversal_units rows"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [r["raypipe.traversal_units"] for r in rows] == ["1", "2"], rows
+assert all(r["status"] == "ok" and r["rays"] == "300" for r in rows), rows
+PY
 
 # fidelity: the timed model and golden against the per-cycle reference, all equal.
 "$rtusim" fidelity --preset trayracer "${scene[@]}" --level 0 --csv fidelity.csv >fidelity.txt

@@ -22,7 +22,7 @@
 namespace rtu {
 namespace {
 
-using Kind = BihKind<C99Intersector>;
+using C99BihKind = BihKind<C99Intersector>;
 using S = BihState;
 
 struct HandScene {
@@ -56,7 +56,7 @@ BihConfig statesOnly() {
   return config;
 }
 
-template <class TracedKind = Kind>
+template <class TracedKind = C99BihKind>
 Trace trace(const HandScene& scene, const Ray& world, BihConfig config = statesOnly()) {
   typename TracedKind::Behaviour traversal = TracedKind::behaviour(config);
   const BihJob job = scene.job(world);
@@ -190,7 +190,7 @@ TEST_CASE("BIH traversal: one leaf of four, and ties to the later triangle", "[b
 
 TEST_CASE("BIH traversal: every state reads within one aligned access", "[bih]") {
   const HandScene scene;
-  Kind::Behaviour traversal = Kind::behaviour(BihConfig{});
+  C99BihKind::Behaviour traversal = C99BihKind::behaviour(BihConfig{});
   traversal.start(scene.job(down(3, 1)));
   const int reads = wordsReadWithinAccesses(traversal, WordMemory(scene.image.words));
   CHECK(reads == 4 * 3 + 2 * (1 + 12));  // 4 node triples, 2 list entries, 2 records

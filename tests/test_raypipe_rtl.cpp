@@ -172,14 +172,17 @@ std::string describe(const char* model, const RtlComparison& c) {
 
 // Both models on a run, with the VGA reader's window at the run's phase (t5.sv as simulated) or
 // without it (the writer free every cycle); `expectExact`: every figure must equal the RTL's, else
-// they are reported.
-void checkAgainstRtl(const KdImage& image, const RtlRun& run, bool vgaWindow, bool expectExact) {
-  INFO(run.name << (vgaWindow ? " with the VGA window" : " without the VGA window"));
+// they are reported. `division`: the divider the models take (raypipe.division).
+void checkAgainstRtl(const KdImage& image, const RtlRun& run, bool vgaWindow, bool expectExact,
+                     Division division = Division::Ieee) {
+  INFO(run.name << (vgaWindow ? " with the VGA window" : " without the VGA window")
+                << (division == Division::Altfp ? ", altfp_div" : ""));
   const std::vector<RtlPixel> rtl = readRtlCsv(run.name);
   const std::vector<RaypipeCycleRay> rays =
       rtlRays(run.close ? closeCamera() : RaypipeCamera{}, run.level);
   REQUIRE(rtl.size() == rays.size());
-  const RaypipeConfig config;
+  RaypipeConfig config;
+  config.division = division;
   RaypipeCycleOptions options;
   options.writer.vgaReadWindow = vgaWindow;
   options.writer.vgaPhase = run.start + 1;
@@ -248,6 +251,12 @@ TEST_CASE("raypipe models against the RTL: t4s3 levels 0-3", "[raypipe_rtl]") {
     checkAgainstRtl(image, run, true, true);
     if (run.level <= 2) checkAgainstRtl(image, run, false, true);
   }
+}
+
+// The shipped divider's own algorithm (raypipe.division = altfp_div) gives the RTL's figures too.
+TEST_CASE("raypipe models against the RTL: t4s3 levels 0-3 with altfp_div", "[raypipe_rtl]") {
+  const KdImage image = t4s3Image();
+  for (const RtlRun& run : t4s3Runs()) checkAgainstRtl(image, run, true, true, Division::Altfp);
 }
 
 // A run recorded as frame figures only (README's table: no per-pixel CSV at the larger sizes).
@@ -329,7 +338,10 @@ TEST_CASE("raypipe models against the RTL: bunny levels 0-3 and the close camera
   const KdImage bunny = layOutKd(
       readTrayRacerScene(readBytes(std::string(trayRacerDir()) + "/SCENES/bunny_color_aabb.scene"),
                          TrayRacerFormat::Narrow));
-  for (const RtlRun& run : bunnyRuns()) checkAgainstRtl(bunny, run, true, true);
+  for (const RtlRun& run : bunnyRuns()) {
+    checkAgainstRtl(bunny, run, true, true);
+    checkAgainstRtl(bunny, run, true, true, Division::Altfp);
+  }
 }
 
 // A report of every recorded run (both models, all counts), for docs/raypipe.md.

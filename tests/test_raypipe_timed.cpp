@@ -226,9 +226,9 @@ TEST_CASE("raypipe timed model: the reference's cycles with other latencies and 
 TEST_CASE("raypipe timed model: refused settings", "[raypipe_timed]") {
   const KdImage image = oneTriangle();
   const std::vector<RaypipeCycleRay> rays = {{downZ(0.5f, 0.5f), 0}};
-  RaypipeConfig two;
-  two.traversalUnits = 2;
-  CHECK_THROWS_AS(runRaypipeTimed(two, image, rays), std::invalid_argument);
+  RaypipeConfig three;
+  three.traversalUnits = 3;
+  CHECK_THROWS_AS(runRaypipeTimed(three, image, rays), std::invalid_argument);
   RaypipeCycleOptions vga;
   vga.writer.vgaReadWindow = true;
   vga.writer.vgaPhase = -1;
@@ -271,6 +271,85 @@ TEST_CASE("raypipe timed model: equivalence with the VGA reader's window", "[ray
       CHECK(filled.writerWaits > 0);
     }
   }
+}
+
+}  // namespace rtu
+
+namespace rtu {
+namespace {
+
+int64_t fifoPeak(const RaypipeCycleRun& run, const std::string& name) {
+  for (const RaypipeFifoPeak& f : run.fifos)
+    if (f.fifo == name) return f.peak;
+  FAIL("no FIFO " << name);
+  return -1;
+}
+
+}  // namespace
+
+// Two traversal units (raypipe_2trav.sv): tarb is general_arbitor 5 -> 2 ([0] pop, [1] restart,
+// [2] trav0, [3] trav1, [4] SINT), output o taking the first valid input from the shared pointer
+// that no earlier output took. The nine rays of the hand count above (one unit: ray 8 waits a
+// cycle at 87 and leaves at 216): tarb took one item in each of the 8 cycles 63 ... 84, so at 87
+// its pointer is 3; output 0 scans 3, 4 and takes SINT's ray 8, output 1 goes on 0, 1, 2 and takes
+// ray 0's node 1 from TRAV 0, which so reaches TRAV 1. Neither waits: ray 8 leaves at 87 + 128 =
+// 215. At 111 (16 cycles with a grant: pointer 1) ray 8's node 1 from TRAV 0 (input 2) and ray
+// 0's leaf from TRAV 1 (input 3) meet: output 0 takes input 2, output 1 input 3, again no wait. No
+// other offers meet, at tarb, larb or the list unit's leaf_max: every ray leaves at 191 + 3k, and
+// only ray 0's node 1 and leaf went through unit 1 (its tcache FIFO held one node at a time).
+TEST_CASE("raypipe timed model: two traversal units, hand-counted", "[raypipe_timed]") {
+  const KdImage image = layOutKd(handKdScene());
+  const KdRay a{{0.5f, 0.25f, 0.25f}, {1, 0, 0}, false};
+  std::vector<RaypipeCycleRay> nine;
+  for (uint32_t k = 0; k < 9; ++k) nine.push_back(RaypipeCycleRay{a, k});
+  RaypipeConfig two;
+  two.traversalUnits = 2;
+  RaypipeCycleOptions options;
+  options.recordTransfers = true;
+  const RaypipeCycleRun run = runRaypipeTimed(two, image, nine, options);
+  for (uint32_t k = 0; k < 9; ++k) CHECK(run.results[k].exitCycle == 191 + 3 * k);
+  CHECK(fifoPeak(run, "tarb_1") == 1);
+  CHECK(fifoPeak(run, "tcache_1") == 1);
+  CHECK(fifoPeak(run, "trav_leaf_1") == 1);
+  int64_t tcacheTakes = 0;  // ray 0's three nodes and ray k's: 27, over both units
+  for (const RaypipeTransfer& t : run.transfers) tcacheTakes += t.unit == std::string("tcache");
+  CHECK(tcacheTakes == 27);
+  // One unit: the reference's cycles, ray 8 a cycle late.
+  CHECK(runRaypipeTimed(RaypipeConfig{}, image, nine).results[8].exitCycle == 216);
+}
+
+// With two units every result equals the golden traversal's (and the one-unit run's), on scenes
+// where the units' outputs meet at tarb, larb, the shortstack's ports and the list unit's leaf_max
+// RAM; and a traversal-bound frame takes fewer cycles.
+TEST_CASE("raypipe timed model: two traversal units give the golden results", "[raypipe_timed]") {
+  RaypipeConfig one, two;
+  two.traversalUnits = 2;
+  const KdImage sphere = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+  const std::vector<RaypipeCycleRay> rays = mixedRays(sphere, 400, 2);
+  for (int depth : {1, 4}) {
+    one.shortStackDepth = two.shortStackDepth = depth;
+    const RaypipeCycleRun run = runRaypipeTimed(two, sphere, rays);
+    checkGolden(sphere, rays, two, run);
+    const RaypipeCycleRun single = runRaypipeTimed(one, sphere, rays);
+    for (size_t i = 0; i < rays.size(); ++i) {
+      INFO("ray " << i);
+      CHECK(run.results[i].primitive == single.results[i].primitive);
+      CHECK(floatBits(run.results[i].u) == floatBits(single.results[i].u));
+      CHECK(floatBits(run.results[i].v) == floatBits(single.results[i].v));
+      CHECK(run.results[i].counts.pushes == single.results[i].counts.pushes);
+    }
+    CHECK(run.frameCycles < single.frameCycles);
+  }
+  const KdImage frame = frameScene();
+  const RaypipeCycleRun small = runRaypipeTimed(two, frame, prgRays(1));
+  checkGolden(frame, prgRays(1), two, small);
+  CHECK(fifoPeak(small, "tcache_1") > 0);
+  RaypipeConfig shallow = two;  // small FIFOs: every stall path of the second unit
+  shallow.fifo.travLeaf = 1;
+  shallow.fifo.travMath = 14;
+  shallow.fifo.pixelBuffer = 1;
+  shallow.fifo.intList = shallow.fifo.intLarb = 45;
+  checkGolden(sphere, rays, shallow, runRaypipeTimed(shallow, sphere, rays));
 }
 
 }  // namespace rtu

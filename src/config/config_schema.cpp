@@ -533,9 +533,10 @@ RaypipeCacheKind parseRaypipeCache(const std::string& name) {
   return name == "set_associative" ? RaypipeCacheKind::SetAssociative : RaypipeCacheKind::BlockRam;
 }
 std::string divisionName(const Division& d) {
-  return d == Division::TowardZero ? "toward_zero" : "ieee";
+  return d == Division::TowardZero ? "toward_zero" : d == Division::Altfp ? "altfp_div" : "ieee";
 }
 Division parseDivision(const std::string& name) {
+  if (name == "altfp_div") return Division::Altfp;
   return name == "toward_zero" ? Division::TowardZero : Division::Ieee;
 }
 std::string tMaxClampName(const KdTMaxClamp& c) {
@@ -642,8 +643,9 @@ void addRaypipeSettings(std::vector<Setting>& schema) {
   constexpr unsigned model = kUseModel, arith = kUseArithmetic, camera = kUseCamera;
   constexpr double kMaxFifo = 1 << 20;
   std::vector<Setting> added;
-  added.push_back(integer("raypipe.traversal_units", "", "units", 1, 64, model,
-                          "ray pipe: traversal units (seed 001's final build: 1)",
+  added.push_back(integer("raypipe.traversal_units", "", "units", 1, 2, model,
+                          "ray pipe: traversal units (seed 001's final build: 1; its "
+                          "raypipe_2trav.sv: 2)",
                           [](C& c) -> int& { return c.raypipe.traversalUnits; }));
   added.push_back(integer("raypipe.short_stack_depth", "--short-stack-depth", "entries", 1, 7,
                           arith,
@@ -691,9 +693,9 @@ void addRaypipeSettings(std::vector<Setting>& schema) {
       [](C& c) -> RaypipeCacheKind& { return c.raypipe.cache; }, raypipeCacheName,
       parseRaypipeCache));
   added.push_back(choice(
-      "raypipe.division", "", {"ieee", "toward_zero"}, arith,
-      "ray pipe: the divider, ieee (correctly rounded) or toward_zero (bounds altfp_div's "
-      "one-ulp errors)",
+      "raypipe.division", "", {"ieee", "toward_zero", "altfp_div"}, arith,
+      "ray pipe: the divider, ieee (correctly rounded), altfp_div (the shipped divider's "
+      "algorithm, bit for bit) or toward_zero (bounds altfp_div's one-ulp errors)",
       [](C& c) -> Division& { return c.raypipe.division; }, divisionName, parseDivision));
   added.push_back(choice(
       "raypipe.tmax_clamp", "", {"as_built", "intended"}, arith,

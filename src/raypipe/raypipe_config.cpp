@@ -23,6 +23,8 @@ void atMost(const char* key, int value, int most, const char* why) {
 
 void RaypipeConfig::validate() const {
   atLeast("raypipe.traversal_units", traversalUnits, 1);
+  atMost("raypipe.traversal_units", traversalUnits, 2,
+         "the RTL's designs: t5.sv has 1, raypipe_2trav.sv 2; the shortstack has ports for 2");
   atLeast("raypipe.short_stack_depth", shortStackDepth, 1);
   atMost("raypipe.short_stack_depth", shortStackDepth, 7, "the ray's 3-bit ss_num");
   atLeast("raypipe.rays_in_flight", raysInFlight, 1);

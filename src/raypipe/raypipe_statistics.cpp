@@ -19,6 +19,14 @@ uint64_t fullRateInterval(const std::string& unit, const RaypipeConfig& config) 
   return 1;
 }
 
+// How many of a unit the pipe has: one tarb output, tcache and TRAV per traversal unit.
+uint64_t unitCopies(const std::string& unit, const RaypipeConfig& config) {
+  for (RaypipeUnit u : {RaypipeUnit::Tarb, RaypipeUnit::Tcache, RaypipeUnit::Trav,
+                        RaypipeUnit::TravMath, RaypipeUnit::TravDecide})
+    if (unit == raypipeUnitName(u)) return counted(config.traversalUnits);
+  return 1;
+}
+
 // The first unit of the highest utilisation, in the pipe's order.
 const RaypipeUnitStatistics* busiest(const RaypipeStatistics& s) {
   const RaypipeUnitStatistics* best = nullptr;
@@ -50,8 +58,8 @@ RaypipeStatistics RaypipeStatistics::of(const RaypipeCycleRun& run, const Raypip
   s.writerWaits = counted(run.writerWaits);
   s.staleListHits = counted(run.staleListHits);
   for (const RaypipeUnitActivity& unit : run.units)
-    s.units.push_back(
-        {unit.unit, counted(unit.busy), counted(unit.stall), fullRateInterval(unit.unit, config)});
+    s.units.push_back({unit.unit, counted(unit.busy), counted(unit.stall),
+                       fullRateInterval(unit.unit, config), unitCopies(unit.unit, config)});
   for (const RaypipeFifoPeak& fifo : run.fifos)
     s.fifos.push_back({fifo.fifo, counted(fifo.depth), counted(fifo.peak)});
   s.hostSeconds = run.hostSeconds;
@@ -70,11 +78,11 @@ double RaypipeStatistics::raysPerSecond() const {
 }
 
 double RaypipeStatistics::utilisation(const RaypipeUnitStatistics& unit) const {
-  return ratio(unit.busy * unit.interval, totalCycles);
+  return ratio(unit.busy * unit.interval, unit.copies * totalCycles);
 }
 
 double RaypipeStatistics::heldUtilisation(const RaypipeUnitStatistics& unit) const {
-  return ratio((unit.busy + unit.stall) * unit.interval, totalCycles);
+  return ratio((unit.busy + unit.stall) * unit.interval, unit.copies * totalCycles);
 }
 
 // The SRAM writer held a pixel (took it, or waited for the VGA reader) in most cycles of the frame
@@ -118,7 +126,12 @@ const StatisticGroup<RaypipeUnitStatistics>& RaypipeUnitStatistics::declaration(
           .setting(Statistic("interval", "cycles",
                              "cycles between two items at its full rate: latency.prg_interval, "
                              "latency.sint_interval, 1 for the others"),
-                   &U::interval);
+                   &U::interval)
+          .setting(Statistic("copies", "units",
+                             "how many of it the pipe has (busy and stall are their sum): "
+                             "raypipe.traversal_units for tarb, tcache, trav, trav_math and "
+                             "trav_decide, 1 for the others"),
+                   &U::copies);
   return group;
 }
 
@@ -138,7 +151,7 @@ const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
   static const StatisticGroup<Unit> unitLayout =
       StatisticGroup<Unit>("a unit of the ray pipe")
           .own<S, RaypipeUnitStatistics>()
-          .derived(Statistic("utilisation", "", "busy · interval / total_cycles"),
+          .derived(Statistic("utilisation", "", "busy · interval / (copies · total_cycles)"),
                    [](const Unit& u) { return u.whole.utilisation(u.values); });
   static const StatisticGroup<S> group =
       StatisticGroup<S>(

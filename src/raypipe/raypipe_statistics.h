@@ -19,11 +19,14 @@
 namespace rtu {
 
 // One unit's activity (RaypipeUnitActivity) with the cycles between two items at its full rate:
-// the PRG's and SINT's issue intervals, 1 for every other unit.
+// the PRG's and SINT's issue intervals, 1 for every other unit; and how many of it the pipe has
+// (its busy and stall cycles are their sum): raypipe.traversal_units for tarb's outputs, tcache,
+// trav, trav_math and trav_decide, 1 for every other unit.
 struct RaypipeUnitStatistics {
   std::string unit;
   uint64_t busy = 0, stall = 0;
   uint64_t interval = 1;
+  uint64_t copies = 1;
 
   static const StatisticGroup<RaypipeUnitStatistics>& declaration();
 };
@@ -56,10 +59,10 @@ struct RaypipeStatistics {
   double frameMilliseconds() const;
   double framesPerSecond() const;
   double raysPerSecond() const;
-  // A unit's share of its full rate over the frame: busy · interval / total cycles.
+  // A unit's share of its full rate over the frame: busy · interval / (copies · total cycles).
   double utilisation(const RaypipeUnitStatistics& unit) const;
   // A unit's share of its full rate over the frame busy or offered an item it could not take
-  // (held back by what follows it): (busy + stall) · interval / total cycles.
+  // (held back by what follows it): (busy + stall) · interval / (copies · total cycles).
   double heldUtilisation(const RaypipeUnitStatistics& unit) const;
   // The VGA reader's window bounds the frame: no unit reaches kSaturated by its own work, and the
   // SRAM writer took a pixel or waited for the reader with one in kSaturated of the cycles (its

@@ -9,17 +9,21 @@
 //
 // Division: `Ieee` is correctly rounded. The shipped 6-cycle divider (altfp_div) is not: simulating
 // its netlist, 317 of 20,000 random quotients (1.6 %) came out one ulp smaller in magnitude
-// (specs/001 §2.0, experiment A.1). `TowardZero` truncates the exact quotient instead: it errs in
-// the same direction, at most one ulp, but in about half of all quotients, so it bounds the
-// divider's effect rather than modelling it (the netlist's algorithm is plan commit 12).
+// (specs/001 §2.0, experiment A.1). `Altfp` is that divider's own algorithm (altfp_div.h), bit for
+// bit, flags included (its division_by_zero is b zero with a finite and nonzero; 0 / 0 is NaN).
+// `TowardZero` truncates the exact quotient instead: it errs in the same direction, at most one
+// ulp, but in about half of all quotients, so it bounds the divider's effect.
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
+#include "base/float_bits.h"
+#include "kinds/kd/altfp_div.h"
+
 namespace rtu {
 
-enum class Division : uint8_t { Ieee, TowardZero };
+enum class Division : uint8_t { Ieee, TowardZero, Altfp };
 
 // x with a denormal replaced by a zero of its sign.
 inline float flushToZero(float x) {
@@ -40,6 +44,10 @@ struct Quotient {
 };
 
 inline Quotient div32(float a, float b, Division division) {
+  if (division == Division::Altfp) {  // flushes its inputs and result itself
+    const AltfpQuotient q = altfpDivide(floatBits(a), floatBits(b));
+    return Quotient{bitsToFloat(q.bits), q.divisionByZero};
+  }
   a = flushToZero(a);
   b = flushToZero(b);
   float q = a / b;

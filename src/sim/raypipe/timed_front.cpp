@@ -11,13 +11,15 @@ namespace rtu {
 namespace raypipe_timed {
 
 void TimedPipe::sceneIntersection() {
-  if (c_.tarb.accepted(3, now_)) c_.sintTarb.pop(now_);
+  const int sintInput = 2 + static_cast<int>(c_.trav.size());  // tarb's last input
+  if (c_.tarb.accepted(sintInput, now_)) c_.sintTarb.pop(now_);
   if (c_.shaderArb.accepted(2, now_)) c_.sintShader.pop(now_);
   if (!c_.sintPipe.any() && !c_.sintTarb.any() && !c_.sintSs.any() && !c_.sintShader.any()) {
     sintUsStall_ = false;
     return;
   }
-  const bool dsStall = c_.tarb.stallUs(3, now_) || sintToSsStall_ || c_.shaderArb.stallUs(2, now_);
+  const bool dsStall = c_.tarb.stallUs(sintInput, now_) || sintToSsStall_ ||
+                       c_.shaderArb.stallUs(2, now_);
   const int left =
       std::min({c_.sintTarb.numLeft(now_), c_.sintSs.numLeft(now_), c_.sintShader.numLeft(now_)});
   sintUsStall_ = c_.sintPipe.usStall(now_, dsStall, left);

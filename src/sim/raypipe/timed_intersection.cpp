@@ -1,8 +1,8 @@
 // The timed model of seed 001's ray pipe: larb, lcache, icache, raystore #1 and INT (int_unit.sv,
 // int_math.sv; simple_cache.sv, raystore_simple.sv). Timing rules: larb as rotating_arbiter.h
-// ([0] TRAV's leaf, [1] INT's next triangle); three 2-cycle reads in a row, each into a 3-entry
-// FIFO; INT a 45-cycle pipe into the list FIFO (hits and last triangles) and the larb FIFO (all
-// but the last), its credit their least free space (or the shadow FIFO's).
+// ([i] traversal unit i's leaf, then INT's next triangle); three 2-cycle reads in a row, each into
+// a 3-entry FIFO; INT a 45-cycle pipe into the list FIFO (hits and last triangles) and the larb
+// FIFO (all but the last), its credit their least free space (or the shadow FIFO's).
 #include <algorithm>
 
 #include "sim/raypipe/timed_pipe.h"
@@ -11,15 +11,21 @@ namespace rtu {
 namespace raypipe_timed {
 
 void TimedPipe::intersection() {
-  const std::array<const RayToken*, 2> offers = {
-      c_.travLarb.valid(now_) ? &c_.travLarb.value(now_) : nullptr,
-      c_.intLarb.shown(now_) ? &c_.intLarb.front() : nullptr};
-  if (offers[0] || offers[1] || c_.larb.holds())
-    if (const RayToken* g = c_.larb.arbitrate(now_, offers)) busy(Unit::Larb, *g);
-  if (c_.larb.accepted(1, now_)) c_.intLarb.pop(now_);
+  const int units = static_cast<int>(c_.trav.size());  // INT is larb's last input
+  RotatingArbiter<RayToken>::Offers offers{};
+  bool any = c_.larb.holds();
+  for (int i = 0; i < units; ++i) {
+    Register& r = c_.trav[static_cast<size_t>(i)].travLarb;
+    offers[static_cast<size_t>(i)] = r.valid(now_) ? &r.value(now_) : nullptr;
+  }
+  offers[static_cast<size_t>(units)] = c_.intLarb.shown(now_) ? &c_.intLarb.front() : nullptr;
+  for (const RayToken* o : offers) any = any || o;
+  if (any)
+    if (const RayToken* g = c_.larb.arbitrate(now_, offers)[0]) busy(Unit::Larb, *g);
+  if (c_.larb.accepted(units, now_)) c_.intLarb.pop(now_);
   const int minLeft =
       std::min({c_.intList.numLeft(now_), c_.intLarb.numLeft(now_), c_.intShaderNumLeft});
-  const bool intDsStall = c_.larb.stallUs(1, now_) || intToListStall_;
+  const bool intDsStall = c_.larb.stallUs(units, now_) || intToListStall_;
   const bool intUsStall = c_.intPipe.usStall(now_, intDsStall, minLeft);
   if (c_.intPipe.exiting(now_)) {
     const RayToken t = c_.intPipe.take(now_);

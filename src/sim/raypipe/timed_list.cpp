@@ -72,6 +72,10 @@ void TimedPipe::listRecord(bool dsStall) {
     return;
   }
   const RayToken t = c_.intList.pop(now_);
+  if (t.last && c_.leafReads[0] != now_) {  // leaf_max is read in the next cycle
+    c_.leafReads[1] = c_.leafReads[0];
+    c_.leafReads[0] = now_;
+  }
   c_.listPipe.accept(now_, t);
   busy(Unit::List, t);
 }

@@ -61,16 +61,19 @@ void TimedPipe::wireCalendar() {
   c_.sintTarb.bookOn(k, kSint | kTrav);
   c_.sintSs.bookOn(k, kSint | kStack);
   c_.sintShader.bookOn(k, kSint | kShader);
-  for (Fifo* f : {&c_.tarb.out(), &c_.tcache.fifo, &c_.rs0.fifo, &c_.leafFifo, &c_.travFifo})
-    f->bookOn(k, kTrav);
-  for (auto* p : {&c_.tcache.pipe, &c_.rs0.pipe, &c_.travPipe}) p->bookOn(k, kTrav);
-  c_.travTarb.bookOn(k, kTrav);
-  c_.travList.bookOn(k, kTrav);
-  c_.travSs.bookOn(k, kTrav | kStack);
-  c_.travLarb.bookOn(k, kTrav | kInt);
+  for (size_t i = 0; i < c_.trav.size(); ++i) {
+    TravUnit& u = c_.trav[i];
+    c_.tarb.out(static_cast<int>(i)).bookOn(k, kTrav);
+    for (Fifo* f : {&u.tcache.fifo, &u.rs0.fifo, &u.leafFifo, &u.travFifo}) f->bookOn(k, kTrav);
+    for (auto* p : {&u.tcache.pipe, &u.rs0.pipe, &u.travPipe}) p->bookOn(k, kTrav);
+    u.travTarb.bookOn(k, kTrav);
+    u.travList.bookOn(k, kTrav);
+    u.travSs.bookOn(k, kTrav | kStack);
+    u.travLarb.bookOn(k, kTrav | kInt);
+    c_.stackWrite[i].bookOn(k, kStack);
+  }
   for (size_t i = 0; i < 3; ++i)
     for (Fifo* f : {&c_.stackRead[i], &c_.restRead[i], &c_.restWrite[i]}) f->bookOn(k, kStack);
-  c_.stackWrite.bookOn(k, kStack);
   c_.stackPipe.bookOn(k, kStack);
   c_.restPipe.bookOn(k, kStack);
   c_.stackFifo.bookOn(k, kStack | kTrav);
@@ -130,10 +133,13 @@ void TimedPipe::recordTransfer(Unit u, const RayToken& t, bool hasRay) {
 
 void TimedPipe::step() {
   // every register read once (a valid one books its readers for the next cycle)
-  c_.travTarb.valid(now_);
-  c_.travLarb.valid(now_);
-  c_.travList.valid(now_);
-  travToSsStall_ = travToSsStall();
+  for (size_t i = 0; i < c_.trav.size(); ++i) {
+    TravUnit& u = c_.trav[i];
+    u.travTarb.valid(now_);
+    u.travLarb.valid(now_);
+    u.travList.valid(now_);
+    travToSsStall_[i] = travToSsStall(i);
+  }
   listToSsStall_ = listToSsStall();
   sintToSsStall_ = c_.sintSs.shown(now_) && c_.restWrite[2].full(now_);
   listToRsStall_ = intToListStall_ = sintUsStall_ = false;  // a group not called: low
@@ -184,9 +190,6 @@ RaypipeCycleRun TimedPipe::run() {
 
 void checkRaypipeTimedTakes(const RaypipeConfig& config) {
   config.validate();
-  if (config.traversalUnits != 1)
-    throw std::invalid_argument(
-        "raypipe.traversal_units: the timed model models one traversal unit (t5.sv)");
   if (config.cache != RaypipeCacheKind::BlockRam)
     throw std::invalid_argument("raypipe.cache: the timed model models the block RAMs");
 }

@@ -11,6 +11,7 @@
 // the group).
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -82,17 +83,21 @@ class TimedPipe {
   void listRecord(bool dsStall);
   void intersection();
   void traversal();
-  void travDecision(bool toTarbStall);
-  void travMath(bool pipeDsStall);
-  void travInputAndLeaves(bool rs0UsStall, bool toLarbStall);
+  std::array<bool, 2> leafMaxStalls();
+  void travDecision(TravUnit& u, int i, bool toTarbStall);
+  void travMath(TravUnit& u, int i, bool pipeDsStall, bool toListStall);
+  bool travInput(TravUnit& u, bool rs0UsStall);
+  void travLeaves(TravUnit& u, bool toLarbStall, bool toListStall);
+  void travCache(TravUnit& u, int i, bool tcToTravStall);
   void shortStack();
   void shortStackInputs();
   void stackPath();
   void restartPath();
   void restartWrites(bool restReading);
+  void stackWrites(bool reading, uint32_t readRow);
   void sceneIntersection();
   void shaderIssueAndPrg();
-  bool travToSsStall();
+  bool travToSsStall(size_t i);
   bool listToSsStall();
 
   const RaypipeConfig& config_;
@@ -121,7 +126,8 @@ class TimedPipe {
   int64_t staleListHits_ = 0;
   // The stalls every group reads, from registered state at the cycle's start or from a group
   // visited earlier in the cycle.
-  bool travToSsStall_ = false, listToSsStall_ = false, sintToSsStall_ = false;
+  std::array<bool, 2> travToSsStall_{};  // per traversal unit
+  bool listToSsStall_ = false, sintToSsStall_ = false;
   bool listToRsStall_ = false, intToListStall_ = false, sintUsStall_ = false;
 };
 

@@ -15,12 +15,12 @@ namespace rtu {
 namespace raypipe_timed {
 
 void TimedPipe::shaderReturn() {
-  const std::array<const RayToken*, 4> offers = {
+  const RotatingArbiter<RayToken>::Offers offers = {
       c_.rs2.fifo.shown(now_) ? &c_.rs2.fifo.front() : nullptr, nullptr,
       c_.sintShader.shown(now_) ? &c_.sintShader.front() : nullptr,
       c_.missFifo.shown(now_) ? &c_.missFifo.front() : nullptr};
   if (offers[0] || offers[2] || offers[3] || c_.shaderArb.holds())
-    if (const RayToken* g = c_.shaderArb.arbitrate(now_, offers)) busy(Unit::ShaderArb, *g);
+    if (const RayToken* g = c_.shaderArb.arbitrate(now_, offers)[0]) busy(Unit::ShaderArb, *g);
   const bool pbFull = c_.pixelBuffer.full(now_);
   const bool dataShown = c_.shaderData.shown(now_);
   const bool pipeUsStall =

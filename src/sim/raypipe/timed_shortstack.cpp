@@ -1,10 +1,10 @@
-// The timed model of seed 001's ray pipe: the shortstack (shortstack.sv with one traversal unit).
-// Timing rules: TRAV's request, the list unit's miss and SINT's restart record each go into a
-// 3-deep request or write FIFO and stall on its `full`; the stack path reads its three request
-// FIFOs round robin (the pointer turns whenever any is valid and its pipe does not stall), a
-// 2-cycle read into a 3-entry FIFO to tarb[0]; the restart path likewise, comparing t_min with
+// The timed model of seed 001's ray pipe: the shortstack (shortstack.sv, ports for two traversal
+// units). Timing rules: each TRAV's request, the list unit's miss and SINT's restart record each go
+// into a 3-deep request or write FIFO and stall on its `full`; the stack path reads its three
+// request FIFOs round robin (the pointer turns whenever any is valid and its pipe does not stall),
+// a 2-cycle read into a 3-entry FIFO to tarb[0]; the restart path likewise, comparing t_min with
 // t_max_scene, a 3-cycle pipe into the miss FIFO (to the shader) or the restart FIFO (to tarb[1]);
-// the stack write FIFO writes a row every cycle it holds one; the restart RAM takes its three
+// the stack write FIFOs (one per TRAV) write as stackWrites says; the restart RAM takes its three
 // write FIFOs by the RTL's choice, a restart read taking one port.
 #include <algorithm>
 #include <stdexcept>
@@ -41,13 +41,15 @@ int countWaiting(std::array<Fifo, 3>& fifos, int64_t now) {
 
 }  // namespace
 
-bool TimedPipe::travToSsStall() {
-  if (!c_.travSs.valid(now_)) return false;
-  const RayToken& f = c_.travSs.value(now_);
-  if (f.popReq) return f.num == 0 ? c_.restRead[0].full(now_) : c_.stackRead[0].full(now_);
-  if (f.pushReq && f.restReq) return c_.stackWrite.full(now_) || c_.restWrite[0].full(now_);
-  if (f.pushReq) return c_.stackWrite.full(now_);
-  return c_.restWrite[0].full(now_);  // max-scene
+// Traversal unit i's request: into the request and write FIFOs of its port i.
+bool TimedPipe::travToSsStall(size_t i) {
+  Register& r = c_.trav[i].travSs;
+  if (!r.valid(now_)) return false;
+  const RayToken& f = r.value(now_);
+  if (f.popReq) return f.num == 0 ? c_.restRead[i].full(now_) : c_.stackRead[i].full(now_);
+  if (f.pushReq && f.restReq) return c_.stackWrite[i].full(now_) || c_.restWrite[i].full(now_);
+  if (f.pushReq) return c_.stackWrite[i].full(now_);
+  return c_.restWrite[i].full(now_);  // max-scene
 }
 
 bool TimedPipe::listToSsStall() {
@@ -74,11 +76,13 @@ void TimedPipe::shortStackInputs() {
     r.num -= 1;
     c_.stackRead[static_cast<size_t>(port)].push(now_, r);
   };
-  if (c_.travSs.valid(now_) && !travToSsStall_) {
-    const RayToken& f = c_.travSs.value(now_);
-    if (f.popReq) popRequest(f, f.tMax, 0);  // the new t_min is TRAV's t_max
-    if (f.pushReq) c_.stackWrite.push(now_, f);
-    if (f.restReq || f.maxsceneReq) c_.restWrite[0].push(now_, f);
+  for (size_t i = 0; i < c_.trav.size(); ++i) {
+    Register& r = c_.trav[i].travSs;
+    if (!r.valid(now_) || travToSsStall_[i]) continue;
+    const RayToken& f = r.value(now_);
+    if (f.popReq) popRequest(f, f.tMax, static_cast<int>(i));  // the new t_min is TRAV's t_max
+    if (f.pushReq) c_.stackWrite[i].push(now_, f);
+    if (f.restReq || f.maxsceneReq) c_.restWrite[i].push(now_, f);
   }
   if (c_.toSs.valid(now_) && !listToSsStall_)
     popRequest(c_.toSs.value(now_), c_.toSs.value(now_).t, 2);  // t_max_leaf
@@ -92,27 +96,49 @@ void TimedPipe::shortStackInputs() {
 
 void TimedPipe::stackPath() {
   if (c_.tarb.accepted(0, now_)) c_.stackFifo.pop(now_);
+  bool reading = false;
+  uint32_t readRow = 0;
   const bool anyRead = c_.stackRead[0].any() || c_.stackRead[1].any() || c_.stackRead[2].any();
   if (anyRead || c_.stackPipe.any()) {
     const bool usStall =
         c_.stackPipe.usStall(now_, c_.tarb.stallUs(0, now_), c_.stackFifo.numLeft(now_));
     if (c_.stackPipe.exiting(now_)) c_.stackFifo.push(now_, c_.stackPipe.take(now_));
     const int choice = roundRobin(c_.stackRead, c_.stackReadPointer, now_, !usStall);
-    if (choice >= 0) {
+    reading = choice >= 0;
+    if (reading) {
       RayToken t = c_.stackRead[static_cast<size_t>(choice)].pop(now_);
       const StackRow& row = stackRow(t.ray, t.wptr);
       t.node = row.node;
       t.tMax = row.tMax;
       t.search = false;
+      readRow = t.wptr;
       c_.stackPipe.accept(now_, t);
       busy(Unit::StackRead, t);
     } else {
       stalledInputs(Unit::StackRead, countWaiting(c_.stackRead, now_));
     }
   }
-  // one traversal unit: the write FIFO writes its row whenever it holds one
-  if (c_.stackWrite.shown(now_)) {
-    const RayToken w = c_.stackWrite.pop(now_);
+  stackWrites(reading, readRow);
+}
+
+// The stack RAMs' writes (shortstack.sv): the write FIFO the pointer names writes whenever it holds
+// a row; the other too, unless both write the row the read takes this cycle; the pointer turns
+// whenever either holds one. With one traversal unit its FIFO writes every cycle it holds a row.
+void TimedPipe::stackWrites(bool reading, uint32_t readRow) {
+  std::array<bool, 2> valid{};
+  for (size_t i = 0; i < c_.stackWrite.size(); ++i) valid[i] = c_.stackWrite[i].shown(now_);
+  if (!valid[0] && !valid[1]) return;
+  const size_t p = static_cast<size_t>(c_.stackWritePointer), other = 1 - p;
+  std::array<bool, 2> choice{};
+  choice[p] = valid[p];
+  const bool conflict = valid[0] && valid[1] && reading &&
+                        c_.stackWrite[0].front().wptr == c_.stackWrite[1].front().wptr &&
+                        readRow == c_.stackWrite[0].front().wptr;
+  choice[other] = valid[other] && !conflict;
+  c_.stackWritePointer = static_cast<int>(other);
+  for (size_t i = 0; i < 2; ++i) {
+    if (!choice[i]) continue;
+    const RayToken w = c_.stackWrite[i].pop(now_);
     stackRow(w.ray, w.wptr) = StackRow{w.pushNode, w.tMax};
   }
 }

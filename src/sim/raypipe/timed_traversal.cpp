@@ -50,35 +50,60 @@ Decision decide(const RayToken& f, uint32_t depth) {
 }  // namespace
 
 void TimedPipe::traversal() {
-  const std::array<const RayToken*, 4> offers = {
-      c_.stackFifo.shown(now_) ? &c_.stackFifo.front() : nullptr,
-      c_.notMissFifo.shown(now_) ? &c_.notMissFifo.front() : nullptr,
-      c_.travTarb.valid(now_) ? &c_.travTarb.value(now_) : nullptr,
-      c_.sintTarb.shown(now_) ? &c_.sintTarb.front() : nullptr};
-  if (offers[0] || offers[1] || offers[2] || offers[3] || c_.tarb.holds())
-    if (const RayToken* g = c_.tarb.arbitrate(now_, offers)) busy(Unit::Tarb, *g);
-  const bool toTarbStall = c_.tarb.stallUs(2, now_);
-  travDecision(toTarbStall);
-  const bool pipeDsStall = (c_.travSs.valid(now_) && travToSsStall_) ||
-                           (c_.travTarb.valid(now_) && toTarbStall);
-  travMath(pipeDsStall);
+  const int units = static_cast<int>(c_.trav.size());
+  RotatingArbiter<RayToken>::Offers offers{};
+  offers[0] = c_.stackFifo.shown(now_) ? &c_.stackFifo.front() : nullptr;
+  offers[1] = c_.notMissFifo.shown(now_) ? &c_.notMissFifo.front() : nullptr;
+  for (int i = 0; i < units; ++i) {
+    Register& r = c_.trav[static_cast<size_t>(i)].travTarb;
+    offers[static_cast<size_t>(2 + i)] = r.valid(now_) ? &r.value(now_) : nullptr;
+  }
+  offers[static_cast<size_t>(2 + units)] = c_.sintTarb.shown(now_) ? &c_.sintTarb.front() : nullptr;
+  bool any = c_.tarb.holds();
+  for (const RayToken* o : offers) any = any || o;
+  if (any)
+    for (const RayToken* g : c_.tarb.arbitrate(now_, offers))
+      if (g) busy(Unit::Tarb, *g);
+  const std::array<bool, 2> toListStall = leafMaxStalls();
+  for (int i = 0; i < units; ++i) {
+    TravUnit& u = c_.trav[static_cast<size_t>(i)];
+    const bool toTarbStall = c_.tarb.stallUs(2 + i, now_);
+    travDecision(u, i, toTarbStall);
+    const bool pipeDsStall = (u.travSs.valid(now_) && travToSsStall_[static_cast<size_t>(i)]) ||
+                             (u.travTarb.valid(now_) && toTarbStall);
+    travMath(u, i, pipeDsStall, toListStall[static_cast<size_t>(i)]);
+  }
 }
 
-void TimedPipe::travDecision(bool toTarbStall) {
-  const bool ssHeld = c_.travSs.valid(now_) && travToSsStall_;
-  const bool tarbHeld = c_.travTarb.valid(now_) && toTarbStall;
-  if (!c_.travFifo.shown(now_)) {
-    if (c_.travSs.valid(now_) && !ssHeld) c_.travSs.set(now_, false, nullptr);
-    if (c_.travTarb.valid(now_) && !tarbHeld) c_.travTarb.set(now_, false, nullptr);
+// The list unit's leaf_max RAM (list_unit.sv): port A is its own read in the cycle after a leaf's
+// last triangle entered it, else unit 0's write; port B the other write. When both units write and
+// the list reads, the unit the pointer rrp names waits (rrp 0: unit 1) and rrp turns.
+std::array<bool, 2> TimedPipe::leafMaxStalls() {
+  if (c_.trav.size() < 2) return {false, false};
+  const bool read = c_.leafReads[0] == now_ - 1 || c_.leafReads[1] == now_ - 1;
+  const bool contend = read && c_.trav[0].travList.valid(now_) && c_.trav[1].travList.valid(now_);
+  if (!contend) return {false, false};
+  const bool rrp = c_.leafMaxPointer != 0;
+  c_.leafMaxPointer ^= 1;
+  return {rrp, !rrp};
+}
+
+void TimedPipe::travDecision(TravUnit& u, int i, bool toTarbStall) {
+  const bool toSsStall = travToSsStall_[static_cast<size_t>(i)];
+  const bool ssHeld = u.travSs.valid(now_) && toSsStall;
+  const bool tarbHeld = u.travTarb.valid(now_) && toTarbStall;
+  if (!u.travFifo.shown(now_)) {
+    if (u.travSs.valid(now_) && !ssHeld) u.travSs.set(now_, false, nullptr);
+    if (u.travTarb.valid(now_) && !tarbHeld) u.travTarb.set(now_, false, nullptr);
     return;
   }
   const uint32_t depth = static_cast<uint32_t>(config_.shortStackDepth);
-  const Decision d = decide(c_.travFifo.front(), depth);
+  const Decision d = decide(u.travFifo.front(), depth);
   bool re = true;
-  if (d.toSs) re = re && !travToSsStall_;
+  if (d.toSs) re = re && !toSsStall;
   if (d.toTarb) re = re && !toTarbStall;
-  if (!ssHeld) c_.travSs.set(now_, d.toSs && re, &d.ss);
-  if (!tarbHeld) c_.travTarb.set(now_, d.toTarb && re, &d.tarb);
+  if (!ssHeld) u.travSs.set(now_, d.toSs && re, &d.ss);
+  if (!tarbHeld) u.travTarb.set(now_, d.toTarb && re, &d.tarb);
   if (!re) {
     stall(Unit::TravDecide);
     return;
@@ -88,86 +113,96 @@ void TimedPipe::travDecision(bool toTarbStall) {
     ++r.counts.pushes;
     if (d.ss.num == depth) ++r.counts.dropped;
   }
-  c_.travFifo.pop(now_);
+  u.travFifo.pop(now_);
   busy(Unit::TravDecide, d.ss);
 }
 
 // raystore #0 -> the math pipe (14) beside its FIFO; then TRAV's input and leaf outputs.
-void TimedPipe::travMath(bool pipeDsStall) {
-  const bool rsToTravStall = c_.travPipe.usStall(now_, pipeDsStall, c_.travFifo.numLeft(now_));
-  if (c_.travPipe.exiting(now_)) c_.travFifo.push(now_, c_.travPipe.take(now_));
-  if (c_.rs0.fifo.shown(now_)) {
+void TimedPipe::travMath(TravUnit& u, int i, bool pipeDsStall, bool toListStall) {
+  const bool rsToTravStall = u.travPipe.usStall(now_, pipeDsStall, u.travFifo.numLeft(now_));
+  if (u.travPipe.exiting(now_)) u.travFifo.push(now_, u.travPipe.take(now_));
+  if (u.rs0.fifo.shown(now_)) {
     if (rsToTravStall) {
       stall(Unit::TravMath);
     } else {
-      RayToken t = c_.rs0.fifo.pop(now_);
+      RayToken t = u.rs0.fifo.pop(now_);
       t.plane = planeTest(rays_[record(t.ray).index].ray, t.nodeData.axis,
                           bitsToFloat(t.nodeData.splitBits), t.tMin, t.tMax, config_.division);
-      c_.travPipe.accept(now_, t);
+      u.travPipe.accept(now_, t);
       busy(Unit::TravMath, t);
     }
   }
-  const bool rs0UsStall = c_.rs0.usStall(now_, rsToTravStall);
-  if (c_.rs0.pipe.exiting(now_)) c_.rs0.fifo.push(now_, c_.rs0.pipe.take(now_));
-  travInputAndLeaves(rs0UsStall, c_.larb.stallUs(0, now_));
+  const bool rs0UsStall = u.rs0.usStall(now_, rsToTravStall);
+  if (u.rs0.pipe.exiting(now_)) u.rs0.fifo.push(now_, u.rs0.pipe.take(now_));
+  const bool tcToTravStall = travInput(u, rs0UsStall);
+  travLeaves(u, c_.larb.stallUs(i, now_), toListStall);
+  travCache(u, i, tcToTravStall);
 }
 
-void TimedPipe::travInputAndLeaves(bool rs0UsStall, bool toLarbStall) {
-  bool tcToTravStall = false;
-  if (c_.tcache.fifo.shown(now_)) {
-    const RayToken& f = c_.tcache.fifo.front();
-    const bool leaf = f.nodeData.leaf;
-    tcToTravStall = leaf ? c_.leafFifo.full(now_) : rs0UsStall;
-    if (tcToTravStall) {
-      stall(Unit::Trav);
-    } else {
-      RayToken t = c_.tcache.fifo.pop(now_);
-      RayRecord& r = record(t.ray);
-      ++r.counts.nodes;
-      if (leaf) {
-        ++r.counts.leaves;
-        if (t.nodeData.count == 0)
-          throw std::logic_error("raypipe timed model: a leaf with no triangle reached");
-        t.lindex = t.nodeData.listIndex;
-        t.lnum = t.nodeData.count;
-        c_.leafFifo.push(now_, t);
-      } else {
-        c_.rs0.pipe.accept(now_, t);
-      }
-      busy(Unit::Trav, t);
-    }
+// TRAV's input from tcache: a leaf into the leaf FIFO, an interior node to raystore #0; returns
+// its stall.
+bool TimedPipe::travInput(TravUnit& u, bool rs0UsStall) {
+  if (!u.tcache.fifo.shown(now_)) return false;
+  const RayToken& f = u.tcache.fifo.front();
+  const bool leaf = f.nodeData.leaf;
+  if (leaf ? u.leafFifo.full(now_) : rs0UsStall) {
+    stall(Unit::Trav);
+    return true;
   }
-  // the leaf FIFO's registered outputs to larb and to the list unit's leaf_max
-  if (c_.travList.valid(now_) || c_.travLarb.valid(now_) || c_.leafFifo.any()) {
-    if (c_.travList.valid(now_))
-      record(c_.travList.value(now_).ray).leafMax = c_.travList.value(now_).tMax;
-    const bool larbHeld = toLarbStall && c_.travLarb.valid(now_);
-    const bool leafRe = c_.leafFifo.shown(now_) && !larbHeld;
-    if (leafRe) {
-      const RayToken t = c_.leafFifo.pop(now_);
-      c_.travLarb.set(now_, true, &t);
-      c_.travList.set(now_, true, &t);
-    } else {
-      if (!larbHeld && c_.travLarb.valid(now_)) c_.travLarb.set(now_, false, nullptr);
-      if (c_.travList.valid(now_)) c_.travList.set(now_, false, nullptr);
-    }
+  RayToken t = u.tcache.fifo.pop(now_);
+  RayRecord& r = record(t.ray);
+  ++r.counts.nodes;
+  if (leaf) {
+    ++r.counts.leaves;
+    if (t.nodeData.count == 0)
+      throw std::logic_error("raypipe timed model: a leaf with no triangle reached");
+    t.lindex = t.nodeData.listIndex;
+    t.lnum = t.nodeData.count;
+    u.leafFifo.push(now_, t);
+  } else {
+    u.rs0.pipe.accept(now_, t);
   }
-  // tcache: a 2-cycle read of the node into its FIFO
-  const bool tcUsStall = c_.tcache.usStall(now_, tcToTravStall);
-  if (c_.tcache.pipe.exiting(now_)) {
-    RayToken t = c_.tcache.pipe.take(now_);
+  busy(Unit::Trav, t);
+  return false;
+}
+
+// The leaf FIFO's registered outputs to larb and to the list unit's leaf_max: its head is read
+// when neither holds an item its receiver stalls.
+void TimedPipe::travLeaves(TravUnit& u, bool toLarbStall, bool toListStall) {
+  if (!u.travList.valid(now_) && !u.travLarb.valid(now_) && !u.leafFifo.any()) return;
+  const bool listHeld = toListStall && u.travList.valid(now_);
+  if (u.travList.valid(now_) && !listHeld)
+    record(u.travList.value(now_).ray).leafMax = u.travList.value(now_).tMax;
+  const bool larbHeld = toLarbStall && u.travLarb.valid(now_);
+  const bool leafRe = u.leafFifo.shown(now_) && !larbHeld && !listHeld;
+  if (leafRe) {
+    const RayToken t = u.leafFifo.pop(now_);
+    u.travLarb.set(now_, true, &t);
+    u.travList.set(now_, true, &t);
+    return;
+  }
+  if (!larbHeld && u.travLarb.valid(now_)) u.travLarb.set(now_, false, nullptr);
+  if (!listHeld && u.travList.valid(now_)) u.travList.set(now_, false, nullptr);
+}
+
+// tcache: a 2-cycle read of the node into its FIFO, from tarb's output `i`.
+void TimedPipe::travCache(TravUnit& u, int i, bool tcToTravStall) {
+  const bool tcUsStall = u.tcache.usStall(now_, tcToTravStall);
+  if (u.tcache.pipe.exiting(now_)) {
+    RayToken t = u.tcache.pipe.take(now_);
     const uint32_t address = sections_.nodes + t.node * kKdNodeWords;
     const uint32_t words[kKdNodeWords] = {memory_.read(address), memory_.read(address + 1)};
     t.nodeData = decodeKdNode(words);
-    c_.tcache.fifo.push(now_, t);
+    u.tcache.fifo.push(now_, t);
   }
-  if (!c_.tarb.out().shown(now_)) return;
+  TimedQueue<RayToken>& in = c_.tarb.out(i);
+  if (!in.shown(now_)) return;
   if (tcUsStall) {
     stall(Unit::Tcache);
     return;
   }
-  const RayToken t = c_.tarb.out().pop(now_);
-  c_.tcache.pipe.accept(now_, t);
+  const RayToken t = in.pop(now_);
+  u.tcache.pipe.accept(now_, t);
   busy(Unit::Tcache, t);
 }
 

@@ -11,7 +11,16 @@ std::array<Fifo, 3> three(const std::string& name) {
           Fifo(name + "2", 3, kRegister)};
 }
 
+std::string suffix(int i) { return i == 0 ? "" : "_" + std::to_string(i); }
+
 }  // namespace
+
+TravUnit::TravUnit(const RaypipeConfig& c, int i)
+    : tcache("tcache" + suffix(i), c.latency.memoryRead, c.fifo.memoryOut),
+      rs0("raystore0" + suffix(i), c.latency.memoryRead, c.fifo.memoryOut),
+      leafFifo("trav_leaf" + suffix(i), c.fifo.travLeaf, kRegister),
+      travPipe(c.latency.travMath),
+      travFifo("trav_math" + suffix(i), c.fifo.travMath, kRegister) {}
 
 Channels::Channels(const RaypipeConfig& c)
     : prgPipe(c.latency.prg),
@@ -21,22 +30,16 @@ Channels::Channels(const RaypipeConfig& c)
       sintTarb("sint_tarb", c.fifo.sint, kRegister),
       sintSs("sint_ss", c.fifo.sint, kRegister),
       sintShader("sint_shader", c.fifo.sint, kRegister),
-      tarb("tarb", c.fifo.tarb, kShowAhead),
-      tcache("tcache", c.latency.memoryRead, c.fifo.memoryOut),
-      rs0("raystore0", c.latency.memoryRead, c.fifo.memoryOut),
-      leafFifo("trav_leaf", c.fifo.travLeaf, kRegister),
-      travPipe(c.latency.travMath),
-      travFifo("trav_math", c.fifo.travMath, kRegister),
+      tarb("tarb", c.fifo.tarb, kShowAhead, 3 + c.traversalUnits, c.traversalUnits),
       stackRead(three("ss_stack_read")),
       restRead(three("ss_restart_read")),
       restWrite(three("ss_restart_write")),
-      stackWrite("ss_stack_write", 3, kRegister),
       stackPipe(2),
       restPipe(3),
       stackFifo("ss_stack", 3, kRegister),
       notMissFifo("ss_restart", 4, kRegister),
       missFifo("ss_miss", 4, kRegister),
-      larb("larb", c.fifo.larb, kShowAhead),
+      larb("larb", c.fifo.larb, kShowAhead, 1 + c.traversalUnits),
       lcache("lcache", c.latency.memoryRead, c.fifo.memoryOut),
       icache("icache", c.latency.memoryRead, c.fifo.memoryOut),
       rs1("raystore1", c.latency.memoryRead, c.fifo.memoryOut),
@@ -49,18 +52,29 @@ Channels::Channels(const RaypipeConfig& c)
       listHitPipe(2),
       listHitFifo("list_hit", 3, kRegister),
       rs2("raystore2", c.latency.memoryRead, c.fifo.memoryOut),
-      shaderArb("shader_arb", 2, kRegister),
+      shaderArb("shader_arb", 2, kRegister, 4),
       shaderPipe(2),
       shaderData("shader_data", 3, kRegister),
-      pixelBuffer("pixel_buffer", c.fifo.pixelBuffer, kRegister) {}
+      pixelBuffer("pixel_buffer", c.fifo.pixelBuffer, kRegister) {
+  trav.reserve(static_cast<size_t>(c.traversalUnits));  // the FIFOs' places are kept (fifos())
+  stackWrite.reserve(static_cast<size_t>(c.traversalUnits));
+  for (int i = 0; i < c.traversalUnits; ++i) {
+    trav.emplace_back(c, i);
+    stackWrite.emplace_back("ss_stack_write" + suffix(i), 3, kRegister);
+  }
+}
 
 std::vector<Fifo*> Channels::fifos() {
-  std::vector<Fifo*> all = {
-      &prgFifo,     &sintTarb,    &sintSs,          &sintShader, &tarb.out(),
-      &tcache.fifo, &rs0.fifo,    &leafFifo,        &travFifo,   &stackWrite,
-      &stackFifo,   &notMissFifo, &missFifo,        &larb.out(), &lcache.fifo,
-      &icache.fifo, &rs1.fifo,    &intList,         &intLarb,    &listLast,
-      &listHitFifo, &rs2.fifo,    &shaderArb.out(), &shaderData, &pixelBuffer};
+  std::vector<Fifo*> all = {&prgFifo, &sintTarb, &sintSs, &sintShader};
+  for (size_t i = 0; i < trav.size(); ++i) {
+    TravUnit& t = trav[i];
+    all.insert(all.end(), {&tarb.out(static_cast<int>(i)), &t.tcache.fifo, &t.rs0.fifo, &t.leafFifo,
+                           &t.travFifo});
+  }
+  for (Fifo& f : stackWrite) all.push_back(&f);
+  all.insert(all.end(), {&stackFifo, &notMissFifo, &missFifo, &larb.out(), &lcache.fifo,
+                         &icache.fifo, &rs1.fifo, &intList, &intLarb, &listLast, &listHitFifo,
+                         &rs2.fifo, &shaderArb.out(), &shaderData, &pixelBuffer});
   for (auto* group : {&stackRead, &restRead, &restWrite})
     for (Fifo& f : *group) all.push_back(&f);
   return all;

@@ -43,6 +43,17 @@ struct MemoryRead {
 using Fifo = TimedQueue<RayToken>;
 using Register = StagedRegister<RayToken>;
 
+// One traversal unit with its tcache and raystore #0 (trav_unit.sv; raypipe_2trav.sv gives each
+// of its two units their own): unit 0's FIFOs keep the one-unit build's names, unit i's add _i.
+struct TravUnit {
+  TravUnit(const RaypipeConfig& c, int i);
+  MemoryRead tcache, rs0;
+  Fifo leafFifo;
+  LatencyPipe<RayToken> travPipe;
+  Fifo travFifo;
+  Register travSs, travTarb, travLarb, travList;
+};
+
 struct Channels {
   explicit Channels(const RaypipeConfig& c);
   // Every FIFO of ray tokens, in the pipe's order (the shader's ray-id FIFO is idFifo).
@@ -54,18 +65,16 @@ struct Channels {
   TimedQueue<uint32_t> idFifo;
   LatencyPipe<RayToken> sintPipe;
   Fifo sintTarb, sintSs, sintShader;
-  RotatingArbiter<RayToken, 4> tarb;
-  MemoryRead tcache, rs0;
-  Fifo leafFifo;
-  LatencyPipe<RayToken> travPipe;
-  Fifo travFifo;
-  Register travSs, travTarb, travLarb, travList;
+  // tarb: [0] stack pop, [1] restart, [2 + i] traversal unit i, [2 + units] SINT; output i to
+  // unit i's tcache
+  RotatingArbiter<RayToken> tarb;
+  std::vector<TravUnit> trav;                          // raypipe.traversal_units
   std::array<Fifo, 3> stackRead, restRead, restWrite;  // [trav0, trav1, list or SINT]
-  Fifo stackWrite;
+  std::vector<Fifo> stackWrite;                        // one per traversal unit
   LatencyPipe<RayToken> stackPipe, restPipe;
   Fifo stackFifo, notMissFifo, missFifo;
-  int stackReadPointer = 0, restReadPointer = 0, restWritePointer = 0;
-  RotatingArbiter<RayToken, 2> larb;
+  int stackReadPointer = 0, restReadPointer = 0, restWritePointer = 0, stackWritePointer = 0;
+  RotatingArbiter<RayToken> larb;  // [i] traversal unit i's leaf, [units] INT's next triangle
   MemoryRead lcache, icache, rs1;
   LatencyPipe<RayToken> intPipe;
   Fifo intList, intLarb;
@@ -76,9 +85,11 @@ struct Channels {
   Fifo listHitFifo;
   Register toSs;
   MemoryRead rs2;
-  RotatingArbiter<RayToken, 4> shaderArb;
+  RotatingArbiter<RayToken> shaderArb;
   LatencyPipe<RayToken> shaderPipe;
   Fifo shaderData, pixelBuffer;
+  int64_t leafReads[2] = {-2, -2};  // the list unit's last two leaf_max reads (list_unit.sv)
+  int leafMaxPointer = 0;           // rrp: which unit's leaf_max write waits on a conflict
 };
 
 }  // namespace raypipe_timed
