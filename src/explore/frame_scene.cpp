@@ -45,6 +45,12 @@ glm::dvec3 triangleNormal(const FrameScene& scene, uint32_t primitive) {
   return scene.placement.rotation * (glm::cross(b - a, c - a) / scene.placement.scale);
 }
 
+glm::dvec3 triangleCorner(const FrameScene& scene, uint32_t primitive) {
+  const ModelPlacement& p = scene.placement;
+  return p.rotation * (p.scale * scene.mesh.vertices[scene.mesh.triangles.at(primitive)[0]]) +
+         p.translation;
+}
+
 FrameScene loadFrameScene(const RunConfig& settings) {
   if (settings.architecture == Architecture::Raypipe) return raypipeFrameScene(settings);
   FrameScene scene = withCoreKind(settings.rtu.core, [&settings](auto kind) {

@@ -104,9 +104,12 @@ struct TriangleKindScene {
   // hides it with none (its span starts at its float epsilon).
   static constexpr double kSelfOffset = 0x1p-12;
 
-  // The golden model's hits of the frame's world-space rays, each at the kind's distance along
-  // its ray, with the hit triangle's world normal toward the ray; the passes' records point at
-  // the frame's model header, random rays fill the SVO frame's cube (the world's [-1, 1]^3).
+  // The golden model's hits of the frame's world-space rays: each where its ray meets the plane
+  // of the triangle the kind hit (in float64, in the world: the kind's own surface, to the
+  // precision a shader recomputing the point from the triangle has; the BIH's distance, through
+  // its grid, is not precise enough for that), with that triangle's world normal toward the ray;
+  // the passes' records point at the frame's model header, random rays fill the SVO frame's cube
+  // (the world's [-1, 1]^3).
   static PassSource passSource(const FrameScene& scene, const RunConfig& settings) {
     const std::vector<HostRecord> records = KindScene<Kind>::records(scene, settings);
     const std::vector<CoreKindResult> results = traceGolden(scene.memory(), records, settings.rtu);
@@ -119,10 +122,12 @@ struct TriangleKindScene {
       SurfaceHit hit;
       hit.pixel = ray.id;
       hit.incoming = glm::normalize(direction);
-      hit.point = glm::dvec3(ray.origin[0], ray.origin[1], ray.origin[2]) +
-                  Kind::hitDistance(own, settings.rtu.coreConfig<Kind>()) * direction;
+      const glm::dvec3 origin(ray.origin[0], ray.origin[1], ray.origin[2]);
       hit.normal = glm::normalize(triangleNormal(scene, own.primitive));
       if (glm::dot(hit.normal, hit.incoming) > 0.0) hit.normal = -hit.normal;
+      const glm::dvec3 corner = triangleCorner(scene, own.primitive);
+      hit.point = origin + glm::dot(corner - origin, hit.normal) / glm::dot(direction, hit.normal) *
+                               direction;
       source.hits.push_back(hit);
     }
     source.words = scene.words;
