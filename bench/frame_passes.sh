@@ -7,7 +7,7 @@
 # mixing: the cost of incoherence). Prints one markdown row per kind, order and pass: rays, hit
 # rate, cycles per ray, cost per ray, DRAM bytes per ray, DRAM utilisation and the limit of the
 # pass's window of the frame's run, and one row for the whole frame.
-# Usage: bench/frame_passes.sh [rtusim] [scene] [depth] [width] [height] [preset] [samples]
+# Usage: bench/frame_passes.sh [rtusim] [scene] [depth] [width] [height] [preset] [samples] [kinds]
 set -euo pipefail
 
 rtusim=${1:-$(dirname "$0")/../build/rtusim}
@@ -17,12 +17,13 @@ width=${4:-160}
 height=${5:-90}
 preset=${6:-cached}
 samples=${7:-4}
+kinds=${8:-svo bvh bih kd}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 echo "| kind | order | pass | rays | hit rate | cycles/ray | cost/ray | DRAM B/ray | DRAM util | limit |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
-for kind in svo bvh bih kd; do
+for kind in $kinds; do
   for order in pixel shuffled; do
     "$rtusim" render --preset "$preset" --core "$kind" --index wide --scene "$scene" \
       --depth "$depth" --width "$width" --height "$height" --order "$order" \
