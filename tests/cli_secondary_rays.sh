@@ -53,23 +53,32 @@ for type in ao diffuse; do
   [[ $(stat -c %s a.bin) -eq $(stat -c %s b.bin) ]] || fail "$type shuffled lost rays"
 done
 
-# render --passes: a line per pass, the frame's sum, per-pass statistics files, an image.
-"$rtusim" render --preset cached --scene menger --depth 5 "${frame[@]}" \
-  --passes primary,shadow,ao --samples 2 --image m.png --stats r.json >render.txt
-grep -q "^pass        shadow" render.txt && grep -q "^pass        ao" render.txt ||
-  fail "render --passes report"
-[[ -s m.png && -s r.json && -s r.shadow.json && -s r.ao.json ]] || fail "render --passes files"
-python3 - r.json r.shadow.json r.ao.json render.txt <<'PY' || fail "the passes do not sum to the frame"
+# render --passes: a line per pass, the frame as one run, per-pass statistics files (each pass's
+# window of the frame's run) summing to the frame's, an image; on the octree and a triangle kind.
+for core in svo bvh; do
+  "$rtusim" render --preset cached --core "$core" --scene menger --depth 5 "${frame[@]}" \
+    --passes primary,shadow,ao --samples 2 --image m.png --stats r.json >render.txt
+  grep -q "^pass        shadow" render.txt && grep -q "^pass        ao" render.txt ||
+    fail "render --core $core --passes report"
+  [[ -s m.png && -s r.json && -s r.shadow.json && -s r.ao.json && -s r.frame.json ]] ||
+    fail "render --core $core --passes files"
+  python3 - r.json r.shadow.json r.ao.json r.frame.json render.txt <<'PY' ||
 import json, re, sys
 def stat(path):
     s = json.load(open(path))
     return s["statistics"] if "statistics" in s else s
 passes = [stat(p) for p in sys.argv[1:4]]
-line = [l for l in open(sys.argv[4]) if l.startswith("frame ") and "passes" in l][0]
-rays, cycles = map(int, re.match(r"frame\s+(\d+) rays in 3 passes, (\d+) cycles", line).groups())
-assert rays == sum(p["rays"] for p in passes)
-assert cycles == sum(p["total_cycles"] for p in passes)
+frame = stat(sys.argv[4])
+line = [l for l in open(sys.argv[5]) if l.startswith("frame ") and "passes" in l][0]
+rays, cycles = map(int, re.match(r"frame\s+(\d+) rays in 3 passes as one run, (\d+) cycles",
+                                 line).groups())
+assert (rays, cycles) == (frame["rays"], frame["total_cycles"])
+for key in ("rays", "total_cycles"):
+    assert frame[key] == sum(p[key] for p in passes), key
+assert frame["memory"]["dram"]["bytes"] == sum(p["memory"]["dram"]["bytes"] for p in passes) > 0
 PY
+    fail "render --core $core: the passes do not sum to the frame"
+done
 
 # The key workload.rays in a configuration file, with the other workload keys.
 printf '[workload]\nrays = "primary,shadow"\nlights = "2.25,4,-2;-3,2.5,1"\n' >w.toml
@@ -99,8 +108,13 @@ for r in rows:
     if r["workload.rays"] == "primary":
         assert int(r["rays"]) == 384 and r["ao_rays"] == "", r
 PY
-expect_error "secondary passes need the svo core" "$rtusim" fps --core bvh --scene menger \
-  --depth 5 --resolutions 24x16 --passes primary,shadow
+"$rtusim" fps --core kd --scene menger --depth 5 --resolutions 24x16 --passes primary,shadow \
+  --csv k.csv -j 1 >/dev/null 2>&1
+python3 - k.csv <<'PY' || fail "fps --core kd rows of passes"
+import csv, sys
+for row in csv.DictReader(open(sys.argv[1])):
+    assert int(row["rays"]) == 384 + int(row["shadow_rays"]) > 384, row
+PY
 "$rtusim" config --list | grep -q "^workload.ao_distance" || fail "config --list: workload keys"
 expect_error "workload.samples" "$rtusim" render --scene menger --depth 5 "${frame[@]}" \
   --passes primary,ao --samples 0 --model golden

@@ -44,7 +44,7 @@ Camera camera(int width, int height) {
 RayWorkload workload(const Model& model, RayType type, const Camera& view = camera(40, 24)) {
   RayWorkloadSpec spec;
   spec.secondary.type = type;
-  spec.secondary.lights = {{2.0, 4.0, -3.0}, {-3.0, 2.5, 1.0}};
+  spec.secondary.lights = {Light::point({2.0, 4.0, -3.0}), Light::point({-3.0, 2.5, 1.0})};
   spec.secondary.samples = 2;
   return makeRayWorkload(model.image.memory(), model.header, view, GoldenConfig{}, spec);
 }
@@ -346,8 +346,7 @@ TEST_CASE("Render passes: primary first\\, each once\\, and each pixel's open sh
     shadow.rays.emplace_back();
     shadow.rays.back().id = id;
   }
-  shadow.results.resize(3);
-  shadow.results[1].hit = true;
+  shadow.hits = {false, true, false};
   CHECK(openShare(shadow, 3) == std::vector<double>{0.5, 0.5, 0.0});
   PassRun ao = shadow;
   ao.type = RayType::Ao;

@@ -8,13 +8,15 @@
 #include <catch2/catch.hpp>
 
 #include <optional>
-#include <type_traits>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "inputs/secondary_rays.h"
 #include "kind_fixture.h"
+#include "kinds/bih/explore/bih_scene.h"
+#include "kinds/bvh/explore/bvh_scene.h"
+#include "kinds/kd/explore/kd_scene.h"
 #include "triangle_kind_images.h"
 
 namespace rtu {
@@ -98,13 +100,14 @@ size_t selfHits(const typename KindFixture<Kind>::Frame& frame,
   return count;
 }
 
-// Each kind's way off a surface (docs/workloads.md): the BVH's span starts at kBvhSpanTMin, so
-// no offset; the BIH and the k-d core (whose EPSILON is 1e-20) take the offset along the normal
-// of the SVO's spawns, 2^-12 world units (the BIH's grid offset of 2 units is finer than a
-// float32 record's origin can hold at n = 29: docs/workloads.md).
+// Each kind's way off a surface, as its frame's passes take it (KindScene<Kind>::kSelfOffset,
+// docs/workloads.md): the BVH's span starts at kBvhSpanTMin, so no offset; the BIH and the k-d
+// core (whose EPSILON is 1e-20) take the offset along the normal of the SVO's spawns, 2^-12 world
+// units (the BIH's grid offset of 2 units is finer than a float32 record's origin can hold at
+// n = 29: docs/workloads.md).
 template <class Kind>
 void offsetFor(SecondarySettings& settings) {
-  if (!std::is_same_v<Kind, BvhKind<>>) settings.selfOffset = 0x1p-12;
+  settings.selfOffset = KindScene<Kind>::kSelfOffset;
 }
 
 }  // namespace

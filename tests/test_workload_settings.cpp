@@ -21,7 +21,7 @@ TEST_CASE("Workload keys reach the run configuration and read back", "[config]")
   const RunConfig& v = c.values();
   CHECK(v.rayPasses == "primary+shadow+ao");
   REQUIRE(v.workload.secondary.lights.size() == 2);
-  CHECK(v.workload.secondary.lights[1] == glm::dvec3(-4, 5.5, -6));
+  CHECK(v.workload.secondary.lights[1].position == glm::dvec3(-4, 5.5, -6));
   CHECK(v.workload.secondary.samples == 4);
   CHECK(v.workload.secondary.aoDistance == 0.5);
   CHECK(v.workload.randomRays == 1000);
@@ -29,6 +29,32 @@ TEST_CASE("Workload keys reach the run configuration and read back", "[config]")
   CHECK(v.workload.order == RayOrder::Sorted);
   CHECK(findSetting("workload.lights").get(v) == "1,2,3;-4,5.5,-6");
   CHECK(findSetting("workload.order").get(v) == "sorted");
+}
+
+TEST_CASE("Area lights and their samples as workload keys", "[config]") {
+  Configuration c;
+  c.set("workload.lights", "rect:0,3,0:1,0,0:0,0,0.5; disc:1,2,3:0,2,0:0.25; 4,5,6",
+        ConfigSource::CommandLine);
+  c.set("workload.light_samples", "8", ConfigSource::CommandLine);
+  const RunConfig& v = c.values();
+  REQUIRE(v.workload.secondary.lights.size() == 3);
+  const Light& rect = v.workload.secondary.lights[0];
+  CHECK(rect.shape == Light::Shape::Rectangle);
+  CHECK(rect.position == glm::dvec3(0, 3, 0));
+  CHECK(rect.edgeV == glm::dvec3(0, 0, 0.5));
+  const Light& disc = v.workload.secondary.lights[1];
+  CHECK(disc.shape == Light::Shape::Disc);
+  CHECK(disc.normal == glm::dvec3(0, 1, 0));  // the axis made unit
+  CHECK(disc.radius == 0.25);
+  CHECK(v.workload.secondary.lightSamples == 8);
+  CHECK(findSetting("workload.lights").get(v) ==
+        "rect:0,3,0:1,0,0:0,0,0.5;disc:1,2,3:0,1,0:0.25;4,5,6");
+  for (const char* bad : {"rect:0,3,0:1,0,0:2,0,0", "disc:0,0,0:0,0,0:1", "disc:0,0,0:0,1,0:-1",
+                          "disc:0,0,0:0,1,0", "cone:0,0,0:0,1,0:1"})
+    CHECK_THROWS_WITH(c.set("workload.lights", bad, ConfigSource::CommandLine),
+                      Contains("workload.lights '") && Contains(bad));
+  CHECK_THROWS_WITH(c.set("workload.light_samples", "0", ConfigSource::CommandLine),
+                    Contains("workload.light_samples"));
 }
 
 TEST_CASE("Workload keys refuse what cannot be spawned, naming the key", "[config]") {

@@ -249,9 +249,8 @@ CompareTarget makeTarget(const ConfigRequest& request, const ArchitectureChoice&
   // scene file 2^16): the wide ones, unless given.
   if (!givenByCommand(configuration, "accel.index"))
     configuration.set("accel.index", "wide", ConfigSource::Preset);
-  // Secondary passes (workload.rays) spawn on the SVO core only: the other rows trace the frame.
-  if (choice.name != SvoKind::kName)
-    configuration.set("workload.rays", "primary", ConfigSource::Preset);
+  // Secondary passes (workload.rays) spawn from a core kind's hits: the ray pipe traces the frame.
+  if (raypipe) configuration.set("workload.rays", "primary", ConfigSource::Preset);
   configuration.values().camera = camera;
   if (!images.empty()) target.differenceImage = images + "/" + choice.name + ".png";
   return target;

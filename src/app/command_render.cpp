@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -67,7 +68,7 @@ void checkOutputsOfModel(const RenderOptions& options, const ConfigRequest& requ
 // (none kept: app/frame_stream.h), with the model's report (the golden model's host time; a timed
 // model's statistics, trace and timeline).
 void traceFrame(const FrameScene& scene, FrameStream& stream, const Configuration& configuration,
-                const RenderOptions& options, uint64_t& cycles) {
+                const RenderOptions& options, std::optional<RtuStatistics>& statistics) {
   const RunConfig& settings = configuration.values();
   const WordMemory memory = scene.memory();
   if (settings.model == ModelKind::Golden) {
@@ -91,23 +92,22 @@ void traceFrame(const FrameScene& scene, FrameStream& stream, const Configuratio
   RunProgressLine progress("render", "rays");
   const RtuRun run =
       runFrame(settings.model, memory, records, planned, stream.taker(), progress.callback());
-  cycles = run.statistics.totalCycles;
+  statistics = run.statistics;
   std::cout << stream.describe();
   reportRun(run, configuration, options.outputs, std::cout);
   if (config.trace) std::cout << "wrote       " << config.trace->path << "\n";
   if (config.timeline.wanted()) std::cout << "wrote       " << config.timeline.path << "\n";
 }
 
-// One line of a pass: its rays and hits, and on a timed model its cycles and what limits it.
+// One line of a pass: its rays and hits, and on a timed model its window of the frame's run.
 void reportPass(const PassRun& pass, std::ostream& out) {
-  size_t hits = 0;
-  for (const TraversalResult& result : pass.results) hits += result.hit;
+  const size_t hits = static_cast<size_t>(std::count(pass.hits.begin(), pass.hits.end(), true));
   char line[256];
   std::snprintf(line, sizeof line, "pass        %-10s %zu rays, %zu hits", toString(pass.type),
                 pass.rays.size(), hits);
   out << line;
-  if (pass.run) {
-    const RtuStatistics& s = pass.run->statistics;
+  if (pass.statistics) {
+    const RtuStatistics& s = *pass.statistics;
     std::snprintf(line, sizeof line, ", %llu cycles (%.2f per ray), DRAM %.3f, limit %s",
                   static_cast<unsigned long long>(s.totalCycles), s.cyclesPerRay(),
                   s.utilisation().dramBandwidth, s.limit().empty() ? "none" : s.limit().c_str());
@@ -116,35 +116,40 @@ void reportPass(const PassRun& pass, std::ostream& out) {
   out << "\n";
 }
 
-// The passes after the primary one: run, reported (and their statistics written beside --stats,
-// s.json -> s.shadow.json), and their open shares shading the frame.
+// `statistics` written beside --stats s.json as s.<name>.json.
+void writeBesideStats(const RtuStatistics& statistics, const std::string& name,
+                      const Configuration& configuration, const RenderOptions& options) {
+  const std::string& stats = options.outputs.statsPath;
+  if (stats.empty()) return;
+  const size_t dot = stats.find_last_of('.');
+  const std::string path =
+      (dot == std::string::npos ? stats : stats.substr(0, dot)) + "." + name + ".json";
+  writeTextFile(path, runJson(statistics, configuration).dump(2) + "\n");
+  std::cout << "wrote       " << path << "\n";
+}
+
+// The passes after the primary one: run with it as one workload (explore/ray_passes.h), each
+// reported (and its statistics, and the whole frame's, written beside --stats: s.json ->
+// s.shadow.json, s.frame.json), and their open shares shading the frame.
 void renderPasses(const FrameScene& scene, const Configuration& configuration,
                   const RenderOptions& options, const std::vector<RayType>& passes,
-                  uint64_t primaryCycles, RenderedFrame& frame) {
-  const RunConfig& settings = configuration.values();
-  const std::vector<PassRun> runs = runSecondaryPasses(scene, settings, passes);
-  uint64_t cycles = primaryCycles;
-  size_t rays = frame.pixels.size();
-  for (const PassRun& pass : runs) {
+                  const std::optional<RtuStatistics>& primary, RenderedFrame& frame) {
+  const FramePassesRun run = runFramePasses(scene, configuration.values(), passes, primary);
+  for (const PassRun& pass : run.passes) {
     reportPass(pass, std::cout);
-    rays += pass.rays.size();
-    if (pass.run) cycles += pass.run->statistics.totalCycles;
     const std::vector<double> open = openShare(pass, frame.pixels.size());
     for (size_t p = 0; p < open.size(); ++p) {
       if (pass.type == RayType::Shadow) frame.pixels[p].lightOpen = static_cast<float>(open[p]);
       if (pass.type == RayType::Ao) frame.pixels[p].ambientOpen = static_cast<float>(open[p]);
     }
-    if (!pass.run || options.outputs.statsPath.empty()) continue;
-    const std::string& stats = options.outputs.statsPath;
-    const size_t dot = stats.find_last_of('.');
-    const std::string path = (dot == std::string::npos ? stats : stats.substr(0, dot)) + "." +
-                             toString(pass.type) + ".json";
-    writeTextFile(path, runJson(pass.run->statistics, configuration).dump(2) + "\n");
-    std::cout << "wrote       " << path << "\n";
+    if (pass.statistics)
+      writeBesideStats(*pass.statistics, toString(pass.type), configuration, options);
   }
-  if (settings.model != ModelKind::Golden)
-    std::cout << "frame       " << rays << " rays in " << passes.size() << " passes, " << cycles
-              << " cycles\n";
+  if (!run.frame) return;
+  writeBesideStats(*run.frame, "frame", configuration, options);
+  std::cout << "frame       " << run.frame->rays << " rays in " << passes.size()
+            << " passes as one run, " << run.frame->totalCycles << " cycles ("
+            << run.frame->cyclesPerRay() << " per ray)\n";
 }
 
 // The frame of the run's kind (explore/frame_scene.h) on the chosen model, its passes and its
@@ -154,9 +159,9 @@ void renderFrame(const Configuration& configuration, const RenderOptions& option
   const RunConfig& settings = configuration.values();
   const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
   const FrameScene scene = loadFrameScene(settings);
-  if (passes.size() > 1 && (scene.core != SvoKind::kName || recordedWorkload(settings)))
+  if (passes.size() > 1 && recordedWorkload(settings))
     throw std::invalid_argument("--passes " + settings.rayPasses +
-                                ": secondary passes need the svo core and the camera's frame");
+                                ": secondary passes need the camera's frame, not recorded rays");
   // Pixels are held only for secondary passes, which read them all.
   const bool keepPixels = passes.size() > 1;
   const FrameImagePaths imagePaths{options.image, options.depthImage, options.costImage};
@@ -171,12 +176,12 @@ void renderFrame(const Configuration& configuration, const RenderOptions& option
   std::cout << "scene       " << scene.name << ": " << scene.description << "\n"
             << "model       " << toString(settings.model) << ", " << describeCore(settings) << "\n"
             << "frame       " << settings.camera.width << "x" << settings.camera.height << "\n";
-  uint64_t cycles = 0;
-  traceFrame(scene, stream, configuration, options, cycles);
+  std::optional<RtuStatistics> primary;
+  traceFrame(scene, stream, configuration, options, primary);
   if (images) images->finish();
   if (!keepPixels) return;
   RenderedFrame frame = *stream.takeFrame();
-  renderPasses(scene, configuration, options, passes, cycles, frame);
+  renderPasses(scene, configuration, options, passes, primary, frame);
   if (!options.image.empty()) writeShadedImage(frame, options.image);
   if (!options.depthImage.empty()) writeDepthImage(frame, options.depthImage);
   if (!options.costImage.empty()) writeCostImage(frame, options.costImage);

@@ -10,7 +10,7 @@ RayWorkloadSpec RayWorkloadOptions::resolve(RayType type, const GoldenConfig& go
   resolved.order = parseRayOrder(order);
   if (!lights.empty()) resolved.secondary.lights.clear();
   for (const std::string& light : lights)
-    resolved.secondary.lights.push_back(parseVector(light, "--light"));
+    resolved.secondary.lights.push_back(parseLight(light, "--light"));
   golden.validate();
   // The golden hit's t is within a few steps of the format: 16 steps off the surface.
   resolved.secondary.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
@@ -21,8 +21,13 @@ RayWorkloadSpec RayWorkloadOptions::resolve(RayType type, const GoldenConfig& go
 void addRayWorkloadOptions(CLI::App& command, RayWorkloadOptions& options,
                            const std::string& seedFlag) {
   command.add_option("--light", options.lights,
-                     "shadow rays: a point light x,y,z in world space (repeat for more; default "
-                     "2.25,4,-2, along the shaded image's light)");
+                     "shadow rays: a light in world space, a point x,y,z, a rectangle "
+                     "rect:cx,cy,cz:ux,uy,uz:vx,vy,vz or a disc disc:cx,cy,cz:nx,ny,nz:r "
+                     "(repeat for more; default 2.25,4,-2, along the shaded image's light)");
+  command
+      .add_option("--light-samples", options.spec.secondary.lightSamples,
+                  "shadow: rays per primary hit to each area light")
+      ->capture_default_str();
   command
       .add_option("--samples", options.spec.secondary.samples,
                   "ao and diffuse: rays per primary hit")

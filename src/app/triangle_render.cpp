@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include <glm/geometric.hpp>
-
 namespace rtu {
 
 FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uint32_t cost,
@@ -11,11 +9,7 @@ FramePixel trianglePixel(const FrameScene& scene, bool hit, double distance, uin
   FramePixel pixel{hit, distance, cost, glm::dvec3(0.0)};
   if (!hit) return pixel;
   pixel.triangle = primitive;
-  const auto& corners = scene.mesh.triangles.at(primitive);
-  const glm::dvec3 a = scene.mesh.vertices[corners[0]], b = scene.mesh.vertices[corners[1]],
-                   c = scene.mesh.vertices[corners[2]];
-  // A normal maps to the world by R S^-1 (the inverse transpose of R S).
-  pixel.normal = scene.placement.rotation * (glm::cross(b - a, c - a) / scene.placement.scale);
+  pixel.normal = triangleNormal(scene, primitive);
   return pixel;
 }
 

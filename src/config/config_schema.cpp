@@ -575,20 +575,33 @@ Setting cameraRegister(std::string key, std::string doc, F field) {
 // A frame's passes and how its secondary rays are spawned (issue 32, docs/workloads.md).
 std::string orderName(const RayOrder& order) { return toString(order); }
 
-std::string lightsText(const std::vector<glm::dvec3>& lights) {
+std::string lightText(const Light& light) {
+  const auto vector = [](const glm::dvec3& v) {
+    return formatReal(v.x) + "," + formatReal(v.y) + "," + formatReal(v.z);
+  };
+  switch (light.shape) {
+    case Light::Shape::Point: return vector(light.position);
+    case Light::Shape::Rectangle:
+      return std::string("rect:") + vector(light.position) + ":" + vector(light.edgeU) + ":" +
+             vector(light.edgeV);
+    case Light::Shape::Disc: break;
+  }
+  return std::string("disc:") + vector(light.position) + ":" + vector(light.normal) + ":" +
+         formatReal(light.radius);
+}
+
+std::string lightsText(const std::vector<Light>& lights) {
   std::string text;
-  for (const glm::dvec3& light : lights)
-    text += (text.empty() ? "" : ";") + formatReal(light.x) + "," + formatReal(light.y) + "," +
-            formatReal(light.z);
+  for (const Light& light : lights) text += (text.empty() ? "" : ";") + lightText(light);
   return text;
 }
 
-std::vector<glm::dvec3> parseLights(const std::string& text, const std::string& key) {
-  std::vector<glm::dvec3> lights;
+std::vector<Light> parseLights(const std::string& text, const std::string& key) {
+  std::vector<Light> lights;
   size_t start = 0;
   while (start <= text.size()) {
     const size_t end = std::min(text.find(';', start), text.size());
-    lights.push_back(parseVector(text.substr(start, end - start), key));
+    lights.push_back(parseLight(trim(text.substr(start, end - start)), key));
     start = end + 1;
   }
   return lights;
@@ -599,9 +612,9 @@ void addWorkloadSettings(std::vector<Setting>& s) {
   constexpr unsigned workload = kUseWorkload;
   Setting passes = text(SettingKind::Text, "workload.rays", "--passes", workload,
                         "the frame's passes: primary, then any of shadow, ao, reflection, "
-                        "diffuse, random spawned from its hits, each run after the one before "
-                        "with its own statistics (',' or '+' between them); shadow and ao shade "
-                        "render's image (docs/workloads.md)",
+                        "diffuse, random spawned from its hits, run as one job stream in that "
+                        "order, each pass's statistics its window of the run (',' or '+' "
+                        "between them); shadow and ao shade render's image (docs/workloads.md)",
                         [](C& c) -> std::string& { return c.rayPasses; });
   passes.assign = [key = passes.key](C& c, const std::string& value) {
     parseRayPasses(trim(value), key);
@@ -609,13 +622,19 @@ void addWorkloadSettings(std::vector<Setting>& s) {
   };
   s.push_back(passes);
   Setting lights = declare("workload.lights", "--light", SettingKind::Text, "", workload,
-                           "shadow rays: point lights x,y,z in world space, ';' between lights "
-                           "(the default lies along the shaded image's light, five units out)");
+                           "shadow rays' lights in world space, ';' between lights: a point "
+                           "x,y,z, a rectangle rect:cx,cy,cz:ux,uy,uz:vx,vy,vz (centre, edges) "
+                           "or a disc disc:cx,cy,cz:nx,ny,nz:r (centre, axis, radius), sampled "
+                           "workload.light_samples times a hit (the default, a point, lies along "
+                           "the shaded image's light, five units out)");
   lights.get = [](const C& c) { return lightsText(c.workload.secondary.lights); };
   lights.assign = [key = lights.key](C& c, const std::string& value) {
     c.workload.secondary.lights = parseLights(trim(value), key);
   };
   s.push_back(lights);
+  s.push_back(integer("workload.light_samples", "--light-samples", "", 1, 1024, workload,
+                      "shadow rays per primary hit to each area light (a point light takes one)",
+                      [](C& c) -> int& { return c.workload.secondary.lightSamples; }));
   s.push_back(integer("workload.samples", "--samples", "", 1, 1024, workload,
                       "ao and diffuse rays per primary hit",
                       [](C& c) -> int& { return c.workload.secondary.samples; }));

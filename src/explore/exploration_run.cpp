@@ -104,14 +104,14 @@ void SceneCache::load(const std::string& directory) {
 
 namespace {
 
-// A row of secondary passes (workload.rays beyond primary) spawns them from the golden model's
-// hits of the camera's frame on the SVO core and times them on a timed model, every ray.
+// A row of secondary passes (workload.rays beyond primary) spawns them from its kind's golden
+// hits of the camera's frame and times them on a timed model, every ray.
 void validatePasses(const RunConfig& settings) {
   if (parseRayPasses(settings.rayPasses, "workload.rays").size() < 2) return;
   const std::string passes = "workload.rays " + settings.rayPasses + ": ";
-  if (settings.rtu.core != SvoKind::kName || recordedWorkload(settings))
+  if (recordedWorkload(settings))
     throw std::invalid_argument(passes +
-                                "secondary passes need the svo core and the camera's frame");
+                                "secondary passes need the camera's frame, not recorded rays");
   if (settings.model == ModelKind::Golden)
     throw std::invalid_argument(passes + "a row's passes need a timed model (ca or lt)");
   if (settings.sample.enabled())
@@ -120,21 +120,19 @@ void validatePasses(const RunConfig& settings) {
 
 nlohmann::ordered_json passJson(const RtuStatistics& s) { return statisticsJson(FramePass{s}); }
 
-// The row of a frame with secondary passes: its statistics are the frame's, the primary run's and
-// every pass's summed (rays, cycles and counters: fps is the whole frame's rate), and
-// statistics.passes holds each pass's own figures.
+// The row of a frame with secondary passes: its statistics are the frame's, the one run of the
+// primary rays and every pass's as one job stream (fps is the whole frame's rate), and
+// statistics.passes holds each pass's own figures, its window of that run (the primary's the run
+// of its rays alone), which sum to the frame's.
 nlohmann::ordered_json framePassesRow(const Configuration& configuration, const FrameScene& scene,
                                       const RtuStatistics& primary) {
   const RunConfig& settings = configuration.values();
   const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "workload.rays");
-  RtuStatistics frame = primary;
+  const FramePassesRun frame = runFramePasses(scene, settings, passes, primary);
   nlohmann::ordered_json each = {{"primary", passJson(primary)}};
-  for (const PassRun& pass : runSecondaryPasses(scene, settings, passes)) {
-    addStatistics(frame, pass.run->statistics);
-    each[toString(pass.type)] = passJson(pass.run->statistics);
-  }
+  for (const PassRun& pass : frame.passes) each[toString(pass.type)] = passJson(*pass.statistics);
   nlohmann::ordered_json row = {{"status", "ok"}, {"error", ""}};
-  row.update(runJson(frame, configuration));
+  row.update(runJson(*frame.frame, configuration));
   row["statistics"]["passes"] = each;
   return row;
 }

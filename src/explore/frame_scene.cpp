@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include <glm/geometric.hpp>
+
 #include "explore/kind_scene.h"
 #include "explore/raypipe_frame.h"
 #include "inputs/host_buffers.h"
@@ -33,6 +35,20 @@ ModelPlacement framePlacement(const SceneSpec& spec, const TriangleMesh& mesh) {
   placement.translation = fit.offset();
   placement.scale = glm::dvec3(fit.scale());
   return placement;
+}
+
+glm::dvec3 triangleNormal(const FrameScene& scene, uint32_t primitive) {
+  const auto& corners = scene.mesh.triangles.at(primitive);
+  const glm::dvec3 a = scene.mesh.vertices[corners[0]], b = scene.mesh.vertices[corners[1]],
+                   c = scene.mesh.vertices[corners[2]];
+  // A normal maps to the world by R S^-1 (the inverse transpose of R S).
+  return scene.placement.rotation * (glm::cross(b - a, c - a) / scene.placement.scale);
+}
+
+glm::dvec3 triangleCorner(const FrameScene& scene, uint32_t primitive) {
+  const ModelPlacement& p = scene.placement;
+  return p.rotation * (p.scale * scene.mesh.vertices[scene.mesh.triangles.at(primitive)[0]]) +
+         p.translation;
 }
 
 FrameScene loadFrameScene(const RunConfig& settings) {

@@ -46,6 +46,12 @@ struct FrameScene {
 // already, where they are.
 ModelPlacement framePlacement(const SceneSpec& spec, const TriangleMesh& mesh);
 
+// The world normal of the triangle `primitive` of a triangle kind's scene (its mesh placed by its
+// placement), unnormalised, either way round.
+glm::dvec3 triangleNormal(const FrameScene& scene, uint32_t primitive);
+// Its first corner in the world.
+glm::dvec3 triangleCorner(const FrameScene& scene, uint32_t primitive);
+
 // The scene `settings` name for the kind settings.rtu.core, or for the ray pipe
 // (explore/raypipe_frame.h: the Tray Racer's k-d image, built or read from accel_file). Throws
 // std::invalid_argument for a scene the kind cannot take (an .svo file for a triangle kind) and

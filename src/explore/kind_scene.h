@@ -12,7 +12,10 @@
 //                of each pixel's primary ray);
 //   record       the host record of one primary ray (id, world-space ray) on that scene, which a
 //                frame streamed as it runs makes when the run asks (app/frame_stream.h);
-//   buildKey     the kind's own settings that change its scene (frameSceneKey).
+//   buildKey     the kind's own settings that change its scene (frameSceneKey);
+//   passSource   where the frame's secondary passes spawn (PassSource, explore/ray_passes.h): the
+//                kind's golden primary hits of the camera's frame, the memory and model header
+//                their ray records use, and the kind's way off a surface.
 // A triangle kind derives from TriangleKindScene, which builds its structure, puts a model header
 // after it and aims the camera's world-space rays at the header; it may hide `accelSpec` (the
 // build settings a frame uses) and `appendModelHeader` (its model space) with its own.
@@ -21,15 +24,30 @@
 #include <utility>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "explore/accel_build.h"
 #include "explore/frame_scene.h"
 #include "inputs/camera.h"
+#include "inputs/secondary_rays.h"
+#include "kinds/core_result.h"
 #include "rtu/model_header.h"
+#include "run/analytic_run.h"
 
 namespace rtu {
 
 template <class Kind>
 struct KindScene;
+
+// Where a frame's secondary passes spawn from on its kind (KindScene<Kind>::passSource).
+struct PassSource {
+  std::vector<uint32_t> words;   // the memory the passes' ray records run on
+  uint32_t modelAddress = 0;     // the model header they point at
+  ModelHeader box;               // random rays fill the cube it places (the SVO frame's)
+  std::vector<SurfaceHit> hits;  // the golden model's primary hits of the frame, pixel order
+  double selfOffset = 0;         // off the surface along the normal (SecondarySettings)
+  double gridOffset = 0;         // and along each axis (SecondarySettings)
+};
 
 // The host records of the camera's frame by `Scene::record`, in pixel order (ids the pixel
 // indices).
@@ -81,6 +99,42 @@ struct TriangleKindScene {
   // A world-space ray record against the model header.
   static HostRecord record(const FrameScene& scene, const RunConfig&, uint32_t id, const Ray& ray) {
     return makeRayRecord(id, ray, scene.entry);
+  }
+  // The kind's way off a surface (docs/workloads.md): along the normal, world units. The BVH
+  // hides it with none (its span starts at its float epsilon).
+  static constexpr double kSelfOffset = 0x1p-12;
+
+  // The golden model's hits of the frame's world-space rays: each where its ray meets the plane
+  // of the triangle the kind hit (in float64, in the world: the kind's own surface, to the
+  // precision a shader recomputing the point from the triangle has; the BIH's distance, through
+  // its grid, is not precise enough for that), with that triangle's world normal toward the ray;
+  // the passes' records point at the frame's model header, random rays fill the SVO frame's cube
+  // (the world's [-1, 1]^3).
+  static PassSource passSource(const FrameScene& scene, const RunConfig& settings) {
+    const std::vector<HostRecord> records = KindScene<Kind>::records(scene, settings);
+    const std::vector<CoreKindResult> results = traceGolden(scene.memory(), records, settings.rtu);
+    PassSource source;
+    for (size_t i = 0; i < records.size(); ++i) {
+      const typename Kind::Result& own = resultOfKind<Kind>(results[i]);
+      if (!Kind::hitAhead(own)) continue;
+      const RayRecord& ray = std::get<RayRecord>(records[i]);
+      const glm::dvec3 direction(ray.direction[0], ray.direction[1], ray.direction[2]);
+      SurfaceHit hit;
+      hit.pixel = ray.id;
+      hit.incoming = glm::normalize(direction);
+      const glm::dvec3 origin(ray.origin[0], ray.origin[1], ray.origin[2]);
+      hit.normal = glm::normalize(triangleNormal(scene, own.primitive));
+      if (glm::dot(hit.normal, hit.incoming) > 0.0) hit.normal = -hit.normal;
+      const glm::dvec3 corner = triangleCorner(scene, own.primitive);
+      hit.point = origin + glm::dot(corner - origin, hit.normal) / glm::dot(direction, hit.normal) *
+                               direction;
+      source.hits.push_back(hit);
+    }
+    source.words = scene.words;
+    source.modelAddress = scene.entry;
+    source.box = makeModelHeader(ModelPlacement{}, 0);
+    source.selfOffset = KindScene<Kind>::kSelfOffset;
+    return source;
   }
 };
 

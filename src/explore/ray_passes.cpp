@@ -1,25 +1,46 @@
 #include "explore/ray_passes.h"
 
-#include <cmath>
 #include <stdexcept>
 
+#include "explore/kind_scene.h"
+#include "kind_explore_plugins.h"
 #include "kinds/core_result.h"
 #include "run/analytic_run.h"
 #include "run/model_run.h"
+#include "run/statistics_window.h"
 
 namespace rtu {
 
 namespace {
 
-PassRun runPass(const WordMemory& memory, const RunConfig& settings, PassRun pass) {
-  const std::vector<HostRecord> records(pass.rays.begin(), pass.rays.end());
-  if (settings.model == ModelKind::Golden) {
-    pass.results = svoResults(traceGolden(memory, records, settings.rtu));
-    return pass;
+// Whether each result met something (an any-hit ray: occluded), from `first` on.
+std::vector<bool> hitsOf(const std::vector<CoreKindResult>& results, size_t first, size_t count) {
+  std::vector<bool> hits;
+  hits.reserve(count);
+  for (size_t i = first; i < first + count; ++i)
+    hits.push_back(
+        CoreKinds::visitResult(results[i], [](auto, const auto& own) { return own.hit; }));
+  return hits;
+}
+
+// The passes' rays after the primary ones, spawned from the kind's golden hits of the frame.
+std::vector<PassRun> spawnPasses(const PassSource& source, const RunConfig& settings,
+                                 const std::vector<RayType>& passes) {
+  RayWorkloadSpec spec = passSpec(settings);
+  spec.secondary.selfOffset = source.selfOffset;
+  spec.secondary.gridOffset = source.gridOffset;
+  std::vector<PassRun> runs;
+  for (size_t i = 1; i < passes.size(); ++i) {
+    spec.secondary.type = passes[i];
+    PassRun pass;
+    pass.type = passes[i];
+    pass.raysPerHit = spec.secondary.raysPerHit();
+    pass.rays = spawnRayWorkload(source.hits, source.box, settings.camera.pixelCount(),
+                                 source.modelAddress, spec)
+                    .rays;
+    runs.push_back(std::move(pass));
   }
-  pass.run = runModel(settings.model, memory, records, settings.rtu);
-  pass.results = svoResults(resultsInJobOrder(*pass.run));
-  return pass;
+  return runs;
 }
 
 }  // namespace
@@ -30,7 +51,8 @@ const StatisticGroup<FramePass>& FramePass::declaration() {
       StatisticGroup<FramePass>("a pass of a frame")
           .derived(Statistic("rays", "rays", "the pass's rays"),
                    [](const P& p) { return p.statistics.rays; })
-          .derived(Statistic("total_cycles", "cycles", "the pass's run, its cycles"),
+          .derived(Statistic("total_cycles", "cycles",
+                             "the cycles of the pass's window of the frame's run"),
                    [](const P& p) { return p.statistics.totalCycles; })
           .derived(Statistic("cycles_per_ray", "cycles", "total_cycles / rays"),
                    [](const P& p) { return p.statistics.cyclesPerRay(); })
@@ -45,37 +67,55 @@ const StatisticGroup<FramePass>& FramePass::declaration() {
 
 RayWorkloadSpec passSpec(const RunConfig& settings) {
   RayWorkloadSpec spec = settings.workload;
-  const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();
-  golden.validate();
-  spec.secondary.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
   spec.secondary.validate();
   return spec;
 }
 
-std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
-                                        const std::vector<RayType>& passes) {
-  const RayWorkloadSpec spec = passSpec(settings);
-  if (scene.core != SvoKind::kName)
-    throw std::invalid_argument("secondary passes run on the svo core only, not " + scene.core);
-  std::vector<uint32_t> words = scene.words;
-  const ModelHeader header = makeModelHeader(ModelPlacement{}, scene.entry);
-  const ModelHeaderWords headerWords = encodeModelHeader(header);
-  const uint32_t address = static_cast<uint32_t>(words.size());
-  words.insert(words.end(), headerWords.begin(), headerWords.end());
-  const WordMemory memory(words);
-  std::vector<PassRun> runs;
-  for (size_t i = 1; i < passes.size(); ++i) {
-    RayWorkloadSpec passSpec = spec;
-    passSpec.secondary.type = passes[i];
-    PassRun pass;
-    pass.type = passes[i];
-    pass.raysPerHit = passSpec.secondary.raysPerHit();
-    pass.rays = makeRayWorkload(memory, address, settings.camera,
-                                settings.rtu.coreConfig<SvoKind>(), passSpec)
-                    .rays;
-    runs.push_back(runPass(memory, settings, std::move(pass)));
+PassSource framePassSource(const FrameScene& scene, const RunConfig& settings) {
+  if (scene.core == kRaypipeSceneCore)
+    throw std::invalid_argument("secondary passes run on a core kind, not the ray pipe");
+  return withCoreKind(scene.core, [&](auto kind) {
+    return KindScene<decltype(kind)>::passSource(scene, settings);
+  });
+}
+
+FramePassesRun runFramePasses(const FrameScene& scene, const RunConfig& settings,
+                              const std::vector<RayType>& passes,
+                              const std::optional<RtuStatistics>& primary) {
+  const PassSource source = framePassSource(scene, settings);
+  const WordMemory memory(source.words);
+  FramePassesRun frame;
+  frame.passes = spawnPasses(source, settings, passes);
+  if (settings.model == ModelKind::Golden) {
+    for (PassRun& pass : frame.passes) {
+      const std::vector<HostRecord> records(pass.rays.begin(), pass.rays.end());
+      pass.hits = hitsOf(traceGolden(memory, records, settings.rtu), 0, records.size());
+    }
+    return frame;
   }
-  return runs;
+  if (!primary) throw std::logic_error("runFramePasses: a timed model's primary run missing");
+  // The job stream: the primary records, then each pass's rays; run up to each pass's end.
+  std::vector<HostRecord> records = frameRecords(scene, settings);
+  const size_t primaryRays = records.size();
+  RtuStatistics before = *primary;
+  RtuRun run;
+  for (PassRun& pass : frame.passes) {
+    records.insert(records.end(), pass.rays.begin(), pass.rays.end());
+    run = runModel(settings.model, memory, records, settings.rtu);
+    if (run.statistics.totalCycles < before.totalCycles)
+      throw std::logic_error("a frame's run ended before the run of its first passes");
+    pass.statistics = statisticsAfter(run.statistics, before, pass.rays.size(),
+                                      run.statistics.totalCycles - before.totalCycles);
+    before = run.statistics;
+  }
+  frame.frame = run.statistics;
+  const std::vector<CoreKindResult> results = resultsInJobOrder(run);
+  size_t first = primaryRays;
+  for (PassRun& pass : frame.passes) {
+    pass.hits = hitsOf(results, first, pass.rays.size());
+    first += pass.rays.size();
+  }
+  return frame;
 }
 
 std::vector<double> openShare(const PassRun& pass, size_t pixels) {
@@ -86,7 +126,7 @@ std::vector<double> openShare(const PassRun& pass, size_t pixels) {
     const size_t pixel = pass.rays[i].id / pass.raysPerHit;
     if (pixel >= pixels) throw std::logic_error("a pass's ray id beyond the frame");
     ++rays[pixel];
-    misses[pixel] += !pass.results[i].hit;
+    misses[pixel] += !pass.hits[i];
   }
   for (size_t p = 0; p < pixels; ++p)
     if (rays[p] > 0 || pass.type == RayType::Shadow)

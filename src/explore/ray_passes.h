@@ -1,10 +1,9 @@
 #pragma once
 // A frame of passes (issue 32, `render --passes primary,shadow,ao`): the camera's primary rays,
-// then secondary rays spawned from their hits (inputs/ray_workload.h), each pass a workload of its
-// own, run on the chosen model after the one before as a renderer's passes follow each other: its
-// own statistics, and the frame's cycles the passes' sum. The SVO kind's: the secondary passes'
-// ray records point at a model header appended after the octree, placing its cube where the
-// frame's t-value records see it (the identity).
+// then secondary rays spawned from their hits (inputs/ray_workload.h), the passes one workload
+// (one job stream, in pass order) with each pass's statistics its window of that run. Every core
+// kind's: each spawns from its own golden hits, its records and offsets its KindScene's
+// (explore/kind_scene.h).
 
 #include <optional>
 #include <string>
@@ -12,6 +11,7 @@
 
 #include "config/run_config.h"
 #include "explore/frame_scene.h"
+#include "explore/kind_scene.h"
 #include "inputs/ray_workload.h"
 #include "run/rtu_simulation.h"
 
@@ -19,10 +19,17 @@ namespace rtu {
 
 struct PassRun {
   RayType type = RayType::Primary;
-  uint32_t raysPerHit = 1;               // ids: pixel * raysPerHit + light or sample
-  std::vector<RayRecord> rays;           // in the order they ran
-  std::vector<TraversalResult> results;  // the same order
-  std::optional<RtuRun> run;             // on a timed model: its statistics
+  uint32_t raysPerHit = 1;      // ids: pixel * raysPerHit + light or sample
+  std::vector<RayRecord> rays;  // in the order they ran
+  std::vector<bool> hits;       // whether each met something, the same order
+  // On a timed model: the pass's part of the frame's run (its window: run/statistics_window.h).
+  std::optional<RtuStatistics> statistics;
+};
+
+// A frame's secondary passes run as one workload behind its primary rays.
+struct FramePassesRun {
+  std::vector<PassRun> passes;         // each pass after the primary, in order
+  std::optional<RtuStatistics> frame;  // on a timed model: the run of every pass's rays
 };
 
 // One pass's figures in a row of a frame with passes (fps, sweep, compare: the row's
@@ -32,15 +39,25 @@ struct FramePass {
   static const StatisticGroup<FramePass>& declaration();
 };
 
-// The secondary rays' settings of a run (the workload.* keys), with the self-intersection offset
-// 16 steps of the SVO format (its golden t is within a few steps of the exact one). Throws
-// std::invalid_argument naming a setting that is not valid.
+// The secondary rays' settings of a run (the workload.* keys). Throws std::invalid_argument naming
+// a setting that is not valid.
 RayWorkloadSpec passSpec(const RunConfig& settings);
 
-// Every pass of `passes` after the first (the caller's primary frame) on `scene` (an SVO scene),
-// on the model `settings` choose, with the rays of passSpec(settings).
-std::vector<PassRun> runSecondaryPasses(const FrameScene& scene, const RunConfig& settings,
-                                        const std::vector<RayType>& passes);
+// Where the secondary passes of the camera's frame on `scene` spawn, by its kind
+// (KindScene<Kind>::passSource: its golden hits, memory, model header and offsets).
+PassSource framePassSource(const FrameScene& scene, const RunConfig& settings);
+
+// The passes of `passes` after the first on the camera's frame on `scene`, of any core kind, their
+// rays (passSpec(settings)) spawned from the kind's own golden hits with its offsets. On a timed
+// model (`settings.model`) the frame is one workload: the primary records, then each pass's rays,
+// submitted in that order as one job stream and run once; each pass's statistics are its window
+// of that run: the run of the passes up to it less the run of those before it (the same stream
+// cut after the earlier pass), `primary` being the run of the primary records alone (the caller's
+// frame). So the primary's statistics and the passes' sum to the frame's, counter for counter.
+// On the golden model the passes are traced untimed (no statistics).
+FramePassesRun runFramePasses(const FrameScene& scene, const RunConfig& settings,
+                              const std::vector<RayType>& passes,
+                              const std::optional<RtuStatistics>& primary);
 
 // Per pixel of a frame of `pixels`: the share of a pass's rays from that pixel's hit that reached
 // their end without a hit (a light seen, an AO direction open); a shadow ray not spawned (the light

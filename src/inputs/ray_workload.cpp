@@ -10,28 +10,37 @@ namespace rtu {
 
 namespace {
 
+RayWorkload spawnUnordered(const std::vector<SurfaceHit>& hits, const ModelHeader& box,
+                           size_t pixels, uint32_t modelAddress, const RayWorkloadSpec& spec) {
+  RayWorkload workload;
+  if (spec.secondary.type == RayType::Random) {
+    const size_t count = spec.randomRays == 0 ? pixels : spec.randomRays;
+    workload.rays = randomRays(count, box, spec.secondary.seed, modelAddress);
+    return workload;
+  }
+  workload.primaryHits = hits.size();
+  workload.rays = spawnSecondaryRays(hits, spec.secondary, modelAddress);
+  return workload;
+}
+
 RayWorkload unordered(const WordMemory& memory, uint32_t modelAddress, const Camera& camera,
                       const GoldenConfig& golden, const RayWorkloadSpec& spec) {
   const RayType type = spec.secondary.type;
   const ModelHeader header = readModelHeader(memory, modelAddress);
-  RayWorkload workload;
-  if (type == RayType::Random) {
-    const size_t count = spec.randomRays == 0 ? camera.pixelCount() : spec.randomRays;
-    workload.rays = randomRays(count, header, spec.secondary.seed, modelAddress);
-    return workload;
-  }
   const std::vector<RayRecord> primaries = makeFrameRayRecords(camera, modelAddress);
+  RayWorkload workload;
   if (type == RayType::Primary) {
     workload.rays = primaries;
     return workload;
   }
-  spec.secondary.validate();
-  GoldenModel model(memory, golden);
-  const std::vector<SurfaceHit> hits =
-      surfaceHits(primaries, model.traceRays(primaries, golden.epsilon), header, golden.format);
-  workload.primaryHits = hits.size();
-  workload.rays = spawnSecondaryRays(hits, spec.secondary, modelAddress);
-  return workload;
+  std::vector<SurfaceHit> hits;
+  if (type != RayType::Random) {
+    spec.secondary.validate();
+    GoldenModel model(memory, golden);
+    hits =
+        surfaceHits(primaries, model.traceRays(primaries, golden.epsilon), header, golden.format);
+  }
+  return spawnUnordered(hits, header, camera.pixelCount(), modelAddress, spec);
 }
 
 }  // namespace
@@ -65,6 +74,15 @@ std::vector<RayType> parseRayPasses(const std::string& text, const std::string& 
 RayWorkload makeRayWorkload(const WordMemory& memory, uint32_t modelAddress, const Camera& camera,
                             const GoldenConfig& golden, const RayWorkloadSpec& spec) {
   RayWorkload workload = unordered(memory, modelAddress, camera, golden, spec);
+  orderRays(workload.rays, spec.order, spec.secondary.seed);
+  return workload;
+}
+
+RayWorkload spawnRayWorkload(const std::vector<SurfaceHit>& hits, const ModelHeader& box,
+                             size_t pixels, uint32_t modelAddress, const RayWorkloadSpec& spec) {
+  if (spec.secondary.type == RayType::Primary)
+    throw std::invalid_argument("spawnRayWorkload: primary rays are the frame's, not spawned");
+  RayWorkload workload = spawnUnordered(hits, box, pixels, modelAddress, spec);
   orderRays(workload.rays, spec.order, spec.secondary.seed);
   return workload;
 }

@@ -38,4 +38,11 @@ struct RayWorkload {
 RayWorkload makeRayWorkload(const WordMemory& memory, uint32_t modelAddress, const Camera& camera,
                             const GoldenConfig& golden, const RayWorkloadSpec& spec);
 
+// A secondary workload (spec's type not primary) spawned from `hits`, a frame's primary hits in
+// pixel order, by any kind's golden model: random rays fill the cube that `box` places (one per
+// pixel of the frame's `pixels` unless spec.randomRays says), every record points at the model
+// header at `modelAddress`; ordered as spec.order says.
+RayWorkload spawnRayWorkload(const std::vector<SurfaceHit>& hits, const ModelHeader& box,
+                             size_t pixels, uint32_t modelAddress, const RayWorkloadSpec& spec);
+
 }  // namespace rtu

@@ -54,6 +54,21 @@ void checkPositive(double value, const char* what) {
                                 std::to_string(value));
 }
 
+void checkNotNegative(double value, const char* what) {
+  if (!(value >= 0.0 && std::isfinite(value)))
+    throw std::invalid_argument(std::string(what) + " must be 0 or positive and finite, got " +
+                                std::to_string(value));
+}
+
+// The light each of a hit's shadow rays goes to, light by light (an area light's samples in turn).
+std::vector<const Light*> shadowRayLights(const SecondarySettings& settings) {
+  std::vector<const Light*> lights;
+  if (settings.type != RayType::Shadow) return lights;
+  for (const Light& light : settings.lights)
+    lights.insert(lights.end(), light.isArea() ? settings.lightSamples : 1, &light);
+  return lights;
+}
+
 }  // namespace
 
 RayType parseRayType(const std::string& text) {
@@ -90,11 +105,12 @@ void SecondarySettings::validate() const {
     throw std::invalid_argument("--light: shadow rays need at least one light");
   if (samples < 1 || samples > 1024)
     throw std::invalid_argument("--samples must be 1 to 1024, got " + std::to_string(samples));
+  if (lightSamples < 1 || lightSamples > 1024)
+    throw std::invalid_argument("--light-samples must be 1 to 1024, got " +
+                                std::to_string(lightSamples));
   checkPositive(aoDistance, "--ao-distance");
-  checkPositive(selfOffset, "the self-intersection offset");
-  if (!(gridOffset >= 0.0 && std::isfinite(gridOffset)))
-    throw std::invalid_argument("the grid offset must be 0 or positive and finite, got " +
-                                std::to_string(gridOffset));
+  checkNotNegative(selfOffset, "the self-intersection offset");
+  checkNotNegative(gridOffset, "the grid offset");
 }
 
 glm::dvec3 spawnOrigin(const SurfaceHit& hit, const SecondarySettings& settings) {
@@ -105,7 +121,11 @@ glm::dvec3 spawnOrigin(const SurfaceHit& hit, const SecondarySettings& settings)
 }
 
 uint32_t SecondarySettings::raysPerHit() const {
-  if (type == RayType::Shadow) return static_cast<uint32_t>(lights.size());
+  if (type == RayType::Shadow) {
+    uint32_t rays = 0;
+    for (const Light& light : lights) rays += light.isArea() ? lightSamples : 1;
+    return rays;
+  }
   if (type == RayType::Ao || type == RayType::Diffuse) return static_cast<uint32_t>(samples);
   return 1;
 }
@@ -115,6 +135,7 @@ std::vector<RayRecord> spawnSecondaryRays(const std::vector<SurfaceHit>& hits,
                                           uint32_t modelAddress) {
   settings.validate();
   const uint64_t perHit = settings.raysPerHit();
+  const std::vector<const Light*> lightOfRay = shadowRayLights(settings);
   std::vector<RayRecord> rays;
   rays.reserve(hits.size() * perHit);
   for (const SurfaceHit& hit : hits) {
@@ -124,7 +145,7 @@ std::vector<RayRecord> spawnSecondaryRays(const std::vector<SurfaceHit>& hits,
       const uint64_t id = hit.pixel * perHit + k;
       switch (settings.type) {
         case RayType::Shadow: {
-          const glm::dvec3 toLight = settings.lights[k] - origin;
+          const glm::dvec3 toLight = lightOfRay[k]->sample(sampler) - origin;
           if (glm::dot(toLight, hit.normal) > 0.0)
             rays.push_back(record(id, origin, toLight, RaySpan::AnyHit, modelAddress));
           break;

@@ -10,6 +10,8 @@ namespace rtu {
 template <>
 struct KindScene<BvhKind<>> : TriangleKindScene<BvhKind<>> {
   static constexpr const char* kStructure = "bvh";
+  // No offset off a surface: a spawned ray's span starts at kBvhSpanTMin, the float epsilon.
+  static constexpr double kSelfOffset = 0;
   static AccelBuild build(const TriangleMesh& mesh, const AccelSpec& spec, const RtuConfig& rtu);
 };
 

@@ -1,7 +1,9 @@
 #include "kinds/svo/explore/svo_scene.h"
 
+#include <cmath>
 #include <utility>
 
+#include "kinds/svo/golden_model.h"
 #include "kinds/svo/ray_setup.h"
 #include "kinds/svo/scene_loader.h"
 #include "kinds/svo/stack_check.h"
@@ -34,6 +36,25 @@ std::vector<HostRecord> KindScene<SvoKind>::records(const FrameScene& scene,
 HostRecord KindScene<SvoKind>::record(const FrameScene& scene, const RunConfig& settings,
                                       uint32_t id, const Ray& ray) {
   return makeTValueRecord(id, ray, scene.entry, settings.epsilon);
+}
+
+PassSource KindScene<SvoKind>::passSource(const FrameScene& scene, const RunConfig& settings) {
+  const GoldenConfig& golden = settings.rtu.coreConfig<SvoKind>();
+  golden.validate();
+  PassSource source;
+  source.words = scene.words;
+  source.box = makeModelHeader(ModelPlacement{}, scene.entry);
+  const ModelHeaderWords header = encodeModelHeader(source.box);
+  source.modelAddress = static_cast<uint32_t>(source.words.size());
+  source.words.insert(source.words.end(), header.begin(), header.end());
+  const WordMemory memory(source.words);
+  const std::vector<RayRecord> primaries =
+      makeFrameRayRecords(settings.camera, source.modelAddress);
+  GoldenModel model(memory, golden);
+  source.hits =
+      surfaceHits(primaries, model.traceRays(primaries, golden.epsilon), source.box, golden.format);
+  source.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
+  return source;
 }
 
 }  // namespace rtu

@@ -21,6 +21,11 @@ struct KindScene<SvoKind> {
   static HostRecord record(const FrameScene& scene, const RunConfig& settings, uint32_t id,
                            const Ray& ray);
   static std::string buildKey(const RunConfig&) { return ""; }
+  // The golden model's hits of the frame's rays as ray records against a model header appended
+  // after the octree (the identity placement: the cube where the frame's t-value records see
+  // it), which the passes' records point at; off a surface 16 steps of the format along the
+  // normal (the golden t is within a few steps of the exact one), past the hit voxel's exit.
+  static PassSource passSource(const FrameScene& scene, const RunConfig& settings);
 };
 
 }  // namespace rtu
