@@ -16,6 +16,7 @@
 #include "app/scene_shading.h"
 #include "app/schema_flags.h"
 #include "app/workers_option.h"
+#include "base/choice_list.h"
 #include "base/output_file.h"
 #include "explore/animation_run.h"
 #include "explore/animation_workers.h"
@@ -123,6 +124,15 @@ void writeExtras(const AnimateOptions& options, const SceneDescription& scene,
     std::cout << "wrote       " << animation.path << " (" << animation.tool << ")\n";
 }
 
+// The kinds with their own animation, as a message names them: "bvh".
+std::string animatingCores() {
+  std::vector<std::string> names;
+  forEachCoreKind([&names](auto kind) {
+    if constexpr (KindAnimation<decltype(kind)>::kAnimates) names.push_back(decltype(kind)::kName);
+  });
+  return choiceList(names);
+}
+
 // Runs the animation of a kind with its own (KindAnimation<Kind>), and returns true; false on the
 // svo core, whose models' octrees the scene manager below merges per ray. Any other kind is
 // refused, naming it.
@@ -142,7 +152,8 @@ bool animateWithKind(const AnimateOptions& options, const SceneDescription& scen
     } else {
       throw std::invalid_argument("animate --core " + settings.rtu.core +
                                   ": animated scenes run on the svo core (the scene manager) or "
-                                  "a core with its own animation (bvh: the two-level BVH); the " +
+                                  "the " +
+                                  animatingCores() + " core (its own animation); the " +
                                   settings.rtu.core + " core has none");
     }
   });
