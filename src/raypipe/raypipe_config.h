@@ -55,7 +55,7 @@ struct RaypipeConfig {
   RaypipeLatencies latency;
   RaypipeFifoDepths fifo;
   RaypipeCacheKind cache = RaypipeCacheKind::BlockRam;
-  Division division = Division::Ieee;
+  Division division = Division::Altfp;  // as built: the shipped altfp_div (altfp_div.h)
   KdTMaxClamp tMaxClamp = KdTMaxClamp::AsBuilt;
   double clockMHz = 50.0;  // R1 COMMON/defines.sv CLK_FREQ
   // The pixel buffer's SRAM writer waits out the VGA reader's window, as built (docs/raypipe.md,
