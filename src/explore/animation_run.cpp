@@ -3,6 +3,7 @@
 #include <chrono>
 #include <thread>
 
+#include "explore/animation_frame_columns.h"
 #include "kinds/core_result.h"
 #include "rtu/job_manager_timing.h"
 #include "rtu/rtu_recurrence.h"
@@ -37,10 +38,8 @@ void count(FrameStatistics& statistics, const SceneHit& hit) {
 
 const StatisticGroup<FrameStatistics>& FrameStatistics::declaration() {
   using F = FrameStatistics;
-  static const StatisticGroup<FrameStatistics> group =
-      StatisticGroup<FrameStatistics>("a frame of an animation: the columns of animate's CSV")
-          .setting(Statistic("frame", "", "the frame's number"), &F::frame)
-          .setting(Statistic("time_s", "s", "the frame's time in the animation"), &F::time)
+  static const StatisticGroup<F> group = withFrameTime(
+      animationFrameColumns<F>("a frame of an animation: the columns of animate's CSV")
           .count(Statistic("pixels", "pixels", "the frame's pixels"), &F::pixels)
           .count(Statistic("rays_traced", "rays", "pixels the scene manager traced"),
                  &F::raysTraced)
@@ -57,16 +56,7 @@ const StatisticGroup<FrameStatistics>& FrameStatistics::declaration() {
           .count(Statistic("skipped", "instances", "instances left untraced by those rays"),
                  &F::skipped)
           .count(Statistic("traversal_cycles", "cycles", "the traced jobs' golden costs summed"),
-                 &F::traversalCycles)
-          .count(Statistic("cycles", "cycles",
-                           "the frame's total on the RTU (recurrence or simulated)"),
-                 &F::cycles)
-          .derived(Statistic("frame_ms", "ms", "the frame's time at the clock"), &F::frameMs)
-          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
-                   &F::framesPerSecond)
-          .real(Statistic("host_s", "s", "host time the frame took"), &F::hostSeconds)
-          .setting(Statistic("clock_mhz", "MHz", "the clock of frame_ms and fps").notAColumn(),
-                   &F::clockMhz);
+                 &F::traversalCycles));
   return group;
 }
 

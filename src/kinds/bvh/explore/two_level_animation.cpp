@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "explore/accel_build.h"
+#include "explore/animation_frame_columns.h"
 #include "explore/scene_mesh.h"
 #include "kinds/bvh/bvh_quality.h"
 #include "kinds/core_result.h"
@@ -53,10 +54,8 @@ const RtuConfig& checkedBvh(const RtuConfig& rtu) {
 
 const StatisticGroup<TwoLevelFrameStatistics>& TwoLevelFrameStatistics::declaration() {
   using F = TwoLevelFrameStatistics;
-  static const StatisticGroup<F> group =
-      StatisticGroup<F>("a frame of a two-level BVH animation: the columns of animate's CSV")
-          .setting(Statistic("frame", "", "the frame's number"), &F::frame)
-          .setting(Statistic("time_s", "s", "the frame's time in the animation"), &F::time)
+  static const StatisticGroup<F> group = withFrameTime(
+      animationFrameColumns<F>("a frame of a two-level BVH animation: the columns of animate's CSV")
           .count(Statistic("pixels", "pixels", "the frame's pixels, one ray each"), &F::pixels)
           .count(Statistic("hits", "rays", "pixels whose ray hit an instance"), &F::hits)
           .count(Statistic("instances", "instances", "instances placed in the frame"),
@@ -77,16 +76,7 @@ const StatisticGroup<TwoLevelFrameStatistics>& TwoLevelFrameStatistics::declarat
                  &F::nodesVisited)
           .count(Statistic("triangle_tests", "tests", "ray/triangle tests"), &F::triangleTests)
           .count(Statistic("traversal_cycles", "cycles", "the rays' costs summed"),
-                 &F::traversalCycles)
-          .count(Statistic("cycles", "cycles",
-                           "the frame's total on the RTU (recurrence or simulated)"),
-                 &F::cycles)
-          .derived(Statistic("frame_ms", "ms", "the frame's time at the clock"), &F::frameMs)
-          .derived(Statistic("fps", "frames/s", "frames per second at the clock"),
-                   &F::framesPerSecond)
-          .real(Statistic("host_s", "s", "host time the frame took"), &F::hostSeconds)
-          .setting(Statistic("clock_mhz", "MHz", "the clock of frame_ms and fps").notAColumn(),
-                   &F::clockMhz);
+                 &F::traversalCycles));
   return group;
 }
 
