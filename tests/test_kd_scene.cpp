@@ -3,6 +3,8 @@
 // format's limits and the hardware's capacities.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "base/float_bits.h"
 #include "kinds/kd/trayracer_scene.h"
 
@@ -46,6 +48,31 @@ TEST_CASE("UTTM maps a general triangle onto the unit triangle", "[kd]") {
     CHECK(apply(b)[k] == Approx(k == 1 ? 1.0 : 0.0).margin(1e-12));
     CHECK(apply(c)[k] == Approx(0.0).margin(1e-12));
   }
+}
+
+// A triangle in the plane x = 1 wound so that N = (C - A) x (B - A) = (0, 1, 0) x (0, 0, 1) =
+// (1, 0, 0): its plane lies at distance 1 along N, so R1's third column N - C = (0, -1, 0) is A - C
+// and B - C = (0, -1, 1) is in the plane too: det 0, 1/det infinite, every entry infinite or NaN,
+// and INT never hits it (a voxel scene's outer faces on [-1, 1]^3). The `normal` column (N itself)
+// gives det 1 and maps the triangle as any other, and C + N to (0, 0, 1).
+TEST_CASE("UTTM of a triangle at distance 1: R1's singular\\, the normal column's not", "[kd]") {
+  const glm::dvec3 a(1, 0, 0), b(1, 0, 1), c(1, 1, 0);
+  const UnitTriangleMatrix r1 = unitTriangleMatrix(a, b, c);
+  CHECK_FALSE(std::isfinite(r1.m[0][0]));
+  CHECK_FALSE(std::isfinite(r1.t[2]));
+  const UnitTriangleMatrix m = unitTriangleMatrix(a, b, c, KdMatrixColumn::Normal);
+  const auto apply = [&m](const glm::dvec3& p) {
+    glm::dvec3 q;
+    for (int r = 0; r < 3; ++r) q[r] = m.m[r][0] * p.x + m.m[r][1] * p.y + m.m[r][2] * p.z + m.t[r];
+    return q;
+  };
+  const glm::dvec3 expected[4] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}};
+  const glm::dvec3 points[4] = {a, b, c, c + glm::dvec3(1, 0, 0)};
+  for (int p = 0; p < 4; ++p)
+    for (int k = 0; k < 3; ++k) CHECK(apply(points[p])[k] == Approx(expected[p][k]).margin(1e-12));
+  CHECK(parseKdMatrixColumn("r1") == KdMatrixColumn::NormalMinusC);
+  CHECK(parseKdMatrixColumn("normal") == KdMatrixColumn::Normal);
+  CHECK_THROWS_WITH(parseKdMatrixColumn("n"), Catch::Contains("accel.kd_matrix 'n'"));
 }
 
 // Two triangles: T0 with x in [0, 1], T1 with x in [3, 4], both y, z in [0, 1].

@@ -251,6 +251,14 @@ std::function<std::string(const RunConfig&)> ignoredUnlessBuilt(const std::strin
   };
 }
 
+// The k-d tree's build settings count for a kdtree build, the k-d core and the ray pipe.
+std::string ignoredUnlessKd(const RunConfig& c) {
+  return c.accel.structure == "kdtree" || c.rtu.core == "kd" ||
+                 c.architecture == Architecture::Raypipe
+             ? std::string()
+             : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
+}
+
 // What `build` makes: the structure, then each triangle structure's own settings.
 void addAccelSettings(std::vector<Setting>& schema) {
   using C = RunConfig;
@@ -298,12 +306,14 @@ void addAccelSettings(std::vector<Setting>& schema) {
       "kept too, but a triangle touching the plane goes to both sides) or r1 (the Tray Racer "
       "team's, an END first, which drops a triangle flat in the split plane; their files)",
       [](C& c) -> std::string& { return c.accel.kdEdgeOrder; }, sameText, sameText));
-  schema.back().ignoredBecause = [](const C& c) {
-    return c.accel.structure == "kdtree" || c.rtu.core == "kd" ||
-                   c.architecture == Architecture::Raypipe
-               ? std::string()
-               : "accel is " + c.accel.structure + " and the core kind is " + c.rtu.core;
-  };
+  schema.back().ignoredBecause = ignoredUnlessKd;
+  schema.push_back(choice(
+      "accel.kd_matrix", "--kd-matrix", {"r1", "normal"}, kUseAccel,
+      "k-d tree: the unit-triangle matrices' third column: r1 (R1's N - C, singular for a "
+      "triangle whose plane lies at distance 1 from the origin: never hit) or normal (N itself, "
+      "never singular)",
+      [](C& c) -> std::string& { return c.accel.kdMatrix; }, sameText, sameText));
+  schema.back().ignoredBecause = ignoredUnlessKd;
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,
                         "a triangle structure's memory image (.bvh) to trace ray records through",
                         [](C& c) -> std::string& { return c.accel.file; }));

@@ -107,7 +107,7 @@ std::string frameSceneKey(const RunConfig& settings) {
          std::to_string(spec.seed) + "|" + std::to_string(spec.root) + "|" +
          std::to_string(spec.maxDepth) + "|" + accel.builder + "|" +
          std::to_string(accel.dropBadTriangles) + "|" + kindKey + "|" + accel.index + "|" +
-         accel.kdEdgeOrder;
+         accel.kdEdgeOrder + "|" + accel.kdMatrix;
 }
 
 }  // namespace rtu

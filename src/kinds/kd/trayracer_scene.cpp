@@ -144,7 +144,7 @@ bool TrayRacerNode::operator==(const TrayRacerNode& o) const {
 
 TrayRacerScene makeTrayRacerScene(const KdBuild& build, const std::vector<glm::dvec3>& corners,
                                   const std::vector<glm::dvec3>& normals,
-                                  const TrayRacerMaterial& material) {
+                                  const TrayRacerMaterial& material, KdMatrixColumn column) {
   TrayRacerScene scene;
   for (const KdBuildNode& b : build.nodes) {
     TrayRacerNode node;
@@ -165,7 +165,7 @@ TrayRacerScene makeTrayRacerScene(const KdBuild& build, const std::vector<glm::d
   for (size_t i = 0; i + 2 < corners.size(); i += 3)
     scene.uttms.push_back(
         packUttm(unitTriangleMatrix(toHardwareSpace(corners[i]), toHardwareSpace(corners[i + 1]),
-                                    toHardwareSpace(corners[i + 2]))));
+                                    toHardwareSpace(corners[i + 2]), column)));
   // Five words: 3 + 3 float24 then a float16, 20 bytes; the fields straddle words.
   for (const glm::dvec3& n : normals) {
     Writer w;

@@ -65,10 +65,11 @@ struct TrayRacerMaterial {
 
 // The file from a build over `corners` (three world-space vertices per triangle, in double, the
 // build's triangle order), `normals` (each triangle's vertex-0 normal in world space) and one
-// material for all.
+// material for all; the unit-triangle matrices with `column` (uttm.h: R1's by default).
 TrayRacerScene makeTrayRacerScene(const KdBuild& build, const std::vector<glm::dvec3>& corners,
                                   const std::vector<glm::dvec3>& normals,
-                                  const TrayRacerMaterial& material);
+                                  const TrayRacerMaterial& material,
+                                  KdMatrixColumn column = KdMatrixColumn::NormalMinusC);
 
 // The normal a triangle's shading record holds (vertex 0's, in world space), its float24 fields
 // padded to binary32 as the shader reads them.

@@ -1,13 +1,20 @@
 #include "kinds/kd/uttm.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "kinds/kd/truncated_float.h"
 
 namespace rtu {
 
-UnitTriangleMatrix unitTriangleMatrix(const glm::dvec3& A, const glm::dvec3& B,
-                                      const glm::dvec3& C) {
+KdMatrixColumn parseKdMatrixColumn(const std::string& name) {
+  if (name == "r1") return KdMatrixColumn::NormalMinusC;
+  if (name == "normal") return KdMatrixColumn::Normal;
+  throw std::invalid_argument("accel.kd_matrix '" + name + "': r1 or normal");
+}
+
+UnitTriangleMatrix unitTriangleMatrix(const glm::dvec3& A, const glm::dvec3& B, const glm::dvec3& C,
+                                      KdMatrixColumn column) {
   glm::dvec3 n((C.y - A.y) * (B.z - A.z) - (C.z - A.z) * (B.y - A.y),
                (C.z - A.z) * (B.x - A.x) - (C.x - A.x) * (B.z - A.z),
                (C.x - A.x) * (B.y - A.y) - (C.y - A.y) * (B.x - A.x));
@@ -18,7 +25,7 @@ UnitTriangleMatrix unitTriangleMatrix(const glm::dvec3& A, const glm::dvec3& B,
   for (int i = 0; i < 3; ++i) {
     a[i][0] = A[i] - C[i];
     a[i][1] = B[i] - C[i];
-    a[i][2] = n[i] - C[i];
+    a[i][2] = column == KdMatrixColumn::Normal ? n[i] : n[i] - C[i];
     a[i][3] = C[i];
   }
   // The adjugate by the textbook cofactor expansion: b_ij = the sum of three products minus three,
@@ -49,8 +56,9 @@ UnitTriangleMatrix unitTriangleMatrix(const glm::dvec3& A, const glm::dvec3& B,
        {"113442", "123144", "143241", "113244", "123441", "143142"},
        {"112244", "122441", "142142", "112442", "122144", "142241"},
        {"112432", "122134", "142231", "112234", "122431", "142132"}}};
-  // The determinant: of its 24 terms only the six without a zero of row 4 remain (it is not zero
-  // for a triangle, so the zero terms cannot change it).
+  // The determinant: of its 24 terms only the six without a zero of row 4 remain (the zero terms
+  // cannot change a nonzero determinant; a zero one, R1's column in a plane at distance 1, makes
+  // the entries infinities and NaNs either way).
   const double det = a[0][0] * a[1][1] * a[2][2] + a[0][1] * a[1][2] * a[2][0] +
                      a[0][2] * a[1][0] * a[2][1] - a[0][0] * a[1][2] * a[2][1] -
                      a[0][1] * a[1][0] * a[2][2] - a[0][2] * a[1][1] * a[2][0];

@@ -39,16 +39,19 @@ AccelBuild KindScene<KdKind>::build(const TriangleMesh& mesh, const AccelSpec& s
   PbrtKdParameters parameters;
   parameters.edgeOrder = parseKdEdgeOrder(spec.kdEdgeOrder);
   const KdBuild tree = buildPbrtKd(pbrtTriangleBoxes(corners), parameters);
-  const TrayRacerScene scene = makeTrayRacerScene(tree, corners, normals, kGreyMaterial);
+  const KdMatrixColumn column = parseKdMatrixColumn(spec.kdMatrix);
+  const TrayRacerScene scene = makeTrayRacerScene(tree, corners, normals, kGreyMaterial, column);
   AccelBuild build;
   build.words = layOutKd(scene).words;
   build.sceneFile = writeTrayRacerScene(scene, spec.index == "wide" ? TrayRacerFormat::Wide
                                                                     : TrayRacerFormat::Narrow);
   build.warnings = trayRacerCapacityWarnings(scene);
   build.quality = measureQuality(tree, parameters);
-  build.settings = {{"builder", "pbrt"}, {"kd_edge_order", spec.kdEdgeOrder}};
+  build.settings = {
+      {"builder", "pbrt"}, {"kd_edge_order", spec.kdEdgeOrder}, {"kd_matrix", spec.kdMatrix}};
   build.description = "k-d tree (PBRT v1 SAH, " + edgeOrderWords(parameters.edgeOrder) +
-                      spec.index + " scene file)";
+                      (column == KdMatrixColumn::Normal ? "normal matrices, " : "") + spec.index +
+                      " scene file)";
   return build;
 }
 
