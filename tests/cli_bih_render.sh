@@ -80,7 +80,7 @@ assert 0 < fill < 100 and abs(fill - 100 * tests / cost) < 0.1, (fill, tests, co
 PY
 
 # The seed's 10-bit node indices hold 1024 nodes: the frame's tree is refused, naming the way out.
-expect_error "3999 nodes, more than 1024 (10-bit node indices; the wide index (accel.index = wide, --index wide) has 29)" \
+expect_error "3951 nodes, more than 1024 (10-bit node indices; the wide index (accel.index = wide, --index wide) has 29)" \
   "$rtusim" render --core bih "${frame[@]}" --model golden
 
 # A sweep over both triangle kinds: the BIH's settings count in its rows, not the BVH's.

@@ -120,7 +120,9 @@ std::optional<FormatHit> nearestUnitTriangle(
 class FixedScene {
  public:
   FixedScene(const TriangleMesh& mesh, const FixedTriangleFormat& format)
-      : mesh_(mesh), grid_(meshBounds(mesh), format), projected_(projectMesh(mesh, grid_)) {
+      : mesh_(mesh),
+        grid_(gridBoxAround(meshBounds(mesh), format), format),
+        projected_(projectMesh(mesh, grid_)) {
     config_.format = format;
     if (projected_.triangles.empty()) return;  // every triangle degenerate: every ray misses
     image_ = layOut(buildBih(triangleBoxes(mesh, grid_, projected_), sceneUpper(grid_)), projected_,

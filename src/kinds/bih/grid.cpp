@@ -41,6 +41,17 @@ std::optional<std::pair<double, double>> clip(const Aabb<double>& box, const Ray
 
 }  // namespace
 
+Aabb<double> gridBoxAround(const Aabb<double>& vertices, const FixedTriangleFormat& format) {
+  validateFixedTriangleFormat(format);
+  const double units = static_cast<double>(pow2(format.n) - 1);
+  if (units <= 4 * kGridMargin) return vertices;  // a grid of a few units: no room to keep free
+  const double margin = kGridMargin * longestSide(vertices) / (units - 2 * kGridMargin);
+  Aabb<double> box = vertices;
+  box.lower -= glm::dvec3(margin);
+  box.upper += glm::dvec3(margin);
+  return box;
+}
+
 SceneGrid::SceneGrid(const Aabb<double>& box, const FixedTriangleFormat& format)
     : format_(format), box_(box), scale_(0) {
   validateFixedTriangleFormat(format);

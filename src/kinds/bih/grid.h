@@ -34,6 +34,19 @@ struct GridRay {
   }
 };
 
+// Grid units kept free around the scene's vertices (rtusim's, not the seed's: S4 scales the
+// vertices' own box to the grid). A ray from outside is clipped to the grid's box, so it starts on
+// a face of that box; a triangle lying in that face (a voxel face, a model's flat side) would be
+// at t = 0 there, which the kernels refuse (t > 0; t >= 1 in the VHDL variant), and the ray would
+// pass through it. Two units, the size of the seed's own secondary-ray offset (S4 L468), keep
+// every triangle at least 1.5 units (after the origin's rounding) ahead of a clipped origin.
+constexpr int kGridMargin = 2;
+
+// The box whose grid holds `vertices` kGridMargin grid units inside each of its faces: `vertices`
+// widened on every side by kGridMargin L / (2^n - 1 - 2 kGridMargin), L its longest side (not
+// widened on a grid of at most 4 kGridMargin units, n <= 3).
+Aabb<double> gridBoxAround(const Aabb<double>& vertices, const FixedTriangleFormat& format);
+
 class SceneGrid {
  public:
   // The grid of `box` (the scene's vertices' box, geometry/ray_sets.h meshBounds). Throws

@@ -14,7 +14,7 @@ namespace rtu {
 AccelBuild KindScene<BihKind<>>::build(const TriangleMesh& mesh, const AccelSpec& spec,
                                        const RtuConfig& rtu) {
   const FixedTriangleFormat& format = rtu.coreConfig<BihKind<>>().format;
-  const SceneGrid grid(meshBounds(mesh), format);
+  const SceneGrid grid(gridBoxAround(meshBounds(mesh), format), format);
   const ProjectedMesh projected = projectMesh(mesh, grid);
   const BihBuild tree = buildBih(triangleBoxes(mesh, grid, projected), sceneUpper(grid));
   const BihIndexWidth width = spec.index == "wide" ? BihIndexWidth::Wide : BihIndexWidth::Seed;
@@ -34,7 +34,8 @@ uint32_t KindScene<BihKind<>>::appendModelHeader(std::vector<uint32_t>& words,
                                                  const TriangleMesh& mesh,
                                                  const ModelPlacement& placement,
                                                  const RunConfig& settings) {
-  const SceneGrid grid(meshBounds(mesh), settings.rtu.coreConfig<BihKind<>>().format);
+  const FixedTriangleFormat& format = settings.rtu.coreConfig<BihKind<>>().format;
+  const SceneGrid grid(gridBoxAround(meshBounds(mesh), format), format);
   return appendBihModelHeader(words, grid, placement);
 }
 
