@@ -100,4 +100,16 @@ assert int(bih["1"]["bih_nodes_visited"]) > 0 and bih["1"]["bvh_nodes_visited"] 
 assert int(bih["1"]["total_cycles"]) < int(bih["41"]["total_cycles"]), rows
 assert bvh[0]["total_cycles"] == bvh[1]["total_cycles"], rows
 PY
+# Faces on the scene box (a voxel scene's outer faces): a ray clipped onto the box must still hit
+# them (the grid's margin, docs/triangles.md "Faces on the scene box and flat triangles").
+"$rtusim" compare --scene menger --depth 2 --width 48 --height 32 --architectures bvh,bih -j 1 \
+  --json box_faces.json >box_faces.txt 2>&1 || fail "compare menger: $(cat box_faces.txt)"
+python3 - box_faces.json <<'PY' || fail "menger's faces on the BIH: $(cat box_faces.txt)"
+import json, sys
+rows = {r["architecture"]: r["agreement"] for r in json.load(open(sys.argv[1]))["rows"]}
+assert rows["bvh"]["both_hit"] > 500, rows
+for key in ("both_hit", "hit_miss_differ", "other_object"):
+    assert rows["bih"][key] == rows["bvh"][key], (key, rows)
+assert rows["bih"]["other_object"] == 0, rows
+PY
 echo "bih render: ok"
