@@ -8,6 +8,7 @@
 # rate, cycles per ray, cost per ray, DRAM bytes per ray, DRAM utilisation and the limit of the
 # pass's window of the frame's run, and one row for the whole frame.
 # Usage: bench/frame_passes.sh [rtusim] [scene] [depth] [width] [height] [preset] [samples] [kinds]
+#        [render options, e.g. "--kd-matrix normal"]
 set -euo pipefail
 
 rtusim=${1:-$(dirname "$0")/../build/rtusim}
@@ -18,6 +19,7 @@ height=${5:-90}
 preset=${6:-cached}
 samples=${7:-4}
 kinds=${8:-svo bvh bih kd}
+read -r -a extra <<<"${9:-}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -27,7 +29,7 @@ for kind in $kinds; do
   for order in pixel shuffled; do
     "$rtusim" render --preset "$preset" --core "$kind" --index wide --scene "$scene" \
       --depth "$depth" --width "$width" --height "$height" --order "$order" \
-      --passes primary,shadow,ao,diffuse --samples "$samples" --stats "$work/s.json" \
+      --passes primary,shadow,ao,diffuse --samples "$samples" --stats "$work/s.json" "${extra[@]}" \
       >"$work/render.txt" 2>&1
     python3 - "$work" "$kind" "$order" <<'PY'
 import json, re, sys
