@@ -34,14 +34,14 @@ golden=$(hits golden.txt)
 grep -q "k-d tree (PBRT v1 SAH, R1's edge order, wide scene file)" r1.txt ||
   fail "R1's scene line: $(cat r1.txt)"
 # A voxel scene filling the cube [-1, 1]^3: its outer faces lie at distance 1 from the origin, where
-# R1's unit-triangle matrices (accel.kd_matrix r1, the default) are singular and never hit, so the
-# k-d core sees the sponge's inside (docs/triangles.md, "Known defect"); with the normal column it
-# agrees with the float64 reference on every pixel, as the BVH does.
+# R1's unit-triangle matrices (accel.kd_matrix r1, the seed's) are singular and never hit, so the
+# k-d core sees the sponge's inside (docs/triangles.md, "Faces on the scene box"); with the normal
+# column (the default) it agrees with the float64 reference on every pixel, as the BVH does.
 menger=(--scene menger --depth 2 --width 48 --height 32 --architectures bvh,kd -j 1)
-"$rtusim" compare "${menger[@]}" --json as_built.json >as_built.txt 2>&1 ||
-  fail "compare menger: $(cat as_built.txt)"
-"$rtusim" compare "${menger[@]}" --kd-matrix normal --json normal.json >normal.txt 2>&1 ||
-  fail "compare menger --kd-matrix normal: $(cat normal.txt)"
+"$rtusim" compare "${menger[@]}" --kd-matrix r1 --json as_built.json >as_built.txt 2>&1 ||
+  fail "compare menger --kd-matrix r1: $(cat as_built.txt)"
+"$rtusim" compare "${menger[@]}" --json normal.json >normal.txt 2>&1 ||
+  fail "compare menger: $(cat normal.txt)"
 python3 - as_built.json normal.json <<'PY' || fail "menger's faces: $(cat as_built.txt normal.txt)"
 import json, sys
 as_built, normal = ({r["architecture"]: r["agreement"] for r in json.load(open(p))["rows"]}
@@ -51,8 +51,8 @@ assert as_built["kd"]["missed_hits"] > 100, as_built
 for key in ("both_hit", "hit_miss_differ", "other_object"):
     assert normal["kd"][key] == normal["bvh"][key] == as_built["bvh"][key] * (key == "both_hit"), (
         key, normal)
-kd = [r for r in json.load(open(sys.argv[2]))["rows"] if r["architecture"] == "kd"][0]
-assert kd["structure"].startswith("k-d tree (PBRT v1 SAH, normal matrices, wide"), kd["structure"]
+kd = [r for r in json.load(open(sys.argv[1]))["rows"] if r["architecture"] == "kd"][0]
+assert kd["structure"].startswith("k-d tree (PBRT v1 SAH, R1's matrices, wide"), kd["structure"]
 PY
 [[ $(hits lt.txt) == "$golden" ]] || fail "lt finds $(hits lt.txt) hits, golden $golden"
 [[ $(hits ca.txt) == "$golden" ]] || fail "ca finds $(hits ca.txt) hits, golden $golden"

@@ -308,10 +308,10 @@ void addAccelSettings(std::vector<Setting>& schema) {
       [](C& c) -> std::string& { return c.accel.kdEdgeOrder; }, sameText, sameText));
   schema.back().ignoredBecause = ignoredUnlessKd;
   schema.push_back(choice(
-      "accel.kd_matrix", "--kd-matrix", {"r1", "normal"}, kUseAccel,
-      "k-d tree: the unit-triangle matrices' third column: r1 (R1's N - C, singular for a "
-      "triangle whose plane lies at distance 1 from the origin: never hit) or normal (N itself, "
-      "never singular)",
+      "accel.kd_matrix", "--kd-matrix", {"normal", "r1"}, kUseAccel,
+      "k-d tree: the unit-triangle matrices' third column: normal (N itself, never singular) or "
+      "r1 (R1's N - C, as the seed's files: singular for a triangle whose plane lies at distance "
+      "1 from the origin, which is then never hit)",
       [](C& c) -> std::string& { return c.accel.kdMatrix; }, sameText, sameText));
   schema.back().ignoredBecause = ignoredUnlessKd;
   schema.push_back(text(SettingKind::Path, "accel_file", "--accel-file", kUseBuffers,

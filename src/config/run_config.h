@@ -24,8 +24,9 @@ struct AccelSpec {
   bool dropBadTriangles = false;     // degenerate and duplicate triangles dropped, not refused
   std::string index = "seed";        // bih, kdtree: the seed's index widths, or wide
   std::string kdEdgeOrder = "flat";  // kdtree: edges at equal positions, flat, pbrt or r1
-  std::string kdMatrix = "r1";  // kdtree: the unit-triangle matrices' third column, r1 or normal
-  std::string file;             // a built triangle structure's image to trace (.bvh)
+  std::string kdMatrix =
+      "normal";      // kdtree: the unit-triangle matrices' third column, normal or r1
+  std::string file;  // a built triangle structure's image to trace (.bvh)
 };
 
 // What a run models: the thesis' RTU (cores of a kind behind a job manager) or seed 001's ray pipe

@@ -26,8 +26,9 @@ uint64_t mask(int bits) { return bits == 64 ? ~uint64_t(0) : (uint64_t(1) << bit
 
 void checkFits(uint64_t value, int bits, const std::string& what) {
   if (value > mask(bits))
-    throw std::invalid_argument(what + " " + std::to_string(value) + " does not fit its " +
-                                std::to_string(bits) + "-bit field; use the wide format");
+    throw std::invalid_argument(
+        what + " " + std::to_string(value) + " does not fit its " + std::to_string(bits) +
+        "-bit field; use the wide format (accel.index = wide, --index wide)");
 }
 
 uint64_t encode(const TrayRacerNode& node, const Layout& l) {

@@ -50,8 +50,8 @@ AccelBuild KindScene<KdKind>::build(const TriangleMesh& mesh, const AccelSpec& s
   build.settings = {
       {"builder", "pbrt"}, {"kd_edge_order", spec.kdEdgeOrder}, {"kd_matrix", spec.kdMatrix}};
   build.description = "k-d tree (PBRT v1 SAH, " + edgeOrderWords(parameters.edgeOrder) +
-                      (column == KdMatrixColumn::Normal ? "normal matrices, " : "") + spec.index +
-                      " scene file)";
+                      (column == KdMatrixColumn::NormalMinusC ? "R1's matrices, " : "") +
+                      spec.index + " scene file)";
   return build;
 }
 
