@@ -107,7 +107,8 @@ def grouped_bars(ax, scenes, key, title, log):
                 ax.text(x, 0.03, "n/a", rotation=90, fontsize=7, ha="center", va="bottom",
                         transform=ax.get_xaxis_transform())
     ax.set_xticks(range(len(names)))
-    ax.set_xticklabels([dict(SCENES)[s] for s in names], fontsize=8)
+    # A path breaks after its folder, so it does not run into its neighbour's label.
+    ax.set_xticklabels([dict(SCENES)[s].replace("/", "/\n") for s in names], fontsize=8)
     ax.set_title(title, fontsize=10)
     if log:
         ax.set_yscale("log")

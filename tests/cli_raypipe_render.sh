@@ -78,6 +78,19 @@ cycles=$(sed -n 's/^timing *\([0-9]*\) cycles at 50 MHz: .*/\1/p' ca.txt)
 [[ -n $cycles ]] || fail "no timing line: $(cat ca.txt)"
 grep -q "^busiest .* %;" ca.txt && grep -q "ray ids in flight at most" ca.txt &&
   grep -q "^writer  .* waited for the VGA reader (phase 0)" ca.txt || fail "ca report: $(cat ca.txt)"
+# The busiest units by utilisation, as --stats has it: each unit's share of its full rate, per copy
+# with two traversal units (their busy cycles are summed over both), so never above 100 %.
+"$rtusim" render --architecture raypipe --model ca "${small[@]}" --set raypipe.traversal_units=2 \
+  --stats two.json >two.txt
+python3 - two.txt two.json <<'PY' || fail "busiest line: $(cat two.txt)"
+import json, re, sys
+line = [l for l in open(sys.argv[1]) if l.startswith("busiest")][0]
+listed = [(u, float(p)) for u, p in re.findall(r" ([a-z_]+) ([0-9.]+) %;", line)]
+units = {u["unit"]: 100 * u["utilisation"] for u in json.load(open(sys.argv[2]))["statistics"]["units"]}
+assert len(listed) == 4 and all(0 < p <= 100 for _, p in listed), line
+assert all(abs(units[u] - p) < 0.06 for u, p in listed), (listed, units)
+assert listed[0][1] == round(max(units.values()), 1), (listed, units)
+PY
 python3 - rays3.csv ca.csv "$cycles" <<'PY' || fail "ca results CSV"
 import csv, sys
 golden, timed = (list(csv.DictReader(open(path))) for path in sys.argv[1:3])

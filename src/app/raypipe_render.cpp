@@ -95,9 +95,9 @@ RaypipeCycleRun checkedTimedFrame(RaypipeCycleRun run, const RaypipeGoldenFrame&
   return run;
 }
 
-std::string percent(int64_t part, int64_t whole) {
+std::string percent(double share) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f %%", whole ? 100.0 * part / whole : 0.0);
+  std::snprintf(text, sizeof text, "%.1f %%", 100.0 * share);
   return text;
 }
 
@@ -112,12 +112,17 @@ void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::
                 static_cast<long long>(run.frameCycles), config.clockMHz, ms, 1e3 / ms,
                 static_cast<double>(run.results.size()) / run.frameCycles);
   out << line;
-  std::vector<RaypipeUnitActivity> units = run.units;
-  std::sort(units.begin(), units.end(),
-            [](const auto& a, const auto& b) { return a.busy > b.busy; });
+  // Busiest by utilisation: a unit's share of its full rate (the PRG's and SINT's one ray in 3
+  // cycles), per copy when there are two traversal units.
+  const RaypipeStatistics statistics = RaypipeStatistics::of(run, config);
+  std::vector<RaypipeUnitStatistics> busiest = statistics.units;
+  std::stable_sort(busiest.begin(), busiest.end(), [&](const auto& a, const auto& b) {
+    return statistics.utilisation(a) > statistics.utilisation(b);
+  });
   out << "busiest    ";
-  for (size_t i = 0; i < units.size() && i < 4; ++i)
-    out << " " << units[i].unit << " " << percent(units[i].busy, run.frameCycles) << ";";
+  for (size_t i = 0; i < busiest.size() && i < 4; ++i)
+    out << " " << busiest[i].unit << " " << percent(statistics.utilisation(busiest[i])) << ";";
+  std::vector<RaypipeUnitActivity> units = run.units;
   std::sort(units.begin(), units.end(),
             [](const auto& a, const auto& b) { return a.stall > b.stall; });
   out << "\nstalled    ";
