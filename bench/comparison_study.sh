@@ -11,7 +11,7 @@
 #   bench/comparison_study.sh [OUT] [WIDTH] [HEIGHT] [SCENE ...]
 # Scenes: bunny00 armadillo ChineseDragon-10kv refined_elephant room default (the scene file).
 # A set whose JSON file exists is not run again (delete it to re-run). SLOW_BIH: the scenes
-# whose BIH rows run at a quarter of the size (default: "default room").
+# whose BIH rows run at a quarter of the size, for a quick look (default: none).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 rtusim=${RTUSIM:-$root/build/rtusim}
@@ -33,11 +33,10 @@ scene_flags() {
   esac
 }
 
-# Where the BIH core's rows would take too long at the full size (on the scene file's frame, 31
-# times the BVH's cycles: over 20 minutes a row on the loaded build machine; on the room's 1.4
-# million voxel faces over 7), they run at a quarter of it in each direction, in the sets
-# common-bih and seed-bih.
-slow_bih=${SLOW_BIH-default room}
+# The BIH core's rows are the study's longest (on the room about 5 minutes a row: 486 triangle
+# tests a ray); SLOW_BIH="room default" runs them at a quarter of the size in each direction, in
+# the sets common-bih and seed-bih.
+slow_bih=${SLOW_BIH-}
 
 # compare SCENE SET WIDTH HEIGHT ARCHITECTURES: one compare into OUT/SCENE-SET.json.
 run() {
