@@ -198,7 +198,7 @@ TwoLevelBvh stackedInstances() {
 
 }  // namespace
 
-TEST_CASE("Two-level BVH core: the shared stack overflowing across levels\, by hand",
+TEST_CASE("Two-level BVH core: the shared stack overflowing across levels\\, by hand",
           "[two_level]") {
   // The ray along z from the origin. Top level: ROOT0, ROOT1, ROOT_TEST, LEFT0 .. RIGHT1, DECIDE
   // (both instances hit: the one at z = 5 first, the other pushed): 8; REF, INST0-4, XFORM: 15.
@@ -269,7 +269,11 @@ TEST_CASE("Two-level BVH core: a shallow stack on the fixture's instances in eve
     overflowed += std::get<BvhResult>(result).counts.dropped > 0;
     entered += std::get<BvhResult>(result).counts.instances;
   }
-  CHECK(overflowed > 0);
+  uint64_t hits = 0;
+  for (const CoreKindResult& result : golden) hits += std::get<BvhResult>(result).hit;
+  CHECK(hits > 50);        // measured 74 of 384
+  CHECK(entered > 100);    // measured 153
+  CHECK(overflowed > 20);  // measured 39
   const RtuRun ideal = simulateRtu(frame.memory(), frame.jobs, config);
   CHECK(resultsInJobOrder(ideal) == golden);
   checkEqualsRtl(ideal, runRtlTop(frame.memory(), frame.jobs, rtlTopConfig(config)));

@@ -102,10 +102,10 @@ struct KindFixture<BvhKind<>> {
       return BvhInstance{mesh, ModelPlacement{offset, rotationFromEulerDegrees(degrees), scale}};
     };
     const std::vector<BvhInstance> instances = {
-        at(0, {-0.45, 0.1, 0}, {0, 0, 0}, glm::dvec3(0.5)),
-        at(1, {0.45, 0, 0.2}, {0, 30, 0}, glm::dvec3(0.45)),
-        at(0, {0.05, -0.55, 0.3}, {0, 0, 20}, {0.8, 0.3, 0.8}),
-        at(1, {0.1, 0.45, -0.3}, {20, 0, 45}, glm::dvec3(0.3))};
+        at(0, {-0.45, 0.1, 0}, {0, 0, 0}, glm::dvec3(0.6)),
+        at(1, {0.45, 0, 0.2}, {0, 30, 0}, glm::dvec3(0.55)),
+        at(0, {0.05, -0.55, 0.3}, {0, 0, 20}, {0.9, 0.35, 0.9}),
+        at(1, {0.1, 0.45, -0.3}, {20, 0, 45}, glm::dvec3(0.45))};
     std::vector<MeshBvh> built;
     for (const TriangleMesh& mesh : meshes) built.push_back(meshBvh(buildSah(mesh).tree, mesh));
     TwoLevelBvh bvh(std::move(built));
