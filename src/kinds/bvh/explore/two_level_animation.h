@@ -61,9 +61,10 @@ struct TwoLevelFrame {
   TwoLevelFrameStatistics statistics;
 };
 
-// What a frame rewrites: the two-level BVH (its top level) and the memory image (the top level,
-// instance records and world header after the meshes' images). Each thread rendering frames owns
-// one, a copy of the animation's, the meshes' images included.
+// What a frame rewrites: the two-level BVH (its top level; copies share the meshes' BVHs) and the
+// memory image (the top level, instance records and world header after the meshes' images). Each
+// thread rendering frames owns one, a copy of the animation's, the image's copy of the meshes'
+// images included.
 struct TwoLevelWorkspace {
   TwoLevelBvh bvh;
   TwoLevelImage image;
