@@ -31,6 +31,15 @@ RtuConfig bvhCore() {
   return rtu;
 }
 
+// The scene's first `frames` frames at 24x16.
+SceneDescription smallScene(int frames) {
+  SceneOverrides overrides;
+  overrides.width = 24;
+  overrides.height = 16;
+  overrides.frames = frames;
+  return readSceneFile(kScene, overrides);
+}
+
 // The frame's rays through the one-level BVH over the flattened frame.
 std::vector<BvhResult> flattenedFrame(const SceneDescription& scene, int frame) {
   const SceneMesh flat = sceneMesh(scene, scene.timeOf(frame));
@@ -85,11 +94,7 @@ TEST_CASE("Two-level BVH animation equals the flattened frame on hits and t", "[
 
 TEST_CASE("Two-level BVH animation: the cycle-accurate frame equals the golden one",
           "[two_level]") {
-  SceneOverrides overrides;
-  overrides.width = 24;
-  overrides.height = 16;
-  overrides.frames = 1;
-  const SceneDescription scene = readSceneFile(kScene, overrides);
+  const SceneDescription scene = smallScene(1);
   TwoLevelAnimationOptions options;
   options.rtu = bvhCore();
   TwoLevelAnimation golden(scene, options);
@@ -105,11 +110,7 @@ TEST_CASE("Two-level BVH animation: frames in parallel threads equal frames one 
   // animate --threads: three frames two at a time on copies of the structure, handed over in
   // frame order with the results and counts of one thread (the wall-clock times aside). The
   // simulations run one at a time: more than one thread is refused for them.
-  SceneOverrides overrides;
-  overrides.width = 24;
-  overrides.height = 16;
-  overrides.frames = 3;
-  const SceneDescription scene = readSceneFile(kScene, overrides);
+  const SceneDescription scene = smallScene(3);
   TwoLevelAnimationOptions options;
   options.rtu = bvhCore();
   const auto frames = [&](int threads) {

@@ -22,6 +22,7 @@
 #include "kinds/svo/procedural_scenes.h"
 #include "kinds/svo/voxel_faces.h"
 #include "placed_apart.h"
+#include "placed_world.h"
 #include "rtu/golden_shell.h"
 
 namespace rtu {
@@ -115,21 +116,6 @@ struct KindFixture<BvhKind<>> {
     Frame frame{"instances", placedWorld(meshes, instances), image.words(), {}};
     frame.jobs = cameraRecords(fixtureCamera(width, height), image.worldHeader());
     return frame;
-  }
-
-  // The instances' float32 mesh vertices placed into the world in double, concatenated in order.
-  static TriangleMesh placedWorld(const std::vector<TriangleMesh>& meshes,
-                                  const std::vector<BvhInstance>& instances) {
-    TriangleMesh world;
-    for (const BvhInstance& instance : instances) {
-      const auto offset = static_cast<uint32_t>(world.vertices.size());
-      const ModelPlacement& p = instance.placement;
-      for (const glm::dvec3& v : meshes[instance.mesh].vertices)
-        world.vertices.push_back(p.rotation * (p.scale * glm::dvec3(glm::vec3(v))) + p.translation);
-      for (const auto& t : meshes[instance.mesh].triangles)
-        world.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-    }
-    return world;
   }
 
   static BuildTree tree(const std::string& scene, const TriangleMesh& mesh) {
