@@ -111,6 +111,9 @@ for model in golden ca; do
   "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim_$model --model $model \
     --cores 4 >anim_$model.txt || fail "animate --core bvh --model $model: $(cat anim_$model.txt)"
   grep -q "top level   .* us mean build per frame" anim_$model.txt || fail "$(cat anim_$model.txt)"
+  # 4 cores' transform units: 24 binary32 multipliers, 48 DSP48E each.
+  grep -q "resources   [0-9]* DSP48E (192 in the cores' transform units)" anim_$model.txt \
+    || fail "animate --core bvh: no resources line: $(cat anim_$model.txt)"
 done
 python3 - anim_golden/frames.csv anim_ca/frames.csv <<'PY' || fail "animate --core bvh: golden and ca"
 import csv, sys
@@ -121,6 +124,25 @@ for g, c in zip(golden, ca):
     assert int(g["hits"]) > 0 and int(g["top_nodes"]) == 3 and float(g["top_build_s"]) > 0, g
     assert int(g["instances_entered"]) > 0, g
 PY
+# --threads: golden frames in parallel, the same CSV (wall-clock columns aside) and images.
+for threads in 1 2; do
+  "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim_t$threads --model golden \
+    --cores 4 --threads $threads >anim_t$threads.txt || fail "animate --threads $threads"
+done
+python3 - anim_t1/frames.csv anim_t2/frames.csv <<'PY' || fail "animate --core bvh --threads 2 differs"
+import csv, sys
+one, two = (list(csv.DictReader(open(p))) for p in sys.argv[1:])
+assert len(one) == 3 and [r["frame"] for r in two] == ["0", "1", "2"], two
+for a, b in zip(one, two):
+    for row in (a, b):
+        del row["top_build_s"], row["host_s"]
+    assert a == b, (a, b)
+PY
+for frame in anim_t1/frame_[0-9]*.png; do
+  cmp -s "$frame" "anim_t2/$(basename "$frame")" || fail "animate --threads 2: $frame differs"
+done
+expect_error "animate --core bvh --model ca: --threads renders frames in parallel on --model golden only" \
+  "$rtusim" animate --core bvh --scene-file anim.toml --out-dir anim --model ca --threads 2
 expect_error "animate --core bih: animated scenes run on the svo core (the scene manager) or the bvh core" \
   "$rtusim" animate --core bih --scene-file anim.toml --out-dir anim
 expect_error "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene manager's" \

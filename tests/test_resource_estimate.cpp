@@ -102,6 +102,29 @@ TEST_CASE("Moller-Trumbore's triangle unit has more multipliers than the waterti
   CHECK(resources.triangleUnit.unitCount(ArithmeticKind::Adder) == 6 + 3 + 4 * 2 + 3 + 3 + 1);
 }
 
+TEST_CASE("A two-level BVH core adds its transform unit", "[resources]") {
+  // XFORM's toModelSpace, binary32: the origin o - T (3 subtractions), each row of R^T times it
+  // (3 multiplications, 2 additions) and by its 1/S (1 multiplication); the direction the same
+  // without the subtraction; the reciprocal direction 3 comparisons with 2^-64 and 3 divisions.
+  const BvhConfig config;
+  const CoreResources one = coreResources(config), two = twoLevelCoreResources(config);
+  const auto added = [&](ArithmeticKind kind) {
+    return two.core.unitCount(kind) - one.core.unitCount(kind);
+  };
+  CHECK(added(ArithmeticKind::Multiplier) == 3 * (3 + 1) + 3 * (3 + 1));
+  CHECK(added(ArithmeticKind::Adder) == 3 + 3 * 2 + 3 * 2);
+  CHECK(added(ArithmeticKind::Divider) == 3);
+  CHECK(added(ArithmeticKind::Comparator) == 3);
+  CHECK(two.core.memoryBits() == one.core.memoryBits());
+  CHECK(two.triangleUnit.unitCount(ArithmeticKind::Multiplier) ==
+        one.triangleUnit.unitCount(ArithmeticKind::Multiplier));
+  // In an RTU: one a core, 2 DSP48E a binary32 multiplier.
+  RtuConfig rtu;
+  rtu.core = "bvh";
+  rtu.cores = 4;
+  CHECK(rtuResources(rtu, 100, two).dsp48e() == rtuResources(rtu, 100).dsp48e() + 4 * 24 * 2);
+}
+
 TEST_CASE("A BIH core of seed 004's formats: 48 DSP48E of the seed's 52", "[resources]") {
   RtuConfig config;
   config.core = "bih";

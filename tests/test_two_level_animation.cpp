@@ -17,6 +17,7 @@
 #include "kinds/bvh/explore/two_level_animation.h"
 #include "kinds/core_result.h"
 #include "run/rtu_simulation.h"
+#include "run/statistics_output.h"
 
 namespace rtu {
 namespace {
@@ -28,6 +29,15 @@ RtuConfig bvhCore() {
   rtu.core = BvhKind<>::kName;
   rtu.cores = 4;
   return rtu;
+}
+
+// The scene's first `frames` frames at 24x16.
+SceneDescription smallScene(int frames) {
+  SceneOverrides overrides;
+  overrides.width = 24;
+  overrides.height = 16;
+  overrides.frames = frames;
+  return readSceneFile(kScene, overrides);
 }
 
 // The frame's rays through the one-level BVH over the flattened frame.
@@ -84,11 +94,7 @@ TEST_CASE("Two-level BVH animation equals the flattened frame on hits and t", "[
 
 TEST_CASE("Two-level BVH animation: the cycle-accurate frame equals the golden one",
           "[two_level]") {
-  SceneOverrides overrides;
-  overrides.width = 24;
-  overrides.height = 16;
-  overrides.frames = 1;
-  const SceneDescription scene = readSceneFile(kScene, overrides);
+  const SceneDescription scene = smallScene(1);
   TwoLevelAnimationOptions options;
   options.rtu = bvhCore();
   TwoLevelAnimation golden(scene, options);
@@ -97,6 +103,38 @@ TEST_CASE("Two-level BVH animation: the cycle-accurate frame equals the golden o
   const TwoLevelFrame g = golden.render(0), c = ca.render(0);
   CHECK(g.results == c.results);
   CHECK(g.statistics.cycles == c.statistics.cycles);  // ideal memory: the recurrence is exact
+}
+
+TEST_CASE("Two-level BVH animation: frames in parallel threads equal frames one by one",
+          "[two_level]") {
+  // animate --threads: three frames two at a time on copies of the structure, handed over in
+  // frame order with the results and counts of one thread (the wall-clock times aside). The
+  // simulations run one at a time: more than one thread is refused for them.
+  const SceneDescription scene = smallScene(3);
+  TwoLevelAnimationOptions options;
+  options.rtu = bvhCore();
+  const auto frames = [&](int threads) {
+    TwoLevelAnimation animation(scene, options);
+    std::vector<TwoLevelFrame> all;
+    animation.renderFrames(threads, [&all](const TwoLevelFrame& f) { all.push_back(f); });
+    return all;
+  };
+  const std::vector<TwoLevelFrame> one = frames(1), two = frames(2);
+  REQUIRE(one.size() == 3);
+  REQUIRE(two.size() == 3);
+  for (size_t i = 0; i < one.size(); ++i) {
+    INFO("frame " << i);
+    CHECK(two[i].statistics.frame == static_cast<int>(i));
+    CHECK(two[i].results == one[i].results);
+    TwoLevelFrameStatistics a = one[i].statistics, b = two[i].statistics;
+    a.topBuildSeconds = b.topBuildSeconds = a.hostSeconds = b.hostSeconds = 0;
+    CHECK(statisticsFields(a, "%.17g") == statisticsFields(b, "%.17g"));
+  }
+  CHECK(one[1].results != one[0].results);  // the instances moved
+  options.model = ModelKind::CycleAccurate;
+  TwoLevelAnimation ca(scene, options);
+  CHECK_THROWS_WITH(ca.renderFrames(2, [](const TwoLevelFrame&) {}),
+                    "frames in parallel threads (--threads) need the golden model, not ca");
 }
 
 }  // namespace rtu

@@ -10,6 +10,7 @@
 
 #include "bvh_meshes.h"
 #include "geometry/ray_sets.h"
+#include "kind_fixture.h"
 #include "kinds/bvh/bvh_kind.h"
 #include "kinds/bvh/langr_builder.h"
 #include "kinds/bvh/sah_builder.h"
@@ -17,6 +18,7 @@
 #include "kinds/bvh/two_level_traversal.h"
 #include "kinds/core_result.h"
 #include "rtu/golden_shell.h"
+#include "run/lt_simulation.h"
 #include "run/rtu_simulation.h"
 
 namespace rtu {
@@ -165,6 +167,121 @@ TEST_CASE("Two-level BVH core: an instance's states and cycles by hand", "[two_l
   CHECK(result.counts.nodes == 2);
   CHECK(result.counts.accesses == 2 + 1 + 5 + 2 + 1 + 3);
   CHECK(result.cost == 28u);
+}
+
+namespace {
+
+// Two instances on the z axis: at z = 5 a mesh of two triangles in the planes z = -0.5 and 0.5
+// (a leaf each) whose boxes the axis crosses but whose triangles it misses (x + y <= -0.5), at
+// z = 10 the one-triangle mesh above, which the axis hits at t = 10. The top level: a root and a
+// leaf per instance.
+TwoLevelBvh stackedInstances() {
+  TriangleMesh missed;
+  missed.vertices = {{-1, -1, -0.5}, {0.5, -1, -0.5}, {-1, 0.5, -0.5},
+                     {-1, -1, 0.5},  {0.5, -1, 0.5},  {-1, 0.5, 0.5}};
+  missed.triangles = {{0, 1, 2}, {3, 4, 5}};
+  TriangleMesh hit;
+  hit.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+  hit.triangles = {{0, 1, 2}};
+  SahBuilderConfig leafEach;
+  leafEach.maxLeafSize = 1;
+  std::vector<MeshBvh> meshes;
+  meshes.push_back(meshBvh(buildSah(missed, leafEach).tree, missed));
+  meshes.push_back(meshBvh(buildSah(hit).tree, hit));
+  TwoLevelBvh bvh(std::move(meshes));
+  const auto along = [](uint32_t mesh, double z) {
+    return BvhInstance{mesh, ModelPlacement{glm::dvec3(0, 0, z), glm::dmat3(1.0), glm::dvec3(1)}};
+  };
+  bvh.place({along(0, 5), along(1, 10)});
+  return bvh;
+}
+
+}  // namespace
+
+TEST_CASE("Two-level BVH core: the shared stack overflowing across levels\\, by hand",
+          "[two_level]") {
+  // The ray along z from the origin. Top level: ROOT0, ROOT1, ROOT_TEST, LEFT0 .. RIGHT1, DECIDE
+  // (both instances hit: the one at z = 5 first, the other pushed): 8; REF, INST0-4, XFORM: 15.
+  // The first mesh: ROOT0, ROOT1, ROOT_TEST, LEFT0 .. RIGHT1, DECIDE (both leaves hit: the
+  // nearer entered, the other pushed): 23; REF, TRI0-2, TEST (a miss): 28; POP (the pushed leaf):
+  // 29; REF, TRI0-2, TEST (a miss): 34; POP (the mesh's entries used up: back to the top level,
+  // whose leaf is done): 35.
+  // Stack depth 2: POP (the pushed instance): 36; REF, INST0-4, XFORM: 43; the second mesh (a
+  // root leaf): ROOT0, ROOT1, ROOT_TEST, REF, TRI0-2, TEST (the hit at t = 10): 51; POP (back to
+  // the top level), POP (empty: OUT): 53. Its triangle: the first mesh's 2, then its 0.
+  // Stack depth 1: the mesh's push onto the full stack drops the oldest entry, the top level's
+  // instance, so after 35 the POP finds the stack empty: OUT, cost 36, no hit (docs/triangles.md,
+  // "The two-level BVH in the core"). The two-level golden walk (two_level_traversal.h), whose
+  // top level and meshes keep stacks of their own, drops nothing and hits.
+  const TwoLevelBvh bvh = stackedInstances();
+  TwoLevelImage image(bvh);
+  image.writeFrame(bvh);
+  const RayRecord record{0, {0, 0, 0}, {0, 0, 1}, image.worldHeader()};
+  for (const int depth : {2, 1}) {
+    INFO("stack depth " << depth);
+    BvhConfig config;
+    config.stackDepth = depth;
+    const TwoLevelResult walk =
+        TwoLevelTraversal<WatertightIntersector>(bvh, config).trace(record, 0, INFINITY);
+    CHECK(walk.hit);
+    CHECK(walk.t == 10.0f);
+    GoldenShell<Kind> core(image.memory(), config);
+    BvhResult result;
+    core.run(0, image.job(bvhRay(record)), result);
+    CHECK(result.counts.dropped == (depth == 1 ? 1u : 0u));
+    CHECK(result.counts.instances == (depth == 1 ? 1u : 2u));
+    CHECK(result.counts.triangleTests == (depth == 1 ? 2u : 3u));
+    CHECK(result.cost == (depth == 1 ? 36u : 53u));
+    CHECK(result.hit == (depth == 2));
+    if (depth == 2) {
+      CHECK(result.t == 10.0f);
+      CHECK(result.primitive == 2);
+    }
+
+    // Through the job set-up and the cycle-accurate RTU: the golden model's result, the
+    // overflow counted.
+    RtuConfig rtu;
+    rtu.core = Kind::kName;
+    rtu.cores = 1;
+    rtu.coreConfig<BvhKind<>>().stackDepth = depth;
+    const RtuRun run = simulateRtu(image.memory(), {HostRecord(record)}, rtu);
+    REQUIRE(run.results.size() == 1);
+    CHECK(std::get<BvhResult>(run.results[0]) == result);
+    CHECK(run.statistics.allCores().bvhStackOverflows == (depth == 1 ? 1u : 0u));
+    CHECK(run.statistics.allCores().bvhInstances == result.counts.instances);
+  }
+}
+
+TEST_CASE("Two-level BVH core: a shallow stack on the fixture's instances in every model",
+          "[two_level]") {
+  // The BVH fixture's two-level frame (tests/kinds/bvh_fixture.h) with a stack of 2 entries,
+  // which the top level's and the meshes' pushes share: rays overflow; the cycle-accurate RTU
+  // (ideal and cached) and the loosely-timed one return the golden model's results, the
+  // per-cycle reference's every cycle with ideal memory, and the run counts the overflows.
+  using Fixture = KindFixture<BvhKind<>>;
+  const Fixture::Frame frame = Fixture::frame("instances", 6, 24, 16);
+  RtuConfig config = kindConfig<BvhKind<>>();
+  config.cores = 4;
+  config.coreConfig<BvhKind<>>().stackDepth = 2;
+  const std::vector<CoreKindResult> golden = Fixture::golden(frame.memory(), config, frame.jobs);
+  uint64_t overflowed = 0, entered = 0;
+  for (const CoreKindResult& result : golden) {
+    overflowed += std::get<BvhResult>(result).counts.dropped > 0;
+    entered += std::get<BvhResult>(result).counts.instances;
+  }
+  uint64_t hits = 0;
+  for (const CoreKindResult& result : golden) hits += std::get<BvhResult>(result).hit;
+  CHECK(hits > 50);        // measured 74 of 384
+  CHECK(entered > 100);    // measured 153
+  CHECK(overflowed > 20);  // measured 39
+  const RtuRun ideal = simulateRtu(frame.memory(), frame.jobs, config);
+  CHECK(resultsInJobOrder(ideal) == golden);
+  checkEqualsRtl(ideal, runRtlTop(frame.memory(), frame.jobs, rtlTopConfig(config)));
+  CHECK(ideal.statistics.allCores().bvhStackOverflows == overflowed);
+  CHECK(ideal.statistics.allCores().bvhInstances == entered);
+  config.memory.ideal = false;
+  CHECK(resultsInJobOrder(simulateRtu(frame.memory(), frame.jobs, config)) == golden);
+  CHECK(resultsInJobOrder(runLooselyTimed(frame.memory(), frame.jobs, config)) == golden);
 }
 
 }  // namespace rtu

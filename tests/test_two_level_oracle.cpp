@@ -28,24 +28,11 @@
 #include "kinds/bvh/langr_builder.h"
 #include "kinds/bvh/sah_builder.h"
 #include "kinds/bvh/two_level_traversal.h"
+#include "placed_world.h"
 #include "triangle_margins.h"
 
 namespace rtu {
 namespace {
-
-// The world as the oracle sees it: each instance's float32 mesh vertices, placed in double.
-TriangleMesh flatten(const TriangleMesh& mesh, const std::vector<BvhInstance>& instances) {
-  TriangleMesh world;
-  for (const BvhInstance& instance : instances) {
-    const auto offset = static_cast<uint32_t>(world.vertices.size());
-    const ModelPlacement& p = instance.placement;
-    for (const glm::dvec3& v : mesh.vertices)
-      world.vertices.push_back(p.rotation * (p.scale * glm::dvec3(glm::vec3(v))) + p.translation);
-    for (const auto& t : mesh.triangles)
-      world.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  }
-  return world;
-}
 
 // Four overlapping instances around the mesh's box.
 std::vector<BvhInstance> spiderInstances(const Aabb<double>& box, double shift) {
@@ -70,7 +57,7 @@ class TwoLevelOracleCheck {
   TwoLevelOracleCheck(const TriangleMesh& mesh, const TwoLevelBvh& bvh)
       : mesh_(mesh),
         bvh_(bvh),
-        world_(flatten(mesh, bvh.topLevel().instances)),
+        world_(placedWorld({mesh}, bvh.topLevel().instances)),
         meshScale_(std::max(largestCoordinate(meshBounds(mesh).lower),
                             largestCoordinate(meshBounds(mesh).upper))) {}
 

@@ -38,6 +38,7 @@ struct AnimateOptions {
   std::string model = "golden";
   std::string cacheDir;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool threadsGiven = false;
   int workers = 0;  // 0: one worker per core on the cycle-accurate model, one on golden
   bool noHitBuffer = false;
   bool traceAll = false;
@@ -142,8 +143,12 @@ bool animateWithKind(const AnimateOptions& options, const SceneDescription& scen
   withCoreKind(settings.rtu.core, [&](auto kind) {
     using Animation = KindAnimation<decltype(kind)>;
     if constexpr (Animation::kAnimates) {
-      AnimationRequest request{&scene, &settings, parseModelKind(options.model), options.csvPath(),
-                               [&options](int frame) { return options.framePath(frame); }};
+      AnimationRequest request{&scene,
+                               &settings,
+                               parseModelKind(options.model),
+                               options.csvPath(),
+                               [&options](int frame) { return options.framePath(frame); },
+                               options.threads};
       const std::vector<std::string> framePaths = Animation::run(request);
       std::cout << "wrote       " << options.outDir << "/frame_0000.png .. "
                 << framePaths.back().substr(options.outDir.size() + 1) << ", " << options.csvPath()
@@ -170,7 +175,9 @@ void refuseUnusedOptions(const AnimateOptions& options, const RunConfig& setting
   withCoreKind(core, [&options](auto kind) {
     using Animation = KindAnimation<decltype(kind)>;
     if constexpr (Animation::kAnimates)
-      Animation::refuse({options.noHitBuffer, options.traceAll, options.workers > 0});
+      Animation::refuse({options.noHitBuffer, options.traceAll, options.workers > 0,
+                         options.threadsGiven ? options.threads : 0,
+                         parseModelKind(options.model)});
   });
 }
 
@@ -253,9 +260,13 @@ void addAnimateCommand(CLI::App& app) {
       ->check(CLI::IsMember({"golden", "ca", "lt"}));
   command->add_option("--cache-dir", options->cacheDir,
                       "where built models are kept (default: ~/.cache/rtusim/models)");
-  command->add_option("--threads", options->threads, "threads tracing each frame's rays")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 256));
+  CLI::Option* threads =
+      command
+          ->add_option("--threads", options->threads,
+                       "threads tracing each frame's rays (svo); with --core bvh --model golden, "
+                       "frames rendered in parallel")
+          ->capture_default_str()
+          ->check(CLI::Range(1, 256));
   addWorkersOption(*command, options->workers,
                    "worker processes rendering ranges of frames (default: all cores with "
                    "--model ca, 1 with golden)",
@@ -263,7 +274,8 @@ void addAnimateCommand(CLI::App& app) {
   command->add_flag("--no-hit-buffer", options->noHitBuffer, "trace every pixel of every frame");
   command->add_flag("--trace-all", options->traceAll,
                     "no culling and no early termination: every instance for every ray");
-  command->callback([options, request] {
+  command->callback([options, request, threads] {
+    options->threadsGiven = threads->count() > 0;
     const Configuration configuration = request->resolve();
     validate(configuration.values().rtu);
     animate(*options, configuration.values());

@@ -29,11 +29,14 @@ struct AnimationRequest {
   ModelKind model = ModelKind::Golden;
   std::string csvPath;
   std::function<std::string(int frame)> framePath;
+  int threads = 1;  // --threads, or its default (the host's cores)
 };
 
 // The animate options a kind may refuse.
 struct AnimationOptionsUsed {
   bool noHitBuffer = false, traceAll = false, workers = false;
+  int threads = 0;  // --threads as given; 0: not given
+  ModelKind model = ModelKind::Golden;
 };
 
 template <class Kind>

@@ -33,8 +33,12 @@ void addCache(const CacheConfig& cache, const std::string& name, int64_t count,
 }
 
 ResourceEstimate rtuResources(const RtuConfig& config, uint64_t imageWords) {
+  return rtuResources(config, imageWords, chosenCore(config));
+}
+
+ResourceEstimate rtuResources(const RtuConfig& config, uint64_t imageWords,
+                              const CoreResources& core) {
   ResourceEstimate estimate;
-  const CoreResources core = chosenCore(config);
   estimate.add(core.core, config.cores);
   const int shared = std::max(config.triangleSharedBy, 1);
   estimate.add(core.triangleUnit, (config.cores + shared - 1) / shared);

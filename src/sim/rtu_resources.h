@@ -22,5 +22,9 @@ void addCache(const CacheConfig& cache, const std::string& name, int64_t count,
 // designs hold it (`imageWords` words of 32 bits: the thesis' ROM, seed 004's RAMs); the result
 // manager's buffer of a result record a core and the reorder buffer's `reorderCapacity` records.
 ResourceEstimate rtuResources(const RtuConfig& config, uint64_t imageWords);
+// The same with cores as `core` describes them (a kind's core for other jobs: the BVH's for
+// two-level ones, kinds/bvh/bvh_resources.h).
+ResourceEstimate rtuResources(const RtuConfig& config, uint64_t imageWords,
+                              const CoreResources& core);
 
 }  // namespace rtu

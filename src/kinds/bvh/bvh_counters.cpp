@@ -15,6 +15,7 @@ void BvhCounters::add(const BvhRayCounts& counts) {
   bvhBytesFetched += uint64_t{counts.accesses} * Traversal::kWordsPerRead * sizeof(uint32_t);
   bvhAnyHitRays += counts.anyHit;
   bvhAnyHitHits += counts.occluded;
+  bvhInstances += counts.instances;
 }
 
 const StatisticGroup<BvhCounters>& BvhCounters::declaration() {
@@ -38,7 +39,13 @@ const StatisticGroup<BvhCounters>& BvhCounters::declaration() {
                      .runTotal(),
                  &C::bvhBytesFetched)
           .count(anyHitRaysStatistic("bvh"), &C::bvhAnyHitRays)
-          .count(anyHitHitsStatistic("bvh"), &C::bvhAnyHitHits);
+          .count(anyHitHitsStatistic("bvh"), &C::bvhAnyHitHits)
+          .count(Statistic("bvh_instances", "instances",
+                           "instances a two-level BVH's rays entered, an XFORM state each "
+                           "(animate --core bvh; per ray: divided by the jobs)")
+                     .runTotal()
+                     .reportedWhenNotZero(),
+                 &C::bvhInstances);
   return group;
 }
 

@@ -19,6 +19,7 @@ struct BvhCounters {
   uint64_t bvhBytesFetched = 0;
   uint64_t bvhAnyHitRays = 0;  // rays traced as any-hit (rtu/ray_span.h)
   uint64_t bvhAnyHitHits = 0;  // of which hit (occluded)
+  uint64_t bvhInstances = 0;   // instances a two-level BVH's rays entered (XFORM states)
 
   // One ray's counts added.
   void add(const BvhRayCounts& counts);

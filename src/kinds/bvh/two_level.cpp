@@ -49,8 +49,8 @@ Aabb<double> placedBox(const Aabb<float>& box, const ModelPlacement& placement) 
 }
 
 TwoLevelBvh::TwoLevelBvh(std::vector<MeshBvh> meshes, const TopLevelConfig& config)
-    : meshes_(std::move(meshes)), config_(config) {
-  if (meshes_.empty()) throw std::invalid_argument("two-level BVH: no mesh");
+    : meshes_(std::make_shared<const std::vector<MeshBvh>>(std::move(meshes))), config_(config) {
+  if (meshes_->empty()) throw std::invalid_argument("two-level BVH: no mesh");
   if (config_.leafSize < 1)
     throw std::invalid_argument("two-level BVH: the top level's leaf size must be at least 1");
 }
@@ -59,8 +59,9 @@ void TwoLevelBvh::place(std::vector<BvhInstance> instances) {
   if (instances.empty()) throw std::invalid_argument("two-level BVH: no instance to place");
   TopLevel top;
   for (size_t i = 0; i < instances.size(); ++i) {
-    top.transforms.push_back(instanceTransform(instances[i], i, meshes_.size()));
-    top.worldBoxes.push_back(placedBox(meshes_[instances[i].mesh].rootBox, instances[i].placement));
+    top.transforms.push_back(instanceTransform(instances[i], i, meshes_->size()));
+    top.worldBoxes.push_back(
+        placedBox((*meshes_)[instances[i].mesh].rootBox, instances[i].placement));
   }
   top.instances = std::move(instances);
   top.tree = buildTopLevel(top.worldBoxes);

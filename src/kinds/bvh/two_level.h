@@ -17,6 +17,7 @@
 // references naming instances; the instances' float32 transforms are the host's records beside it.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "geometry/aabb.h"
@@ -76,14 +77,15 @@ class TwoLevelBvh {
   // makeModelTransform refuses (naming the instance).
   void place(std::vector<BvhInstance> instances);
 
-  const std::vector<MeshBvh>& meshes() const { return meshes_; }
+  const std::vector<MeshBvh>& meshes() const { return *meshes_; }
   // Empty (no instances) until the first place().
   const TopLevel& topLevel() const { return topLevel_; }
 
  private:
   BuildTree buildTopLevel(const std::vector<Aabb<double>>& worldBoxes) const;
 
-  std::vector<MeshBvh> meshes_;
+  // Read only, so copies share them (a thread's copy places its own frames: animate --threads).
+  std::shared_ptr<const std::vector<MeshBvh>> meshes_;
   TopLevelConfig config_;
   TopLevel topLevel_;
 };

@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "app/frame_images.h"
 #include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "kinds/bvh/explore/two_level_animation.h"
 #include "run/statistics_output.h"
+#include "sim/rtu_resources.h"
 
 namespace rtu {
 namespace {
@@ -25,7 +27,7 @@ std::vector<float> shade(const TwoLevelAnimation& animation, const TwoLevelFrame
     glm::dvec3 colour = kBackground;
     if (hit.hit) {
       const int x = static_cast<int>(i % scene.width), y = static_cast<int>(i / scene.width);
-      const double light = 0.2 + 0.8 * animation.facing(frame.camera, x, y, hit);
+      const double light = 0.2 + 0.8 * animation.facing(frame, x, y, hit);
       colour = scene.instances.at(animation.instanceOf(hit.primitive)).colour * light;
     }
     for (int k = 0; k < 3; ++k) rgb.push_back(static_cast<float>(colour[k]));
@@ -60,6 +62,20 @@ void printSummary(const std::vector<TwoLevelFrameStatistics>& frames, double sec
   std::printf("host        %.2f s\n", seconds);
 }
 
+// The RTU's estimate with two-level cores (kinds/bvh/bvh_resources.h), the scene on chip with
+// ideal memory; the transform units' share against one-level cores.
+void printResources(const RtuConfig& rtu, uint64_t imageWords) {
+  const ResourceEstimate estimate =
+      rtuResources(rtu, imageWords, twoLevelCoreResources(rtu.coreConfig<BvhKind<>>()));
+  const ResourceEstimate oneLevel = rtuResources(rtu, imageWords);
+  std::printf("resources   %lld DSP48E (%lld in the cores' transform units), %lld 18 Kbit block "
+              "RAMs, %lld LUTs of arithmetic (docs/comparison.md)\n",
+              static_cast<long long>(estimate.dsp48e()),
+              static_cast<long long>(estimate.dsp48e() - oneLevel.dsp48e()),
+              static_cast<long long>(estimate.blockRams()),
+              static_cast<long long>(estimate.luts()));
+}
+
 }  // namespace
 
 void KindAnimation<BvhKind<>>::refuse(const AnimationOptionsUsed& options) {
@@ -67,6 +83,12 @@ void KindAnimation<BvhKind<>>::refuse(const AnimationOptionsUsed& options) {
     throw std::invalid_argument(
         "animate --core bvh: --no-hit-buffer, --trace-all and --workers are the svo scene "
         "manager's; the two-level BVH traces every pixel in one process");
+  if (options.threads > 1 && options.model != ModelKind::Golden)
+    throw std::invalid_argument(std::string("animate --core bvh --model ") +
+                                toString(options.model) +
+                                ": --threads renders frames in parallel on --model golden only; "
+                                "a ca or lt frame is a SystemC simulation, one at a time in a "
+                                "process (use --threads 1, or --model golden)");
 }
 
 void KindAnimation<BvhKind<>>::listStatistics(std::ostream& out) {
@@ -91,17 +113,19 @@ std::vector<std::string> KindAnimation<BvhKind<>>::run(const AnimationRequest& r
   csv << csvLine(statisticsHeader<TwoLevelFrameStatistics>());
   std::vector<TwoLevelFrameStatistics> frames;
   std::vector<std::string> paths;
-  for (int frame = 0; frame < scene.frames; ++frame) {
-    const TwoLevelFrame rendered = animation.render(frame);
-    paths.push_back(request.framePath(frame));
+  // The golden model renders `threads` frames at a time; the simulations one (refuse() above).
+  const int threads = request.model == ModelKind::Golden ? request.threads : 1;
+  animation.renderFrames(threads, [&](const TwoLevelFrame& rendered) {
+    paths.push_back(request.framePath(rendered.statistics.frame));
     writeRgbImage(paths.back(), scene.width, scene.height, shade(animation, rendered, scene));
     frames.push_back(rendered.statistics);
     csv << csvLine(statisticsFields(rendered.statistics, "%.6g"));
     printFrame(rendered.statistics);
-  }
+  });
   csvFile.commit();
   printSummary(frames,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  printResources(options.rtu, animation.imageWords());
   return paths;
 }
 

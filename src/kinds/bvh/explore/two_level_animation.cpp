@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
+#include <string>
+#include <thread>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -31,6 +34,12 @@ TwoLevelBvh buildMeshes(const std::vector<TriangleMesh>& meshes, const AccelSpec
     built.push_back(meshBvh(BvhImage{build.words}));
   }
   return TwoLevelBvh(std::move(built));
+}
+
+// The meshes' images laid out once, beside the structure.
+TwoLevelWorkspace workspaceOver(TwoLevelBvh bvh) {
+  TwoLevelImage image(bvh);
+  return TwoLevelWorkspace{std::move(bvh), std::move(image)};
 }
 
 std::vector<TriangleMesh> loadMeshes(const SceneDescription& scene) {
@@ -68,7 +77,7 @@ const StatisticGroup<TwoLevelFrameStatistics>& TwoLevelFrameStatistics::declarat
           .real(Statistic("top_sah_seed", "", "the top level's SAH, seed 003's costs"),
                 &F::topSahSeed)
           .count(Statistic("instances_entered", "instances",
-                           "instances the rays entered (XFORM states)"),
+                           "instances the rays entered (XFORM states): the run's bvh_instances"),
                  &F::instancesEntered)
           .derived(Statistic("instances_per_ray", "instances", "instances entered per ray"),
                    &F::instancesPerRay)
@@ -85,8 +94,8 @@ TwoLevelAnimation::TwoLevelAnimation(const SceneDescription& scene,
     : scene_(scene),
       options_(std::move(options)),
       meshes_(loadMeshes(scene)),
-      bvh_(buildMeshes(meshes_, bvhSpec(options_.accel), checkedBvh(options_.rtu), meshSeconds_)),
-      image_(bvh_) {
+      workspace_(workspaceOver(
+          buildMeshes(meshes_, bvhSpec(options_.accel), checkedBvh(options_.rtu), meshSeconds_))) {
   uint32_t base = 0;
   for (const InstanceDescription& instance : scene.instances) {
     primitiveBases_.push_back(base);
@@ -102,32 +111,37 @@ std::vector<BvhInstance> TwoLevelAnimation::placements(double time) const {
   return instances;
 }
 
-TwoLevelFrame TwoLevelAnimation::render(int frame) {
+TwoLevelFrame TwoLevelAnimation::render(int frame) { return render(frame, workspace_); }
+
+TwoLevelFrame TwoLevelAnimation::render(int frame, TwoLevelWorkspace& workspace) const {
   const auto start = std::chrono::steady_clock::now();
   const double time = scene_.timeOf(frame);
   TwoLevelFrame out;
   TwoLevelFrameStatistics& statistics = out.statistics;
-  std::vector<BvhInstance> instances = placements(time);
+  out.instances = placements(time);
+  TwoLevelBvh& bvh = workspace.bvh;
+  std::vector<BvhInstance> instances = out.instances;
   const auto buildStart = std::chrono::steady_clock::now();
-  bvh_.place(std::move(instances));
+  bvh.place(std::move(instances));
   statistics.topBuildSeconds = secondsSince(buildStart);
-  image_.writeFrame(bvh_);
-  const AccelQuality quality = measureQuality(bvh_.topLevel().tree, SahCosts{1.0, 2.0});
+  workspace.image.writeFrame(bvh);
+  const AccelQuality quality = measureQuality(bvh.topLevel().tree, SahCosts{1.0, 2.0});
   statistics.topNodes = quality.nodes;
   statistics.topSah = quality.sah;
   statistics.topSahSeed = quality.sahSeed;
   out.camera = scene_.camera.at(time, scene_.width, scene_.height);
-  const std::vector<RayRecord> rays = makeFrameRayRecords(out.camera, image_.worldHeader());
-  const RtuRun run = runModel(options_.model, image_.memory(),
+  const std::vector<RayRecord> rays =
+      makeFrameRayRecords(out.camera, workspace.image.worldHeader());
+  const RtuRun run = runModel(options_.model, workspace.image.memory(),
                               std::vector<HostRecord>(rays.begin(), rays.end()), options_.rtu);
   out.results = resultsOfKind<BvhKind<>>(resultsInJobOrder(run));
-  for (const BvhResult& result : out.results) {
-    statistics.hits += result.hit;
-    statistics.instancesEntered += result.counts.instances;
-    statistics.nodesVisited += result.counts.nodes;
-    statistics.triangleTests += result.counts.triangleTests;
-    statistics.traversalCycles += result.cost;
-  }
+  for (const BvhResult& result : out.results) statistics.hits += result.hit;
+  // The cores' counters (bvh_counters.h), as the run's statistics JSON has them.
+  const CoreStatistics cores = run.statistics.allCores();
+  statistics.instancesEntered = cores.bvhInstances;
+  statistics.nodesVisited = cores.bvhNodesVisited;
+  statistics.triangleTests = cores.bvhTriangleTests;
+  statistics.traversalCycles = cores.busyCycles;
   statistics.frame = frame;
   statistics.time = time;
   statistics.pixels = rays.size();
@@ -138,22 +152,52 @@ TwoLevelFrame TwoLevelAnimation::render(int frame) {
   return out;
 }
 
+void TwoLevelAnimation::renderFrames(int threads,
+                                     const std::function<void(const TwoLevelFrame&)>& take) {
+  if (threads > 1 && options_.model != ModelKind::Golden)
+    throw std::invalid_argument(std::string("frames in parallel threads (--threads) need the "
+                                            "golden model, not ") +
+                                toString(options_.model));
+  const int count = std::max(1, std::min(threads, scene_.frames));
+  std::vector<TwoLevelWorkspace> copies(static_cast<size_t>(count - 1), workspace_);
+  for (int first = 0; first < scene_.frames; first += count) {
+    std::vector<TwoLevelFrame> frames(static_cast<size_t>(std::min(count, scene_.frames - first)));
+    std::vector<std::exception_ptr> errors(frames.size());
+    const auto renderOne = [&](size_t i, TwoLevelWorkspace& workspace) {
+      try {
+        frames[i] = render(first + static_cast<int>(i), workspace);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    };
+    std::vector<std::thread> pool;
+    for (size_t i = 1; i < frames.size(); ++i)
+      pool.emplace_back([&renderOne, &copies, i] { renderOne(i, copies[i - 1]); });
+    renderOne(0, workspace_);
+    for (std::thread& thread : pool) thread.join();
+    for (const std::exception_ptr& error : errors)
+      if (error) std::rethrow_exception(error);
+    for (const TwoLevelFrame& frame : frames) take(frame);
+  }
+}
+
 size_t TwoLevelAnimation::instanceOf(uint32_t primitive) const {
   return static_cast<size_t>(
       std::upper_bound(primitiveBases_.begin(), primitiveBases_.end(), primitive) -
       primitiveBases_.begin() - 1);
 }
 
-double TwoLevelAnimation::facing(const Camera& camera, int x, int y, const BvhResult& hit) const {
+double TwoLevelAnimation::facing(const TwoLevelFrame& frame, int x, int y,
+                                 const BvhResult& hit) const {
   const size_t instance = instanceOf(hit.primitive);
-  const BvhInstance& placed = bvh_.topLevel().instances.at(instance);
+  const BvhInstance& placed = frame.instances.at(instance);
   const TriangleMesh& mesh = meshes_.at(placed.mesh);
   const auto& triangle = mesh.triangles.at(hit.primitive - primitiveBases_[instance]);
   const glm::dvec3 a = mesh.vertices[triangle[0]], b = mesh.vertices[triangle[1]],
                    c = mesh.vertices[triangle[2]];
   const ModelPlacement& p = placed.placement;
   const glm::dvec3 normal = p.rotation * (glm::cross(b - a, c - a) / p.scale);
-  const glm::dvec3 direction = camera.primaryRay(x, y).direction;
+  const glm::dvec3 direction = frame.camera.primaryRay(x, y).direction;
   const double length = glm::length(normal) * glm::length(direction);
   return length > 0 ? std::abs(glm::dot(normal, direction)) / length : 0.0;
 }

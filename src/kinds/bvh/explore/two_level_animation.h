@@ -11,6 +11,7 @@
 // "Two levels"). No hit buffer and no scene manager: every pixel's ray is one job.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "base/statistics.h"
@@ -34,8 +35,10 @@ struct TwoLevelFrameStatistics {
   uint64_t instances = 0;        // placed in the frame
   double topBuildSeconds = 0.0;  // the top level's build, wall clock
   uint64_t topNodes = 0;
-  double topSah = 0.0;            // unit costs, over the instances' world boxes (accel_quality.h)
-  double topSahSeed = 0.0;        // seed 003's costs (box 1, triangle 2)
+  double topSah = 0.0;      // unit costs, over the instances' world boxes (accel_quality.h)
+  double topSahSeed = 0.0;  // seed 003's costs (box 1, triangle 2)
+  // The run's counters (bvh_counters.h: bvh_instances, bvh_nodes_visited, bvh_triangle_tests;
+  // the cores' busy cycles).
   uint64_t instancesEntered = 0;  // XFORM states of every ray
   uint64_t nodesVisited = 0;      // both levels
   uint64_t triangleTests = 0;
@@ -53,8 +56,18 @@ struct TwoLevelFrameStatistics {
 
 struct TwoLevelFrame {
   Camera camera;
+  std::vector<BvhInstance> instances;  // placed at the frame's time
   std::vector<BvhResult> results;  // x + y * width; primitive: its index in the instances' order
   TwoLevelFrameStatistics statistics;
+};
+
+// What a frame rewrites: the two-level BVH (its top level; copies share the meshes' BVHs) and the
+// memory image (the top level, instance records and world header after the meshes' images). Each
+// thread rendering frames owns one, a copy of the animation's, the image's copy of the meshes'
+// images included.
+struct TwoLevelWorkspace {
+  TwoLevelBvh bvh;
+  TwoLevelImage image;
 };
 
 struct TwoLevelAnimationOptions {
@@ -71,24 +84,32 @@ class TwoLevelAnimation {
   TwoLevelAnimation(const SceneDescription& scene, TwoLevelAnimationOptions options);
 
   TwoLevelFrame render(int frame);
+  // Every frame in order, `threads` at a time on copies of the structure (animate --threads),
+  // each handed to `take` in frame order: the results and counts are those of render() frame by
+  // frame, whatever `threads` (the wall-clock times aside). More than one thread needs the golden
+  // model, whose runs share nothing: std::invalid_argument otherwise (a cycle-accurate or
+  // loosely-timed frame is a SystemC simulation, one at a time in a process).
+  void renderFrames(int threads, const std::function<void(const TwoLevelFrame&)>& take);
 
   // The instance a result's primitive lies in, and the cosine between its triangle's normal and
-  // the ray in the mesh's space (for shading), of the frame rendered last.
+  // the ray in the mesh's space in `frame` (for shading).
   size_t instanceOf(uint32_t primitive) const;
-  double facing(const Camera& camera, int x, int y, const BvhResult& hit) const;
+  double facing(const TwoLevelFrame& frame, int x, int y, const BvhResult& hit) const;
 
   const std::vector<double>& meshBuildSeconds() const { return meshSeconds_; }
   const std::vector<TriangleMesh>& meshes() const { return meshes_; }
+  // The memory image's words (the meshes', then a frame's top level, records and header).
+  uint64_t imageWords() const { return workspace_.image.words().size(); }
 
  private:
   std::vector<BvhInstance> placements(double time) const;
+  TwoLevelFrame render(int frame, TwoLevelWorkspace& workspace) const;
 
   const SceneDescription& scene_;
   TwoLevelAnimationOptions options_;
   std::vector<TriangleMesh> meshes_;
   std::vector<double> meshSeconds_;
-  TwoLevelBvh bvh_;
-  TwoLevelImage image_;
+  TwoLevelWorkspace workspace_;
   std::vector<uint32_t> primitiveBases_;  // per instance
 };
 
