@@ -17,6 +17,15 @@ for model in golden ca; do
   limited "$rtusim" render --model "$model" --scene sphere --depth 3 --width 4096 --height 4096 \
     >/dev/null || fail "render --model $model of a 4096x4096 frame ran out of 400 MB"
 done
+# sweep enumerates its grid lazily (config/sweep_points.h): a 400,000-point grid's checks and
+# Slurm plan (its dry run), which held 5 GB before (12.8 KB a point), within the limit; the dry
+# run names the count and the first and last rows.
+limited "$rtusim" sweep --scene sphere --depth 3 --grid "cores=$(seq -s, 1 40)" \
+  --grid "width=$(seq -s, 16 115)" --grid "height=$(seq -s, 16 115)" --slurm --dry-run \
+  --out grid.csv >grid.txt || fail "a 400,000-point sweep's dry run ran out of 400 MB"
+grep -q "rows to run: 400000, the first (0) cores=1 width=16 height=16, the last (399999) \
+cores=40 width=115 height=115" grid.txt || fail "dry run of the grid: $(cat grid.txt)"
+grep -q '"rows":"0-399999"' grid.slurm/plan.json || fail "the plan's rows"
 expect_error "golden ran out of memory while reading SVO image 'big.svo' (629145600 bytes)" \
   limited "$rtusim" golden --svo big.svo --jobs jobs.bin --out out.bin
 echo "out of memory: all checks passed"
