@@ -25,7 +25,7 @@ sweep=(--scene sphere --depth 5 --width 24 --height 16 --grid cores=1,4 --grid s
   --out dry.csv >dry.txt
 grep -q '^#SBATCH --array=0-2$' dry.slurm/sweep.sbatch || fail "dry run: array"
 grep -q '^#SBATCH --partition=debug$' dry.slurm/sweep.sbatch || fail "dry run: partition"
-[[ -s dry.slurm/scenes.json && $(wc -l <dry.slurm/configs.jsonl) -eq 4 ]] || fail "dry run: plan"
+[[ -s dry.slurm/scenes.json ]] && grep -q '"rows":"0-3"' dry.slurm/plan.json || fail "dry run: plan"
 [[ ! -s dry.jsonl ]] || fail "dry run ran rows"
 
 mkdir cluster

@@ -26,7 +26,12 @@ expect_error "sweep directory '$PWD/mine' exists and is not one a sweep made" \
 [[ -f mine/notes.txt ]] || fail "the sweep deleted a directory it did not make"
 "$rtusim" sweep "${small[@]}" --grid cores=1 --out plan.csv --slurm --dry-run >/dev/null
 "$rtusim" sweep "${small[@]}" --grid cores=1,2 --out plan.csv --slurm --dry-run >/dev/null
-[[ $(wc -l <plan.slurm/configs.jsonl) -eq 2 ]] || fail "a sweep's own plan was not replaced"
+grep -q '"rows":"0-1"' plan.slurm/plan.json || fail "a sweep's own plan was not replaced"
+# A plan holds the rows not done as index ranges: rows.csv has cores 1, 2 and 3 done.
+"$rtusim" sweep "${small[@]}" --grid cores=1,2,3,4 --grid scheduler=cfa,rr --out rows.csv \
+  --slurm --dry-run --sweep-dir resumed >resumed.txt
+grep -q "3 already done, 5 to run" resumed.txt || fail "resumed plan: $(cat resumed.txt)"
+grep -q '"rows":"1-1,3-3,5-7"' resumed/plan.json || fail "resumed plan's rows"
 
 # A slow sweep (rows of a few seconds each) in the background, its own process group.
 slow=(--scene menger --depth 7 --width 1920 --height 1080 --memory cached --grid cores=1,2,3,4 -j 2)

@@ -7,12 +7,22 @@
 #include <set>
 
 #include "config/configuration.h"
+#include "config/sweep_points.h"
 #include "config/sweep_spec.h"
 #include "kinds/bih/bih_config.h"
 #include "kinds/registry.h"
 
 using namespace rtu;
 using Catch::Matchers::Contains;
+
+// Every point of a sweep, computed one by one.
+std::vector<rtu::Configuration> allPoints(const rtu::SweepSpec& spec,
+                                          const rtu::Configuration& base) {
+  const rtu::SweepPoints points(spec, base);
+  std::vector<rtu::Configuration> all;
+  for (size_t i = 0; i < points.size(); ++i) all.push_back(points.at(i));
+  return all;
+}
 
 TEST_CASE("Sizes take binary and decimal units", "[config]") {
   CHECK(parseBytes("4096", "k") == 4096);
@@ -227,7 +237,7 @@ TEST_CASE("A sweep is the product of its grids times its explicit list", "[confi
   SweepSpec spec;
   spec.addGrid("cores=1,2,4");
   spec.addGrid("memory.l1.size=1KiB,4KiB");
-  const std::vector<Configuration> grid = spec.expand(base);
+  const std::vector<Configuration> grid = allPoints(spec, base);
   REQUIRE(grid.size() == 6);
   CHECK(grid[0].values().rtu.cores == 1);
   CHECK(grid[0].values().rtu.memory.l1.sizeBytes == 1024);
@@ -235,7 +245,7 @@ TEST_CASE("A sweep is the product of its grids times its explicit list", "[confi
   CHECK(grid[5].values().rtu.cores == 4);
   CHECK(grid[5].values().camera.width == 32);
   spec.list = {{{"scheduler", "rr"}}, {{"scheduler", "fa"}, {"reorder", "4"}}};
-  const std::vector<Configuration> both = spec.expand(base);
+  const std::vector<Configuration> both = allPoints(spec, base);
   REQUIRE(both.size() == 12);
   CHECK(both[0].values().rtu.scheduler == SchedulerPolicy::RoundRobin);
   CHECK(both[11].values().rtu.scheduler == SchedulerPolicy::FirstAvailable);
@@ -243,7 +253,7 @@ TEST_CASE("A sweep is the product of its grids times its explicit list", "[confi
   CHECK_THROWS_WITH(spec.addGrid("coress=1,2"), Contains("did you mean 'cores'"));
   SweepSpec bad;
   bad.addGrid("cores=1,0");
-  CHECK_THROWS_WITH(bad.expand(base), Contains("cores: 0 is out of range"));
+  CHECK_THROWS_WITH(allPoints(bad, base), Contains("cores: 0 is out of range"));
 }
 
 TEST_CASE("A swept key without effect is refused before any row runs", "[config][sweep]") {
@@ -251,23 +261,24 @@ TEST_CASE("A swept key without effect is refused before any row runs", "[config]
   SweepSpec latency;
   latency.addGrid("memory.dram.latency=10,20");
   CHECK_THROWS_WITH(
-      checkSettingsHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"),
+      checkSettingsHaveEffect(allPoints(latency, Configuration{}), sweepUses, "sweep"),
       Contains("memory.dram.latency (sweep) has no effect in any configuration: memory.kind is "
                "ideal"));
   Configuration cached;
   cached.set("memory.kind", "cached", ConfigSource::CommandLine);
-  CHECK_NOTHROW(checkSettingsHaveEffect(latency.expand(cached), sweepUses, "sweep"));
+  CHECK_NOTHROW(checkSettingsHaveEffect(allPoints(latency, cached), sweepUses, "sweep"));
   // Without effect in two of four configurations only: a warning.
   latency.addGrid("memory.kind=ideal,cached");
-  CHECK_NOTHROW(checkSettingsHaveEffect(latency.expand(Configuration{}), sweepUses, "sweep"));
+  CHECK_NOTHROW(checkSettingsHaveEffect(allPoints(latency, Configuration{}), sweepUses, "sweep"));
   // A list entry is checked in the configurations it sets.
   SweepSpec list;
   list.list = {{{"cores", "4"}}, {{"memory.l2.size", "64KiB"}}};
-  CHECK_THROWS_WITH(checkSettingsHaveEffect(list.expand(Configuration{}), sweepUses, "sweep"),
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(allPoints(list, Configuration{}), sweepUses, "sweep"),
                     Contains("memory.l2.size (sweep) has no effect in any configuration"));
   SweepSpec unused;
   unused.addGrid("width=8,16");
-  CHECK_THROWS_WITH(checkSettingsHaveEffect(unused.expand(Configuration{}), kUseModel, "replay"),
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(allPoints(unused, Configuration{}), kUseModel,
+                                            "replay"),
                     Contains("width (sweep) has no effect in any configuration: rtusim replay "
                              "does not use it"));
 }
@@ -282,11 +293,11 @@ TEST_CASE("A sweep judges the command line's keys over its rows", "[config][swee
                   .empty());
   SweepSpec kinds;
   kinds.addGrid("core=svo,bih");
-  CHECK_NOTHROW(checkSettingsHaveEffect(kinds.expand(base), sweepUses, "sweep"));
+  CHECK_NOTHROW(checkSettingsHaveEffect(allPoints(kinds, base), sweepUses, "sweep"));
   // A command-line key the command does not use is refused as a single run refuses it.
   Configuration wide;
   wide.set("width", "64", ConfigSource::CommandLine);
-  CHECK_THROWS_WITH(checkSettingsHaveEffect(kinds.expand(wide), kUseModel, "replay"),
+  CHECK_THROWS_WITH(checkSettingsHaveEffect(allPoints(kinds, wide), kUseModel, "replay"),
                     Contains("width (command line) has no effect: rtusim replay does not use it"));
 }
 
@@ -323,17 +334,45 @@ TEST_CASE("Numbers that would change value are refused\\, not read leniently", "
   CHECK(c.values().camera.up.z == 1.0);
 }
 
-TEST_CASE("A sweep grid too large to hold is refused with its size before any point is made",
-          "[config]") {
+TEST_CASE("A sweep's points are computed from their index\\, none held", "[config][sweep]") {
+  // 10^12 points (the grid was refused over the machine's memory when its points were held): made
+  // at once, any point computed from its index, the last key fastest.
   SweepSpec spec;
-  spec.addGrid("cores=1,2");
-  CHECK(spec.expand(Configuration{}).size() == 2);
-  // 10^12 points: a few PB of configurations, refused at once rather than exhausting the machine.
   std::vector<std::string> values;
   for (int i = 1; i <= 1000; ++i) values.push_back(std::to_string(i));
   for (const char* key : {"cores", "width", "height", "clock_mhz"})
     spec.grid.emplace_back(key, values);
-  CHECK_THROWS_WITH(spec.expand(Configuration{}),
-                    Contains("the sweep has 2e+12 configurations, which would hold about") &&
-                        Contains("of this machine: sweep fewer values"));
+  const SweepPoints points(spec, Configuration{});
+  REQUIRE(points.size() == 1000000000000u);
+  const Configuration last = points.at(points.size() - 1);
+  CHECK(last.values().rtu.cores == 1000);
+  CHECK(last.values().camera.height == 1000);
+  const Configuration some =
+      points.at(((size_t{4} * 1000 + 999) * 1000 + 6) * 1000 + 7);  // 5, 1000, 7, 8
+  CHECK(some.values().rtu.cores == 5);
+  CHECK(some.values().camera.width == 1000);
+  CHECK(some.values().camera.height == 7);
+  CHECK(some.values().rtu.clockMhz == 8);
+  CHECK(points.describe(1) == "cores=1 width=1 height=1 clock_mhz=2");
+  // Through JSON (a Slurm plan), the same points.
+  const SweepPoints back = SweepPoints::fromJson(points.toJson());
+  REQUIRE(back.size() == points.size());
+  CHECK(back.at(123456789).toJson() == points.at(123456789).toJson());
+}
+
+TEST_CASE("A sweep's points are distinct configurations", "[config][sweep]") {
+  SweepSpec spec;
+  spec.addGrid("cores=4,4,8");  // the same value: once
+  spec.addGrid("width=16,32");
+  spec.addGrid("width=64");  // set last: the earlier grid of width is overridden
+  spec.list = {{{"scheduler", "rr"}}, {{"scheduler", "rr"}, {"width", "8"}}, {{"reorder", "4"}}};
+  const SweepPoints points(spec, Configuration{});
+  REQUIRE(points.size() == 4);  // 2 cores x 1 width x 2 entries (the second is the first)
+  std::set<std::string> distinct;
+  for (size_t i = 0; i < points.size(); ++i) {
+    distinct.insert(points.at(i).toJson().dump());
+    CHECK(points.at(i).values().camera.width == 64);
+  }
+  CHECK(distinct.size() == 4);
+  CHECK(points.describe(3) == "reorder=4 cores=8 width=64");
 }

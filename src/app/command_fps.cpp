@@ -197,12 +197,11 @@ std::string sceneName(const RunConfig& settings) {
 // `matrixCores`, if any) and writes the CSV; throws after it all when a row failed.
 void runFpsRows(const std::vector<Configuration>& configurations, const FpsOptions& options,
                 RowModel model, const std::string& heading, const std::vector<int>& matrixCores) {
-  std::vector<size_t> all(configurations.size());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
   std::vector<nlohmann::ordered_json> rows(configurations.size());
-  const size_t failures = runRows(
-      configurations, all, options.workers, "fps",
-      [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; }, model);
+  const size_t failures =
+      runRows([&configurations](size_t i) { return configurations[i]; },
+              IndexRanges::span(0, configurations.size()), options.workers, "fps",
+              [&rows](size_t i, const nlohmann::ordered_json& row) { rows[i] = row; }, model);
   std::cout << heading << ", " << answeredBy(rows) << "\n";
   printTable(rows, std::cout);
   if (!matrixCores.empty()) printMatrix(rows, matrixCores, std::cout);

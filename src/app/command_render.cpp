@@ -167,8 +167,7 @@ void renderFrame(const Configuration& configuration, const RenderOptions& option
   const FrameImagePaths imagePaths{options.image, options.depthImage, options.costImage};
   const bool streamImages = !keepPixels && imagePaths.any();
   const RtuConfig traced = options.outputs.traced(settings.rtu);
-  checkFrameFits(settings, keepPixels,
-                 streamImages ? FrameImageWriter::bytesPerPixel(imagePaths) : 0,
+  checkFrameFits(settings, keepPixels, FrameImageWriter::bytesPerPixel(imagePaths),
                  traced.trace || traced.timeline.wanted());
   std::optional<FrameImageWriter> images;
   if (streamImages) images.emplace(settings.camera, imagePaths);

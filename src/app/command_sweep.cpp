@@ -4,19 +4,19 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <set>
 
 #include "app/commands.h"
 #include "app/input_file_check.h"
 #include "app/output_paths.h"
 #include "app/plot_script.h"
 #include "app/schema_flags.h"
+#include "app/sweep_earlier_rows.h"
 #include "app/workers_option.h"
 #include "base/file_lock.h"
 #include "base/input_file.h"
 #include "base/output_file.h"
+#include "config/sweep_points.h"
 #include "config/sweep_spec.h"
 #include "explore/architecture_resources.h"
 #include "explore/exploration_run.h"
@@ -59,56 +59,18 @@ std::vector<std::string> csvFields(const Json& row) {
   return fields;
 }
 
-// The complete rows an earlier sweep into the same files wrote, in order (a line cut short by an
-// interruption is dropped).
-std::vector<Json> readEarlierRows(const std::string& path) {
-  std::vector<Json> rows;
-  std::ifstream file = openInputFileIfAny(path, "earlier sweep rows");
-  std::string line;
-  while (std::getline(file, line)) {
-    try {
-      Json row = Json::parse(line);
-      if (row.contains("config") && row.contains("status")) rows.push_back(std::move(row));
-    } catch (const nlohmann::json::exception&) {
-    }
-  }
-  return rows;
-}
-
-bool finished(const Json& row) { return row["status"] == "ok" || row["status"] == "invalid"; }
-
-// What a sweep keeps of the earlier rows: per configuration its row done or invalid (which would
-// fail alike), else, for a configuration this sweep does not run (an earlier grid, preset or
-// list), its failed row too; each configuration once. A failed row of this sweep's (a scene file
-// since fixed, a stalled run) is dropped: it runs again.
-std::vector<Json> keptRows(const std::vector<Json>& earlier, const std::set<std::string>& swept) {
-  std::map<std::string, const Json*> chosen;
-  for (const Json& row : earlier) {
-    const std::string key = row["config"].dump();
-    const auto found = chosen.find(key);
-    if (found == chosen.end() ? finished(row) || !swept.count(key) : finished(row))
-      chosen[key] = &row;
-  }
-  std::vector<Json> kept;
-  for (const Json& row : earlier) {
-    const auto found = chosen.find(row["config"].dump());
-    if (found != chosen.end() && found->second == &row) kept.push_back(row);
-  }
-  return kept;
-}
-
-// Rewrites the CSV and JSON-lines files with the rows kept (each whole or not at all, as any
-// output), then appends rows as they finish, each flushed at once so that an interrupted sweep
+// Rewrites the CSV and JSON-lines files with the earlier rows kept (each whole or not at all, as
+// any output), then appends rows as they finish, each flushed at once so that an interrupted sweep
 // resumes from the rows written.
 class RowWriter {
  public:
-  RowWriter(const std::string& csvPath, const std::vector<Json>& kept) : csvPath_(csvPath) {
+  RowWriter(const std::string& csvPath, const EarlierRows& earlier) : csvPath_(csvPath) {
     OutputFile csv(csvPath), jsonLines(jsonLinesPath(csvPath));
     csv.stream() << csvLine(csvHeader());
-    for (const Json& row : kept) {
+    earlier.forEachKept([&](const Json& row) {
       csv.stream() << csvLine(csvFields(row));
       jsonLines.stream() << row.dump() << "\n";
-    }
+    });
     jsonLines.commit();
     csv.commit();
     csv_.open(csvPath, std::ios::app);
@@ -172,6 +134,43 @@ class SweepTally {
   std::string firstError_;
 };
 
+// Before any row runs or any file is touched, every point once as it is computed (none is held):
+// the architecture the command runs, and the keys without effect (SettingsEffectCheck).
+void checkPoints(const SweepPoints& points, const ConfigRequest& request,
+                 const std::string& sweepFile) {
+  SettingsEffectCheck effect(request.uses, request.command);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Configuration configuration = points.at(i);
+    checkArchitectureRuns(configuration, request.command, request.uses);
+    effect.add(configuration);
+  }
+  try {
+    effect.finish();
+  } catch (const std::invalid_argument& error) {
+    // The swept key may be the file's: the error names it (a fuzzed file's key did not).
+    if (sweepFile.empty()) throw;
+    throw std::invalid_argument("sweep file '" + sweepFile + "': " + error.what());
+  }
+}
+
+// The points without a finished earlier row, as index ranges (held by the rows done, not the
+// grid).
+IndexRanges pointsToRun(const SweepPoints& points, EarlierRows& earlier) {
+  if (earlier.empty()) return IndexRanges::span(0, points.size());
+  IndexRanges pending;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (!earlier.sweep(points.at(i).toJson().dump())) pending.add(i);
+  return pending;
+}
+
+// A dry run's plan, whatever the grid's size: the count and the first and last rows to run.
+void printPlan(const SweepPoints& points, const IndexRanges& pending) {
+  if (pending.empty()) return;
+  std::cout << "sweep: rows to run: " << pending.count() << ", the first (" << pending.first()
+            << ") " << points.describe(pending.first()) << ", the last (" << pending.last() << ") "
+            << points.describe(pending.last()) << "\n";
+}
+
 }  // namespace
 
 void addSweepCommand(CLI::App& app) {
@@ -232,45 +231,23 @@ void addSweepCommand(CLI::App& app) {
     SweepSpec spec;
     if (!options->sweepFile.empty()) spec.loadFile(options->sweepFile);
     for (const std::string& grid : options->grid) spec.addGrid(grid);
-    const std::vector<Configuration> configurations = spec.expand(request->resolveUnchecked());
-    for (const Configuration& configuration : configurations)
-      checkArchitectureRuns(configuration, request->command, request->uses);
-    try {
-      checkSettingsHaveEffect(configurations, request->uses, request->command);
-    } catch (const std::invalid_argument& error) {
-      // The swept key may be the file's: the error names it (a fuzzed file's key did not).
-      if (options->sweepFile.empty()) throw;
-      throw std::invalid_argument("sweep file '" + options->sweepFile + "': " + error.what());
-    }
+    const SweepPoints points(spec, request->resolveUnchecked());
+    checkPoints(points, *request, options->sweepFile);
 
     // One sweep at a time writes these files: a second one is refused, naming the first.
     const FileLock lock(options->out + ".lock", "sweep output '" + options->out + "'");
-    std::set<std::string> swept;
-    for (const Configuration& configuration : configurations)
-      swept.insert(configuration.toJson().dump());
-    const std::vector<Json> kept = keptRows(readEarlierRows(jsonLinesPath(options->out)), swept);
-    std::set<std::string> done;
-    for (const Json& row : kept)
-      if (finished(row)) done.insert(row["config"].dump());
-    std::vector<size_t> pending;
-    std::set<std::string> seen;
-    size_t alreadyDone = 0;
-    for (size_t i = 0; i < configurations.size(); ++i) {
-      const std::string key = configurations[i].toJson().dump();
-      if (!seen.insert(key).second) continue;  // the same configuration twice runs once
-      if (done.count(key))
-        ++alreadyDone;
-      else
-        pending.push_back(i);
-    }
-    const size_t others = kept.size() - alreadyDone;
-    std::cout << "sweep: " << seen.size() << " configurations, " << alreadyDone << " already done, "
-              << pending.size() << " to run with " << options->workers << " workers"
+    EarlierRows earlier(jsonLinesPath(options->out));
+    const IndexRanges pending = pointsToRun(points, earlier);
+    const size_t alreadyDone = points.size() - pending.count();
+    const size_t others = earlier.keptCount() - alreadyDone;
+    std::cout << "sweep: " << points.size() << " configurations, " << alreadyDone
+              << " already done, " << pending.count() << " to run with " << options->workers
+              << " workers"
               << (others > 0 ? "; " + std::to_string(others) + " rows of other configurations kept"
                              : "")
               << "\n"
               << std::flush;
-    RowWriter writer(options->out, kept);
+    RowWriter writer(options->out, earlier);
     SweepTally tally(writer);
     const auto write = [&tally](const Json& row) { tally.add(row); };
     if (options->slurm) {
@@ -279,19 +256,20 @@ void addSweepCommand(CLI::App& app) {
               ? std::filesystem::path(options->out).replace_extension(".slurm").string()
               : options->sweepDir;
       const std::string script =
-          runRowsOnSlurm(configurations, pending, directory, options->slurmOptions, write);
+          runRowsOnSlurm(points, pending, directory, options->slurmOptions, write);
       if (options->slurmOptions.dryRun) {
+        printPlan(points, pending);
         std::cout << "sweep: wrote " << script << " (not submitted: sbatch " << script << ")\n";
         return;
       }
     } else {
-      runRows(configurations, pending, options->workers, "sweep",
+      runRows([&points](size_t i) { return points.at(i); }, pending, options->workers, "sweep",
               [&](size_t, const Json& row) { write(row); });
     }
-    tally.report(pending.size(), options->out + " and " + jsonLinesPath(options->out));
+    tally.report(pending.count(), options->out + " and " + jsonLinesPath(options->out));
     if (!options->plotDir.empty())
       runPlotScript("plot", {"--out-dir", options->plotDir, jsonLinesPath(options->out)});
-    tally.check(pending.size());
+    tally.check(pending.count());
   });
 }
 

@@ -19,7 +19,8 @@ FrameImageWriter::FrameImageWriter(const Camera& camera, FrameImagePaths paths)
 }
 
 size_t FrameImageWriter::bytesPerPixel(const FrameImagePaths& paths) {
-  return (paths.depthImage.empty() ? 0 : sizeof(float)) +
+  return (paths.image.empty() ? 0 : RowImage::heldBytesPerPixel(paths.image, 3)) +
+         (paths.depthImage.empty() ? 0 : sizeof(float)) +
          (paths.costImage.empty() ? 0 : sizeof(CostSample));
 }
 

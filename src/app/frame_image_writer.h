@@ -37,7 +37,8 @@ class FrameImageWriter final : public PixelSink {
 
   // The most rows of the shaded image held at once.
   size_t mostRowsHeld() const { return mostRows_; }
-  // Bytes a pixel of the frame the images keep whatever its rows (the depth and cost samples).
+  // Bytes a pixel of the frame the images keep whatever its rows (the depth and cost samples, the
+  // shaded image's rows in a format written whole: RowImage::heldBytesPerPixel).
   static size_t bytesPerPixel(const FrameImagePaths& paths);
 
  private:

@@ -290,11 +290,19 @@ void writeRgbImage(const std::string& path, int width, int height, const std::ve
 }
 
 void writeShadedImage(const RenderedFrame& frame, const std::string& path) {
-  Canvas canvas(frame.camera.width, frame.camera.height, Pixel(0.0f));
-  for (size_t i = 0; i < frame.pixels.size(); ++i)
-    canvas.set(static_cast<int>(i % frame.camera.width), static_cast<int>(i / frame.camera.width),
-               shadedColour(frame.camera, i, frame.pixels[i]));
-  writeImageFile(path, canvas.width, canvas.height, 3, canvas.rgb, false);
+  // A row at a time (RowImage): the frame's pixels are held already, its image need not be.
+  const size_t width = static_cast<size_t>(frame.camera.width);
+  RowImage image(path, frame.camera.width, frame.camera.height, 3, false);
+  std::vector<float> row(width * 3);
+  for (size_t first = 0; first < frame.pixels.size(); first += width) {
+    for (size_t x = 0; x < width; ++x) {
+      const Pixel colour =
+          glm::clamp(shadedColour(frame.camera, first + x, frame.pixels[first + x]), 0.0f, 1.0f);
+      std::copy(&colour.x, &colour.x + 3, &row[x * 3]);
+    }
+    image.write(row.data(), 1);
+  }
+  image.commit();
 }
 
 void writePrecisionImage(const Camera& camera, const std::vector<PrecisionVerdict>& verdicts,

@@ -58,8 +58,8 @@ FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, size
     memory.bytes += rays * bytesPerRay;
     memory.what += (memory.what.empty() ? "" : ", ") + what;
   };
-  if (keepPixels) add(sizeof(FramePixel) + 3 * sizeof(float), "the pixels secondary passes read");
-  if (imageBytes > 0) add(static_cast<double>(imageBytes), "the depth and cost images' samples");
+  if (keepPixels) add(sizeof(FramePixel), "the pixels secondary passes read");
+  if (imageBytes > 0) add(static_cast<double>(imageBytes), "the images' samples held to the end");
   if (settings.model != ModelKind::Golden && traced)
     add(sizeof(HostRecord) + sizeof(CoreKindResult) + 4 * sizeof(uint64_t),
         "a traced frame's records and its dry run's results");

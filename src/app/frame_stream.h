@@ -21,9 +21,10 @@
 namespace rtu {
 
 // What a frame's render still holds per ray, estimated before it starts: the pixels, when kept
-// for secondary passes (a FramePixel each and an image's buffer of three floats); the depth and
-// cost images' samples (`imageBytes` a pixel: FrameImageWriter::bytesPerPixel); a traced frame's
-// records and its dry runs' results. `what` names them.
+// for secondary passes (a FramePixel each; their shaded image is written a row at a time); the
+// images' samples held to the end (`imageBytes` a pixel: FrameImageWriter::bytesPerPixel, the
+// same whether the pixels are kept or streamed); a traced frame's records and its dry runs'
+// results. `what` names them.
 struct FrameMemory {
   double bytes = 0;
   std::string what;

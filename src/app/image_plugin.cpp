@@ -2,7 +2,13 @@
 // so that only commands writing an image load OpenImageIO and its many dependencies. It sees
 // plain float pixel buffers only, no rtusim type.
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstddef>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -50,12 +56,70 @@ class CallbackOutput final : public OIIO::Filesystem::IOProxy {
   void* context_;
 };
 
-// An image written row by row (rtusim_images_open).
-struct ImageRowWriter {
-  std::unique_ptr<OIIO::ImageOutput> output;
-  CallbackOutput proxy;
-  int channels;
+// The encoded bytes written where OpenImageIO puts them, into the file `path` (formats that seek
+// back: EXR, TIFF), every write checked: the first failure's cause is kept (failure()) and fails
+// the writes after it.
+class FileOutput final : public OIIO::Filesystem::IOProxy {
+ public:
+  explicit FileOutput(const std::string& path)
+      : IOProxy(path, Write),
+        fd_(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666)) {
+    if (fd_ < 0) failure_ = std::strerror(errno);
+  }
+  ~FileOutput() override {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  const char* proxytype() const override { return "rtusim-file"; }
+  size_t write(const void* bytes, size_t size) override {
+    const size_t written = pwrite(bytes, size, m_pos);
+    m_pos += static_cast<int64_t>(written);
+    return written;
+  }
+  size_t pwrite(const void* bytes, size_t size, int64_t offset) override {
+    const char* data = static_cast<const char*>(bytes);
+    for (size_t done = 0; done < size;) {
+      if (!failure_.empty()) return 0;
+      const ssize_t n =
+          ::pwrite(fd_, data + done, size - done, offset + static_cast<int64_t>(done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        failure_ = n < 0 ? std::strerror(errno) : "nothing written";
+        return 0;
+      }
+      done += static_cast<size_t>(n);
+    }
+    end_ = std::max(end_, offset + static_cast<int64_t>(size));
+    return size;
+  }
+  size_t size() const override { return static_cast<size_t>(end_); }
+  // Closes the file; the first failure's cause, or "".
+  const std::string& finish() {
+    if (fd_ >= 0 && ::close(fd_) != 0 && failure_.empty()) failure_ = std::strerror(errno);
+    fd_ = -1;
+    return failure_;
+  }
+  const std::string& failure() const { return failure_; }
+
+ private:
+  int fd_;
+  int64_t end_ = 0;
+  std::string failure_;
 };
+
+// An image written row by row (rtusim_images_open): through `proxy` or into `file`.
+// The output is destroyed first: closing, it may still write to them.
+struct ImageRowWriter {
+  CallbackOutput proxy;
+  std::unique_ptr<FileOutput> file;
+  std::unique_ptr<OIIO::ImageOutput> output;
+};
+
+// Why a writer failed: its file's write error (the cause OpenImageIO's message would hide), else
+// OpenImageIO's message.
+std::string failure(ImageRowWriter& writer) {
+  if (writer.file && !writer.file->failure().empty()) return writer.file->failure();
+  return "OpenImageIO: " + writer.output->geterror();
+}
 
 }  // namespace
 
@@ -92,25 +156,35 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write(const char* path, const cha
   });
 }
 
-// Opens `path`'s format for `width` x `height` pixels of `channels` floats each, 8-bit samples,
-// written row by row as rtusim_images_write_rows hands them over: each encoded piece goes to
-// `write` (which returns 0 on a failed write) as OpenImageIO makes it. *handle is the writer to
-// pass on, and to rtusim_images_close whatever happens. Only formats that write their bytes in
-// order qualify (PNG); returns nullptr, or the error message (valid until the thread's next call).
-RTUSIM_PLUGIN_EXPORT const char* rtusim_images_open(const char* path, int width, int height,
-                                                    int channels,
+// Opens `path`'s format for `width` x `height` pixels of `channels` floats each (32-bit float
+// samples when `floatFile`, else 8-bit), written row by row as rtusim_images_write_rows hands them
+// over (OpenImageIO's scanline writes). With `write`, each encoded piece goes to `write` (which
+// returns 0 on a failed write) as OpenImageIO makes it: only formats that write their bytes in
+// order qualify (PNG). Without it, OpenImageIO writes the file `writePath` itself (formats that
+// seek back: EXR, TIFF), checked by its own status only. *handle is the writer to pass on, and to
+// rtusim_images_close whatever happens. Returns nullptr, or the error message (valid until the
+// thread's next call).
+RTUSIM_PLUGIN_EXPORT const char* rtusim_images_open(const char* path, const char* writePath,
+                                                    int width, int height, int channels,
+                                                    int floatFile,
                                                     int (*write)(void*, const void*, size_t),
                                                     void* context, void** handle) {
   *handle = nullptr;
   return rtu::pluginCall([&]() -> std::string {
     auto output = OIIO::ImageOutput::create(path);
     if (!output) return "OpenImageIO: " + OIIO::geterror();
-    auto* writer = new ImageRowWriter{std::move(output), CallbackOutput(write, context), channels};
+    auto* writer = new ImageRowWriter{CallbackOutput(write, context),
+                                      write ? nullptr : std::make_unique<FileOutput>(writePath),
+                                      std::move(output)};
     *handle = writer;
-    if (!writer->output->supports("ioproxy") || !writer->output->set_ioproxy(&writer->proxy))
+    if (writer->file && !writer->file->failure().empty()) return writer->file->failure();
+    OIIO::Filesystem::IOProxy* proxy =
+        writer->file ? static_cast<OIIO::Filesystem::IOProxy*>(writer->file.get()) : &writer->proxy;
+    if (!writer->output->supports("ioproxy") || !writer->output->set_ioproxy(proxy))
       return "OpenImageIO: the format of '" + std::string(path) + "' is not written row by row";
-    const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-    if (!writer->output->open(path, spec)) return "OpenImageIO: " + writer->output->geterror();
+    const OIIO::ImageSpec spec(width, height, channels,
+                               floatFile ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!writer->output->open(path, spec)) return failure(*writer);
     return {};
   });
 }
@@ -120,8 +194,10 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_images_write_rows(void* handle, int firs
                                                           const float* data) {
   return rtu::pluginCall([&]() -> std::string {
     auto* writer = static_cast<ImageRowWriter*>(handle);
-    if (!writer->output->write_scanlines(firstRow, firstRow + rows, 0, OIIO::TypeDesc::FLOAT, data))
-      return "OpenImageIO: " + writer->output->geterror();
+    if (!writer->output->write_scanlines(firstRow, firstRow + rows, 0, OIIO::TypeDesc::FLOAT,
+                                         data) ||
+        (writer->file && !writer->file->failure().empty()))
+      return failure(*writer);
     return {};
   });
 }
@@ -131,8 +207,9 @@ RTUSIM_PLUGIN_EXPORT const char* rtusim_images_close(void* handle, int finish) {
   return rtu::pluginCall([&]() -> std::string {
     std::unique_ptr<ImageRowWriter> writer(static_cast<ImageRowWriter*>(handle));
     if (!writer) return {};
-    if (finish && !writer->output->close()) return "OpenImageIO: " + writer->output->geterror();
-    writer.reset();
+    if (!finish) return {};
+    if (!writer->output->close()) return failure(*writer);
+    if (writer->file && !writer->file->finish().empty()) return writer->file->failure();
     return {};
   });
 }

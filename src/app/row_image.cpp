@@ -13,8 +13,8 @@ namespace {
 constexpr const char* kImagesModule = "librtusim_images.so";
 constexpr const char* kImagesPurpose = "needed to write images";
 
-using OpenFunction = const char*(const char*, int, int, int, int (*)(void*, const void*, size_t),
-                                 void*, void**);
+using OpenFunction = const char*(const char*, const char*, int, int, int, int,
+                                 int (*)(void*, const void*, size_t), void*, void**);
 using RowsFunction = const char*(void*, int, int, const float*);
 using CloseFunction = const char*(void*, int);
 
@@ -31,21 +31,27 @@ int writeBytes(void* file, const void* bytes, size_t size) {
   return stream ? 1 : 0;
 }
 
-// PNG files are written in order: encoded as the rows come. The depth image's float formats are
-// not.
-bool streamsRows(const std::string& path, bool floatFile) {
+// How a format's rows are written as they come: PNG's encoded bytes in order through the checked
+// stream; EXR's and TIFF's by OpenImageIO into the temporary file (their writers seek back), with
+// scanline writes. Other formats hold their rows.
+enum class RowWriting { InOrder, IntoFile, Held };
+
+RowWriting rowWriting(const std::string& path) {
   const size_t dot = path.find_last_of('.');
-  if (floatFile || dot == std::string::npos) return false;
+  if (dot == std::string::npos) return RowWriting::Held;
   std::string extension = path.substr(dot + 1);
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == "png";
+  if (extension == "png") return RowWriting::InOrder;
+  if (extension == "exr" || extension == "tif" || extension == "tiff") return RowWriting::IntoFile;
+  return RowWriting::Held;
 }
 
 }  // namespace
 
 RowImage::RowImage(const std::string& path, int width, int height, int channels, bool floatFile)
     : path_(path), width_(width), height_(height), channels_(channels), floatFile_(floatFile) {
-  if (!streamsRows(path, floatFile)) {
+  const RowWriting writing = rowWriting(path);
+  if (writing == RowWriting::Held) {
     held_.reserve(static_cast<size_t>(width) * static_cast<size_t>(height) *
                   static_cast<size_t>(channels));
     return;
@@ -53,9 +59,14 @@ RowImage::RowImage(const std::string& path, int width, int height, int channels,
   static OpenFunction* const open =
       pluginFunction<OpenFunction>(kImagesModule, "rtusim_images_open", kImagesPurpose);
   file_ = std::make_unique<OutputFile>(path);
-  const char* error =
-      open(path.c_str(), width, height, channels, writeBytes, file_.get(), &writer_);
+  const bool inOrder = writing == RowWriting::InOrder;
+  const char* error = open(path.c_str(), file_->writePath().c_str(), width, height, channels,
+                           floatFile, inOrder ? writeBytes : nullptr, file_.get(), &writer_);
   if (error) fail(error);
+}
+
+size_t RowImage::heldBytesPerPixel(const std::string& path, int channels) {
+  return rowWriting(path) == RowWriting::Held ? static_cast<size_t>(channels) * sizeof(float) : 0;
 }
 
 RowImage::~RowImage() {

@@ -1,8 +1,10 @@
 #pragma once
 // An image file written row by row, top to bottom, under the output rule (base/output_file.h):
 // a PNG file's rows are encoded by OpenImageIO as they come and its bytes written through the
-// checked temporary file at once, so that only a row need be held; other formats (EXR, TIFF, ...,
-// whose writers seek) hold the rows and are written whole by commit() (writeImageFile).
+// checked temporary file at once; an EXR or TIFF file's rows are written by OpenImageIO's scanline
+// writes into the temporary file (their writers seek back: checked by OpenImageIO's status), so
+// that only a row need be held, the files equal to those written whole. Other formats (JPEG, ...)
+// hold the rows and are written whole by commit() (writeImageFile).
 
 #include <memory>
 #include <string>
@@ -27,7 +29,10 @@ class RowImage {
   // After the last row: the file complete, renamed into place.
   void commit();
 
-  // Whether the rows are encoded as they come (PNG) rather than held.
+  // Bytes a pixel an image of `path`'s format holds until commit(): 0 for the formats written as
+  // the rows come (PNG, EXR, TIFF), `channels` floats for the others.
+  static size_t heldBytesPerPixel(const std::string& path, int channels);
+  // Whether the rows are encoded as they come (PNG, EXR, TIFF) rather than held.
   bool streams() const { return writer_ != nullptr; }
 
  private:

@@ -8,7 +8,6 @@
 
 #include "base/input_file.h"
 #include "base/nesting_depth.h"
-#include "rtu/host_memory.h"
 
 namespace rtu {
 namespace {
@@ -104,84 +103,48 @@ void SweepSpec::loadFile(const std::string& path) {
   }
 }
 
-namespace {
+SettingsEffectCheck::SettingsEffectCheck(unsigned uses, std::string command)
+    : uses_(uses), command_(std::move(command)), tallies_(configSchema().size()) {}
 
-// A point of a sweep as it is held (its configuration's values, sources and maps, its row's
-// fields), measured: a 10^4-point grid's dry run (`sweep --slurm --dry-run`) took 12.5 KB a point
-// more than a 10^2-point one.
-constexpr double kConfigurationBytes = 12800;
-
-// The sweep's configurations are held together (its checks, its rows): their count and memory are
-// estimated from the grid before any is made, and refused over this machine's memory.
-void checkExpansionFits(const SweepSpec& spec) {
-  double count = spec.list.empty() ? 1.0 : static_cast<double>(spec.list.size());
-  for (const auto& entry : spec.grid) count *= static_cast<double>(entry.second.size());
-  const double bytes = count * kConfigurationBytes;
-  const uint64_t available = physicalMemoryBytes();
-  if (bytes <= static_cast<double>(available)) return;
-  char points[32];
-  std::snprintf(points, sizeof points, "%.4g", count);
-  throw std::invalid_argument(std::string("the sweep has ") + points +
-                              " configurations, which would hold about " + formatGiB(bytes) +
-                              " (about 12.8 KB each), more than the " +
-                              formatGiB(static_cast<double>(available)) +
-                              " of this machine: sweep fewer values, or the grid in parts");
+void SettingsEffectCheck::add(const Configuration& configuration) {
+  const std::vector<Setting>& schema = configSchema();
+  for (size_t s = 0; s < schema.size(); ++s) {
+    const Setting& setting = schema[s];
+    const ConfigSource source = configuration.source(setting.key);
+    if (!givenByUser(setting, source, configuration.values())) continue;
+    Tally& tally = tallies_[s];
+    ++tally.given;
+    if (tally.from != ConfigSource::Sweep) tally.from = source;
+    const std::string why = whyIneffective(setting, configuration.values(), uses_, command_);
+    if (why.empty()) continue;
+    ++tally.ineffective;
+    if (tally.reason.empty()) tally.reason = why;
+  }
 }
 
-}  // namespace
-
-std::vector<Configuration> SweepSpec::expand(const Configuration& base) const {
-  checkExpansionFits(*this);
-  std::vector<Assignments> points = {{}};
-  for (const auto& [key, values] : grid) {
-    std::vector<Assignments> next;
-    for (const Assignments& point : points)
-      for (const std::string& value : values) {
-        Assignments extended = point;
-        extended.emplace_back(key, value);
-        next.push_back(extended);
-      }
-    points = next;
+void SettingsEffectCheck::finish() const {
+  const std::vector<Setting>& schema = configSchema();
+  for (size_t s = 0; s < schema.size(); ++s) {
+    const Setting& setting = schema[s];
+    const Tally& tally = tallies_[s];
+    if (tally.ineffective == 0) continue;
+    if (tally.ineffective < tally.given)
+      reportIneffective(setting, tally.from, tally.reason, uses_,
+                        "in " + std::to_string(tally.ineffective) + " of " +
+                            std::to_string(tally.given) + " configurations");
+    else if (tally.from == ConfigSource::Sweep)
+      throw std::invalid_argument(setting.key +
+                                  " (sweep) has no effect in any configuration: " + tally.reason);
+    else
+      reportIneffective(setting, tally.from, tally.reason, uses_);
   }
-  const std::vector<Assignments> entries = list.empty() ? std::vector<Assignments>{{}} : list;
-  std::vector<Configuration> configurations;
-  for (const Assignments& entry : entries)
-    for (const Assignments& point : points) {
-      Configuration configuration = base;
-      for (const auto& [key, value] : entry) configuration.set(key, value, ConfigSource::Sweep);
-      for (const auto& [key, value] : point) configuration.set(key, value, ConfigSource::Sweep);
-      configurations.push_back(configuration);
-    }
-  return configurations;
 }
 
 void checkSettingsHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
                              const std::string& command) {
-  for (const Setting& setting : configSchema()) {
-    size_t given = 0, ineffective = 0;
-    ConfigSource from = ConfigSource::Default;
-    std::string reason;
-    for (const Configuration& configuration : configurations) {
-      const ConfigSource source = configuration.source(setting.key);
-      if (!givenByUser(setting, source, configuration.values())) continue;
-      ++given;
-      if (from != ConfigSource::Sweep) from = source;
-      const std::string why = whyIneffective(setting, configuration.values(), uses, command);
-      if (why.empty()) continue;
-      ++ineffective;
-      if (reason.empty()) reason = why;
-    }
-    if (ineffective == 0) continue;
-    if (ineffective < given)
-      reportIneffective(setting, from, reason, uses,
-                        "in " + std::to_string(ineffective) + " of " + std::to_string(given) +
-                            " configurations");
-    else if (from == ConfigSource::Sweep)
-      throw std::invalid_argument(setting.key +
-                                  " (sweep) has no effect in any configuration: " + reason);
-    else
-      reportIneffective(setting, from, reason, uses);
-  }
+  SettingsEffectCheck check(uses, command);
+  for (const Configuration& configuration : configurations) check.add(configuration);
+  check.finish();
 }
 
 }  // namespace rtu

@@ -20,20 +20,34 @@ struct SweepSpec {
   void addGrid(const std::string& argument);
   // A TOML file with a [grid] table of arrays and [[configs]] tables; errors name the file.
   void loadFile(const std::string& path);
-
-  // Every configuration of the sweep, in a stable order; throws std::invalid_argument naming
-  // the key for a value the schema rejects.
-  // Each value the sweep gives is marked ConfigSource::Sweep.
-  std::vector<Configuration> expand(const Configuration& base) const;
 };
 
-// Before any row runs, Configuration::checkApplicable over a sweep's configurations: a key the
+// Before any row runs, Configuration::checkApplicable over a sweep's configurations, added one at a
+// time (a sweep's points are not held together; finish() after the last): a key the
 // sweep sets that has no effect in any configuration it is set in (memory.dram.latency on ideal
 // memory, a key rtusim `command` does not use) throws std::invalid_argument naming the key and
 // why, since its rows would repeat one run; a key the user gave on the command line or in a file
 // is judged over every row as a single run judges it (an error or a warning: reportIneffective),
 // so a BIH setting in a sweep over `core` counts the BIH rows; a key without effect in some of the
 // configurations is a warning "in N of M configurations" on standard error.
+class SettingsEffectCheck {
+ public:
+  SettingsEffectCheck(unsigned uses, std::string command);
+  void add(const Configuration& configuration);
+  void finish() const;
+
+ private:
+  struct Tally {
+    size_t given = 0, ineffective = 0;
+    ConfigSource from = ConfigSource::Default;
+    std::string reason;
+  };
+  unsigned uses_;
+  std::string command_;
+  std::vector<Tally> tallies_;  // one a setting of configSchema()
+};
+
+// SettingsEffectCheck over `configurations`.
 void checkSettingsHaveEffect(const std::vector<Configuration>& configurations, unsigned uses,
                              const std::string& command);
 

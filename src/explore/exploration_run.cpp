@@ -36,19 +36,19 @@ double rowRays(const Configuration& configuration) {
 
 }  // namespace
 
-void SceneCache::build(const std::vector<Configuration>& configurations) {
+void SceneCache::need(const Configuration& configuration) {
   // An octree too deep for every stack that will run it is refused before it is built (a deep
   // procedural scene takes minutes and gigabytes): it is built with the deepest stack of its rows;
   // each row still checks its own (frameRecords).
-  std::map<std::string, RunConfig> uses;
-  for (const Configuration& configuration : configurations) {
-    const RunConfig& settings = configuration.values();
-    auto [use, added] = uses.emplace(frameSceneKey(settings), settings);
-    int& stackFrames = use->second.rtu.coreConfig<SvoKind>().stackFrames;
-    stackFrames = std::max(stackFrames, settings.rtu.coreConfig<SvoKind>().stackFrames);
-    use->second.allowStackOverflow |= settings.allowStackOverflow;
-  }
-  for (const auto& [key, use] : uses) {
+  const RunConfig& settings = configuration.values();
+  auto [use, added] = uses_.emplace(frameSceneKey(settings), settings);
+  int& stackFrames = use->second.rtu.coreConfig<SvoKind>().stackFrames;
+  stackFrames = std::max(stackFrames, settings.rtu.coreConfig<SvoKind>().stackFrames);
+  use->second.allowStackOverflow |= settings.allowStackOverflow;
+}
+
+void SceneCache::build() {
+  for (const auto& [key, use] : uses_) {
     if (scenes_.count(key) || errors_.count(key)) continue;
     try {
       scenes_.emplace(key, loadFrameScene(use));
@@ -160,19 +160,13 @@ void validateRow(const Configuration& configuration) {
   validatePasses(settings);
 }
 
-std::vector<size_t> validRows(
-    const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-    const std::function<void(size_t, const nlohmann::ordered_json&)>& invalid) {
-  std::vector<size_t> valid;
-  for (size_t row : rows) {
-    try {
-      validateRow(configurations[row]);
-      valid.push_back(row);
-    } catch (const std::invalid_argument& error) {
-      invalid(row, failedRow(configurations[row], error.what(), "invalid"));
-    }
+bool isValidRow(const Configuration& configuration) {
+  try {
+    validateRow(configuration);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
   }
-  return valid;
 }
 
 namespace {
@@ -228,41 +222,48 @@ nlohmann::ordered_json failedRow(const Configuration& configuration, const std::
           {"config", configuration.toJson()}};
 }
 
-size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-               int workers, const std::string& label,
+size_t runRows(const ConfigurationAt& configuration, const IndexRanges& rows, int workers,
+               const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
                RowModel model) {
   size_t finished = 0, failures = 0;
-  const std::vector<size_t> valid =
-      validRows(configurations, rows, [&](size_t row, const nlohmann::ordered_json& result) {
-        ++finished;
-        ++failures;
-        done(row, result);
-      });
   SceneCache scenes;
-  std::vector<Configuration> used;
   double rays = 0, raysDone = 0;  // the ETA weighs rows by rays: 1920x1080 is 36 times 320x180
-  for (size_t row : valid) {
-    used.push_back(configurations[row]);
-    rays += rowRays(configurations[row]);
-  }
-  scenes.build(used);
-  Progress progress(label, rows.size());
-  const auto work = [&](size_t row) {
-    return runRowSafely(configurations[row], scenes, model).dump();
+  rows.forEach([&](size_t row) {
+    const Configuration settings = configuration(row);
+    try {
+      validateRow(settings);
+      scenes.need(settings);
+      rays += rowRays(settings);
+    } catch (const std::invalid_argument& error) {
+      ++finished;
+      ++failures;
+      done(row, failedRow(settings, error.what(), "invalid"));
+    }
+  });
+  scenes.build();
+  Progress progress(label, rows.count());
+  IndexRanges::Cursor cursor(rows);
+  const NextRow nextValid = [&](size_t& row) {  // the invalid rows are done
+    while (cursor.next(row))
+      if (isValidRow(configuration(row))) return true;
+    return false;
   };
-  runInWorkers(valid, workers, work, [&](size_t row, const WorkerOutcome& outcome) {
+  const auto work = [&](size_t row) {
+    return runRowSafely(configuration(row), scenes, model).dump();
+  };
+  runInWorkers(nextValid, workers, work, [&](size_t row, const WorkerOutcome& outcome) {
+    const Configuration settings = configuration(row);
     nlohmann::ordered_json result;
     try {
       result = outcome.answered ? nlohmann::ordered_json::parse(outcome.line)
-                                : failedRow(configurations[row], outcome.failure, "lost");
+                                : failedRow(settings, outcome.failure, "lost");
     } catch (const nlohmann::json::exception& error) {
-      result =
-          failedRow(configurations[row], std::string("unreadable worker answer: ") + error.what());
+      result = failedRow(settings, std::string("unreadable worker answer: ") + error.what());
     }
     failures += result["status"] != "ok";
     done(row, result);
-    raysDone += rowRays(configurations[row]);
+    raysDone += rowRays(settings);
     progress.update(++finished, failures, raysDone / rays);
   });
   progress.finish();

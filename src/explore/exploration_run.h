@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/index_ranges.h"
 #include "config/configuration.h"
 #include "explore/frame_scene.h"
 
@@ -21,8 +22,11 @@ namespace rtu {
 // they are built).
 class SceneCache {
  public:
-  // Builds every scene the configurations name; a scene that fails keeps its error for its rows.
-  void build(const std::vector<Configuration>& configurations);
+  // Notes the scene a configuration names (configurations are added one at a time: a sweep's are
+  // not held together), then build() builds every scene noted; a scene that fails keeps its error
+  // for its rows.
+  void need(const Configuration& configuration);
+  void build();
   // Throws std::runtime_error with the build error of a scene that failed.
   const FrameScene& scene(const RunConfig& settings) const;
   // The built scenes as word files with an index in `directory` (for Slurm array tasks), and
@@ -31,6 +35,7 @@ class SceneCache {
   void load(const std::string& directory);
 
  private:
+  std::map<std::string, RunConfig> uses_;  // each scene's settings, with its rows' deepest stack
   std::map<std::string, FrameScene> scenes_;
   std::map<std::string, std::string> errors_;
 };
@@ -53,11 +58,10 @@ nlohmann::ordered_json runRowSafely(const Configuration& configuration, const Sc
 // its RTU (rtu/validate) or a sample on a model other than the cycle-accurate one; for the ray
 // pipe, validateRaypipeRow.
 void validateRow(const Configuration& configuration);
-// The rows of `rows` whose configuration is valid; each other one goes to `invalid` at once as an
-// "invalid" row with its error.
-std::vector<size_t> validRows(
-    const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-    const std::function<void(size_t, const nlohmann::ordered_json&)>& invalid);
+bool isValidRow(const Configuration& configuration);
+// The configurations of an exploration's rows, computed on demand from the row's index (a sweep's
+// points are not held together).
+using ConfigurationAt = std::function<Configuration(size_t)>;
 
 // The row of a configuration that failed ("invalid": validateRow refused it, it is not run again
 // on resume; "failed": its run failed, it runs again on resume) or whose worker died ("lost": it
@@ -65,12 +69,13 @@ std::vector<size_t> validRows(
 nlohmann::ordered_json failedRow(const Configuration& configuration, const std::string& error,
                                  const std::string& status = "failed");
 
-// Runs configurations[i] for each i in `rows` in up to `workers` worker processes, after
-// validating them (validRows: invalid ones are not run) and building their scenes once, with
-// progress on standard error; `done(i, row)` gets each row as it finishes (a failed configuration
-// gives a failed row, a dead worker a lost one). Returns the rows that are not "ok".
-size_t runRows(const std::vector<Configuration>& configurations, const std::vector<size_t>& rows,
-               int workers, const std::string& label,
+// Runs configuration(i) for each i in `rows` in up to `workers` worker processes, after
+// validating them (an invalid one goes to `done` at once as an "invalid" row with its error, and is
+// not run) and building their scenes once, with progress on standard error; `done(i, row)` gets
+// each row as it finishes (a failed configuration gives a failed row, a dead worker a lost one).
+// Holds the rows in flight, not `rows`. Returns the rows that are not "ok".
+size_t runRows(const ConfigurationAt& configuration, const IndexRanges& rows, int workers,
+               const std::string& label,
                const std::function<void(size_t, const nlohmann::ordered_json&)>& done,
                RowModel model = RowModel::Simulation);
 

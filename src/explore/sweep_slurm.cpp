@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -28,31 +29,39 @@ std::string rowsFile(const std::string& directory, int task) {
   return directory + "/rows_" + std::to_string(task) + ".jsonl";
 }
 
-// The rows in a task's file; a line cut short (the task was killed) is left out.
-std::vector<Json> readRows(const std::string& path) {
-  std::vector<Json> rows;
+// Calls row(json) for each row in a task's file, one at a time; a line cut short (the task was
+// killed) is left out.
+void forEachRow(const std::string& path, const std::function<void(const Json&)>& row) {
   std::ifstream in = openInputFileIfAny(path, "sweep rows");
   std::string line;
   while (std::getline(in, line)) {
+    Json parsed;
     try {
-      rows.push_back(Json::parse(line));
+      parsed = Json::parse(line);
     } catch (const nlohmann::json::exception&) {
+      continue;
     }
+    row(parsed);
   }
-  return rows;
 }
 
-std::vector<Configuration> readConfigurations(const std::string& directory) {
-  uint64_t bytes = 0;
-  std::ifstream in = openInputFile(directory + "/configs.jsonl", "sweep configurations", bytes);
-  std::vector<Configuration> configurations;
-  std::string line;
-  while (std::getline(in, line)) {
-    Configuration configuration;
-    configuration.loadText(line, "json", "configs.jsonl", ConfigSource::File);
-    configurations.push_back(configuration);
+// What the directory holds of the sweep: its points and the indices to run.
+struct SweepPlan {
+  SweepPoints points;
+  IndexRanges rows;
+  int tasks;
+};
+
+SweepPlan readPlan(const std::string& directory) {
+  const std::string path = directory + "/plan.json";
+  // The rows' ranges grow with the rows done before, not with the grid.
+  const Json plan = Json::parse(readInputFile(path, "sweep plan", uint64_t{1} << 30));
+  try {
+    return {SweepPoints::fromJson(plan.at("points")),
+            IndexRanges::parse(plan.at("rows").get<std::string>()), plan.at("tasks").get<int>()};
+  } catch (const std::exception& error) {
+    throw std::runtime_error("sweep plan '" + path + "': " + error.what());
   }
-  return configurations;
 }
 
 void writeBatchScript(const std::string& path, const std::string& directory, int tasks,
@@ -61,8 +70,8 @@ void writeBatchScript(const std::string& path, const std::string& directory, int
   OutputFile file(path);
   std::ostream& script = file.stream();
   script << "#!/bin/bash\n"
-         << "# Written by rtusim sweep --slurm: array element i runs configurations i, i+" << tasks
-         << ", ... of configs.jsonl.\n"
+         << "# Written by rtusim sweep --slurm: array element i runs rows i, i+" << tasks
+         << ", ... of plan.json's rows.\n"
          << "#SBATCH --job-name=rtusim-sweep\n"
          << "#SBATCH --array=0-" << tasks - 1 << "\n"
          << "#SBATCH --ntasks=1\n"
@@ -121,58 +130,59 @@ void clearSweepDirectory(const std::string& directory) {
 
 }  // namespace
 
-std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
-                           const std::vector<size_t>& allRows, const std::string& directoryName,
-                           const SlurmOptions& options,
+std::string runRowsOnSlurm(const SweepPoints& points, const IndexRanges& allRows,
+                           const std::string& directoryName, const SlurmOptions& options,
                            const std::function<void(const Json&)>& done) {
-  const std::vector<size_t> rows =
-      validRows(configurations, allRows, [&done](size_t, const Json& row) { done(row); });
+  IndexRanges rows;
+  SceneCache scenes;
+  allRows.forEach([&](size_t row) {
+    const Configuration configuration = points.at(row);
+    try {
+      validateRow(configuration);
+      rows.add(row);
+      scenes.need(configuration);
+    } catch (const std::invalid_argument& error) {
+      done(failedRow(configuration, error.what(), "invalid"));
+    }
+  });
   const std::string directory = fs::absolute(directoryName).string();
   clearSweepDirectory(directory);  // a fresh plan: rows already done are in the sweep's own files
   fs::create_directories(directory);
+  const size_t count = rows.count();
   const int tasks = static_cast<int>(
-      std::max<size_t>(1, std::min<size_t>(rows.size(), options.tasks > 0 ? options.tasks : 256)));
-  std::vector<Configuration> pending;
-  std::string plan;
-  for (size_t row : rows) {
-    plan += configurations[row].toJson().dump() + "\n";
-    pending.push_back(configurations[row]);
-  }
-  writeTextFile(directory + "/configs.jsonl", plan);
-  writeTextFile(directory + "/plan.json", Json{{"tasks", tasks}}.dump() + "\n");
-  SceneCache scenes;
-  scenes.build(pending);
+      std::max<size_t>(1, std::min<size_t>(count, options.tasks > 0 ? options.tasks : 256)));
+  writeTextFile(directory + "/plan.json",
+                Json{{"tasks", tasks}, {"rows", rows.text()}, {"points", points.toJson()}}.dump() +
+                    "\n");
+  scenes.build();
   scenes.save(directory);
   const std::string script = directory + "/sweep.sbatch";
   writeBatchScript(script, directory, tasks, options);
-  if (options.dryRun || rows.empty()) return script;
-  submitAndWait(script, directory, tasks, rows.size());
-  for (int task = 0; task < tasks; ++task)
-    for (const Json& row : readRows(rowsFile(directory, task))) done(row);
+  if (options.dryRun || count == 0) return script;
+  submitAndWait(script, directory, tasks, count);
+  for (int task = 0; task < tasks; ++task) forEachRow(rowsFile(directory, task), done);
   return script;
 }
 
 void runSlurmTask(const std::string& directory, int task) {
-  const int tasks = nlohmann::json::parse(readInputFile(directory + "/plan.json", "sweep plan",
-                                                        kMaxSettingsFileBytes))["tasks"]
-                        .get<int>();
-  if (task < 0 || task >= tasks)
+  const SweepPlan plan = readPlan(directory);
+  if (task < 0 || task >= plan.tasks)
     throw std::invalid_argument("--slurm-task " + std::to_string(task) + " is not in 0.." +
-                                std::to_string(tasks - 1));
-  const std::vector<Configuration> configurations = readConfigurations(directory);
+                                std::to_string(plan.tasks - 1));
   SceneCache scenes;
   scenes.load(directory);
   // Rows this task wrote before it was requeued or killed are kept.
   const std::string path = rowsFile(directory, task);
-  std::vector<std::string> done;
-  for (const Json& row : readRows(path)) done.push_back(row["config"].dump());
+  std::set<std::string> done;
+  forEachRow(path, [&done](const Json& row) { done.insert(row["config"].dump()); });
   std::ofstream out(path, std::ios::app);
-  for (size_t i = static_cast<size_t>(task); i < configurations.size();
-       i += static_cast<size_t>(tasks)) {
-    const std::string key = configurations[i].toJson().dump();
-    if (std::find(done.begin(), done.end(), key) != done.end()) continue;
-    out << runRowSafely(configurations[i], scenes).dump() << "\n" << std::flush;
-  }
+  size_t k = 0;
+  plan.rows.forEach([&](size_t row) {
+    if (k++ % static_cast<size_t>(plan.tasks) != static_cast<size_t>(task)) return;
+    const Configuration configuration = plan.points.at(row);
+    if (done.count(configuration.toJson().dump())) return;
+    out << runRowSafely(configuration, scenes).dump() << "\n" << std::flush;
+  });
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 

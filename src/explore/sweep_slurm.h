@@ -1,18 +1,19 @@
 #pragma once
 // A sweep as a Slurm job array. The submitting rtusim writes a sweep directory (on a file system
-// the cluster's nodes share): the configurations still to run, the scenes built once, and a batch
-// script whose array elements each run `rtusim sweep --slurm-task ID --sweep-dir DIR` on every
-// tasks-th configuration, appending rows to their own file. It submits with `sbatch --wait`,
-// shows progress from the rows written, and hands every row to the caller (which writes the
-// sweep's CSV and JSON lines as a local sweep does). See docs/slurm.md.
+// the cluster's nodes share): the sweep's points (sweep_points.h: the base and grid, each point
+// computed from its index) with the indices still to run as ranges, the scenes built once, and a
+// batch script whose array elements each run `rtusim sweep --slurm-task ID --sweep-dir DIR` on
+// every tasks-th row to run, appending rows to their own file. Nothing in it grows with the grid.
+// It submits with `sbatch --wait`, shows progress from the rows written, and hands every row to the
+// caller (which writes the sweep's CSV and JSON lines as a local sweep does). See docs/slurm.md.
 
 #include <functional>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "config/configuration.h"
+#include "base/index_ranges.h"
+#include "config/sweep_points.h"
 
 namespace rtu {
 
@@ -22,11 +23,10 @@ struct SlurmOptions {
   bool dryRun = false;    // write the directory and the batch script, do not submit
 };
 
-// Configurations that are not valid (validRows) go to `done` as invalid rows and are not
-// submitted. Returns the path of the batch script.
-std::string runRowsOnSlurm(const std::vector<Configuration>& configurations,
-                           const std::vector<size_t>& rows, const std::string& directory,
-                           const SlurmOptions& options,
+// Runs points.at(i) for each i in `rows`. Configurations that are not valid (validateRow) go to
+// `done` as invalid rows and are not submitted. Returns the path of the batch script.
+std::string runRowsOnSlurm(const SweepPoints& points, const IndexRanges& rows,
+                           const std::string& directory, const SlurmOptions& options,
                            const std::function<void(const nlohmann::ordered_json&)>& done);
 
 // One array element: runs its share of the directory's configurations.

@@ -148,15 +148,19 @@ void runInWorkers(const std::vector<size_t>& rows, int workers,
       rows, workers, [&work](size_t row, const WorkerSay& say) { say(work(row)); }, {}, done);
 }
 
-void runInWorkers(const std::vector<size_t>& rows, int workers,
-                  const std::function<void(size_t, const WorkerSay&)>& work,
-                  const std::function<void(size_t, const std::string&)>& heard,
-                  const std::function<void(size_t, const WorkerOutcome&)>& done) {
+namespace {
+
+void runNextInWorkers(const NextRow& nextRow, int workers,
+                      const std::function<void(size_t, const WorkerSay&)>& work,
+                      const std::function<void(size_t, const std::string&)>& heard,
+                      const std::function<void(size_t, const WorkerOutcome&)>& done) {
   std::vector<Worker> running;
-  size_t next = 0;
-  while (next < rows.size() || !running.empty()) {
-    while (next < rows.size() && static_cast<int>(running.size()) < std::max(1, workers))
-      running.push_back(startWorker(rows[next++], work));
+  bool more = true;
+  size_t row = 0;
+  while (more || !running.empty()) {
+    while (more && static_cast<int>(running.size()) < std::max(1, workers) && (more = nextRow(row)))
+      running.push_back(startWorker(row, work));
+    if (running.empty()) break;
     std::vector<pollfd> fds;
     for (const Worker& worker : running) fds.push_back({worker.fd, POLLIN, 0});
     if (::poll(fds.data(), fds.size(), 1000) < 0 && errno != EINTR)
@@ -176,6 +180,28 @@ void runInWorkers(const std::vector<size_t>& rows, int workers,
       done(finished.row, finishWorker(finished));
     }
   }
+}
+
+}  // namespace
+
+void runInWorkers(const std::vector<size_t>& rows, int workers,
+                  const std::function<void(size_t, const WorkerSay&)>& work,
+                  const std::function<void(size_t, const std::string&)>& heard,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done) {
+  size_t next = 0;
+  const NextRow nextRow = [&](size_t& row) {
+    if (next == rows.size()) return false;
+    row = rows[next++];
+    return true;
+  };
+  runNextInWorkers(nextRow, workers, work, heard, done);
+}
+
+void runInWorkers(const NextRow& nextRow, int workers,
+                  const std::function<std::string(size_t)>& work,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done) {
+  runNextInWorkers(
+      nextRow, workers, [&work](size_t row, const WorkerSay& say) { say(work(row)); }, {}, done);
 }
 
 int defaultWorkerCount() {

@@ -86,6 +86,13 @@ void runInWorkers(const std::vector<size_t>& rows, int workers,
                   const std::function<void(size_t, const std::string&)>& heard,
                   const std::function<void(size_t, const WorkerOutcome&)>& done);
 
+// The rows taken one at a time as workers free up (a sweep's rows are not held together):
+// `nextRow(row)` sets the next row, false when there is none.
+using NextRow = std::function<bool(size_t&)>;
+void runInWorkers(const NextRow& nextRow, int workers,
+                  const std::function<std::string(size_t)>& work,
+                  const std::function<void(size_t, const WorkerOutcome&)>& done);
+
 int defaultWorkerCount();
 
 }  // namespace rtu
