@@ -85,6 +85,19 @@ RaypipeCycleRun checkSameCycles(const KdImage& image, const std::vector<RaypipeC
   }
   CHECK(timed.transfers.size() == ref.transfers.size());
   CHECK(sortedTransfers(timed) == sortedTransfers(ref));
+  REQUIRE(timed.caches.size() == ref.caches.size());
+  for (size_t i = 0; i < ref.caches.size(); ++i) {
+    INFO(ref.caches[i].cache);
+    CHECK(timed.caches[i].cache == ref.caches[i].cache);
+    CHECK(timed.caches[i].hits == ref.caches[i].hits);
+    CHECK(timed.caches[i].misses == ref.caches[i].misses);
+    CHECK(timed.caches[i].fills == ref.caches[i].fills);
+    CHECK(timed.caches[i].reissues == ref.caches[i].reissues);
+    CHECK(timed.caches[i].stalls == ref.caches[i].stalls);
+  }
+  CHECK(timed.dram.reads == ref.dram.reads);
+  CHECK(timed.dram.bytes == ref.dram.bytes);
+  CHECK(timed.dram.busyCycles == ref.dram.busyCycles);
   return timed;
 }
 
@@ -318,6 +331,59 @@ TEST_CASE("raypipe timed model: two traversal units, hand-counted", "[raypipe_ti
   CHECK(runRaypipeTimed(RaypipeConfig{}, image, nine).results[8].exitCycle == 216);
 }
 
+// The set-associative caches (timed_cache.h, reference/raypipe_cache.h): the RTL's sizes (cold
+// misses only), small caches (conflicts and evictions: a few lines per way) and a slow DRAM (the
+// reissue FIFO fills and stalls the caches' inputs), on the reference's scenes and PRG frames.
+namespace {
+
+RaypipeConfig setAssociative(int tcache, int lcache, int icache) {
+  RaypipeConfig config;
+  config.cache = RaypipeCacheKind::SetAssociative;
+  config.caches.tcacheLines = tcache;
+  config.caches.lcacheLines = lcache;
+  config.caches.icacheLines = icache;
+  return config;
+}
+
+int64_t total(const RaypipeCycleRun& run, int64_t RaypipeCacheCounts::*field) {
+  int64_t sum = 0;
+  for (const RaypipeCacheCounts& c : run.caches) sum += c.*field;
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("raypipe timed model: the reference's cycles with the set-associative caches",
+          "[raypipe_timed]") {
+  const KdImage sphere = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+  const std::vector<RaypipeCycleRay> rays = mixedRays(sphere, 400, 2);
+  RaypipeConfig config = setAssociative(512, 1024, 1024);
+  RaypipeCycleRun run = checkSameCycles(sphere, rays, config);
+  checkGolden(sphere, rays, config, run);
+  CHECK(total(run, &RaypipeCacheCounts::fills) == run.dram.reads);
+  config = setAssociative(2, 1, 4);
+  for (int depth : {1, 4}) {
+    config.shortStackDepth = depth;
+    run = checkSameCycles(sphere, rays, config);
+    checkGolden(sphere, rays, config, run);
+  }
+  CHECK(total(run, &RaypipeCacheCounts::fills) > 100);  // lines evicted and read again
+  config.caches.dramLatency = 60;
+  config.caches.dramBytesPerCycle = 1;
+  run = checkSameCycles(sphere, rays, config);
+  checkGolden(sphere, rays, config, run);
+  CHECK(total(run, &RaypipeCacheCounts::stalls) > 1000);
+  const KdImage frame = frameScene();
+  for (int level : {0, 1}) {
+    config = setAssociative(4, 2, 8);
+    run = checkSameCycles(frame, prgRays(level), config);
+    checkGolden(frame, prgRays(level), config, run);
+  }
+  RaypipeCycleOptions atReset;  // the way choice's phase
+  atReset.cyclesSinceReset = 101;
+  checkSameCycles(frame, prgRays(0), config, atReset);
+}
+
 // With two units every result equals the golden traversal's (and the one-unit run's), on scenes
 // where the units' outputs meet at tarb, larb, the shortstack's ports and the list unit's leaf_max
 // RAM; and a traversal-bound frame takes fewer cycles.
@@ -350,6 +416,13 @@ TEST_CASE("raypipe timed model: two traversal units give the golden results", "[
   shallow.fifo.pixelBuffer = 1;
   shallow.fifo.intList = shallow.fifo.intLarb = 45;
   checkGolden(sphere, rays, shallow, runRaypipeTimed(shallow, sphere, rays));
+  RaypipeConfig cached = setAssociative(2, 1, 4);  // four caches behind the arbiter
+  cached.traversalUnits = 2;
+  const RaypipeCycleRun withCaches = runRaypipeTimed(cached, sphere, rays);
+  checkGolden(sphere, rays, cached, withCaches);
+  REQUIRE(withCaches.caches.size() == 4);
+  CHECK(withCaches.caches[1].cache == "tcache_1");
+  CHECK(withCaches.caches[1].fills > 0);
 }
 
 }  // namespace rtu

@@ -34,8 +34,6 @@ RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& ima
   if (config.traversalUnits != 1)
     throw std::invalid_argument(
         "raypipe.traversal_units: the per-cycle reference models one traversal unit (t5.sv)");
-  if (config.cache != RaypipeCacheKind::BlockRam)
-    throw std::invalid_argument("raypipe.cache: the per-cycle reference models the block RAMs");
   if (writer.vgaPhase < 0) throw std::invalid_argument("the VGA phase must not be negative");
   if (options.cyclesSinceReset < 0)
     throw std::invalid_argument("the cycles since reset must not be negative");

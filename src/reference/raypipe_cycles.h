@@ -24,7 +24,7 @@
 namespace rtu {
 
 // Runs one frame. Throws std::invalid_argument for a configuration the reference does not take
-// (more than one traversal unit, the set-associative caches, a negative VGA phase), logic_error
+// (more than one traversal unit, a negative VGA phase), logic_error
 // when the pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, a hazard
 // on a ray's stack or restart record, no progress for a million cycles).
 RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,

@@ -26,6 +26,7 @@ class Pipe {
       : config_(config),
         writer_(options.writer),
         recordTransfers_(options.recordTransfers),
+        cyclesSinceReset_(options.cyclesSinceReset),
         memory_(image.memory()),
         sections_(sectionsOf(decodeKdHeader(image.words.data()))),
         rays_(rays),
@@ -68,6 +69,10 @@ class Pipe {
     run.fifos = u_.fifoPeaks();
     run.maxRaysInFlight = maxInFlight_;
     run.staleListHits = staleListHits_;
+    if (config_.cache == RaypipeCacheKind::SetAssociative) {
+      run.caches = u_.cacheCounts();
+      run.dram = u_.dram.counts();
+    }
     run.hostSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return run;
@@ -89,7 +94,8 @@ class Pipe {
   const RaypipeConfig& config_;
   RaypipePixelWriter writer_;
   bool recordTransfers_ = false;
-  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
+  int64_t cyclesSinceReset_ = 0;  // the caches' way choice counts from reset
+  int64_t initEnd_ = 0;           // the first cycle after the shader's is_init
   std::vector<RaypipeTransfer> transfers_;
   // A unit took `f` this cycle.
   void busy(Unit u, const Flit& f, bool hasRay = true) {

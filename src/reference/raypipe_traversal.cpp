@@ -130,21 +130,22 @@ void Pipe::traversal() {
     u_.travListNext = u_.leafFifo.front();
     u_.leafFifo.pop();
   }
-  // tcache (2-cycle block RAM, 3-entry FIFO)
-  const bool tcUsStall = u_.tcache.usStall(tcToTravStall);
-  if (u_.tcache.pipe.outValid(now_)) {
-    Flit f = u_.tcache.pipe.out(now_);
-    const uint32_t address = sections_.nodes + f.node * kKdNodeWords;
+  // tcache (2-cycle block RAM or the set-associative cache, 3-entry FIFO)
+  const bool tcUsStall = u_.tcache.cycle(now_, tcToTravStall, u_.dram, cyclesSinceReset_);
+  Flit hit;
+  if (u_.tcache.exitHit(now_, hit)) {
+    const uint32_t address = sections_.nodes + hit.node * kKdNodeWords;
     const uint32_t words[kKdNodeWords] = {memory_.read(address), memory_.read(address + 1)};
-    f.nodeData = decodeKdNode(words);
-    u_.tcache.fifo.push(now_, f);
+    hit.nodeData = decodeKdNode(words);
+    u_.tcache.fifo.push(now_, hit);
   }
   auto& tarbOut = u_.tarb.out();
   if (tarbOut.valid(now_)) {
     if (tcUsStall) {
       activity_.stall(Unit::Tcache);
+      u_.tcache.refused();
     } else {
-      u_.tcache.pipe.accept(tarbOut.front());
+      u_.tcache.accept(tarbOut.front());
       tarbOut.pop();
       busy(Unit::Tcache, tarbOut.front());
     }

@@ -25,7 +25,7 @@ Units::Units(const RaypipeConfig& c)
       sintSs("sint_ss", c.fifo.sint),
       sintShader("sint_shader", c.fifo.sint),
       tarb("tarb", c.fifo.tarb),
-      tcache("tcache", c.latency.memoryRead, c.fifo.memoryOut),
+      tcache("tcache", RaypipeCacheId::Tcache, c),
       rs0("raystore0", c.latency.memoryRead, c.fifo.memoryOut),
       leafFifo("trav_leaf", c.fifo.travLeaf),
       travPipe(c.latency.travMath),
@@ -40,8 +40,8 @@ Units::Units(const RaypipeConfig& c)
       notMissFifo("ss_restart", 4),
       missFifo("ss_miss", 4),
       larb("larb", c.fifo.larb),
-      lcache("lcache", c.latency.memoryRead, c.fifo.memoryOut),
-      icache("icache", c.latency.memoryRead, c.fifo.memoryOut),
+      lcache("lcache", RaypipeCacheId::Lcache, c),
+      icache("icache", RaypipeCacheId::Icache, c),
       rs1("raystore1", c.latency.memoryRead, c.fifo.memoryOut),
       intPipe(c.latency.intersection),
       intList("int_list", c.fifo.intList),
@@ -55,7 +55,8 @@ Units::Units(const RaypipeConfig& c)
       shaderArb("shader_arb", 2),
       shaderPipe(2),
       shaderData("shader_data", 3),
-      pixelBuffer("pixel_buffer", c.fifo.pixelBuffer) {}
+      pixelBuffer("pixel_buffer", c.fifo.pixelBuffer),
+      dram(c.caches) {}
 
 void Units::offerAll(int64_t now) {
   tarb.offer(0, stackFifo.empty() ? nullptr : &stackFifo.front());
@@ -108,7 +109,15 @@ void Units::tick(int64_t now) {
   sintSs.tick(now);
   sintShader.tick(now);
   tarb.tick(now);
-  tcache.tick(now);
+  // the miss handlers see the arbiter's doneRead of the cycle, the arbiter their readReq
+  std::array<bool, kRaypipeDramPorts> asking{};
+  std::array<uint32_t, kRaypipeDramPorts> bytes{};
+  for (const CacheRead* c : {&icache, &tcache, &lcache}) {
+    asking[static_cast<size_t>(c->port())] = c->asking();
+    bytes[static_cast<size_t>(c->port())] = c->lineBytes();
+  }
+  for (CacheRead* c : {&icache, &tcache, &lcache}) c->tick(now, dram);
+  dram.tick(now, asking, bytes);
   rs0.tick(now);
   leafFifo.tick(now);
   travPipe.tick(now);
@@ -131,8 +140,6 @@ void Units::tick(int64_t now) {
   notMissFifo.tick(now);
   missFifo.tick(now);
   larb.tick(now);
-  lcache.tick(now);
-  icache.tick(now);
   rs1.tick(now);
   intPipe.tick(now);
   intList.tick(now);
@@ -163,6 +170,10 @@ std::vector<RaypipeFifoPeak> Units::fifoPeaks() const {
   std::vector<RaypipeFifoPeak> peaks;
   for (const FifoStats* f : all) peaks.push_back(RaypipeFifoPeak{f->name(), f->depth(), f->peak()});
   return peaks;
+}
+
+std::vector<RaypipeCacheCounts> Units::cacheCounts() const {
+  return {tcache.counts(), lcache.counts(), icache.counts()};
 }
 
 }  // namespace raypipe_ref

@@ -20,34 +20,14 @@
 #include "kinds/kd/kd_traversal.h"
 #include "raypipe/raypipe_config.h"
 #include "reference/raypipe_arbiter.h"
+#include "reference/raypipe_cache.h"
 #include "reference/raypipe_cycles.h"
 #include "reference/raypipe_fifo.h"
+#include "reference/raypipe_flit.h"
 #include "reference/raypipe_pipe.h"
 
 namespace rtu {
 namespace raypipe_ref {
-
-struct Flit {
-  uint32_t ray = 0;    // rayID
-  uint32_t index = 0;  // the pixel's place in the PRG's order
-  // tarb_t
-  uint32_t node = 0;
-  float tMin = 0, tMax = 0;
-  bool search = false;         // restnode_search
-  uint32_t wptr = 0, num = 0;  // ss_wptr, ss_num
-  TrayRacerNode nodeData;      // tcache's read
-  KdPlaneTest plane;           // trav_math's results
-  // trav_to_ss_t
-  bool pushReq = false, popReq = false, restReq = false, maxsceneReq = false;
-  uint32_t pushNode = 0;
-  // leaf_info_t, lcache's and INT's
-  uint32_t lindex = 0, lnum = 0, tri = 0;
-  bool last = false;
-  KdTriangleHit found;
-  // the list unit's decision and what reaches the shader
-  bool isHit = false, boxMiss = false, miss = false;
-  float t = 0, u = 0, v = 0;
-};
 
 struct StackEntry {
   uint32_t node = 0;
@@ -142,7 +122,8 @@ struct Units {
   RegFifo<Flit> sintTarb, sintSs, sintShader;
   // tarb, tcache, TRAV, raystore #0
   RotatingArbiter<Flit, 4, ShowAheadFifo<Flit>> tarb;
-  MemoryRead tcache, rs0;
+  CacheRead tcache;
+  MemoryRead rs0;
   RegFifo<Flit> leafFifo;
   PipeValidStall<Flit> travPipe;
   RegFifo<Flit> travFifo;
@@ -160,7 +141,8 @@ struct Units {
   int restWritePointer = 0;
   // larb, lcache, icache, raystore #1, INT
   RotatingArbiter<Flit, 2, ShowAheadFifo<Flit>> larb;
-  MemoryRead lcache, icache, rs1;
+  CacheRead lcache, icache;
+  MemoryRead rs1;
   PipeValidStall<Flit> intPipe;
   ShowAheadFifo<Flit> intList, intLarb;
   int intShaderNumLeft;  // the shadow-hit FIFO, never written by primary rays
@@ -177,6 +159,8 @@ struct Units {
   PipeValidStall<Flit> shaderPipe;
   RegFifo<Flit> shaderData;
   RegFifo<Flit> pixelBuffer;
+  // the memory request arbiter behind the caches (set_associative)
+  DramArbiter dram;
 
   // The arbiters' offers of the cycle, and the registers' next values as their current ones.
   void offerAll(int64_t now);
@@ -185,6 +169,7 @@ struct Units {
   bool listToSsStall() const;
   void tick(int64_t now);
   std::vector<RaypipeFifoPeak> fifoPeaks() const;
+  std::vector<RaypipeCacheCounts> cacheCounts() const;
 };
 
 }  // namespace raypipe_ref

@@ -29,6 +29,7 @@ struct RayToken {
   KdPlaneTest plane;                       // TRAV's math
   KdTriangleHit found;                     // INT's
   float t = 0, u = 0, v = 0;               // the list unit's answer
+  bool cacheHit = false;  // the cache's lookup as the token entered it (timed_cache.h)
 };
 
 // What a traced FIFO (pipe_trace.h) shows at its head: the ray id, or before the shader gives one
