@@ -26,6 +26,10 @@ namespace raypipe_ref {
 class DramArbiter {
  public:
   explicit DramArbiter(const RaypipeCacheSettings& s) : settings_(s) {}
+  // Cycle 0 is `cyclesFromReset` after reset: the pointer has turned every cycle since.
+  void startAfter(int64_t cyclesFromReset) {
+    current_ = static_cast<int>(cyclesFromReset % kRaypipeDramPorts);
+  }
   bool doneRead(int port, int64_t now) const { return busy_ && port_ == port && done_ == now; }
   // The cycle's end; asking[p]: port p's readReq at the cycle's start, of bytes[p] bytes.
   void tick(int64_t now, const std::array<bool, kRaypipeDramPorts>& asking,

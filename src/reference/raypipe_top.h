@@ -41,6 +41,7 @@ class Pipe {
     for (int id = 0; id < config.raysInFlight; ++id)
       u_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
     initEnd_ = reset + 512;
+    u_.dram.startAfter(options.cyclesSinceReset);
     // The reader's state repeats every screen: 521 lines of 800 25 MHz clocks, 480 x 1278 active
     // cycles (a multiple of the one-hot register's 4).
     if (writer_.vgaReadWindow)

@@ -3,11 +3,12 @@
 // (SDRAM/memory_request_arbiter.sv) in front of rtusim's DRAM channel (sim/memory/dram_channel.h),
 // lazy in time. Timing rules (docs/raypipe.md, "The set-associative caches"):
 //   Idle from cycle F with its pointer at port c, the arbiter looks at port (c + t - F) mod 4 in
-//   cycle t. Port p asking from cycle b (its miss handler in B) is granted in the first cycle
-//   g >= max(b, F) whose port is p, unless another asking port's such cycle comes first.
-//   Granted in g, its line's doneRead rises in d = DramChannel::read(bytes, g)
-//   = g + latency + ceil(bytes / bytesPerCycle) (the arbiter serialises the reads, so the bus is
-//   always free); the arbiter is idle again from F = d + 1 with its pointer at p + 1.
+//   cycle t (at cycle 0: cyclesSinceReset mod 4, startAfter). Port p asking from cycle b (its miss
+//   handler in B) is granted in the first cycle g >= max(b, F) whose port is p, unless another
+//   asking port's such cycle comes first. Granted in g, its line's doneRead rises in
+//   d = DramChannel::read(bytes, g) = g + latency + ceil(bytes / bytesPerCycle) (the arbiter
+//   serialises the reads, so the bus is always free); the arbiter is idle again from F = d + 1
+//   with its pointer at p + 1.
 // Every request with b <= t is known before cycle t (a miss handler asks two cycles after the
 // miss is seen at the latest), so advance(t) decides every grant up to t; the arbiter books each
 // asking port's group for the cycle of its next possible grant and, once granted, for d.
@@ -26,6 +27,10 @@ class DramArbiter {
  public:
   explicit DramArbiter(const RaypipeCacheSettings& s)
       : channel_(DramConfig{static_cast<uint32_t>(s.dramLatency), s.dramBytesPerCycle}) {}
+  // Cycle 0 is `cyclesFromReset` after reset: the pointer has turned every cycle since.
+  void startAfter(int64_t cyclesFromReset) {
+    pointer_ = static_cast<int>(cyclesFromReset % kRaypipeDramPorts);
+  }
   void bookOn(WakeCalendar& calendar, int port, uint32_t groups) {
     calendar_ = &calendar;
     ports_[static_cast<size_t>(port)].groups = groups;

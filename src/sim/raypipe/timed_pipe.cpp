@@ -55,6 +55,7 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
   for (int id = 0; id < config.raysInFlight; ++id)
     c_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
   initEnd_ = reset + 512;
+  c_.dram.startAfter(options.cyclesSinceReset);
   wireCalendar();
   calendar_.book(kPrg, 0, -1);
 }
