@@ -144,9 +144,11 @@ for mode in ("reference", "raypipe"):
     assert r["results_equal_golden"] == "yes", r
 assert rows["golden"]["total_cycles"] == "" and rows["golden"]["results_equal_golden"] == "yes"
 PY
-# ... and with small set-associative caches: the timed model equals the reference in every ray.
+# ... and with small set-associative caches and two traversal units: the timed model equals the
+# reference in every ray.
 "$rtusim" fidelity --preset trayracer "${scene[@]}" --level 0 --set raypipe.cache=set_associative \
-  --set raypipe.cache_lines.tcache=4 --csv fidelity_caches.csv >/dev/null || fail "fidelity caches"
+  --set raypipe.cache_lines.tcache=4 --set raypipe.traversal_units=2 --csv fidelity_caches.csv \
+  >/dev/null || fail "fidelity caches"
 python3 - fidelity_caches.csv "$cycles" <<'PY' || fail "fidelity CSV with the caches"
 import csv, sys
 rows = {r["mode"]: r for r in csv.DictReader(open(sys.argv[1]))}

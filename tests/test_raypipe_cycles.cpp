@@ -387,9 +387,9 @@ TEST_CASE("raypipe reference: invariants with few ray ids", "[raypipe_cycles]") 
     }
   }
   SECTION("refused settings") {
-    RaypipeConfig two;
-    two.traversalUnits = 2;
-    CHECK_THROWS_AS(runRaypipeCycles(two, image, rays), std::invalid_argument);
+    RaypipeConfig three;
+    three.traversalUnits = 3;  // the shortstack and the list unit have ports for two
+    CHECK_THROWS_AS(runRaypipeCycles(three, image, rays), std::invalid_argument);
   }
 }
 

@@ -15,10 +15,11 @@ namespace raypipe_ref {
 void Pipe::intersection() {
   u_.larb.arbitrate(now_);
   if (const Flit* g = u_.larb.granted()) busy(Unit::Larb, *g);
-  if (u_.larb.accepted(1)) u_.intLarb.pop();
+  const int intInput = static_cast<int>(u_.trav.size());  // larb's last input
+  if (u_.larb.accepted(intInput)) u_.intLarb.pop();
   // 256 - max(usedw of the list and larb FIFOs), or the shadow FIFO's free slots if fewer
   const int minLeft = std::min({u_.intList.numLeft(), u_.intLarb.numLeft(), u_.intShaderNumLeft});
-  const bool intDsStall = u_.larb.stallUs(1) || intToListStall_;
+  const bool intDsStall = u_.larb.stallUs(intInput) || intToListStall_;
   const bool intUsStall = u_.intPipe.usStall(intDsStall, minLeft);
   if (u_.intPipe.outValid(now_)) {
     const Flit& f = u_.intPipe.out(now_);

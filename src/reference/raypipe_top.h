@@ -7,6 +7,7 @@
 // settle; every register, FIFO and pipe then takes its new state at the cycle's end (tick).
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -87,7 +88,10 @@ class Pipe {
   void listUnit();
   void intersection();
   void traversal();
+  void travUnit(TravUnit& u, int i, bool toListStall);
+  std::array<bool, 2> leafMaxStalls();
   void shortStack();
+  void stackWrites(bool reading, uint32_t readRow);
   void sceneIntersection();
   void shaderIssueAndPrg();
   void tick();
@@ -120,7 +124,14 @@ class Pipe {
   int inFlight_ = 0, maxInFlight_ = 0;
   int64_t staleListHits_ = 0;
   // Stalls every unit reads, computed at the cycle's start from registered state.
-  bool travToSsStall_ = false, listToSsStall_ = false, sintToSsStall_ = false;
+  std::array<bool, 2> travToSsStall_{};  // per traversal unit
+  bool listToSsStall_ = false, sintToSsStall_ = false;
+  // The list unit reads leaf_max in the cycle after a leaf's last triangle entered it (it runs
+  // before the traversal units in a cycle, so this cycle's entry is kept beside the last); with two
+  // traversal units a write that meets that read and the other unit's write waits, the unit rrp
+  // names (list_unit.sv).
+  std::array<int64_t, 2> leafAccepts_{-2, -2};  // the list unit's last two leaf ends taken
+  int leafMaxPointer_ = 0;
   bool listToRsStall_ = false, intToListStall_ = false, sintUsStall_ = false;
 };
 

@@ -109,6 +109,26 @@ struct RoundRobin3 {
   int pointer = 0;
 };
 
+// One traversal unit with its tcache and raystore #0 (trav_unit.sv; raypipe_2trav.sv gives each of
+// its two units their own, and a stack write FIFO in the shortstack): unit 0's FIFOs keep the
+// one-unit build's names, unit i's add _i.
+struct TravUnit {
+  TravUnit(const RaypipeConfig& c, int i);
+  CacheRead tcache;
+  MemoryRead rs0;
+  RegFifo<Flit> leafFifo;
+  PipeValidStall<Flit> travPipe;
+  RegFifo<Flit> travFifo;
+  RegFifo<Flit> stackWrite;
+  // the registered outputs to the shortstack, tarb, larb and the list unit's leaf_max
+  bool ssValid = false, tarbValid = false, larbValid = false, listValid = false;
+  bool ssValidNext = false, tarbValidNext = false, larbValidNext = false, listValidNext = false;
+  Flit ss, tarbOut, larbOut, list;
+  Flit ssNext, tarbOutNext, larbOutNext, listNext;
+  void keepRegisters();
+  void tick(int64_t now);
+};
+
 struct Units {
   explicit Units(const RaypipeConfig& c);
 
@@ -120,27 +140,19 @@ struct Units {
   // SINT
   PipeValidStall<Flit> sintPipe;
   RegFifo<Flit> sintTarb, sintSs, sintShader;
-  // tarb, tcache, TRAV, raystore #0
-  RotatingArbiter<Flit, 4, ShowAheadFifo<Flit>> tarb;
-  CacheRead tcache;
-  MemoryRead rs0;
-  RegFifo<Flit> leafFifo;
-  PipeValidStall<Flit> travPipe;
-  RegFifo<Flit> travFifo;
-  bool travSsValid = false, travTarbValid = false, travLarbValid = false, travListValid = false;
-  bool travSsValidNext = false, travTarbValidNext = false, travLarbValidNext = false,
-       travListValidNext = false;
-  Flit travSs, travTarb, travLarb, travList;
-  Flit travSsNext, travTarbNext, travLarbNext, travListNext;
+  // tarb: [0] stack pop, [1] restart, [2 + i] traversal unit i, [2 + units] SINT; output i to unit
+  // i's tcache
+  RotatingArbiter<Flit, 5, ShowAheadFifo<Flit>> tarb;
+  std::vector<TravUnit> trav;  // raypipe.traversal_units
   // shortstack: request FIFOs [trav0, trav1, list] and restart writes [trav0, trav1, SINT]
   std::vector<RegFifo<Flit>> stackRead, restRead, restWrite;
-  RegFifo<Flit> stackWrite;
   PipeValidStall<Flit> stackPipe, restPipe;
   RegFifo<Flit> stackFifo, notMissFifo, missFifo;
   RoundRobin3 stackReadChoice, restReadChoice;
-  int restWritePointer = 0;
-  // larb, lcache, icache, raystore #1, INT
-  RotatingArbiter<Flit, 2, ShowAheadFifo<Flit>> larb;
+  int restWritePointer = 0, stackWritePointer = 0;
+  // larb: [i] traversal unit i's leaf, [units] INT's next triangle; lcache, icache, raystore #1,
+  // INT
+  RotatingArbiter<Flit, 3, ShowAheadFifo<Flit>> larb;
   CacheRead lcache, icache;
   MemoryRead rs1;
   PipeValidStall<Flit> intPipe;
@@ -165,7 +177,7 @@ struct Units {
   // The arbiters' offers of the cycle, and the registers' next values as their current ones.
   void offerAll(int64_t now);
   // The shortstack's input stalls (combinational in the request and the FIFOs' full flags).
-  bool travToSsStall() const;
+  bool travToSsStall(size_t i) const;
   bool listToSsStall() const;
   void tick(int64_t now);
   std::vector<RaypipeFifoPeak> fifoPeaks() const;
