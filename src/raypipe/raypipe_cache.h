@@ -25,7 +25,6 @@ enum class RaypipeCacheId { Icache = 0, Tcache = 1, Lcache = 2, Tcache1 = 3 };
 constexpr int kRaypipeDramPorts = 4;  // R1 COMMON/defines.sv `numcaches`
 
 struct RaypipeCacheGeometry {
-  const char* name = "";
   uint32_t itemsPerLine = 1;
   uint32_t lineBytes = 4;
   uint32_t sets = 1;
