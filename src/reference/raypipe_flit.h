@@ -30,8 +30,8 @@ struct Flit {
   KdTriangleHit found;
   // the list unit's decision and what reaches the shader
   bool isHit = false, boxMiss = false, miss = false;
-  float t = 0, u = 0, v = 0;
   bool cacheHit = false;  // the cache's lookup as the item entered it (raypipe_cache.h)
+  float t = 0, u = 0, v = 0;
 };
 
 }  // namespace raypipe_ref

@@ -48,22 +48,16 @@ void TimedCache::ask(int64_t from, int64_t now) {
   dram_.request(static_cast<int>(id_), from, geometry_.lineBytes, now);
 }
 
-bool TimedCache::exitHit(int64_t now, RayToken& out) {
-  if (!read.pipe.exiting(now)) return false;
-  out = read.pipe.take(now);
-  if (!setAssociative_) return true;
-  if (out.cacheHit) {
-    ++counts_.hits;
-    return true;
-  }
+bool TimedCache::missed(int64_t now) {
+  const RayToken t = read.pipe.take(now);
   ++counts_.misses;
-  const uint64_t line = lineOf(out);
+  const uint64_t line = lineOf(t);
   const bool wait = !requested(line, now);
   if (wait) {
     if (requests_.empty()) ask(std::max(handlerIdleFrom_, now + 1) + 1, now);
     requests_.emplace_back(line, now);
   }
-  reissue_.push(now, Reissue{out, wait});
+  reissue_.push(now, Reissue{t, wait});
   return false;
 }
 
@@ -78,9 +72,7 @@ void TimedCache::deliver(int64_t now) {
   if (!requests_.empty()) ask(std::max(now + 1, requests_.front().second + 1) + 1, now);
 }
 
-bool TimedCache::cycle(int64_t now, bool dsStall, int64_t cyclesFromReset) {
-  const bool pipeStall = read.usStall(now, dsStall);
-  if (!setAssociative_) return pipeStall;
+bool TimedCache::reissue(int64_t now, bool pipeStall, int64_t cyclesFromReset) {
   dram_.advance(now);
   bool reissued = false;
   if (reissue_.shown(now) && !pipeStall) {

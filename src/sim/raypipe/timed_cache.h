@@ -36,11 +36,21 @@ class TimedCache {
  public:
   TimedCache(const std::string& name, RaypipeCacheId id, const RaypipeConfig& c, DramArbiter& dram);
   void bookOn(WakeCalendar& calendar, uint32_t groups);
-  // An item leaving the pipe in `now` that hit, for its data to be read into the hit FIFO; a miss
-  // goes to the reissue FIFO instead (false). Before cycle().
-  bool exitHit(int64_t now, RayToken& out);
+  // An item leaving the pipe in `now` that hit, for takeHit to give its data to the hit FIFO; a
+  // miss leaving goes to the reissue FIFO instead (false). Before cycle().
+  bool hitExiting(int64_t now) {
+    if (!read.pipe.exiting(now)) return false;
+    return !setAssociative_ || read.pipe.front().cacheHit || missed(now);
+  }
+  RayToken takeHit(int64_t now) {
+    counts_.hits += setAssociative_ ? 1 : 0;
+    return read.pipe.take(now);
+  }
   // The cycle's reissue (before any upstream item) and the upstream stall, the downstream's given.
-  bool cycle(int64_t now, bool dsStall, int64_t cyclesFromReset);
+  bool cycle(int64_t now, bool dsStall, int64_t cyclesFromReset) {
+    const bool pipeStall = read.usStall(now, dsStall);
+    return setAssociative_ ? reissue(now, pipeStall, cyclesFromReset) : pipeStall;
+  }
   void accept(int64_t now, const RayToken& t);
   void refused() { ++counts_.stalls; }
   const RaypipeCacheCounts& counts() const { return counts_; }
@@ -49,6 +59,8 @@ class TimedCache {
 
  private:
   uint64_t lineOf(const RayToken& t) const;
+  bool missed(int64_t now);  // false: the exiting miss went to the reissue FIFO
+  bool reissue(int64_t now, bool pipeStall, int64_t cyclesFromReset);
   bool requested(uint64_t line, int64_t now) const;
   void ask(int64_t from, int64_t now);
   void deliver(int64_t now);

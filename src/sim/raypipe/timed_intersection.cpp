@@ -62,19 +62,19 @@ void TimedPipe::intersection() {
   if (c_.rs1.pipe.exiting(now_)) c_.rs1.fifo.push(now_, c_.rs1.pipe.take(now_));
   if (c_.icache.read.fifo.shown(now_) && !rs1UsStall)
     c_.rs1.pipe.accept(now_, c_.icache.read.fifo.pop(now_));
-  RayToken t;
-  if (c_.icache.exitHit(now_, t)) c_.icache.read.fifo.push(now_, t);
+  if (c_.icache.hitExiting(now_)) c_.icache.read.fifo.push(now_, c_.icache.takeHit(now_));
   const bool icUsStall = c_.icache.cycle(now_, rs1UsStall, cyclesSinceReset_);
   if (c_.lcache.read.fifo.shown(now_)) {
     if (icUsStall) {
       c_.icache.refused();
     } else {
-      t = c_.lcache.read.fifo.pop(now_);
+      const RayToken t = c_.lcache.read.fifo.pop(now_);
       c_.icache.accept(now_, t);
       busy(Unit::Icache, t);
     }
   }
-  if (c_.lcache.exitHit(now_, t)) {
+  if (c_.lcache.hitExiting(now_)) {
+    RayToken t = c_.lcache.takeHit(now_);
     t.tri = memory_.read(sections_.lists + t.lindex);
     c_.lcache.read.fifo.push(now_, t);
   }
@@ -85,7 +85,7 @@ void TimedPipe::intersection() {
     c_.lcache.refused();
     return;
   }
-  t = c_.larb.out().pop(now_);
+  const RayToken t = c_.larb.out().pop(now_);
   c_.lcache.accept(now_, t);
   busy(Unit::Lcache, t);
 }

@@ -188,8 +188,8 @@ void TimedPipe::travLeaves(TravUnit& u, bool toLarbStall, bool toListStall) {
 // tcache: a 2-cycle read of the node into its FIFO (block RAM or timed_cache.h), from tarb's
 // output `i`.
 void TimedPipe::travCache(TravUnit& u, int i, bool tcToTravStall) {
-  RayToken t;
-  if (u.tcache.exitHit(now_, t)) {
+  if (u.tcache.hitExiting(now_)) {
+    RayToken t = u.tcache.takeHit(now_);
     const uint32_t address = sections_.nodes + t.node * kKdNodeWords;
     const uint32_t words[kKdNodeWords] = {memory_.read(address), memory_.read(address + 1)};
     t.nodeData = decodeKdNode(words);
@@ -203,7 +203,7 @@ void TimedPipe::travCache(TravUnit& u, int i, bool tcToTravStall) {
     u.tcache.refused();
     return;
   }
-  t = in.pop(now_);
+  const RayToken t = in.pop(now_);
   u.tcache.accept(now_, t);
   busy(Unit::Tcache, t);
 }
