@@ -98,11 +98,29 @@ rows = {r["architecture"]: r for r in csv.DictReader(open(sys.argv[1]))}
 assert rows["rtu"]["answered_by"] == "systemc" and rows["raypipe"]["answered_by"] == "raypipe"
 assert all(r["status"] == "ok" and r["rays"] == "1200" for r in rows.values()), rows
 PY
-# A setting the timed model refuses is an invalid row, refused before it runs.
-expect_error "1 rows failed, the first: raypipe.cache" "$rtusim" sweep \
-  --preset trayracer "${scene[@]}" --level 0 --grid raypipe.cache=block_ram,set_associative \
-  --out caches.csv -j 1
-grep -q '"status":"invalid"' caches.jsonl || fail "cache=set_associative is not an invalid row"
+# The designed set-associative caches in front of DRAM: rows of their own, the same results; small
+# caches take more cycles and read lines from DRAM. A size the caches cannot take is an invalid row,
+# refused before it runs.
+"$rtusim" sweep --preset trayracer "${scene[@]}" --level 0 \
+  --grid raypipe.cache=block_ram,set_associative --set raypipe.cache_lines.tcache=4 \
+  --set raypipe.cache_lines.icache=4 --out caches.csv -j 1 >/dev/null || fail "cache rows"
+python3 - caches.jsonl "$cycles" <<'PY' || fail "cache rows"
+import json, sys
+rows = {r["config"]["raypipe.cache"]: r for r in map(json.loads, open(sys.argv[1]))}
+built, cached = rows["block_ram"]["statistics"], rows["set_associative"]["statistics"]
+assert built["total_cycles"] == int(sys.argv[2]) and built["caches"] == [], built
+assert cached["total_cycles"] > built["total_cycles"], cached["total_cycles"]
+for key in ("hits", "misses", "box_misses"):
+    assert cached[key] == built[key], key
+names = [c["cache"] for c in cached["caches"]]
+assert names == ["tcache", "lcache", "icache"], names
+assert sum(c["fills"] for c in cached["caches"]) == cached["dram"]["reads"] > 0, cached["dram"]
+assert cached["dram"]["bytes"] >= 32 * cached["dram"]["reads"], cached["dram"]
+PY
+expect_error "1 rows failed, the first: raypipe.cache_lines.tcache" "$rtusim" sweep \
+  --preset trayracer "${scene[@]}" --level 0 --set raypipe.cache=set_associative \
+  --grid raypipe.cache_lines.tcache=4,3 --out lines.csv -j 1
+grep -q '"status":"invalid"' lines.jsonl || fail "3 lines a way is not an invalid row"
 # Two traversal units (raypipe_2trav.sv): a row of its own, the same rays.
 "$rtusim" sweep --preset trayracer "${scene[@]}" --level 0 --grid raypipe.traversal_units=1,2 \
   --out units.csv -j 1 >/dev/null || fail "traversal_units=1,2"
@@ -125,6 +143,19 @@ for mode in ("reference", "raypipe"):
     assert float(r["total_cycles_error"]) == 0 and float(r["per_ray_error_mean"]) == 0, r
     assert r["results_equal_golden"] == "yes", r
 assert rows["golden"]["total_cycles"] == "" and rows["golden"]["results_equal_golden"] == "yes"
+PY
+# ... and with small set-associative caches and two traversal units: the timed model equals the
+# reference in every ray.
+"$rtusim" fidelity --preset trayracer "${scene[@]}" --level 0 --set raypipe.cache=set_associative \
+  --set raypipe.cache_lines.tcache=4 --set raypipe.traversal_units=2 --csv fidelity_caches.csv \
+  >/dev/null || fail "fidelity caches"
+python3 - fidelity_caches.csv "$cycles" <<'PY' || fail "fidelity CSV with the caches"
+import csv, sys
+rows = {r["mode"]: r for r in csv.DictReader(open(sys.argv[1]))}
+assert int(float(rows["reference"]["total_cycles"])) > int(sys.argv[2]), rows["reference"]
+r = rows["raypipe"]
+assert float(r["total_cycles_error"]) == 0 and float(r["per_ray_error_mean"]) == 0, r
+assert r["results_equal_golden"] == "yes", r
 PY
 expect_error "no loosely-timed or sampled mode" "$rtusim" fidelity --preset trayracer \
   "${scene[@]}" --level 0 --quanta 100

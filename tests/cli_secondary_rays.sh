@@ -115,7 +115,9 @@ import csv, sys
 for row in csv.DictReader(open(sys.argv[1])):
     assert int(row["rays"]) == 384 + int(row["shadow_rays"]) > 384, row
 PY
-"$rtusim" config --list | grep -q "^workload.ao_distance" || fail "config --list: workload keys"
+# (into a file: grep -q leaving early would break the pipe under pipefail)
+"$rtusim" config --list >keys.txt
+grep -q "^workload.ao_distance" keys.txt || fail "config --list: workload keys"
 expect_error "workload.samples" "$rtusim" render --scene menger --depth 5 "${frame[@]}" \
   --passes primary,ao --samples 0 --model golden
 

@@ -217,6 +217,66 @@ TEST_CASE("raypipe reference: hand-counted cycles on one triangle", "[raypipe_cy
   }
 }
 
+// The set-associative caches (docs/raypipe.md, "The set-associative caches"; DRAM latency 8, 4
+// bytes a cycle), on one triangle, counted by hand from the rules:
+//   tcache: the root enters at 65 (as above), a cold miss; out at 67 into the reissue FIFO, its
+//     line into the request FIFO, shown at 68; the miss handler asks from 69. The arbiter, idle
+//     since cycle 0, looks at port t mod 4 in cycle t: tcache's port 1 at 69, granted; doneRead
+//     at 69 + 8 + 48 / 4 = 89. The root goes in again at 89 (its line written: a hit), out at 91,
+//     the hit FIFO's head at 92: TRAV at 92 (68 before: 24 later).
+//   lcache: in at 72 + 24 = 96, a miss, out at 98, asks from 100; the arbiter is idle from 90 with
+//     its pointer at port 2, at port (2 + t - 90) mod 4 in cycle t: port 2 at 102; doneRead at
+//     102 + 8 + 32 / 4 = 118; in again at 118, out at 120, head at 121: icache in at 121.
+//   icache: a miss, out at 123, asks from 125; the arbiter is idle from 119 at port 3: port 0 at
+//     128; doneRead at 128 + 8 + 36 / 4 = 145; in again at 145, out at 147, head at 148: raystore
+//     #1 at 148, 70 after the block RAMs' 78, so the ray leaves at 143 + 70 = 213.
+//   a second ray 3 cycles behind finds each line asked for already (in the request FIFO): it waits
+//     behind the first in the reissue FIFO, goes in the cycle after it (a hit) and keeps one cycle
+//     behind it to the end: 214.
+TEST_CASE("raypipe reference: hand-counted cycles with the set-associative caches",
+          "[raypipe_cycles]") {
+  const KdImage image = oneTriangle();
+  RaypipeConfig config;
+  config.cache = RaypipeCacheKind::SetAssociative;
+  config.caches.dramLatency = 8;
+  config.caches.dramBytesPerCycle = 4;
+  const KdRay hit = downZ(0.5f, 0.5f);
+  RaypipeCycleOptions options;
+  options.recordTransfers = true;
+  RaypipeCycleRun run = runRaypipeCycles(config, image, {{hit, 7}}, options);
+  CHECK(run.results[0].hit);
+  CHECK(run.results[0].exitCycle == 213);
+  std::vector<std::pair<std::string, int64_t>> seen;
+  for (const RaypipeTransfer& t : run.transfers) seen.emplace_back(t.unit, t.cycle);
+  const std::vector<std::pair<std::string, int64_t>> expected = {
+      {"prg", 0},           {"sint", 44},  {"tarb", 63},        {"tcache", 65},
+      {"trav", 92},         {"larb", 94},  {"lcache", 96},      {"icache", 121},
+      {"int", 151},         {"list", 198}, {"shader_arb", 209}, {"shader_return", 210},
+      {"pixel_writer", 214}};
+  CHECK(seen == expected);
+  REQUIRE(run.caches.size() == 3);
+  for (const RaypipeCacheCounts& c : run.caches) {
+    INFO(c.cache);
+    CHECK(c.misses == 1);
+    CHECK(c.hits == 1);  // the reissue with its line
+    CHECK(c.fills == 1);
+  }
+  CHECK(run.dram.reads == 3);
+  CHECK(run.dram.bytes == 48 + 32 + 36);
+  CHECK(run.dram.busyCycles == 12 + 8 + 9);
+  run = runRaypipeCycles(config, image, {{hit, 0}, {hit, 1}});
+  CHECK(run.results[0].exitCycle == 213);
+  CHECK(run.results[1].exitCycle == 214);
+  for (const RaypipeCacheCounts& c : run.caches) {
+    INFO(c.cache);
+    CHECK(c.misses == 2);
+    CHECK(c.hits == 2);
+    CHECK(c.fills == 1);
+    CHECK(c.reissues == 2);
+  }
+  CHECK(run.dram.reads == 3);
+}
+
 // Hand-counted exit cycles on the hand scene (kd_hand_scene.h: root split x = 4 -> node 1 split
 // x = 2 -> leaves 2 [T0], 3 [T1, T3], 4 [T2]), one ray along +x from x = 0.5, from the rules:
 //   the root reaches TRAV at 68, as the leaf above. An interior node at TRAV in cycle T: raystore
@@ -327,9 +387,9 @@ TEST_CASE("raypipe reference: invariants with few ray ids", "[raypipe_cycles]") 
     }
   }
   SECTION("refused settings") {
-    RaypipeConfig two;
-    two.traversalUnits = 2;
-    CHECK_THROWS_AS(runRaypipeCycles(two, image, rays), std::invalid_argument);
+    RaypipeConfig three;
+    three.traversalUnits = 3;  // the shortstack and the list unit have ports for two
+    CHECK_THROWS_AS(runRaypipeCycles(three, image, rays), std::invalid_argument);
   }
 }
 

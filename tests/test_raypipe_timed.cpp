@@ -85,6 +85,19 @@ RaypipeCycleRun checkSameCycles(const KdImage& image, const std::vector<RaypipeC
   }
   CHECK(timed.transfers.size() == ref.transfers.size());
   CHECK(sortedTransfers(timed) == sortedTransfers(ref));
+  REQUIRE(timed.caches.size() == ref.caches.size());
+  for (size_t i = 0; i < ref.caches.size(); ++i) {
+    INFO(ref.caches[i].cache);
+    CHECK(timed.caches[i].cache == ref.caches[i].cache);
+    CHECK(timed.caches[i].hits == ref.caches[i].hits);
+    CHECK(timed.caches[i].misses == ref.caches[i].misses);
+    CHECK(timed.caches[i].fills == ref.caches[i].fills);
+    CHECK(timed.caches[i].reissues == ref.caches[i].reissues);
+    CHECK(timed.caches[i].stalls == ref.caches[i].stalls);
+  }
+  CHECK(timed.dram.reads == ref.dram.reads);
+  CHECK(timed.dram.bytes == ref.dram.bytes);
+  CHECK(timed.dram.busyCycles == ref.dram.busyCycles);
   return timed;
 }
 
@@ -181,6 +194,11 @@ TEST_CASE("raypipe timed model: the reference's cycles on one triangle", "[raypi
   RaypipeCycleOptions atReset;
   atReset.cyclesSinceReset = 0;
   CHECK(checkSameCycles(image, {{boxMiss, 0}}, config, atReset).results[0].exitCycle == 515);
+  // the set-associative caches' hand count (test_raypipe_cycles.cpp): three cold misses
+  config.cache = RaypipeCacheKind::SetAssociative;
+  const RaypipeCycleRun cached = checkSameCycles(image, {{hit, 0}, {hit, 1}}, config);
+  CHECK(cached.results[0].exitCycle == 213);
+  CHECK(cached.results[1].exitCycle == 214);
 }
 
 TEST_CASE("raypipe timed model: the reference's cycles on PRG rays at 20x15 and 40x30",
@@ -306,7 +324,7 @@ TEST_CASE("raypipe timed model: two traversal units, hand-counted", "[raypipe_ti
   two.traversalUnits = 2;
   RaypipeCycleOptions options;
   options.recordTransfers = true;
-  const RaypipeCycleRun run = runRaypipeTimed(two, image, nine, options);
+  const RaypipeCycleRun run = checkSameCycles(image, nine, two, options);
   for (uint32_t k = 0; k < 9; ++k) CHECK(run.results[k].exitCycle == 191 + 3 * k);
   CHECK(fifoPeak(run, "tarb_1") == 1);
   CHECK(fifoPeak(run, "tcache_1") == 1);
@@ -318,9 +336,64 @@ TEST_CASE("raypipe timed model: two traversal units, hand-counted", "[raypipe_ti
   CHECK(runRaypipeTimed(RaypipeConfig{}, image, nine).results[8].exitCycle == 216);
 }
 
+// The set-associative caches (timed_cache.h, reference/raypipe_cache.h): the RTL's sizes (cold
+// misses only), small caches (conflicts and evictions: a few lines per way) and a slow DRAM (the
+// reissue FIFO fills and stalls the caches' inputs), on the reference's scenes and PRG frames.
+namespace {
+
+RaypipeConfig setAssociative(int tcache, int lcache, int icache) {
+  RaypipeConfig config;
+  config.cache = RaypipeCacheKind::SetAssociative;
+  config.caches.tcacheLines = tcache;
+  config.caches.lcacheLines = lcache;
+  config.caches.icacheLines = icache;
+  return config;
+}
+
+int64_t total(const RaypipeCycleRun& run, int64_t RaypipeCacheCounts::*field) {
+  int64_t sum = 0;
+  for (const RaypipeCacheCounts& c : run.caches) sum += c.*field;
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("raypipe timed model: the reference's cycles with the set-associative caches",
+          "[raypipe_timed]") {
+  const KdImage sphere = builtImage(sphereCorners({0.5, 0.25, 2}, 6, 10));
+  const std::vector<RaypipeCycleRay> rays = mixedRays(sphere, 400, 2);
+  RaypipeConfig config = setAssociative(512, 1024, 1024);
+  RaypipeCycleRun run = checkSameCycles(sphere, rays, config);
+  checkGolden(sphere, rays, config, run);
+  CHECK(total(run, &RaypipeCacheCounts::fills) == run.dram.reads);
+  config = setAssociative(2, 1, 4);
+  for (int depth : {1, 4}) {
+    config.shortStackDepth = depth;
+    run = checkSameCycles(sphere, rays, config);
+    checkGolden(sphere, rays, config, run);
+  }
+  CHECK(total(run, &RaypipeCacheCounts::fills) > 100);  // lines evicted and read again
+  config.caches.dramLatency = 60;
+  config.caches.dramBytesPerCycle = 1;
+  run = checkSameCycles(sphere, rays, config);
+  checkGolden(sphere, rays, config, run);
+  CHECK(total(run, &RaypipeCacheCounts::stalls) > 1000);
+  const KdImage frame = frameScene();
+  for (int level : {0, 1}) {
+    config = setAssociative(4, 2, 8);
+    run = checkSameCycles(frame, prgRays(level), config);
+    checkGolden(frame, prgRays(level), config, run);
+  }
+  RaypipeCycleOptions atReset;  // the way choice's and the arbiter's phase
+  atReset.cyclesSinceReset = 101;
+  checkSameCycles(frame, prgRays(0), config, atReset);
+  config.latency.memoryRead = 3;  // a reissue FIFO sized for a longer read
+  checkGolden(sphere, rays, config, checkSameCycles(sphere, rays, config));
+}
+
 // With two units every result equals the golden traversal's (and the one-unit run's), on scenes
 // where the units' outputs meet at tarb, larb, the shortstack's ports and the list unit's leaf_max
-// RAM; and a traversal-bound frame takes fewer cycles.
+// RAM, cycle for cycle the per-cycle reference's; and a traversal-bound frame takes fewer cycles.
 TEST_CASE("raypipe timed model: two traversal units give the golden results", "[raypipe_timed]") {
   RaypipeConfig one, two;
   two.traversalUnits = 2;
@@ -328,7 +401,7 @@ TEST_CASE("raypipe timed model: two traversal units give the golden results", "[
   const std::vector<RaypipeCycleRay> rays = mixedRays(sphere, 400, 2);
   for (int depth : {1, 4}) {
     one.shortStackDepth = two.shortStackDepth = depth;
-    const RaypipeCycleRun run = runRaypipeTimed(two, sphere, rays);
+    const RaypipeCycleRun run = checkSameCycles(sphere, rays, two);
     checkGolden(sphere, rays, two, run);
     const RaypipeCycleRun single = runRaypipeTimed(one, sphere, rays);
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -341,7 +414,7 @@ TEST_CASE("raypipe timed model: two traversal units give the golden results", "[
     CHECK(run.frameCycles < single.frameCycles);
   }
   const KdImage frame = frameScene();
-  const RaypipeCycleRun small = runRaypipeTimed(two, frame, prgRays(1));
+  const RaypipeCycleRun small = checkSameCycles(frame, prgRays(1), two);
   checkGolden(frame, prgRays(1), two, small);
   CHECK(fifoPeak(small, "tcache_1") > 0);
   RaypipeConfig shallow = two;  // small FIFOs: every stall path of the second unit
@@ -349,7 +422,14 @@ TEST_CASE("raypipe timed model: two traversal units give the golden results", "[
   shallow.fifo.travMath = 14;
   shallow.fifo.pixelBuffer = 1;
   shallow.fifo.intList = shallow.fifo.intLarb = 45;
-  checkGolden(sphere, rays, shallow, runRaypipeTimed(shallow, sphere, rays));
+  checkGolden(sphere, rays, shallow, checkSameCycles(sphere, rays, shallow));
+  RaypipeConfig cached = setAssociative(2, 1, 4);  // four caches behind the arbiter
+  cached.traversalUnits = 2;
+  const RaypipeCycleRun withCaches = checkSameCycles(sphere, rays, cached);
+  checkGolden(sphere, rays, cached, withCaches);
+  REQUIRE(withCaches.caches.size() == 4);
+  CHECK(withCaches.caches[1].cache == "tcache_1");
+  CHECK(withCaches.caches[1].fills > 0);
 }
 
 }  // namespace rtu

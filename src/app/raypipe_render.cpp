@@ -101,6 +101,22 @@ std::string percent(double share) {
   return text;
 }
 
+double shareOf(int64_t part, int64_t whole) {
+  return whole ? static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
+
+// With the set-associative caches: each one's hits, misses and refused cycles, and the DRAM's
+// reads.
+void reportCaches(const RaypipeCycleRun& run, std::ostream& out) {
+  if (run.caches.empty()) return;
+  out << "caches     ";
+  for (const RaypipeCacheCounts& c : run.caches)
+    out << " " << c.cache << " " << percent(shareOf(c.hits, c.hits + c.misses)) << " hits of "
+        << c.hits + c.misses << ", " << c.stalls << " cycles refused;";
+  out << "\ndram        " << run.dram.reads << " lines, " << run.dram.bytes << " bytes, bus busy "
+      << percent(shareOf(run.dram.busyCycles, run.frameCycles)) << "\n";
+}
+
 // The timed frame's lines: frame cycles and rate at the pipe's clock, the busiest units, where
 // rays waited, and the FIFOs that filled.
 void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::ostream& out) {
@@ -142,6 +158,7 @@ void reportTiming(const RaypipeCycleRun& run, const RaypipeConfig& config, std::
                     std::to_string(config.vgaPhase) + ")"
               : std::string("the SRAM writer takes a pixel every cycle (no VGA window)"))
       << "\n";
+  reportCaches(run, out);
   std::snprintf(line, sizeof line, "host        %.3f s timed model, %.2f M rays/s\n",
                 run.hostSeconds, run.results.size() / run.hostSeconds / 1e6);
   out << line;

@@ -717,10 +717,28 @@ void addRaypipeSettings(std::vector<Setting>& schema) {
   added.push_back(choice(
       "raypipe.cache", "", {"block_ram", "set_associative"}, model,
       "ray pipe: block_ram (as built: full capacity, never a miss) or set_associative (the "
-      "designed "
-      "2-way caches in front of DRAM)",
+      "designed 2-way caches in front of DRAM: raypipe.cache_lines.*, raypipe.dram.*)",
       [](C& c) -> RaypipeCacheKind& { return c.raypipe.cache; }, raypipeCacheName,
       parseRaypipeCache));
+  const std::pair<const char*, int& (*)(C&)> cacheLines[] = {
+      {"tcache", [](C& c) -> int& { return c.raypipe.caches.tcacheLines; }},
+      {"lcache", [](C& c) -> int& { return c.raypipe.caches.lcacheLines; }},
+      {"icache", [](C& c) -> int& { return c.raypipe.caches.icacheLines; }},
+  };
+  for (const auto& [name, field] : cacheLines)
+    added.push_back(integer(std::string("raypipe.cache_lines.") + name, "", "lines", 1, 1 << 20,
+                            model,
+                            std::string("ray pipe, set_associative: lines per way of the ") + name +
+                                " (a power of two; the RTL's NUM_LINES)",
+                            field));
+  added.push_back(integer("raypipe.dram.latency", "", "cycles", 1, kMaxLatencyCycles, model,
+                          "ray pipe, set_associative: cycles from the memory arbiter's read to "
+                          "the DRAM's first word",
+                          [](C& c) -> int& { return c.raypipe.caches.dramLatency; }));
+  added.push_back(real("raypipe.dram.bytes_per_cycle", "", "bytes", 1e-3, 1e6, model,
+                       "ray pipe, set_associative: the DRAM's bytes per cycle (the seed's "
+                       "32-bit SDRAM: 4)",
+                       [](C& c) -> double& { return c.raypipe.caches.dramBytesPerCycle; }));
   added.push_back(choice(
       "raypipe.division", "", {"ieee", "toward_zero", "altfp_div"}, arith,
       "ray pipe: the divider, ieee (correctly rounded), altfp_div (the shipped divider's "

@@ -50,6 +50,20 @@ void RaypipeConfig::validate() const {
       {"raypipe.fifo.pixel_buffer", fifo.pixelBuffer},
   };
   for (const auto& [key, value] : positive) atLeast(key, value, 1);
+  const std::pair<const char*, int> lines[] = {
+      {"raypipe.cache_lines.tcache", caches.tcacheLines},
+      {"raypipe.cache_lines.lcache", caches.lcacheLines},
+      {"raypipe.cache_lines.icache", caches.icacheLines},
+  };
+  for (const auto& [key, value] : lines) {
+    atLeast(key, value, 1);
+    if ((value & (value - 1)) != 0)
+      throw std::invalid_argument(std::string(key) + " = " + std::to_string(value) +
+                                  ": must be a power of two (the RTL's index bits)");
+  }
+  atLeast("raypipe.dram.latency", caches.dramLatency, 1);
+  if (!(caches.dramBytesPerCycle > 0))
+    throw std::invalid_argument("raypipe.dram.bytes_per_cycle: must be positive");
   if (vgaPhase < 0)
     throw std::invalid_argument("raypipe.vga_phase: must not be negative (cycles from reset)");
   if (!(clockMHz > 0))

@@ -48,6 +48,18 @@ struct RaypipeFifoDepths {
   int pixelBuffer = 20;
 };
 
+// The designed caches in front of DRAM (cache = SetAssociative; R1 RAYTRACER/caches/cache.sv and
+// COMMON/defines.sv, docs/raypipe.md "The set-associative caches"): 2 ways of `lines` lines each
+// (the RTL's NUM_LINES, a power of two), a line's width fixed by what it holds; behind them
+// rtusim's DRAM channel (sim/memory/dram_channel.h) through R1's memory request arbiter.
+struct RaypipeCacheSettings {
+  int tcacheLines = 512;         // T_NUM_LINES: 8 nodes (384 bits) a line
+  int lcacheLines = 1024;        // L_NUM_LINES: 16 list entries (256 bits) a line
+  int icacheLines = 1024;        // I_NUM_LINES: one triangle's matrix (288 bits) a line
+  int dramLatency = 8;           // cycles from the arbiter's read to the first word (an estimate)
+  double dramBytesPerCycle = 4;  // the 32-bit SDRAM at the pipe's clock
+};
+
 struct RaypipeConfig {
   int traversalUnits = 1;
   int shortStackDepth = 4;  // S1 §2.6.9: "the 4-deep stack"
@@ -55,6 +67,7 @@ struct RaypipeConfig {
   RaypipeLatencies latency;
   RaypipeFifoDepths fifo;
   RaypipeCacheKind cache = RaypipeCacheKind::BlockRam;
+  RaypipeCacheSettings caches;          // used with cache = SetAssociative
   Division division = Division::Altfp;  // as built: the shipped altfp_div (altfp_div.h)
   KdTMaxClamp tMaxClamp = KdTMaxClamp::AsBuilt;
   double clockMHz = 50.0;  // R1 COMMON/defines.sv CLK_FREQ
@@ -65,7 +78,8 @@ struct RaypipeConfig {
   int64_t vgaPhase = 0;
 
   // Throws std::invalid_argument naming the setting for a value the pipe cannot take (counts and
-  // depths below 1, ray ids beyond the 9-bit rayID's 512, a stack deeper than its 3-bit count).
+  // depths below 1, ray ids beyond the 9-bit rayID's 512, a stack deeper than its 3-bit count, a
+  // cache's lines not a power of two, a DRAM without bandwidth).
   void validate() const;
 };
 

@@ -5,14 +5,21 @@ namespace {
 
 constexpr auto kFloat = NumberKind::Float;
 
+// As built, full-capacity block RAMs; set-associative (cache.sv), two ways of the configured lines
+// and a tag store of a byte a way.
 void addCaches(const RaypipeConfig& config, ResourceEstimate& estimate) {
-  const std::vector<MemoryArray> caches = {
-      {"tcache", 512, 384}, {"lcache", 1024, 256}, {"icache", 1024, 288}};
-  for (const MemoryArray& cache : caches) {
-    estimate.memories.push_back(cache);
-    if (config.cache == RaypipeCacheKind::SetAssociative)
-      estimate.memories.push_back({cache.name + " tags", cache.depth / 2, 2 * 20});
+  if (config.cache != RaypipeCacheKind::SetAssociative) {
+    estimate.memories.insert(estimate.memories.end(),
+                             {{"tcache", 512, 384}, {"lcache", 1024, 256}, {"icache", 1024, 288}});
+    return;
   }
+  const RaypipeCacheSettings& s = config.caches;
+  estimate.memories.insert(estimate.memories.end(), {{"tcache", s.tcacheLines, 384, 2},
+                                                     {"tcache tags", s.tcacheLines, 16},
+                                                     {"lcache", s.lcacheLines, 256, 2},
+                                                     {"lcache tags", s.lcacheLines, 16},
+                                                     {"icache", s.icacheLines, 288, 2},
+                                                     {"icache tags", s.icacheLines, 16}});
 }
 
 void addFifos(const RaypipeConfig& config, ResourceEstimate& estimate) {

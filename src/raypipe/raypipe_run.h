@@ -12,6 +12,7 @@
 
 #include "kinds/kd/kd_traversal.h"
 #include "kinds/kd/kd_units.h"
+#include "raypipe/raypipe_cache.h"
 
 namespace rtu {
 
@@ -118,6 +119,10 @@ struct RaypipeCycleRun {
   std::vector<RaypipeFifoPeak> fifos;
   int maxRaysInFlight = 0;    // ray ids held at once, at most RaypipeConfig::raysInFlight
   int64_t staleListHits = 0;  // rays that ended as a miss with a hit kept in the list record
+  // With raypipe.cache = set_associative: each cache's counts (tcache, then tcache_1 with two
+  // traversal units, lcache, icache) and the DRAM's; else none.
+  std::vector<RaypipeCacheCounts> caches;
+  RaypipeDramCounts dram;
   std::vector<RaypipeTransfer> transfers;  // in cycle order, when recorded
   double hostSeconds = 0;
 

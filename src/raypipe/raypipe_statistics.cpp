@@ -62,6 +62,12 @@ RaypipeStatistics RaypipeStatistics::of(const RaypipeCycleRun& run, const Raypip
                        fullRateInterval(unit.unit, config), unitCopies(unit.unit, config)});
   for (const RaypipeFifoPeak& fifo : run.fifos)
     s.fifos.push_back({fifo.fifo, counted(fifo.depth), counted(fifo.peak)});
+  for (const RaypipeCacheCounts& c : run.caches)
+    s.caches.push_back({c.cache, counted(c.hits), counted(c.misses), counted(c.fills),
+                        counted(c.reissues), counted(c.stalls)});
+  s.dramReads = counted(run.dram.reads);
+  s.dramBytes = counted(run.dram.bytes);
+  s.dramBusyCycles = counted(run.dram.busyCycles);
   s.hostSeconds = run.hostSeconds;
   return s;
 }
@@ -145,6 +151,32 @@ const StatisticGroup<RaypipeFifoStatistics>& RaypipeFifoStatistics::declaration(
   return group;
 }
 
+const StatisticGroup<RaypipeCacheStatistics>& RaypipeCacheStatistics::declaration() {
+  using C = RaypipeCacheStatistics;
+  static const StatisticGroup<C> group =
+      StatisticGroup<C>("a set-associative cache of the ray pipe")
+          .setting(Statistic("cache", "", "its name (tcache, tcache_1, lcache, icache)"), &C::cache)
+          .count(Statistic("hits", "lookups",
+                           "items that found their line (a filled line's own item among them)"),
+                 &C::hits)
+          .count(Statistic("misses", "lookups",
+                           "items that did not (an item missing again counts again)"),
+                 &C::misses)
+          .count(Statistic("fills", "lines", "lines read from DRAM"), &C::fills)
+          .count(Statistic("reissues", "items", "missed items sent through the cache again"),
+                 &C::reissues)
+          .count(Statistic("stalls", "cycles",
+                           "cycles an item was offered to the cache and refused (a reissue "
+                           "going first, the reissue FIFO full, the hit FIFO's credit)"),
+                 &C::stalls)
+          .derived(Statistic("hit_rate", "", "hits / (hits + misses)"), [](const C& c) {
+            return c.hits + c.misses == 0
+                       ? 0.0
+                       : static_cast<double>(c.hits) / static_cast<double>(c.hits + c.misses);
+          });
+  return group;
+}
+
 const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
   using S = RaypipeStatistics;
   using Unit = PartOf<S, RaypipeUnitStatistics>;
@@ -210,6 +242,15 @@ const StatisticGroup<RaypipeStatistics>& RaypipeStatistics::declaration() {
                  &S::staleListHits)
           .list(Statistic("units", "", "per unit, in the pipe's order"), &S::units, &unitLayout)
           .list(Statistic("fifos", "", "per FIFO"), &S::fifos)
+          .list(Statistic("caches", "",
+                          "per cache with raypipe.cache = set_associative (none with block_ram)"),
+                &S::caches)
+          .count(Statistic("dram/reads", "lines",
+                           "lines read from DRAM through the memory request arbiter"),
+                 &S::dramReads)
+          .count(Statistic("dram/bytes", "bytes", "bytes read from DRAM"), &S::dramBytes)
+          .count(Statistic("dram/busy_cycles", "cycles", "cycles the DRAM's data bus transferred"),
+                 &S::dramBusyCycles)
           .setting(Statistic("simulation/model", "",
                              "what answered: raypipe, the pipe's timed model"),
                    &S::model)

@@ -38,6 +38,14 @@ struct RaypipeFifoStatistics {
   static const StatisticGroup<RaypipeFifoStatistics>& declaration();
 };
 
+// One cache's counts with raypipe.cache = set_associative (RaypipeCacheCounts, raypipe_cache.h).
+struct RaypipeCacheStatistics {
+  std::string cache;
+  uint64_t hits = 0, misses = 0, fills = 0, reissues = 0, stalls = 0;
+
+  static const StatisticGroup<RaypipeCacheStatistics>& declaration();
+};
+
 struct RaypipeStatistics {
   uint64_t rays = 0;
   uint64_t totalCycles = 0;  // the frame's cycles: cycle 0 (the PRG's first) to the last exit
@@ -50,6 +58,8 @@ struct RaypipeStatistics {
   uint64_t staleListHits = 0;
   std::vector<RaypipeUnitStatistics> units;
   std::vector<RaypipeFifoStatistics> fifos;
+  std::vector<RaypipeCacheStatistics> caches;  // set_associative only
+  uint64_t dramReads = 0, dramBytes = 0, dramBusyCycles = 0;
   std::string model = "raypipe";  // what answered: the pipe's timed model (or its reference)
   double hostSeconds = 0;
 

@@ -9,7 +9,7 @@ namespace raypipe_ref {
 void Pipe::step(size_t& exited, size_t& written) {
   // The arbiters' offers: every input's valid is a register or a FIFO's flag.
   u_.offerAll(now_);
-  travToSsStall_ = u_.travToSsStall();
+  for (size_t i = 0; i < u_.trav.size(); ++i) travToSsStall_[i] = u_.travToSsStall(i);
   listToSsStall_ = u_.listToSsStall();
   sintToSsStall_ = !u_.sintSs.empty() && u_.restWrite[2].full();
   shaderReturn(exited, written);
@@ -31,11 +31,6 @@ RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& ima
                                  const RaypipeCycleOptions& options) {
   const RaypipePixelWriter& writer = options.writer;
   config.validate();
-  if (config.traversalUnits != 1)
-    throw std::invalid_argument(
-        "raypipe.traversal_units: the per-cycle reference models one traversal unit (t5.sv)");
-  if (config.cache != RaypipeCacheKind::BlockRam)
-    throw std::invalid_argument("raypipe.cache: the per-cycle reference models the block RAMs");
   if (writer.vgaPhase < 0) throw std::invalid_argument("the VGA phase must not be negative");
   if (options.cyclesSinceReset < 0)
     throw std::invalid_argument("the cycles since reset must not be negative");

@@ -4,6 +4,9 @@
 // cycle with the RTL's valid/stall handshake, written from the RTL apart from any timed model, as
 // rtl_cycle_model is for the thesis RTU. docs/raypipe.md, "Timing rules (the per-cycle
 // reference)", gives the rules unit by unit with their R1 files, and what is not modelled yet.
+// Beside the final build: two traversal units (raypipe.traversal_units = 2, R1's earlier
+// raypipe_2trav.sv) and the designed set-associative caches in front of DRAM (raypipe.cache =
+// set_associative, raypipe_cache.h).
 //
 // The arithmetic and the traversal's decisions are kinds/kd's (kd_units.h over the memory image of
 // kd_image.h, read as kd_traversal.h reads it), so each ray's result is bit-exact with the golden
@@ -24,7 +27,7 @@
 namespace rtu {
 
 // Runs one frame. Throws std::invalid_argument for a configuration the reference does not take
-// (more than one traversal unit, the set-associative caches, a negative VGA phase), logic_error
+// (one RaypipeConfig::validate refuses, a negative VGA phase), logic_error
 // when the pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, a hazard
 // on a ray's stack or restart record, no progress for a million cycles).
 RaypipeCycleRun runRaypipeCycles(const RaypipeConfig& config, const KdImage& image,

@@ -52,6 +52,10 @@ class RegFifo : public FifoStats {
   int numLeft() const { return depth_ - size(); }
   bool valid(int64_t) const { return !empty(); }  // the head shown this cycle
   const T& front() const { return items_.front(); }
+  // Holds `item` at the cycle's start (R1's exists_in_fifo).
+  bool contains(const T& item) const {
+    return std::find(items_.begin(), items_.end(), item) != items_.end();
+  }
   void pop() {  // re & ~empty
     if (!empty()) popped_ = true;
   }

@@ -13,9 +13,10 @@ namespace raypipe_ref {
 
 // R1 RAYTRACER/scene_int/scene_int.sv: the 18-cycle pipe and its three 18-deep FIFOs.
 void Pipe::sceneIntersection() {
-  if (u_.tarb.accepted(3)) u_.sintTarb.pop();
+  const int sintInput = 2 + static_cast<int>(u_.trav.size());  // tarb's last input
+  if (u_.tarb.accepted(sintInput)) u_.sintTarb.pop();
   if (u_.shaderArb.accepted(2)) u_.sintShader.pop();
-  const bool dsStall = u_.tarb.stallUs(3) || sintToSsStall_ || u_.shaderArb.stallUs(2);
+  const bool dsStall = u_.tarb.stallUs(sintInput) || sintToSsStall_ || u_.shaderArb.stallUs(2);
   const int left = std::min({u_.sintTarb.numLeft(), u_.sintSs.numLeft(), u_.sintShader.numLeft()});
   sintUsStall_ = u_.sintPipe.usStall(dsStall, left);
   if (u_.sintPipe.outValid(now_)) {

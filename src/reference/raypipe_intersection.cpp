@@ -11,14 +11,15 @@ namespace rtu {
 namespace raypipe_ref {
 
 // larb -> lcache -> icache -> raystore #1 -> INT (R1 RAYTRACER/int/int_unit.sv, int_math.sv;
-// RAYTRACER/caches/simple_cache.sv, raystore/raystore_simple.sv).
+// RAYTRACER/caches/simple_cache.sv or cache.sv, raystore/raystore_simple.sv).
 void Pipe::intersection() {
   u_.larb.arbitrate(now_);
   if (const Flit* g = u_.larb.granted()) busy(Unit::Larb, *g);
-  if (u_.larb.accepted(1)) u_.intLarb.pop();
+  const int intInput = static_cast<int>(u_.trav.size());  // larb's last input
+  if (u_.larb.accepted(intInput)) u_.intLarb.pop();
   // 256 - max(usedw of the list and larb FIFOs), or the shadow FIFO's free slots if fewer
   const int minLeft = std::min({u_.intList.numLeft(), u_.intLarb.numLeft(), u_.intShaderNumLeft});
-  const bool intDsStall = u_.larb.stallUs(1) || intToListStall_;
+  const bool intDsStall = u_.larb.stallUs(intInput) || intToListStall_;
   const bool intUsStall = u_.intPipe.usStall(intDsStall, minLeft);
   if (u_.intPipe.outValid(now_)) {
     const Flit& f = u_.intPipe.out(now_);
@@ -57,25 +58,31 @@ void Pipe::intersection() {
     u_.rs1.pipe.accept(u_.icache.fifo.front());
     u_.icache.fifo.pop();
   }
-  const bool icUsStall = u_.icache.usStall(rs1UsStall);
-  if (u_.icache.pipe.outValid(now_)) u_.icache.fifo.push(now_, u_.icache.pipe.out(now_));
-  if (!u_.lcache.fifo.empty() && !icUsStall) {
-    u_.icache.pipe.accept(u_.lcache.fifo.front());
-    u_.lcache.fifo.pop();
-    busy(Unit::Icache, u_.lcache.fifo.front());
+  const int64_t fromReset = cyclesSinceReset_;
+  const bool icUsStall = u_.icache.cycle(now_, rs1UsStall, u_.dram, fromReset);
+  Flit hit;
+  if (u_.icache.exitHit(now_, hit)) u_.icache.fifo.push(now_, hit);
+  if (!u_.lcache.fifo.empty()) {
+    if (icUsStall) {
+      u_.icache.refused();
+    } else {
+      u_.icache.accept(u_.lcache.fifo.front());
+      u_.lcache.fifo.pop();
+      busy(Unit::Icache, u_.lcache.fifo.front());
+    }
   }
-  const bool lcUsStall = u_.lcache.usStall(icUsStall);
-  if (u_.lcache.pipe.outValid(now_)) {
-    Flit f = u_.lcache.pipe.out(now_);
-    f.tri = memory_.read(sections_.lists + f.lindex);
-    u_.lcache.fifo.push(now_, f);
+  const bool lcUsStall = u_.lcache.cycle(now_, icUsStall, u_.dram, fromReset);
+  if (u_.lcache.exitHit(now_, hit)) {
+    hit.tri = memory_.read(sections_.lists + hit.lindex);
+    u_.lcache.fifo.push(now_, hit);
   }
   auto& larbOut = u_.larb.out();
   if (larbOut.valid(now_)) {
     if (lcUsStall) {
       activity_.stall(Unit::Lcache);
+      u_.lcache.refused();
     } else {
-      u_.lcache.pipe.accept(larbOut.front());
+      u_.lcache.accept(larbOut.front());
       larbOut.pop();
       busy(Unit::Lcache, larbOut.front());
     }

@@ -73,6 +73,10 @@ void Pipe::listUnit() {
       activity_.stall(Unit::List);
     } else {
       u_.listPipe.accept(u_.intList.front());
+      if (u_.intList.front().last) {  // leaf_max is read in the next cycle
+        leafAccepts_[1] = leafAccepts_[0];
+        leafAccepts_[0] = now_;
+      }
       u_.intList.pop();
       busy(Unit::List, u_.intList.front());
     }

@@ -11,30 +11,33 @@
 namespace rtu {
 namespace raypipe_ref {
 
-// R1 RAYTRACER/shortstack/shortstack.sv with one traversal unit: the stack path, the restart
-// path, their request and write FIFOs and arbitration.
+// R1 RAYTRACER/shortstack/shortstack.sv: the stack path, the restart path, their request and
+// write FIFOs (ports 0 and 1 for the traversal units, 2 for the list unit or SINT) and arbitration.
 void Pipe::shortStack() {
   const uint32_t depth = static_cast<uint32_t>(config_.shortStackDepth);
-  // inputs: TRAV's request register, the list unit's miss register, SINT's restart write
-  if (u_.travSsValid && !travToSsStall_) {
-    const Flit& f = u_.travSs;
+  // inputs: each TRAV's request register (port i), the list unit's miss register, SINT's restart
+  // write
+  for (size_t i = 0; i < u_.trav.size(); ++i) {
+    TravUnit& u = u_.trav[i];
+    if (!u.ssValid || travToSsStall_[i]) continue;
+    const Flit& f = u.ss;
     if (f.popReq) {
       Flit r = f;
       r.tMin = f.tMax;  // the new t_min is TRAV's t_max
       if (f.num == 0) {
-        u_.restRead[0].push(now_, r);
+        u_.restRead[i].push(now_, r);
       } else {
         r.wptr = (f.wptr + depth - 1) % depth;
         r.num = f.num - 1;
-        u_.stackRead[0].push(now_, r);
+        u_.stackRead[i].push(now_, r);
       }
     }
     if (f.pushReq) {
-      u_.stackWrite.push(now_, f);
+      u.stackWrite.push(now_, f);
       ++slot(f.ray).pendingStackWrites;
     }
     if (f.restReq || f.maxsceneReq) {
-      u_.restWrite[0].push(now_, f);
+      u_.restWrite[i].push(now_, f);
       ++slot(f.ray).pendingRestWrites;
     }
   }
@@ -63,6 +66,8 @@ void Pipe::shortStack() {
   if (u_.stackPipe.outValid(now_)) u_.stackFifo.push(now_, u_.stackPipe.out(now_));
   const int stackChoice =
       u_.stackReadChoice.choose([&](int i) { return !u_.stackRead[i].empty() && !stackUsStall; });
+  bool stackReading = false;
+  uint32_t readRow = 0;
   if (stackChoice >= 0) {
     Flit f = u_.stackRead[stackChoice].front();
     u_.stackRead[stackChoice].pop();
@@ -73,20 +78,15 @@ void Pipe::shortStack() {
     f.node = e.node;
     f.tMax = e.tMax;
     f.search = false;
+    stackReading = true;
+    readRow = f.wptr;
     u_.stackPipe.accept(f);
     busy(Unit::StackRead, f);
   } else {
     for (int i = 0; i < 3; ++i)
       if (!u_.stackRead[i].empty()) activity_.stall(Unit::StackRead);
   }
-  // the stack write FIFO (one traversal unit: written whenever it holds a push)
-  if (!u_.stackWrite.empty()) {
-    const Flit& w = u_.stackWrite.front();
-    Slot& s = slot(w.ray);
-    s.stack[w.wptr] = StackEntry{w.pushNode, w.tMax};
-    --s.pendingStackWrites;
-    u_.stackWrite.pop();
-  }
+  stackWrites(stackReading, readRow);
   // restart path: round-robin read, compare with t_max_scene, 3-cycle pipe, miss or restart
   if (u_.shaderArb.accepted(3)) u_.missFifo.pop();
   if (u_.tarb.accepted(1)) u_.notMissFifo.pop();
@@ -141,6 +141,33 @@ void Pipe::shortStack() {
     s.restWritten = true;
     --s.pendingRestWrites;
     u_.restWrite[i].pop();
+  }
+}
+
+// The stack RAMs' writes (shortstack.sv stack_wfifo_choice): the write FIFO the 1-bit pointer names
+// writes whenever it holds a row; the other too, unless both hold a write to the row the stack read
+// takes this cycle; the pointer turns every cycle either holds one. With one traversal unit its
+// FIFO writes every cycle it holds a row.
+void Pipe::stackWrites(bool reading, uint32_t readRow) {
+  std::array<bool, 2> valid{};
+  for (size_t i = 0; i < u_.trav.size(); ++i) valid[i] = !u_.trav[i].stackWrite.empty();
+  if (!valid[0] && !valid[1]) return;
+  const size_t p = static_cast<size_t>(u_.stackWritePointer), other = 1 - p;
+  std::array<bool, 2> write{};
+  write[p] = valid[p];
+  const bool conflict = valid[0] && valid[1] && reading &&
+                        u_.trav[0].stackWrite.front().wptr == readRow &&
+                        u_.trav[1].stackWrite.front().wptr == readRow;
+  write[other] = valid[other] && !conflict;
+  u_.stackWritePointer = static_cast<int>(other);
+  for (size_t i = 0; i < 2; ++i) {
+    if (!write[i]) continue;
+    RegFifo<Flit>& fifo = u_.trav[i].stackWrite;
+    const Flit& w = fifo.front();
+    Slot& s = slot(w.ray);
+    s.stack[w.wptr] = StackEntry{w.pushNode, w.tMax};
+    --s.pendingStackWrites;
+    fifo.pop();
   }
 }
 

@@ -7,6 +7,7 @@
 // settle; every register, FIFO and pipe then takes its new state at the cycle's end (tick).
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -26,6 +27,7 @@ class Pipe {
       : config_(config),
         writer_(options.writer),
         recordTransfers_(options.recordTransfers),
+        cyclesSinceReset_(options.cyclesSinceReset),
         memory_(image.memory()),
         sections_(sectionsOf(decodeKdHeader(image.words.data()))),
         rays_(rays),
@@ -40,6 +42,7 @@ class Pipe {
     for (int id = 0; id < config.raysInFlight; ++id)
       u_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
     initEnd_ = reset + 512;
+    u_.dram.startAfter(options.cyclesSinceReset);
     // The reader's state repeats every screen: 521 lines of 800 25 MHz clocks, 480 x 1278 active
     // cycles (a multiple of the one-hot register's 4).
     if (writer_.vgaReadWindow)
@@ -68,6 +71,10 @@ class Pipe {
     run.fifos = u_.fifoPeaks();
     run.maxRaysInFlight = maxInFlight_;
     run.staleListHits = staleListHits_;
+    if (config_.cache == RaypipeCacheKind::SetAssociative) {
+      run.caches = u_.cacheCounts();
+      run.dram = u_.dram.counts();
+    }
     run.hostSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return run;
@@ -81,7 +88,10 @@ class Pipe {
   void listUnit();
   void intersection();
   void traversal();
+  void travUnit(TravUnit& u, int i, bool toListStall);
+  std::array<bool, 2> leafMaxStalls();
   void shortStack();
+  void stackWrites(bool reading, uint32_t readRow);
   void sceneIntersection();
   void shaderIssueAndPrg();
   void tick();
@@ -89,7 +99,8 @@ class Pipe {
   const RaypipeConfig& config_;
   RaypipePixelWriter writer_;
   bool recordTransfers_ = false;
-  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
+  int64_t cyclesSinceReset_ = 0;  // the caches' way choice counts from reset
+  int64_t initEnd_ = 0;           // the first cycle after the shader's is_init
   std::vector<RaypipeTransfer> transfers_;
   // A unit took `f` this cycle.
   void busy(Unit u, const Flit& f, bool hasRay = true) {
@@ -113,7 +124,14 @@ class Pipe {
   int inFlight_ = 0, maxInFlight_ = 0;
   int64_t staleListHits_ = 0;
   // Stalls every unit reads, computed at the cycle's start from registered state.
-  bool travToSsStall_ = false, listToSsStall_ = false, sintToSsStall_ = false;
+  std::array<bool, 2> travToSsStall_{};  // per traversal unit
+  bool listToSsStall_ = false, sintToSsStall_ = false;
+  // The list unit reads leaf_max in the cycle after a leaf's last triangle entered it (it runs
+  // before the traversal units in a cycle, so this cycle's entry is kept beside the last); with two
+  // traversal units a write that meets that read and the other unit's write waits, the unit rrp
+  // names (list_unit.sv).
+  std::array<int64_t, 2> leafAccepts_{-2, -2};  // the list unit's last two leaf ends taken
+  int leafMaxPointer_ = 0;
   bool listToRsStall_ = false, intToListStall_ = false, sintUsStall_ = false;
 };
 

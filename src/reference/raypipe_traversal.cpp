@@ -10,18 +10,39 @@
 namespace rtu {
 namespace raypipe_ref {
 
-// tarb -> tcache -> TRAV (R1 RAYTRACER/trav/trav_unit.sv, trav_math.sv) with raystore #0.
+// tarb -> tcache -> TRAV (R1 RAYTRACER/trav/trav_unit.sv, trav_math.sv) with raystore #0, per
+// traversal unit (raypipe_2trav.sv: tarb's output i feeds unit i).
 void Pipe::traversal() {
   u_.tarb.arbitrate(now_);
-  if (const Flit* g = u_.tarb.granted()) busy(Unit::Tarb, *g);
+  for (int o = 0; o < u_.tarb.outputs(); ++o)
+    if (const Flit* g = u_.tarb.granted(o)) busy(Unit::Tarb, *g);
+  const std::array<bool, 2> toListStall = leafMaxStalls();
+  for (size_t i = 0; i < u_.trav.size(); ++i)
+    travUnit(u_.trav[i], static_cast<int>(i), toListStall[i]);
+}
+
+// The list unit's leaf_max RAM (list_unit.sv): port A is its own read in the cycle after a leaf's
+// last triangle entered it, else unit 0's write; port B the other write. When both units write and
+// the list reads, the unit rrp names waits (rrp 0: unit 1) and rrp turns.
+std::array<bool, 2> Pipe::leafMaxStalls() {
+  if (u_.trav.size() < 2) return {false, false};
+  const bool read = leafAccepts_[0] == now_ - 1 || leafAccepts_[1] == now_ - 1;
+  if (!read || !u_.trav[0].listValid || !u_.trav[1].listValid) return {false, false};
+  const bool rrp = leafMaxPointer_ != 0;
+  leafMaxPointer_ ^= 1;
+  return {rrp, !rrp};
+}
+
+void Pipe::travUnit(TravUnit& u, int i, bool toListStall) {
+  const bool toTarbStall = u_.tarb.stallUs(2 + i);
+  const bool toLarbStall = u_.larb.stallUs(i);
+  const bool toSsStall = travToSsStall_[static_cast<size_t>(i)];
   const int depth = config_.shortStackDepth;
-  const bool toTarbStall = u_.tarb.stallUs(2);
-  const bool toLarbStall = u_.larb.stallUs(0);
   // TRAV's decision over the head of its 15-deep FIFO
   bool goodToSs = false, goodToTarb = false;
   Flit ssReq, tarbReq;
-  if (!u_.travFifo.empty()) {
-    const Flit& f = u_.travFifo.front();
+  if (!u.travFifo.empty()) {
+    const Flit& f = u.travFifo.front();
     const KdPlaneTest& p = f.plane;
     const bool lowEmpty = f.nodeData.lowEmpty, highEmpty = f.nodeData.highEmpty;
     const uint32_t low = f.node + 1, high = f.nodeData.high;
@@ -56,50 +77,50 @@ void Pipe::traversal() {
   }
   bool re = false;
   if (goodToSs && goodToTarb)
-    re = !travToSsStall_ && !toTarbStall;
+    re = !toSsStall && !toTarbStall;
   else if (goodToSs)
-    re = !travToSsStall_;
+    re = !toSsStall;
   else if (goodToTarb)
     re = !toTarbStall;
-  u_.travSsValidNext = (u_.travSsValid && travToSsStall_) || (goodToSs && re);
-  if (!(u_.travSsValid && travToSsStall_)) u_.travSsNext = ssReq;
-  u_.travTarbValidNext = (u_.travTarbValid && toTarbStall) || (goodToTarb && re);
-  if (!(u_.travTarbValid && toTarbStall)) u_.travTarbNext = tarbReq;
+  u.ssValidNext = (u.ssValid && toSsStall) || (goodToSs && re);
+  if (!(u.ssValid && toSsStall)) u.ssNext = ssReq;
+  u.tarbValidNext = (u.tarbValid && toTarbStall) || (goodToTarb && re);
+  if (!(u.tarbValid && toTarbStall)) u.tarbOutNext = tarbReq;
   if (re) {
     Slot& s = slot(ssReq.ray);
     if (ssReq.pushReq) {
       ++s.counts.pushes;
       if (ssReq.num == static_cast<uint32_t>(depth)) ++s.counts.dropped;
     }
-    u_.travFifo.pop();
+    u.travFifo.pop();
     busy(Unit::TravDecide, ssReq);
-  } else if (!u_.travFifo.empty()) {
+  } else if (!u.travFifo.empty()) {
     activity_.stall(Unit::TravDecide);
   }
   // the math pipe (14) beside the FIFO, fed by raystore #0
-  const bool pipeDsStall = (u_.travSsValid && travToSsStall_) || (u_.travTarbValid && toTarbStall);
-  const bool rsToTravStall = u_.travPipe.usStall(pipeDsStall, u_.travFifo.numLeft());
-  if (u_.travPipe.outValid(now_)) u_.travFifo.push(now_, u_.travPipe.out(now_));
-  if (!u_.rs0.fifo.empty()) {
+  const bool pipeDsStall = (u.ssValid && toSsStall) || (u.tarbValid && toTarbStall);
+  const bool rsToTravStall = u.travPipe.usStall(pipeDsStall, u.travFifo.numLeft());
+  if (u.travPipe.outValid(now_)) u.travFifo.push(now_, u.travPipe.out(now_));
+  if (!u.rs0.fifo.empty()) {
     if (rsToTravStall) {
       activity_.stall(Unit::TravMath);
     } else {
-      Flit f = u_.rs0.fifo.front();
-      u_.rs0.fifo.pop();
+      Flit f = u.rs0.fifo.front();
+      u.rs0.fifo.pop();
       f.plane = planeTest(slot(f.ray).ray, f.nodeData.axis, bitsToFloat(f.nodeData.splitBits),
                           f.tMin, f.tMax, config_.division);
-      u_.travPipe.accept(f);
+      u.travPipe.accept(f);
       busy(Unit::TravMath, f);
     }
   }
-  const bool rs0UsStall = u_.rs0.usStall(rsToTravStall);
-  if (u_.rs0.pipe.outValid(now_)) u_.rs0.fifo.push(now_, u_.rs0.pipe.out(now_));
+  const bool rs0UsStall = u.rs0.usStall(rsToTravStall);
+  if (u.rs0.pipe.outValid(now_)) u.rs0.fifo.push(now_, u.rs0.pipe.out(now_));
   // TRAV's input from tcache: a leaf into the leaf FIFO, an interior node to raystore #0
   bool tcToTravStall = false;
-  if (!u_.tcache.fifo.empty()) {
-    const Flit& f = u_.tcache.fifo.front();
+  if (!u.tcache.fifo.empty()) {
+    const Flit& f = u.tcache.fifo.front();
     const bool leaf = f.nodeData.leaf;
-    tcToTravStall = (u_.leafFifo.full() && leaf) || (rs0UsStall && !leaf);
+    tcToTravStall = (u.leafFifo.full() && leaf) || (rs0UsStall && !leaf);
     if (tcToTravStall) {
       activity_.stall(Unit::Trav);
     } else {
@@ -112,39 +133,43 @@ void Pipe::traversal() {
         Flit l = f;
         l.lindex = f.nodeData.listIndex;
         l.lnum = f.nodeData.count;
-        u_.leafFifo.push(now_, l);
+        u.leafFifo.push(now_, l);
       } else {
-        u_.rs0.pipe.accept(f);
+        u.rs0.pipe.accept(f);
       }
-      u_.tcache.fifo.pop();
+      u.tcache.fifo.pop();
       busy(Unit::Trav, f);
     }
   }
   // the leaf FIFO's two registered outputs: to larb and to the list unit (leaf_max)
-  if (u_.travListValid) slot(u_.travList.ray).leafMax = u_.travList.tMax;
-  const bool leafRe = !u_.leafFifo.empty() && (!u_.travLarbValid || !toLarbStall);
-  u_.travLarbValidNext = (toLarbStall && u_.travLarbValid) || leafRe;
-  u_.travListValidNext = leafRe;
+  // (with two units a leaf_max write can wait: leafMaxStalls; the leaf FIFO is not read meanwhile)
+  const bool listHeld = toListStall && u.listValid;
+  if (u.listValid && !listHeld) slot(u.list.ray).leafMax = u.list.tMax;
+  const bool larbHeld = toLarbStall && u.larbValid;
+  const bool leafRe = !u.leafFifo.empty() && !larbHeld && !listHeld;
+  u.larbValidNext = larbHeld || leafRe;
+  u.listValidNext = listHeld || leafRe;
   if (leafRe) {
-    u_.travLarbNext = u_.leafFifo.front();
-    u_.travListNext = u_.leafFifo.front();
-    u_.leafFifo.pop();
+    u.larbOutNext = u.leafFifo.front();
+    u.listNext = u.leafFifo.front();
+    u.leafFifo.pop();
   }
-  // tcache (2-cycle block RAM, 3-entry FIFO)
-  const bool tcUsStall = u_.tcache.usStall(tcToTravStall);
-  if (u_.tcache.pipe.outValid(now_)) {
-    Flit f = u_.tcache.pipe.out(now_);
-    const uint32_t address = sections_.nodes + f.node * kKdNodeWords;
+  // tcache (2-cycle block RAM or the set-associative cache, 3-entry FIFO)
+  const bool tcUsStall = u.tcache.cycle(now_, tcToTravStall, u_.dram, cyclesSinceReset_);
+  Flit hit;
+  if (u.tcache.exitHit(now_, hit)) {
+    const uint32_t address = sections_.nodes + hit.node * kKdNodeWords;
     const uint32_t words[kKdNodeWords] = {memory_.read(address), memory_.read(address + 1)};
-    f.nodeData = decodeKdNode(words);
-    u_.tcache.fifo.push(now_, f);
+    hit.nodeData = decodeKdNode(words);
+    u.tcache.fifo.push(now_, hit);
   }
-  auto& tarbOut = u_.tarb.out();
+  auto& tarbOut = u_.tarb.out(i);
   if (tarbOut.valid(now_)) {
     if (tcUsStall) {
       activity_.stall(Unit::Tcache);
+      u.tcache.refused();
     } else {
-      u_.tcache.pipe.accept(tarbOut.front());
+      u.tcache.accept(tarbOut.front());
       tarbOut.pop();
       busy(Unit::Tcache, tarbOut.front());
     }

@@ -20,34 +20,14 @@
 #include "kinds/kd/kd_traversal.h"
 #include "raypipe/raypipe_config.h"
 #include "reference/raypipe_arbiter.h"
+#include "reference/raypipe_cache.h"
 #include "reference/raypipe_cycles.h"
 #include "reference/raypipe_fifo.h"
+#include "reference/raypipe_flit.h"
 #include "reference/raypipe_pipe.h"
 
 namespace rtu {
 namespace raypipe_ref {
-
-struct Flit {
-  uint32_t ray = 0;    // rayID
-  uint32_t index = 0;  // the pixel's place in the PRG's order
-  // tarb_t
-  uint32_t node = 0;
-  float tMin = 0, tMax = 0;
-  bool search = false;         // restnode_search
-  uint32_t wptr = 0, num = 0;  // ss_wptr, ss_num
-  TrayRacerNode nodeData;      // tcache's read
-  KdPlaneTest plane;           // trav_math's results
-  // trav_to_ss_t
-  bool pushReq = false, popReq = false, restReq = false, maxsceneReq = false;
-  uint32_t pushNode = 0;
-  // leaf_info_t, lcache's and INT's
-  uint32_t lindex = 0, lnum = 0, tri = 0;
-  bool last = false;
-  KdTriangleHit found;
-  // the list unit's decision and what reaches the shader
-  bool isHit = false, boxMiss = false, miss = false;
-  float t = 0, u = 0, v = 0;
-};
 
 struct StackEntry {
   uint32_t node = 0;
@@ -129,6 +109,26 @@ struct RoundRobin3 {
   int pointer = 0;
 };
 
+// One traversal unit with its tcache and raystore #0 (trav_unit.sv; raypipe_2trav.sv gives each of
+// its two units their own, and a stack write FIFO in the shortstack): unit 0's FIFOs keep the
+// one-unit build's names, unit i's add _i.
+struct TravUnit {
+  TravUnit(const RaypipeConfig& c, int i);
+  CacheRead tcache;
+  MemoryRead rs0;
+  RegFifo<Flit> leafFifo;
+  PipeValidStall<Flit> travPipe;
+  RegFifo<Flit> travFifo;
+  RegFifo<Flit> stackWrite;
+  // the registered outputs to the shortstack, tarb, larb and the list unit's leaf_max
+  bool ssValid = false, tarbValid = false, larbValid = false, listValid = false;
+  bool ssValidNext = false, tarbValidNext = false, larbValidNext = false, listValidNext = false;
+  Flit ss, tarbOut, larbOut, list;
+  Flit ssNext, tarbOutNext, larbOutNext, listNext;
+  void keepRegisters();
+  void tick(int64_t now);
+};
+
 struct Units {
   explicit Units(const RaypipeConfig& c);
 
@@ -140,27 +140,21 @@ struct Units {
   // SINT
   PipeValidStall<Flit> sintPipe;
   RegFifo<Flit> sintTarb, sintSs, sintShader;
-  // tarb, tcache, TRAV, raystore #0
-  RotatingArbiter<Flit, 4, ShowAheadFifo<Flit>> tarb;
-  MemoryRead tcache, rs0;
-  RegFifo<Flit> leafFifo;
-  PipeValidStall<Flit> travPipe;
-  RegFifo<Flit> travFifo;
-  bool travSsValid = false, travTarbValid = false, travLarbValid = false, travListValid = false;
-  bool travSsValidNext = false, travTarbValidNext = false, travLarbValidNext = false,
-       travListValidNext = false;
-  Flit travSs, travTarb, travLarb, travList;
-  Flit travSsNext, travTarbNext, travLarbNext, travListNext;
+  // tarb: [0] stack pop, [1] restart, [2 + i] traversal unit i, [2 + units] SINT; output i to unit
+  // i's tcache
+  RotatingArbiter<Flit, 5, ShowAheadFifo<Flit>> tarb;
+  std::vector<TravUnit> trav;  // raypipe.traversal_units
   // shortstack: request FIFOs [trav0, trav1, list] and restart writes [trav0, trav1, SINT]
   std::vector<RegFifo<Flit>> stackRead, restRead, restWrite;
-  RegFifo<Flit> stackWrite;
   PipeValidStall<Flit> stackPipe, restPipe;
   RegFifo<Flit> stackFifo, notMissFifo, missFifo;
   RoundRobin3 stackReadChoice, restReadChoice;
-  int restWritePointer = 0;
-  // larb, lcache, icache, raystore #1, INT
-  RotatingArbiter<Flit, 2, ShowAheadFifo<Flit>> larb;
-  MemoryRead lcache, icache, rs1;
+  int restWritePointer = 0, stackWritePointer = 0;
+  // larb: [i] traversal unit i's leaf, [units] INT's next triangle; lcache, icache, raystore #1,
+  // INT
+  RotatingArbiter<Flit, 3, ShowAheadFifo<Flit>> larb;
+  CacheRead lcache, icache;
+  MemoryRead rs1;
   PipeValidStall<Flit> intPipe;
   ShowAheadFifo<Flit> intList, intLarb;
   int intShaderNumLeft;  // the shadow-hit FIFO, never written by primary rays
@@ -177,14 +171,17 @@ struct Units {
   PipeValidStall<Flit> shaderPipe;
   RegFifo<Flit> shaderData;
   RegFifo<Flit> pixelBuffer;
+  // the memory request arbiter behind the caches (set_associative)
+  DramArbiter dram;
 
   // The arbiters' offers of the cycle, and the registers' next values as their current ones.
   void offerAll(int64_t now);
   // The shortstack's input stalls (combinational in the request and the FIFOs' full flags).
-  bool travToSsStall() const;
+  bool travToSsStall(size_t i) const;
   bool listToSsStall() const;
   void tick(int64_t now);
   std::vector<RaypipeFifoPeak> fifoPeaks() const;
+  std::vector<RaypipeCacheCounts> cacheCounts() const;
 };
 
 }  // namespace raypipe_ref

@@ -34,6 +34,7 @@ class LatencyPipe {
   bool exiting(int64_t now) const {
     return count_ > 0 && lastTake_ != now && slots_[head_].accepted + depth_ == now;
   }
+  const T& front() const { return slots_[head_].item; }  // the item exiting(now) names
   T take(int64_t now) {
     T item = slots_[head_].item;
     head_ = (head_ + 1) & mask_;

@@ -23,6 +23,7 @@ struct RayToken {
   bool search = false;                                                         // restnode_search
   bool pushReq = false, popReq = false, restReq = false, maxsceneReq = false;  // trav_to_ss_t
   bool last = false, isHit = false, boxMiss = false, miss = false;
+  bool cacheHit = false;  // the cache's lookup as the token entered it (timed_cache.h)
   uint32_t pushNode = 0;
   uint32_t lindex = 0, lnum = 0, tri = 0;  // leaf_info_t, the list entry
   TrayRacerNode nodeData;                  // tcache's read

@@ -8,7 +8,9 @@
 //
 // Same inputs and results as the reference (raypipe/raypipe_run.h), the VGA reader's window
 // included (RaypipePixelWriter::vgaReadWindow; vga_window.h). Both equal the seed's RTL in every
-// recorded exit cycle (tests/test_raypipe_rtl.cpp; docs/raypipe.md, "Against the RTL").
+// recorded exit cycle (tests/test_raypipe_rtl.cpp; docs/raypipe.md, "Against the RTL"). With
+// raypipe.cache = set_associative the caches are R1's designed ones (timed_cache.h) in front of
+// rtusim's DRAM channel, cycle for cycle the reference's.
 
 #include <vector>
 
@@ -23,8 +25,8 @@ namespace rtu {
 // so that a run can refuse it before any work.
 void checkRaypipeTimedTakes(const RaypipeConfig& config);
 
-// Runs one frame. Throws std::invalid_argument for a configuration the model does not take (more
-// than one traversal unit, the set-associative caches, a negative VGA phase), logic_error when the
+// Runs one frame. Throws std::invalid_argument for a configuration the model does not take (one
+// RaypipeConfig::validate refuses, a negative VGA phase), logic_error when the
 // pipe breaks one of its own rules (a write to a full FIFO, a ray id used twice, no progress for a
 // million cycles). With `trace`, the run's trace goes to it and is finished (pipe_trace.h: every
 // unit's valid, stall and ray id, every FIFO's count and head; the save file's marker at the

@@ -1,5 +1,6 @@
 // The timed model of seed 001's ray pipe: larb, lcache, icache, raystore #1 and INT (int_unit.sv,
-// int_math.sv; simple_cache.sv, raystore_simple.sv). Timing rules: larb as rotating_arbiter.h
+// int_math.sv; simple_cache.sv or cache.sv, raystore_simple.sv). Timing rules: larb as
+// rotating_arbiter.h
 // ([i] traversal unit i's leaf, then INT's next triangle); three 2-cycle reads in a row, each into
 // a 3-entry FIFO; INT a 45-cycle pipe into the list FIFO (hits and last triangles) and the larb
 // FIFO (all but the last), its credit their least free space (or the shadow FIFO's).
@@ -59,27 +60,33 @@ void TimedPipe::intersection() {
   // raystore #1 <- icache <- lcache <- larb's FIFO, each read moving on unless stalled
   const bool rs1UsStall = c_.rs1.usStall(now_, rsToIntStall);
   if (c_.rs1.pipe.exiting(now_)) c_.rs1.fifo.push(now_, c_.rs1.pipe.take(now_));
-  if (c_.icache.fifo.shown(now_) && !rs1UsStall) c_.rs1.pipe.accept(now_, c_.icache.fifo.pop(now_));
-  const bool icUsStall = c_.icache.usStall(now_, rs1UsStall);
-  if (c_.icache.pipe.exiting(now_)) c_.icache.fifo.push(now_, c_.icache.pipe.take(now_));
-  if (c_.lcache.fifo.shown(now_) && !icUsStall) {
-    const RayToken t = c_.lcache.fifo.pop(now_);
-    c_.icache.pipe.accept(now_, t);
-    busy(Unit::Icache, t);
+  if (c_.icache.read.fifo.shown(now_) && !rs1UsStall)
+    c_.rs1.pipe.accept(now_, c_.icache.read.fifo.pop(now_));
+  if (c_.icache.hitExiting(now_)) c_.icache.read.fifo.push(now_, c_.icache.takeHit(now_));
+  const bool icUsStall = c_.icache.cycle(now_, rs1UsStall, cyclesSinceReset_);
+  if (c_.lcache.read.fifo.shown(now_)) {
+    if (icUsStall) {
+      c_.icache.refused();
+    } else {
+      const RayToken t = c_.lcache.read.fifo.pop(now_);
+      c_.icache.accept(now_, t);
+      busy(Unit::Icache, t);
+    }
   }
-  const bool lcUsStall = c_.lcache.usStall(now_, icUsStall);
-  if (c_.lcache.pipe.exiting(now_)) {
-    RayToken t = c_.lcache.pipe.take(now_);
+  if (c_.lcache.hitExiting(now_)) {
+    RayToken t = c_.lcache.takeHit(now_);
     t.tri = memory_.read(sections_.lists + t.lindex);
-    c_.lcache.fifo.push(now_, t);
+    c_.lcache.read.fifo.push(now_, t);
   }
+  const bool lcUsStall = c_.lcache.cycle(now_, icUsStall, cyclesSinceReset_);
   if (!c_.larb.out().shown(now_)) return;
   if (lcUsStall) {
     stall(Unit::Lcache);
+    c_.lcache.refused();
     return;
   }
   const RayToken t = c_.larb.out().pop(now_);
-  c_.lcache.pipe.accept(now_, t);
+  c_.lcache.accept(now_, t);
   busy(Unit::Lcache, t);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -12,19 +13,33 @@
 
 namespace rtu {
 namespace raypipe_timed {
+namespace {
+
+// The furthest a cache's wake lies ahead: a line's doneRead, its grant at most a turn of the
+// arbiter's ports away.
+int64_t dramHorizon(const RaypipeConfig& c) {
+  if (c.cache != RaypipeCacheKind::SetAssociative) return 0;
+  return kRaypipeDramPorts + c.caches.dramLatency +
+         static_cast<int64_t>(std::ceil(48 / c.caches.dramBytesPerCycle));
+}
+
+}  // namespace
 
 TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
                      const std::vector<RaypipeCycleRay>& rays, const RaypipeCycleOptions& options,
                      CycleTrace* trace)
     : config_(config),
       recordTransfers_(options.recordTransfers),
+      cyclesSinceReset_(options.cyclesSinceReset),
       memory_(image.memory()),
       sections_(sectionsOf(decodeKdHeader(image.words.data()))),
       rays_(rays),
       c_(config),
-      calendar_(8 + std::max({config.latency.prg, config.latency.prgInterval, config.latency.sint,
-                              config.latency.sintInterval, config.latency.travMath,
-                              config.latency.intersection, config.latency.memoryRead, 4})),
+      calendar_(8 +
+                std::max({config.latency.prg, config.latency.prgInterval, config.latency.sint,
+                          config.latency.sintInterval, config.latency.travMath,
+                          config.latency.intersection, config.latency.memoryRead, 4}) +
+                dramHorizon(config)),
       records_(static_cast<size_t>(config.raysInFlight)),
       stack_(static_cast<size_t>(config.raysInFlight * config.shortStackDepth)),
       results_(rays.size()),
@@ -40,6 +55,7 @@ TimedPipe::TimedPipe(const RaypipeConfig& config, const KdImage& image,
   for (int id = 0; id < config.raysInFlight; ++id)
     c_.idFifo.preload(static_cast<uint32_t>(id), reset + id);
   initEnd_ = reset + 512;
+  c_.dram.startAfter(options.cyclesSinceReset);
   wireCalendar();
   calendar_.book(kPrg, 0, -1);
 }
@@ -64,8 +80,9 @@ void TimedPipe::wireCalendar() {
   for (size_t i = 0; i < c_.trav.size(); ++i) {
     TravUnit& u = c_.trav[i];
     c_.tarb.out(static_cast<int>(i)).bookOn(k, kTrav);
-    for (Fifo* f : {&u.tcache.fifo, &u.rs0.fifo, &u.leafFifo, &u.travFifo}) f->bookOn(k, kTrav);
-    for (auto* p : {&u.tcache.pipe, &u.rs0.pipe, &u.travPipe}) p->bookOn(k, kTrav);
+    u.tcache.bookOn(k, kTrav);
+    for (Fifo* f : {&u.rs0.fifo, &u.leafFifo, &u.travFifo}) f->bookOn(k, kTrav);
+    for (auto* p : {&u.rs0.pipe, &u.travPipe}) p->bookOn(k, kTrav);
     u.travTarb.bookOn(k, kTrav);
     u.travList.bookOn(k, kTrav);
     u.travSs.bookOn(k, kTrav | kStack);
@@ -79,9 +96,10 @@ void TimedPipe::wireCalendar() {
   c_.stackFifo.bookOn(k, kStack | kTrav);
   c_.notMissFifo.bookOn(k, kStack | kTrav);
   c_.missFifo.bookOn(k, kStack | kShader);
-  for (Fifo* f : {&c_.larb.out(), &c_.lcache.fifo, &c_.icache.fifo, &c_.rs1.fifo, &c_.intLarb})
-    f->bookOn(k, kInt);
-  for (auto* p : {&c_.lcache.pipe, &c_.icache.pipe, &c_.rs1.pipe, &c_.intPipe}) p->bookOn(k, kInt);
+  c_.lcache.bookOn(k, kInt);
+  c_.icache.bookOn(k, kInt);
+  for (Fifo* f : {&c_.larb.out(), &c_.rs1.fifo, &c_.intLarb}) f->bookOn(k, kInt);
+  for (auto* p : {&c_.rs1.pipe, &c_.intPipe}) p->bookOn(k, kInt);
   c_.intList.bookOn(k, kInt | kList);
   c_.listLast.bookOn(k, kList);
   c_.listHitFifo.bookOn(k, kList);
@@ -182,17 +200,17 @@ RaypipeCycleRun TimedPipe::run() {
   run.fifos = c_.peaks();
   run.maxRaysInFlight = maxInFlight_;
   run.staleListHits = staleListHits_;
+  if (config_.cache == RaypipeCacheKind::SetAssociative) {
+    run.caches = c_.cacheCounts();
+    run.dram = c_.dram.counts();
+  }
   run.hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 
 }  // namespace raypipe_timed
 
-void checkRaypipeTimedTakes(const RaypipeConfig& config) {
-  config.validate();
-  if (config.cache != RaypipeCacheKind::BlockRam)
-    throw std::invalid_argument("raypipe.cache: the timed model models the block RAMs");
-}
+void checkRaypipeTimedTakes(const RaypipeConfig& config) { config.validate(); }
 
 RaypipeCycleRun runRaypipeTimed(const RaypipeConfig& config, const KdImage& image,
                                 const std::vector<RaypipeCycleRay>& rays,

@@ -102,7 +102,8 @@ class TimedPipe {
 
   const RaypipeConfig& config_;
   bool recordTransfers_ = false;
-  int64_t initEnd_ = 0;  // the first cycle after the shader's is_init
+  int64_t cyclesSinceReset_ = 0;  // the caches' way choice counts from reset
+  int64_t initEnd_ = 0;           // the first cycle after the shader's is_init
   WordMemory memory_;
   KdSections sections_;
   const std::vector<RaypipeCycleRay>& rays_;

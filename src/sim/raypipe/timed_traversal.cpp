@@ -1,6 +1,6 @@
 // The timed model of seed 001's ray pipe: tarb, tcache, TRAV and raystore #0 (trav_unit.sv: the
 // leaf FIFO and its two registered outputs, the math pipe beside its FIFO, the decision and its
-// two registered outputs; trav_math.sv; simple_cache.sv). Timing rules: tarb as
+// two registered outputs; trav_math.sv; simple_cache.sv or cache.sv). Timing rules: tarb as
 // rotating_arbiter.h; tcache and raystore #0 a 2-cycle read into a 3-entry FIFO; a leaf into the
 // leaf FIFO, an interior node through raystore #0 and the 14-cycle math pipe; the decision reads
 // its FIFO's head when every output it needs is free or not stalled.
@@ -142,14 +142,14 @@ void TimedPipe::travMath(TravUnit& u, int i, bool pipeDsStall, bool toListStall)
 // TRAV's input from tcache: a leaf into the leaf FIFO, an interior node to raystore #0; returns
 // its stall.
 bool TimedPipe::travInput(TravUnit& u, bool rs0UsStall) {
-  if (!u.tcache.fifo.shown(now_)) return false;
-  const RayToken& f = u.tcache.fifo.front();
+  if (!u.tcache.read.fifo.shown(now_)) return false;
+  const RayToken& f = u.tcache.read.fifo.front();
   const bool leaf = f.nodeData.leaf;
   if (leaf ? u.leafFifo.full(now_) : rs0UsStall) {
     stall(Unit::Trav);
     return true;
   }
-  RayToken t = u.tcache.fifo.pop(now_);
+  RayToken t = u.tcache.read.fifo.pop(now_);
   RayRecord& r = record(t.ray);
   ++r.counts.nodes;
   if (leaf) {
@@ -185,24 +185,26 @@ void TimedPipe::travLeaves(TravUnit& u, bool toLarbStall, bool toListStall) {
   if (!listHeld && u.travList.valid(now_)) u.travList.set(now_, false, nullptr);
 }
 
-// tcache: a 2-cycle read of the node into its FIFO, from tarb's output `i`.
+// tcache: a 2-cycle read of the node into its FIFO (block RAM or timed_cache.h), from tarb's
+// output `i`.
 void TimedPipe::travCache(TravUnit& u, int i, bool tcToTravStall) {
-  const bool tcUsStall = u.tcache.usStall(now_, tcToTravStall);
-  if (u.tcache.pipe.exiting(now_)) {
-    RayToken t = u.tcache.pipe.take(now_);
+  if (u.tcache.hitExiting(now_)) {
+    RayToken t = u.tcache.takeHit(now_);
     const uint32_t address = sections_.nodes + t.node * kKdNodeWords;
     const uint32_t words[kKdNodeWords] = {memory_.read(address), memory_.read(address + 1)};
     t.nodeData = decodeKdNode(words);
-    u.tcache.fifo.push(now_, t);
+    u.tcache.read.fifo.push(now_, t);
   }
+  const bool tcUsStall = u.tcache.cycle(now_, tcToTravStall, cyclesSinceReset_);
   TimedQueue<RayToken>& in = c_.tarb.out(i);
   if (!in.shown(now_)) return;
   if (tcUsStall) {
     stall(Unit::Tcache);
+    u.tcache.refused();
     return;
   }
   const RayToken t = in.pop(now_);
-  u.tcache.pipe.accept(now_, t);
+  u.tcache.accept(now_, t);
   busy(Unit::Tcache, t);
 }
 

@@ -15,15 +15,17 @@ std::string suffix(int i) { return i == 0 ? "" : "_" + std::to_string(i); }
 
 }  // namespace
 
-TravUnit::TravUnit(const RaypipeConfig& c, int i)
-    : tcache("tcache" + suffix(i), c.latency.memoryRead, c.fifo.memoryOut),
+TravUnit::TravUnit(const RaypipeConfig& c, int i, DramArbiter& dram)
+    : tcache("tcache" + suffix(i), i == 0 ? RaypipeCacheId::Tcache : RaypipeCacheId::Tcache1, c,
+             dram),
       rs0("raystore0" + suffix(i), c.latency.memoryRead, c.fifo.memoryOut),
       leafFifo("trav_leaf" + suffix(i), c.fifo.travLeaf, kRegister),
       travPipe(c.latency.travMath),
       travFifo("trav_math" + suffix(i), c.fifo.travMath, kRegister) {}
 
 Channels::Channels(const RaypipeConfig& c)
-    : prgPipe(c.latency.prg),
+    : dram(c.caches),
+      prgPipe(c.latency.prg),
       prgFifo("prg", c.fifo.prg, kShowAhead),
       idFifo("shader_ray_ids", 512, kShowAhead),
       sintPipe(c.latency.sint),
@@ -40,8 +42,8 @@ Channels::Channels(const RaypipeConfig& c)
       notMissFifo("ss_restart", 4, kRegister),
       missFifo("ss_miss", 4, kRegister),
       larb("larb", c.fifo.larb, kShowAhead, 1 + c.traversalUnits),
-      lcache("lcache", c.latency.memoryRead, c.fifo.memoryOut),
-      icache("icache", c.latency.memoryRead, c.fifo.memoryOut),
+      lcache("lcache", RaypipeCacheId::Lcache, c, dram),
+      icache("icache", RaypipeCacheId::Icache, c, dram),
       rs1("raystore1", c.latency.memoryRead, c.fifo.memoryOut),
       intPipe(c.latency.intersection),
       intList("int_list", c.fifo.intList, kShowAhead),
@@ -59,7 +61,7 @@ Channels::Channels(const RaypipeConfig& c)
   trav.reserve(static_cast<size_t>(c.traversalUnits));  // the FIFOs' places are kept (fifos())
   stackWrite.reserve(static_cast<size_t>(c.traversalUnits));
   for (int i = 0; i < c.traversalUnits; ++i) {
-    trav.emplace_back(c, i);
+    trav.emplace_back(c, i, dram);
     stackWrite.emplace_back("ss_stack_write" + suffix(i), 3, kRegister);
   }
 }
@@ -68,16 +70,24 @@ std::vector<Fifo*> Channels::fifos() {
   std::vector<Fifo*> all = {&prgFifo, &sintTarb, &sintSs, &sintShader};
   for (size_t i = 0; i < trav.size(); ++i) {
     TravUnit& t = trav[i];
-    all.insert(all.end(), {&tarb.out(static_cast<int>(i)), &t.tcache.fifo, &t.rs0.fifo, &t.leafFifo,
-                           &t.travFifo});
+    all.insert(all.end(), {&tarb.out(static_cast<int>(i)), &t.tcache.read.fifo, &t.rs0.fifo,
+                           &t.leafFifo, &t.travFifo});
   }
   for (Fifo& f : stackWrite) all.push_back(&f);
-  all.insert(all.end(), {&stackFifo, &notMissFifo, &missFifo, &larb.out(), &lcache.fifo,
-                         &icache.fifo, &rs1.fifo, &intList, &intLarb, &listLast, &listHitFifo,
+  all.insert(all.end(), {&stackFifo, &notMissFifo, &missFifo, &larb.out(), &lcache.read.fifo,
+                         &icache.read.fifo, &rs1.fifo, &intList, &intLarb, &listLast, &listHitFifo,
                          &rs2.fifo, &shaderArb.out(), &shaderData, &pixelBuffer});
   for (auto* group : {&stackRead, &restRead, &restWrite})
     for (Fifo& f : *group) all.push_back(&f);
   return all;
+}
+
+std::vector<RaypipeCacheCounts> Channels::cacheCounts() const {
+  std::vector<RaypipeCacheCounts> counts;
+  for (const TravUnit& t : trav) counts.push_back(t.tcache.counts());
+  counts.push_back(lcache.counts());
+  counts.push_back(icache.counts());
+  return counts;
 }
 
 std::vector<RaypipeFifoPeak> Channels::peaks() {

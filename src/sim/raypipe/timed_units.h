@@ -13,32 +13,20 @@
 
 #include "raypipe/raypipe_config.h"
 #include "raypipe/raypipe_run.h"
+#include "sim/raypipe/dram_arbiter.h"
 #include "sim/raypipe/latency_pipe.h"
+#include "sim/raypipe/memory_read.h"
 #include "sim/raypipe/ray_token.h"
 #include "sim/raypipe/rotating_arbiter.h"
 #include "sim/raypipe/staged_register.h"
+#include "sim/raypipe/timed_cache.h"
 #include "sim/raypipe/timed_queue.h"
 
 namespace rtu {
 namespace raypipe_timed {
 
-constexpr int kRegister = 1;   // a register FIFO shows a write the next cycle
-constexpr int kShowAhead = 2;  // a BRAM scfifo two cycles on
-
 using Unit = RaypipeUnit;
 inline const char* unitName(Unit u) { return raypipeUnitName(u); }
-
-// A block-RAM read (simple_cache.sv, raystore_simple.sv): a pipe of the read latency, then a
-// 3-entry register FIFO.
-struct MemoryRead {
-  MemoryRead(const std::string& name, int latency, int depth)
-      : pipe(latency), fifo(name, depth, kRegister) {}
-  bool usStall(int64_t now, bool dsStall) const {
-    return pipe.usStall(now, dsStall, fifo.numLeft(now));
-  }
-  LatencyPipe<RayToken> pipe;
-  TimedQueue<RayToken> fifo;
-};
 
 using Fifo = TimedQueue<RayToken>;
 using Register = StagedRegister<RayToken>;
@@ -46,8 +34,9 @@ using Register = StagedRegister<RayToken>;
 // One traversal unit with its tcache and raystore #0 (trav_unit.sv; raypipe_2trav.sv gives each
 // of its two units their own): unit 0's FIFOs keep the one-unit build's names, unit i's add _i.
 struct TravUnit {
-  TravUnit(const RaypipeConfig& c, int i);
-  MemoryRead tcache, rs0;
+  TravUnit(const RaypipeConfig& c, int i, DramArbiter& dram);
+  TimedCache tcache;
+  MemoryRead rs0;
   Fifo leafFifo;
   LatencyPipe<RayToken> travPipe;
   Fifo travFifo;
@@ -59,6 +48,9 @@ struct Channels {
   // Every FIFO of ray tokens, in the pipe's order (the shader's ray-id FIFO is idFifo).
   std::vector<Fifo*> fifos();
   std::vector<RaypipeFifoPeak> peaks();
+  std::vector<RaypipeCacheCounts> cacheCounts() const;
+
+  DramArbiter dram;  // behind the caches (set_associative); first, as they refer to it
 
   LatencyPipe<RayToken> prgPipe;
   Fifo prgFifo;
@@ -75,7 +67,8 @@ struct Channels {
   Fifo stackFifo, notMissFifo, missFifo;
   int stackReadPointer = 0, restReadPointer = 0, restWritePointer = 0, stackWritePointer = 0;
   RotatingArbiter<RayToken> larb;  // [i] traversal unit i's leaf, [units] INT's next triangle
-  MemoryRead lcache, icache, rs1;
+  TimedCache lcache, icache;
+  MemoryRead rs1;
   LatencyPipe<RayToken> intPipe;
   Fifo intList, intLarb;
   int intShaderNumLeft;  // the shadow-hit FIFO, never written by primary rays
