@@ -17,6 +17,17 @@ for model in golden ca; do
   limited "$rtusim" render --model "$model" --scene sphere --depth 3 --width 4096 --height 4096 \
     >/dev/null || fail "render --model $model of a 4096x4096 frame ran out of 400 MB"
 done
+# A frame of passes (explore/ray_passes.h) streams its runs too, holding the pixels, their hits and
+# the passes' rays, not a record or result per ray: 1024x1024 with shadow and two AO rays a hit
+# (2.9 million rays) peaks at about 260 MB; it held 1.2 GB (records, results and their copies).
+limited "$rtusim" render --model ca --core bvh --scene menger --depth 5 --width 1024 \
+  --height 1024 --passes primary,shadow,ao --samples 2 >passes.txt ||
+  fail "render --passes of a 1024x1024 frame ran out of 400 MB: $(tail -1 passes.txt)"
+grep -q "^frame  .* rays in 3 passes as one run" passes.txt || fail "passes: $(cat passes.txt)"
+# What a frame of passes holds is estimated with its rays and refused before any work.
+expect_error "(the pixels and hits secondary passes read, their rays), more than the" \
+  "$rtusim" render --scene menger --depth 3 --width 16384 --height 16384 --passes primary,ao \
+  --samples 1024
 # sweep enumerates its grid lazily (config/sweep_points.h): a 400,000-point grid's checks and
 # Slurm plan (its dry run), which held 5 GB before (12.8 KB a point), within the limit; the dry
 # run names the count and the first and last rows.

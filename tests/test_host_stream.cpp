@@ -109,7 +109,7 @@ uint64_t mostHeldByStreamedLtRun(const std::string& core, int width, int height)
   return held.most;
 }
 
-TEST_CASE("Streamed loosely-timed run: the rays held at once are bounded by the RTU\, not the "
+TEST_CASE("Streamed loosely-timed run: the rays held at once are bounded by the RTU\\, not the "
           "frame",
           "[host_stream][lt]") {
   const std::string core = GENERATE(as<std::string>{}, "svo", "bvh");

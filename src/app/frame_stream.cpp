@@ -7,6 +7,8 @@
 #include <variant>
 
 #include "app/kind_outputs.h"
+#include "explore/ray_passes.h"
+#include "inputs/secondary_rays.h"
 #include "kind_app_plugins.h"
 #include "kinds/core_result.h"
 #include "rtu/host_memory.h"
@@ -41,13 +43,6 @@ std::unique_ptr<FrameStream::Tally> tallyOf(const RunConfig& settings, const Fra
   });
 }
 
-// The settings with a 1x1 frame: frameRecords' checks at the cost of one record.
-RunConfig onePixel(const RunConfig& settings) {
-  RunConfig one = settings;
-  one.camera.width = one.camera.height = 1;
-  return one;
-}
-
 }  // namespace
 
 FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, size_t imageBytes,
@@ -58,7 +53,11 @@ FrameMemory estimateFrameMemory(const RunConfig& settings, bool keepPixels, size
     memory.bytes += rays * bytesPerRay;
     memory.what += (memory.what.empty() ? "" : ", ") + what;
   };
-  if (keepPixels) add(sizeof(FramePixel), "the pixels secondary passes read");
+  if (keepPixels) {
+    add(sizeof(FramePixel) + sizeof(SurfaceHit), "the pixels and hits secondary passes read");
+    memory.bytes += passRays(settings, settings.camera.pixelCount()) * (sizeof(RayRecord) + 0.125);
+    memory.what += ", their rays";
+  }
   if (imageBytes > 0) add(static_cast<double>(imageBytes), "the images' samples held to the end");
   if (settings.model != ModelKind::Golden && traced)
     add(sizeof(HostRecord) + sizeof(CoreKindResult) + 4 * sizeof(uint64_t),
@@ -90,8 +89,7 @@ FrameStream::FrameStream(const RunConfig& settings, const FrameScene& scene, boo
   if (recordedWorkload(settings)) {
     recorded_ = frameRecords(scene, settings);
   } else {
-    settings.camera.validate();
-    sample_ = frameRecords(scene, onePixel(settings)).front();
+    sample_ = frameRecordSample(scene, settings);
   }
   if (keepPixels) frame_.emplace(settings.camera);
 }
@@ -116,11 +114,8 @@ ResultTaker FrameStream::taker() {
 // Row by row from the top, as frameRays makes them: index = x + y * width.
 HostRecord FrameStream::make(uint64_t index) {
   held_.madeOne();
-  const Camera& camera = settings_.camera;
-  const uint64_t width = static_cast<uint64_t>(camera.width);
-  const Ray ray =
-      camera.primaryRay(static_cast<int>(index % width), static_cast<int>(index / width));
-  return makeRecord_(scene_, settings_, static_cast<uint32_t>(index), ray);
+  return makeRecord_(scene_, settings_, static_cast<uint32_t>(index),
+                     settings_.camera.pixelRay(index));
 }
 
 void FrameStream::take(const CoreKindResult& result) {

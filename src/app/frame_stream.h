@@ -21,7 +21,8 @@
 namespace rtu {
 
 // What a frame's render still holds per ray, estimated before it starts: the pixels, when kept
-// for secondary passes (a FramePixel each; their shaded image is written a row at a time); the
+// for secondary passes (a FramePixel each; their shaded image is written a row at a time), with
+// the passes' hits (a SurfaceHit a pixel) and rays (a RayRecord and a bit each: passRays); the
 // images' samples held to the end (`imageBytes` a pixel: FrameImageWriter::bytesPerPixel, the
 // same whether the pixels are kept or streamed); a traced frame's records and its dry runs'
 // results. `what` names them.

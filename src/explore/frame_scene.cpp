@@ -93,6 +93,23 @@ FrameRecordMaker frameRecordMaker(const std::string& core) {
   });
 }
 
+HostRecord frameRecordSample(const FrameScene& scene, const RunConfig& settings) {
+  RunConfig onePixel = settings;
+  onePixel.camera.width = onePixel.camera.height = 1;
+  settings.camera.validate();
+  return frameRecords(scene, onePixel).front();
+}
+
+RecordSource frameRecordSource(const FrameScene& scene, const RunConfig& settings) {
+  const FrameRecordMaker make = frameRecordMaker(settings.rtu.core);
+  return RecordSource(
+      settings.camera.pixelCount(),
+      [&scene, &settings, make](uint64_t index) {
+        return make(scene, settings, static_cast<uint32_t>(index), settings.camera.pixelRay(index));
+      },
+      frameRecordSample(scene, settings));
+}
+
 std::string frameSceneKey(const RunConfig& settings) {
   const SceneSpec& spec = settings.scene;
   const AccelSpec& accel = settings.accel;

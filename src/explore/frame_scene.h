@@ -20,6 +20,7 @@
 #include "config/run_config.h"
 #include "geometry/ray.h"
 #include "geometry/triangle_mesh.h"
+#include "kinds/host_stream.h"
 #include "kinds/registry.h"
 #include "rtu/model_transform.h"
 
@@ -75,6 +76,11 @@ std::vector<HostRecord> frameRecords(const FrameScene& scene, const RunConfig& s
 using FrameRecordMaker = HostRecord (*)(const FrameScene& scene, const RunConfig& settings,
                                         uint32_t id, const Ray& ray);
 FrameRecordMaker frameRecordMaker(const std::string& core);
+// A record of the kind the camera's frame has (its 1x1 frame's), after every check frameRecords
+// makes, at the cost of one record: a made RecordSource's sample.
+HostRecord frameRecordSample(const FrameScene& scene, const RunConfig& settings);
+// The camera's frame as frameRecords holds it, each record made when the run asks for it.
+RecordSource frameRecordSource(const FrameScene& scene, const RunConfig& settings);
 
 // What decides which scene is built for a run, as text (the scene, the kind, its build settings):
 // runs with the same key share one FrameScene.

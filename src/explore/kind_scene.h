@@ -109,32 +109,37 @@ struct TriangleKindScene {
   // precision a shader recomputing the point from the triangle has; the BIH's distance, through
   // its grid, is not precise enough for that), with that triangle's world normal toward the ray;
   // the passes' records point at the frame's model header, random rays fill the SVO frame's cube
-  // (the world's [-1, 1]^3).
+  // (the world's [-1, 1]^3). The frame is traced as a stream: only the hits are held.
   static PassSource passSource(const FrameScene& scene, const RunConfig& settings) {
-    const std::vector<HostRecord> records = KindScene<Kind>::records(scene, settings);
-    const std::vector<CoreKindResult> results = traceGolden(scene.memory(), records, settings.rtu);
+    const RecordSource records = frameRecordSource(scene, settings);
     PassSource source;
-    for (size_t i = 0; i < records.size(); ++i) {
-      const typename Kind::Result& own = resultOfKind<Kind>(results[i]);
-      if (!Kind::hitAhead(own)) continue;
-      const RayRecord& ray = std::get<RayRecord>(records[i]);
-      const glm::dvec3 direction(ray.direction[0], ray.direction[1], ray.direction[2]);
-      SurfaceHit hit;
-      hit.pixel = ray.id;
-      hit.incoming = glm::normalize(direction);
-      const glm::dvec3 origin(ray.origin[0], ray.origin[1], ray.origin[2]);
-      hit.normal = glm::normalize(triangleNormal(scene, own.primitive));
-      if (glm::dot(hit.normal, hit.incoming) > 0.0) hit.normal = -hit.normal;
-      const glm::dvec3 corner = triangleCorner(scene, own.primitive);
-      hit.point = origin + glm::dot(corner - origin, hit.normal) / glm::dot(direction, hit.normal) *
-                               direction;
-      source.hits.push_back(hit);
-    }
+    traceGolden(scene.memory(), records, settings.rtu,
+                [&](uint64_t job, const CoreKindResult& result) {
+                  const typename Kind::Result& own = resultOfKind<Kind>(result);
+                  if (Kind::hitAhead(own))
+                    source.hits.push_back(hitOf(scene, std::get<RayRecord>(records[job]), own));
+                });
     source.words = scene.words;
     source.modelAddress = scene.entry;
     source.box = makeModelHeader(ModelPlacement{}, 0);
     source.selfOffset = KindScene<Kind>::kSelfOffset;
     return source;
+  }
+
+ private:
+  static SurfaceHit hitOf(const FrameScene& scene, const RayRecord& ray,
+                          const typename Kind::Result& own) {
+    const glm::dvec3 direction(ray.direction[0], ray.direction[1], ray.direction[2]);
+    SurfaceHit hit;
+    hit.pixel = ray.id;
+    hit.incoming = glm::normalize(direction);
+    const glm::dvec3 origin(ray.origin[0], ray.origin[1], ray.origin[2]);
+    hit.normal = glm::normalize(triangleNormal(scene, own.primitive));
+    if (glm::dot(hit.normal, hit.incoming) > 0.0) hit.normal = -hit.normal;
+    const glm::dvec3 corner = triangleCorner(scene, own.primitive);
+    hit.point = origin +
+                glm::dot(corner - origin, hit.normal) / glm::dot(direction, hit.normal) * direction;
+    return hit;
   }
 };
 

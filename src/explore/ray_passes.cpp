@@ -1,5 +1,6 @@
 #include "explore/ray_passes.h"
 
+#include <optional>
 #include <stdexcept>
 
 #include "explore/kind_scene.h"
@@ -13,14 +14,49 @@ namespace rtu {
 
 namespace {
 
-// Whether each result met something (an any-hit ray: occluded), from `first` on.
-std::vector<bool> hitsOf(const std::vector<CoreKindResult>& results, size_t first, size_t count) {
-  std::vector<bool> hits;
-  hits.reserve(count);
-  for (size_t i = first; i < first + count; ++i)
-    hits.push_back(
-        CoreKinds::visitResult(results[i], [](auto, const auto& own) { return own.hit; }));
-  return hits;
+// Whether a result met something (an any-hit ray: occluded).
+bool metSomething(const CoreKindResult& result) {
+  return CoreKinds::visitResult(result, [](auto, const auto& own) { return own.hit; });
+}
+
+// The first `count` records of the frame's job stream, made as the run asks for them: the
+// primary records, then each pass's rays in pass order.
+RecordSource streamPrefix(const RecordSource& primaries, const std::vector<PassRun>& passes,
+                          uint64_t count) {
+  std::optional<HostRecord> sample;
+  if (primaries.size() > 0) sample = primaries[0];
+  for (const PassRun& pass : passes)
+    if (!sample && !pass.rays.empty()) sample = pass.rays.front();
+  if (!sample) throw std::logic_error("a frame's job stream without records");
+  return RecordSource(
+      count,
+      [&primaries, &passes](uint64_t index) -> HostRecord {
+        if (index < primaries.size()) return primaries[index];
+        index -= primaries.size();
+        for (const PassRun& pass : passes) {
+          if (index < pass.rays.size()) return pass.rays[index];
+          index -= pass.rays.size();
+        }
+        throw std::logic_error("a record beyond the frame's passes");
+      },
+      *sample);
+}
+
+// Marks each pass ray's hit as its result leaves a run of the stream (or of the passes alone,
+// `primaryRays` 0); results are the same in every run, so a later run marks them again equally.
+ResultTaker markHits(uint64_t primaryRays, std::vector<PassRun>& passes) {
+  return [primaryRays, &passes](uint64_t job, const CoreKindResult& result) {
+    if (job < primaryRays) return;
+    job -= primaryRays;
+    for (PassRun& pass : passes) {
+      if (job < pass.hits.size()) {
+        pass.hits[job] = metSomething(result);
+        return;
+      }
+      job -= pass.hits.size();
+    }
+    throw std::logic_error("a result beyond the frame's passes");
+  };
 }
 
 // The passes' rays after the primary ones, spawned from the kind's golden hits of the frame.
@@ -71,6 +107,19 @@ RayWorkloadSpec passSpec(const RunConfig& settings) {
   return spec;
 }
 
+double passRays(const RunConfig& settings, size_t pixels) {
+  RayWorkloadSpec spec = settings.workload;
+  const std::vector<RayType> passes = parseRayPasses(settings.rayPasses, "--passes");
+  double rays = 0;
+  for (size_t i = 1; i < passes.size(); ++i) {
+    spec.secondary.type = passes[i];
+    rays += passes[i] == RayType::Random
+                ? static_cast<double>(spec.randomRays == 0 ? pixels : spec.randomRays)
+                : static_cast<double>(pixels) * spec.secondary.raysPerHit();
+  }
+  return rays;
+}
+
 PassSource framePassSource(const FrameScene& scene, const RunConfig& settings) {
   if (scene.core == kRaypipeSceneCore)
     throw std::invalid_argument("secondary passes run on a core kind, not the ray pipe");
@@ -86,35 +135,35 @@ FramePassesRun runFramePasses(const FrameScene& scene, const RunConfig& settings
   const WordMemory memory(source.words);
   FramePassesRun frame;
   frame.passes = spawnPasses(source, settings, passes);
+  for (PassRun& pass : frame.passes) pass.hits.assign(pass.rays.size(), false);
+  const ResultTaker take = markHits(0, frame.passes);
   if (settings.model == ModelKind::Golden) {
-    for (PassRun& pass : frame.passes) {
-      const std::vector<HostRecord> records(pass.rays.begin(), pass.rays.end());
-      pass.hits = hitsOf(traceGolden(memory, records, settings.rtu), 0, records.size());
-    }
+    const std::vector<HostRecord> noPrimaries;
+    const RecordSource none(noPrimaries);
+    uint64_t rays = 0;
+    for (const PassRun& pass : frame.passes) rays += pass.rays.size();
+    if (rays > 0) traceGolden(memory, streamPrefix(none, frame.passes, rays), settings.rtu, take);
     return frame;
   }
   if (!primary) throw std::logic_error("runFramePasses: a timed model's primary run missing");
-  // The job stream: the primary records, then each pass's rays; run up to each pass's end.
-  std::vector<HostRecord> records = frameRecords(scene, settings);
-  const size_t primaryRays = records.size();
+  // The job stream: the primary records, then each pass's rays; run up to each pass's end. Records
+  // are made as the run asks and results taken as they leave: nothing per ray of the frame is
+  // held but the passes' rays and hits.
+  const RecordSource primaries = frameRecordSource(scene, settings);
+  const ResultTaker takeAfterPrimaries = markHits(primaries.size(), frame.passes);
   RtuStatistics before = *primary;
-  RtuRun run;
+  uint64_t end = primaries.size();
   for (PassRun& pass : frame.passes) {
-    records.insert(records.end(), pass.rays.begin(), pass.rays.end());
-    run = runModel(settings.model, memory, records, settings.rtu);
+    end += pass.rays.size();
+    const RtuRun run = runFrame(settings.model, memory, streamPrefix(primaries, frame.passes, end),
+                                settings.rtu, takeAfterPrimaries);
     if (run.statistics.totalCycles < before.totalCycles)
       throw std::logic_error("a frame's run ended before the run of its first passes");
     pass.statistics = statisticsAfter(run.statistics, before, pass.rays.size(),
                                       run.statistics.totalCycles - before.totalCycles);
     before = run.statistics;
   }
-  frame.frame = run.statistics;
-  const std::vector<CoreKindResult> results = resultsInJobOrder(run);
-  size_t first = primaryRays;
-  for (PassRun& pass : frame.passes) {
-    pass.hits = hitsOf(results, first, pass.rays.size());
-    first += pass.rays.size();
-  }
+  frame.frame = before;
   return frame;
 }
 

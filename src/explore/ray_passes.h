@@ -43,6 +43,11 @@ struct FramePass {
 // a setting that is not valid.
 RayWorkloadSpec passSpec(const RunConfig& settings);
 
+// The most rays the passes of `settings` after the primary one hold for a frame of `pixels` (each
+// pixel a hit; random rays as many as workload.random_rays says): what a frame of passes holds
+// beside its pixels and their hits (app/frame_stream.h's estimate).
+double passRays(const RunConfig& settings, size_t pixels);
+
 // Where the secondary passes of the camera's frame on `scene` spawn, by its kind
 // (KindScene<Kind>::passSource: its golden hits, memory, model header and offsets).
 PassSource framePassSource(const FrameScene& scene, const RunConfig& settings);

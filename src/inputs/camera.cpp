@@ -58,6 +58,11 @@ Ray Camera::primaryRay(int x, int y) const {
   return Ray{position, forward + u * right + v * trueUp};
 }
 
+Ray Camera::pixelRay(uint64_t index) const {
+  const uint64_t w = static_cast<uint64_t>(width);
+  return primaryRay(static_cast<int>(index % w), static_cast<int>(index / w));
+}
+
 std::vector<Ray> frameRays(const Camera& camera) {
   camera.validate();
   const WorkPhase phase("making the rays of a " + std::to_string(camera.width) + "x" +

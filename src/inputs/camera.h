@@ -29,6 +29,8 @@ struct Camera {
 
   // Through the centre of pixel (x, y).
   Ray primaryRay(int x, int y) const;
+  // Pixel `index`'s, row by row from the top (index = x + y * width), as frameRays orders them.
+  Ray pixelRay(uint64_t index) const;
   size_t pixelCount() const { return static_cast<size_t>(width) * static_cast<size_t>(height); }
 };
 

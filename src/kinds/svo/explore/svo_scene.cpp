@@ -1,5 +1,6 @@
 #include "kinds/svo/explore/svo_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -48,11 +49,21 @@ PassSource KindScene<SvoKind>::passSource(const FrameScene& scene, const RunConf
   source.modelAddress = static_cast<uint32_t>(source.words.size());
   source.words.insert(source.words.end(), header.begin(), header.end());
   const WordMemory memory(source.words);
-  const std::vector<RayRecord> primaries =
-      makeFrameRayRecords(settings.camera, source.modelAddress);
   GoldenModel model(memory, golden);
-  source.hits =
-      surfaceHits(primaries, model.traceRays(primaries, golden.epsilon), source.box, golden.format);
+  // The frame's rays a block at a time: only the hits are held, not a record or result per pixel.
+  constexpr uint64_t kBlock = 1 << 16;
+  settings.camera.validate();
+  const uint64_t pixels = settings.camera.pixelCount();
+  std::vector<RayRecord> block;
+  for (uint64_t first = 0; first < pixels; first += kBlock) {
+    block.clear();
+    for (uint64_t id = first; id < std::min(pixels, first + kBlock); ++id)
+      block.push_back(makeRayRecord(static_cast<uint32_t>(id), settings.camera.pixelRay(id),
+                                    source.modelAddress));
+    const std::vector<SurfaceHit> hits =
+        surfaceHits(block, model.traceRays(block, golden.epsilon), source.box, golden.format);
+    source.hits.insert(source.hits.end(), hits.begin(), hits.end());
+  }
   source.selfOffset = std::ldexp(16.0, -golden.format.fractionBits);
   return source;
 }
