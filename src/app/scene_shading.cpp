@@ -12,11 +12,6 @@ namespace {
 
 const glm::dvec3 kSun = glm::normalize(glm::dvec3(0.5, 0.9, -0.35));
 
-glm::dvec3 sky(const glm::dvec3& direction) {
-  const double up = std::clamp(0.5 + 0.5 * direction.y, 0.0, 1.0);
-  return glm::mix(glm::dvec3(0.55, 0.60, 0.68), glm::dvec3(0.20, 0.33, 0.55), up);
-}
-
 // The hit face's normal in the world, facing the ray. The result names the face's axis in the
 // model's space (mirroring flips only its sign); normals go through the inverse transpose of
 // R S, which is R S^-1.
@@ -29,13 +24,18 @@ glm::dvec3 worldNormal(const SceneHit& hit, const ModelPlacement& placement,
   return glm::dot(world, direction) > 0.0 ? -world : world;
 }
 
-glm::dvec3 shadeHit(const glm::dvec3& colour, const glm::dvec3& normal) {
+}  // namespace
+
+glm::dvec3 sceneSky(const glm::dvec3& direction) {
+  const double up = std::clamp(0.5 + 0.5 * direction.y, 0.0, 1.0);
+  return glm::mix(glm::dvec3(0.55, 0.60, 0.68), glm::dvec3(0.20, 0.33, 0.55), up);
+}
+
+glm::dvec3 shadeSceneSurface(const glm::dvec3& colour, const glm::dvec3& normal) {
   const double sun = std::max(0.0, glm::dot(normal, kSun));
   const double skyLight = 0.5 + 0.5 * normal.y;
   return colour * (0.35 + 0.2 * skyLight + 0.6 * sun);
 }
-
-}  // namespace
 
 std::vector<float> shadeSceneFrame(const SceneFrame& frame, const SceneDescription& scene) {
   const Camera& camera = frame.camera;
@@ -45,11 +45,11 @@ std::vector<float> shadeSceneFrame(const SceneFrame& frame, const SceneDescripti
     const int y = static_cast<int>(i / static_cast<size_t>(camera.width));
     const glm::dvec3 direction = camera.primaryRay(x, y).direction;
     const SceneHit& hit = frame.pixels[i];
-    glm::dvec3 colour = sky(direction);
+    glm::dvec3 colour = sceneSky(direction);
     if (hit.instance >= 0) {
       const auto instance = static_cast<size_t>(hit.instance);
-      colour = shadeHit(scene.instances[instance].colour,
-                        worldNormal(hit, frame.placements[instance], direction));
+      colour = shadeSceneSurface(scene.instances[instance].colour,
+                                 worldNormal(hit, frame.placements[instance], direction));
     }
     for (int c = 0; c < 3; ++c)
       rgb[i * 3 + static_cast<size_t>(c)] = static_cast<float>(std::clamp(colour[c], 0.0, 1.0));

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/frame_images.h"
+#include "app/scene_shading.h"
 #include "base/output_file.h"
 #include "explore/exploration_run.h"
 #include "kinds/bvh/explore/two_level_animation.h"
@@ -16,21 +17,18 @@
 namespace rtu {
 namespace {
 
-const glm::dvec3 kBackground{0.10, 0.10, 0.12};
-
 std::vector<float> shade(const TwoLevelAnimation& animation, const TwoLevelFrame& frame,
                          const SceneDescription& scene) {
   std::vector<float> rgb;
   rgb.reserve(frame.results.size() * 3);
   for (size_t i = 0; i < frame.results.size(); ++i) {
     const BvhResult& hit = frame.results[i];
-    glm::dvec3 colour = kBackground;
-    if (hit.hit) {
-      const int x = static_cast<int>(i % scene.width), y = static_cast<int>(i / scene.width);
-      const double light = 0.2 + 0.8 * animation.facing(frame, x, y, hit);
-      colour = scene.instances.at(animation.instanceOf(hit.primitive)).colour * light;
-    }
-    for (int k = 0; k < 3; ++k) rgb.push_back(static_cast<float>(colour[k]));
+    const int x = static_cast<int>(i % scene.width), y = static_cast<int>(i / scene.width);
+    glm::dvec3 colour = sceneSky(frame.camera.primaryRay(x, y).direction);
+    if (hit.hit)
+      colour = shadeSceneSurface(scene.instances.at(animation.instanceOf(hit.primitive)).colour,
+                                 animation.worldNormal(frame, x, y, hit));
+    for (int k = 0; k < 3; ++k) rgb.push_back(static_cast<float>(std::clamp(colour[k], 0.0, 1.0)));
   }
   return rgb;
 }

@@ -187,8 +187,8 @@ size_t TwoLevelAnimation::instanceOf(uint32_t primitive) const {
       primitiveBases_.begin() - 1);
 }
 
-double TwoLevelAnimation::facing(const TwoLevelFrame& frame, int x, int y,
-                                 const BvhResult& hit) const {
+glm::dvec3 TwoLevelAnimation::worldNormal(const TwoLevelFrame& frame, int x, int y,
+                                          const BvhResult& hit) const {
   const size_t instance = instanceOf(hit.primitive);
   const BvhInstance& placed = frame.instances.at(instance);
   const TriangleMesh& mesh = meshes_.at(placed.mesh);
@@ -196,10 +196,12 @@ double TwoLevelAnimation::facing(const TwoLevelFrame& frame, int x, int y,
   const glm::dvec3 a = mesh.vertices[triangle[0]], b = mesh.vertices[triangle[1]],
                    c = mesh.vertices[triangle[2]];
   const ModelPlacement& p = placed.placement;
+  // Normals go through the inverse transpose of R S, which is R S^-1.
   const glm::dvec3 normal = p.rotation * (glm::cross(b - a, c - a) / p.scale);
+  const double length = glm::length(normal);
+  if (!(length > 0)) return glm::dvec3(0.0);  // a degenerate triangle: lit by the sky only
   const glm::dvec3 direction = frame.camera.primaryRay(x, y).direction;
-  const double length = glm::length(normal) * glm::length(direction);
-  return length > 0 ? std::abs(glm::dot(normal, direction)) / length : 0.0;
+  return glm::dot(normal, direction) > 0.0 ? -normal / length : normal / length;
 }
 
 }  // namespace rtu

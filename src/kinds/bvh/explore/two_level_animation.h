@@ -91,10 +91,10 @@ class TwoLevelAnimation {
   // loosely-timed frame is a SystemC simulation, one at a time in a process).
   void renderFrames(int threads, const std::function<void(const TwoLevelFrame&)>& take);
 
-  // The instance a result's primitive lies in, and the cosine between its triangle's normal and
-  // the ray in the mesh's space in `frame` (for shading).
+  // The instance a result's primitive lies in, and its triangle's unit normal in the world of
+  // `frame`, facing pixel (x, y)'s ray (for shading).
   size_t instanceOf(uint32_t primitive) const;
-  double facing(const TwoLevelFrame& frame, int x, int y, const BvhResult& hit) const;
+  glm::dvec3 worldNormal(const TwoLevelFrame& frame, int x, int y, const BvhResult& hit) const;
 
   const std::vector<double>& meshBuildSeconds() const { return meshSeconds_; }
   const std::vector<TriangleMesh>& meshes() const { return meshes_; }
