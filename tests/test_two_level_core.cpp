@@ -17,6 +17,7 @@
 #include "kinds/bvh/two_level_image.h"
 #include "kinds/bvh/two_level_traversal.h"
 #include "kinds/core_result.h"
+#include "placed_world.h"
 #include "rtu/golden_shell.h"
 #include "run/lt_simulation.h"
 #include "run/rtu_simulation.h"
@@ -25,17 +26,6 @@ namespace rtu {
 namespace {
 
 using Kind = BvhKind<WatertightIntersector>;
-
-std::vector<BvhInstance> instances(const Aabb<double>& box, double shift) {
-  const glm::dvec3 e = box.extent();
-  const auto at = [&](glm::dvec3 offset, glm::dvec3 degrees, glm::dvec3 scale) {
-    return BvhInstance{0, ModelPlacement{offset * e + glm::dvec3(shift, 0, 0),
-                                         rotationFromEulerDegrees(degrees), scale}};
-  };
-  return {at({0, 0, 0}, {0, 0, 0}, glm::dvec3(1)), at({0.6, 0, 0.1}, {0, 30, 0}, glm::dvec3(1)),
-          at({0.1, 0.2, 0.5}, {20, 0, 45}, glm::dvec3(0.5)),
-          at({-0.5, 0.3, 0}, {0, -60, 10}, {1.5, 0.75, 1.25})};
-}
 
 std::vector<RayRecord> worldRays(const TwoLevelBvh& bvh, uint32_t modelAddress) {
   Aabb<double> world;
@@ -87,7 +77,7 @@ TEST_CASE("Two-level BVH core equals the two-level golden walk over two frames",
   const auto triangles = static_cast<uint32_t>(mesh.triangles.size());
   int hits = 0, rays = 0;
   for (const double shift : {0.0, 0.3 * box.extent().x}) {
-    bvh.place(instances(box, shift));
+    bvh.place(overlappingInstances(box, shift));
     image.writeFrame(bvh);
     TwoLevelTraversal<WatertightIntersector> golden(bvh);
     GoldenShell<Kind> core(image.memory(), Kind::Config{});
@@ -109,7 +99,7 @@ TEST_CASE("Two-level BVH core: ray records through the job set-up and the cycle-
   std::vector<MeshBvh> meshes;
   meshes.push_back(meshBvh(buildLangr(mesh).tree, mesh));
   TwoLevelBvh bvh(std::move(meshes));
-  bvh.place(instances(meshBounds(mesh), 0));
+  bvh.place(overlappingInstances(meshBounds(mesh), 0));
   TwoLevelImage image(bvh);
   image.writeFrame(bvh);
   const std::vector<RayRecord> rays = worldRays(bvh, image.worldHeader());

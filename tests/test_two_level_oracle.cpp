@@ -34,18 +34,6 @@
 namespace rtu {
 namespace {
 
-// Four overlapping instances around the mesh's box.
-std::vector<BvhInstance> spiderInstances(const Aabb<double>& box, double shift) {
-  const glm::dvec3 e = box.extent();
-  const auto at = [&](glm::dvec3 offset, glm::dvec3 degrees, glm::dvec3 scale) {
-    return BvhInstance{0, ModelPlacement{offset * e + glm::dvec3(shift, 0, 0),
-                                         rotationFromEulerDegrees(degrees), scale}};
-  };
-  return {at({0, 0, 0}, {0, 0, 0}, glm::dvec3(1)), at({0.6, 0, 0.1}, {0, 30, 0}, glm::dvec3(1)),
-          at({0.1, 0.2, 0.5}, {20, 0, 45}, glm::dvec3(0.5)),
-          at({-0.5, 0.3, 0}, {0, -60, 10}, {1.5, 0.75, 1.25})};
-}
-
 struct TwoLevelAgreement {
   int same = 0, ties = 0, explained = 0, unexplained = 0;
   double worstSameT = 0;  // the largest relative t difference of agreeing hits
@@ -137,7 +125,7 @@ TEST_CASE("Two-level BVH agrees with the oracle over the flattened spiders", "[t
   const std::string builder = GENERATE("langr", "binned");
   TwoLevelBvh bvh =
       spiderScene(mesh, builder == "langr" ? buildLangr(mesh).tree : buildSah(mesh).tree);
-  bvh.place(spiderInstances(box, 0));
+  bvh.place(overlappingInstances(box, 0));
   const TwoLevelOracleCheck check(mesh, bvh);
   const Aabb<double> world = meshBounds(check.world());
   std::vector<Ray> rays = viewRays(world, 4, 32, 32);
@@ -163,9 +151,9 @@ TEST_CASE("Two-level BVH: the next frame's placements, the same mesh image", "[t
   const TriangleMesh& mesh = assimpObjModel("spider.obj");
   const Aabb<double> box = meshBounds(mesh);
   TwoLevelBvh bvh = spiderScene(mesh, buildLangr(mesh).tree);
-  bvh.place(spiderInstances(box, 0));
+  bvh.place(overlappingInstances(box, 0));
   const uint32_t* image = bvh.meshes()[0].image.words.data();
-  bvh.place(spiderInstances(box, 0.3 * box.extent().x));  // every instance moved along x
+  bvh.place(overlappingInstances(box, 0.3 * box.extent().x));  // every instance moved along x
   CHECK(bvh.meshes()[0].image.words.data() == image);
   const TwoLevelOracleCheck check(mesh, bvh);
   const TwoLevelAgreement agreement = check.compare(viewRays(meshBounds(check.world()), 2, 32, 32));
