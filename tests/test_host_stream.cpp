@@ -11,7 +11,7 @@
 #include "explore/frame_scene.h"
 #include "kinds/host_stream.h"
 #include "run/analytic_run.h"
-#include "run/lt_simulation.h"
+#include "run/model_run.h"
 #include "run/rtu_simulation.h"
 
 namespace rtu {
@@ -51,18 +51,18 @@ nlohmann::ordered_json withoutHostTime(RtuStatistics statistics) {
   return statistics.toJson();
 }
 
-// The most rays a streamed cycle-accurate run of a frame holds at once; checks its results and
-// statistics against the same run over vectors.
-uint64_t mostHeldByStreamedRun(const std::string& core, int width, int height) {
+// The most rays a streamed run of a frame on `model` (ca or lt) holds at once; checks its results
+// and statistics against the same run over vectors.
+uint64_t mostHeldByStreamedRun(ModelKind model, const std::string& core, int width, int height) {
   const RunConfig settings = frameOf(core, width, height);
   const FrameScene scene = loadFrameScene(settings);
   const std::vector<HostRecord> records = frameRecords(scene, settings);
-  const RtuRun kept = simulateRtu(scene.memory(), records, settings.rtu);
+  const RtuRun kept = runModel(model, scene.memory(), records, settings.rtu);
 
   RaysHeld held;
   std::vector<CoreKindResult> taken(records.size());
-  const RtuRun streamed = streamRtu(scene.memory(), countedSource(records, held), settings.rtu,
-                                    collectingTaker(taken, held));
+  const RtuRun streamed = runFrame(model, scene.memory(), countedSource(records, held),
+                                   settings.rtu, collectingTaker(taken, held));
   CHECK(streamed.results.empty());
   CHECK(held.made == records.size());
   CHECK(held.taken == records.size());
@@ -75,49 +75,15 @@ uint64_t mostHeldByStreamedRun(const std::string& core, int width, int height) {
 }  // namespace
 
 TEST_CASE("Streamed run: the rays held at once are bounded by the RTU\\, not the frame",
-          "[host_stream]") {
-  const std::string core = GENERATE(as<std::string>{}, "svo", "bvh");
-  CAPTURE(core);
-  const uint64_t small = mostHeldByStreamedRun(core, 48, 32);    // 1536 rays
-  const uint64_t large = mostHeldByStreamedRun(core, 192, 128);  // 24576 rays
-  // A run that kept its results to the end would hold the whole frame. The RTU holds a few rays
-  // per core (job manager pipeline, scheduler queue, cores, result buffers): the same few at 16
-  // times the rays.
-  CHECK(small > 0);
-  CHECK(large <= 128);
-  CHECK(large <= small + small / 2);
-}
-
-// The most rays a streamed loosely-timed run holds at once; checks its results and statistics
-// against the same run that keeps its results.
-uint64_t mostHeldByStreamedLtRun(const std::string& core, int width, int height) {
-  const RunConfig settings = frameOf(core, width, height);
-  const FrameScene scene = loadFrameScene(settings);
-  const std::vector<HostRecord> records = frameRecords(scene, settings);
-  const RtuRun kept = runLooselyTimed(scene.memory(), records, settings.rtu);
-
-  RaysHeld held;
-  std::vector<CoreKindResult> taken(records.size());
-  const RtuRun streamed = streamLooselyTimed(scene.memory(), countedSource(records, held),
-                                             settings.rtu, collectingTaker(taken, held));
-  CHECK(streamed.results.empty());
-  CHECK(held.made == records.size());
-  CHECK(held.taken == records.size());
-  CHECK(taken == resultsInJobOrder(kept));
-  CHECK(streamed.totalCycles == kept.totalCycles);
-  CHECK(withoutHostTime(streamed.statistics) == withoutHostTime(kept.statistics));
-  return held.most;
-}
-
-TEST_CASE("Streamed loosely-timed run: the rays held at once are bounded by the RTU\\, not the "
-          "frame",
           "[host_stream][lt]") {
   const std::string core = GENERATE(as<std::string>{}, "svo", "bvh");
-  CAPTURE(core);
-  const uint64_t small = mostHeldByStreamedLtRun(core, 48, 32);    // 1536 rays
-  const uint64_t large = mostHeldByStreamedLtRun(core, 192, 128);  // 24576 rays
-  // The model holds a job from its set-up until its result drains: the job manager's pipeline,
-  // and a result waiting in each core and one in its buffer.
+  const ModelKind model = GENERATE(ModelKind::CycleAccurate, ModelKind::LooselyTimed);
+  CAPTURE(core, toString(model));
+  const uint64_t small = mostHeldByStreamedRun(model, core, 48, 32);    // 1536 rays
+  const uint64_t large = mostHeldByStreamedRun(model, core, 192, 128);  // 24576 rays
+  // A run that kept its results to the end would hold the whole frame. The RTU holds a few rays
+  // per core (job manager pipeline, scheduler queue, cores, result buffers; the loosely-timed
+  // model a job from its set-up until its result drains): the same few at 16 times the rays.
   CHECK(small > 0);
   CHECK(large <= 128);
   CHECK(large <= small + small / 2);
