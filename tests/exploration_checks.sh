@@ -11,6 +11,12 @@ python=/usr/bin/python3
 [[ -x $python ]] || python=python3
 small=(--scene sphere --depth 4 --width 8 --height 8)
 
+# --dry-run without --slurm checks the grid and says what would run, and runs none of it.
+"$rtusim" sweep "${small[@]}" --grid cores=1,2,4 --out dry.csv --dry-run >dry.txt
+grep -q "^sweep: rows to run: 3, the first (0) cores=1, the last (2) cores=4$" dry.txt ||
+  fail "dry run: $(cat dry.txt)"
+[[ ! -e dry.csv && ! -e dry.jsonl ]] || fail "the dry run wrote rows"
+
 # A swept key without effect in every configuration is refused before any row runs; without
 # effect in some of them it is a warning naming how many.
 expect_error "memory.dram.latency (sweep) has no effect in any configuration: memory.kind is ideal" \

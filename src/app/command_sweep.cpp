@@ -165,7 +165,10 @@ IndexRanges pointsToRun(const SweepPoints& points, EarlierRows& earlier) {
 
 // A dry run's plan, whatever the grid's size: the count and the first and last rows to run.
 void printPlan(const SweepPoints& points, const IndexRanges& pending) {
-  if (pending.empty()) return;
+  if (pending.empty()) {
+    std::cout << "sweep: rows to run: 0\n";
+    return;
+  }
   std::cout << "sweep: rows to run: " << pending.count() << ", the first (" << pending.first()
             << ") " << points.describe(pending.first()) << ", the last (" << pending.last() << ") "
             << points.describe(pending.last()) << "\n";
@@ -218,7 +221,8 @@ void addSweepCommand(CLI::App& app) {
                    "array elements, each running every n-th row (default: a row each, at most 256)")
       ->check(CLI::Range(1, 100000));
   command->add_flag("--dry-run", options->slurmOptions.dryRun,
-                    "with --slurm: write the sweep directory and batch script, do not submit");
+                    "check the grid and say which rows would run, run none (with --slurm: write "
+                    "the sweep directory and batch script, do not submit)");
   command->add_option("--sweep-dir", options->sweepDir,
                       "with --slurm: the shared directory of the job array (default: OUT.slurm)");
   command->add_option("--slurm-task", options->slurmTask,
@@ -247,6 +251,7 @@ void addSweepCommand(CLI::App& app) {
                              : "")
               << "\n"
               << std::flush;
+    if (options->slurmOptions.dryRun && !options->slurm) return printPlan(points, pending);
     RowWriter writer(options->out, earlier);
     SweepTally tally(writer);
     const auto write = [&tally](const Json& row) { tally.add(row); };
